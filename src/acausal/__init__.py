@@ -1,0 +1,16 @@
+"""acausal: Modelica-like acausal mechanics in Python on CasADi.
+
+Build models from components (``acausal.components``), compile them into CasADi equations of
+motion (``acausal.compile``), simulate (``compiled.simulate``).
+"""
+from .compiler import CompiledModel, compile
+from .core import (AcausalError, Component, InitializationError, Input, Model, Output,
+                   Parameter, ParameterError, PortConnectionError, SimulationError,
+                   SingularModelError, StructureError, connect)
+from .simulation import Result, simulate
+
+__version__ = "0.1.0"
+__all__ = ["Model", "Component", "Parameter", "Input", "Output", "connect", "compile",
+           "CompiledModel", "simulate", "Result", "AcausalError", "ParameterError",
+           "PortConnectionError", "StructureError", "SingularModelError",
+           "InitializationError", "SimulationError"]

@@ -1,0 +1,363 @@
+"""compile(): model → CompiledModel.
+
+1. flatten; parameters become SX symbols; every component declares its structure;
+2. kinematic graph and coordinates (kinematics.build_tree);
+3. every component contributes its physics given the motion of its ports;
+4. Lagrange's equations by algorithmic differentiation, for the coordinates q and the
+   relaxations ε of the tree relations (whose reactions give the port flows):
+       R = d/dt(∂T/∂q̇) − ∂T/∂q + ∂V/∂q − Q = 0,  Q = Σ J_portᵀ f_port;
+5. signals, state derivatives and relaxations are substituted; the equations are solved for
+   the accelerations (elementwise when the mass matrix is diagonal, else a symbolic solve),
+   closed loops get multipliers (index-1 form with Baumgarte stabilization), massless nodes
+   become algebraic variables of a semi-explicit DAE.
+"""
+from __future__ import annotations
+
+import casadi as ca
+
+from ..core.component import Component, Model
+from ..core.errors import SingularModelError, StructureError
+from ..core.ports import RealInput, RealOutput
+from .builders import PhysicsBuilder, StructureBuilder, Workspace
+from .compiled import CompiledModel, Equations
+from .flatten import flatten
+from .kinematics import InternalNode, Node, build_tree
+from .symbolic import der_with, substitute_all
+
+_vc = ca.vertcat
+
+
+def compile(model: Model, *, baumgarte: float = 20.0) -> CompiledModel:
+    """Compile ``model`` into a CompiledModel.
+
+    ``baumgarte`` [1/s] is the rate at which the constraint violation of closed loops is
+    damped (Φ̈ + 2αΦ̇ + α²Φ = 0); it only matters for models with loops.
+    """
+    flat = flatten(model)
+    ws = Workspace(t=ca.SX.sym("t"))
+    ws.source = flat.signal_source
+    params = []                                    # (name, default, Parameter, component)
+    try:
+        for c in flat.components:
+            syms = {}
+            for pname, par in c.parameters().items():
+                s = ca.SX.sym(f"{c.path}.{pname}" if c.path else pname)
+                syms[pname] = s
+                params.append((s, c._values[pname], par, c))
+            c.__dict__["_symbols"] = syms
+        for c in flat.components:
+            c.structure(StructureBuilder(ws, c))
+        nodes = [Node(i, list(g)) for i, g in enumerate(flat.groups)]
+        for n in ws.internal_nodes:
+            nodes.append(Node(len(nodes), [n]))
+        for n in nodes:
+            for p in n.ports:
+                ws.node_of[p] = n
+        for r in ws.relations:
+            r.nodes = [ws.node_of[p] for p in r.ports]
+        tree = build_tree(nodes, ws.relations, ws.der_table)
+        for c in flat.components:
+            c.physics(PhysicsBuilder(ws, c))
+    finally:
+        for c in flat.components:
+            c.__dict__.pop("_symbols", None)
+    return _assemble(model, flat, ws, tree, params, baumgarte)
+
+
+def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledModel:
+    t = ws.t
+    nq = tree.q.numel()
+    eps = _vc(*[f[1] for f in tree.fired]) if tree.fired else ca.SX(0, 1)
+    epsd = _vc(*[f[2] for f in tree.fired]) if tree.fired else ca.SX(0, 1)
+    epsdd = _vc(*[f[3] for f in tree.fired]) if tree.fired else ca.SX(0, 1)
+    qa, qda = _vc(tree.q, eps), _vc(tree.qd, epsd)
+
+    for info in ws.states:
+        if info.der is None:
+            raise StructureError(f"{type(info.owner).__name__} '{info.owner.path}': state "
+                                 f"'{info.sym.name()}' has no derivative (call e.derivative)")
+    if len(ws.residuals) != len(ws.algebraics):
+        raise StructureError(f"{len(ws.algebraics)} algebraic variables but "
+                             f"{len(ws.residuals)} residual equations: "
+                             f"{', '.join(a.sym.name() for a in ws.algebraics) or 'none'}")
+
+    # ---- Lagrange's equations for [q; ε] ---------------------------------------------
+    T = sum(ws.kinetic, ca.SX(0))
+    V = sum(ws.potential, ca.SX(0))
+    R = der_with(ca.gradient(T, qda), ws.der_table) - ca.gradient(T, qa) + ca.gradient(V, qa)
+    if ws.flows:
+        v = _vc(*[ws.node_of[p].vel for p, _ in ws.flows])
+        f = _vc(*[-ca.vec(fl) for _, fl in ws.flows])        # force on the node: −flow
+        R = R - ca.jtimes(v, qda, f, True)
+    loops = tree.loops
+    phi = _vc(*[r.residual() for r in loops]) if loops else ca.SX(0, 1)
+    phi_eps = ca.jacobian(phi, eps)
+
+    # ---- everything that is an expression of the model, resolved together --------------
+    names, exprs, units = _recorded(flat, ws, tree)
+    pieces = [R, phi, phi_eps, _vc(*[i.der for i in ws.states]) if ws.states else ca.SX(0, 1),
+              _vc(*[r for _, r in ws.residuals]) if ws.residuals else ca.SX(0, 1),
+              _vc(*[e for _, e in ws.outputs]) if ws.outputs else ca.SX(0, 1), exprs,
+              _vc(*[ca.vec(fl) for _, fl in ws.flows]) if ws.flows else ca.SX(0, 1)]
+    pieces = _resolve(ws, pieces)
+    zero = ca.SX.zeros(eps.numel())
+    pieces = ca.substitute(pieces, [eps, epsd, epsdd], [zero, zero, zero])
+    R, phi, phi_eps, zdot, g_alg, y_out, exprs, explicit = pieces
+    R_q, R_eps = R[:nq], R[nq:]
+
+    eq = _solve_motion(tree, R_q, phi, t, ws, baumgarte)
+    lam_tree = -(R_eps + ca.mtimes(phi_eps.T, eq.lam)) if eps.numel() else ca.SX(0, 1)
+    flows = _port_flows(ws, tree, explicit, lam_tree, eq.lam)
+
+    # ---- states, algebraic variables, recorded values ---------------------------------
+    z_states = _vc(*[i.sym for i in ws.states]) if ws.states else ca.SX(0, 1)
+    z_alg = _vc(*[a.sym for a in ws.algebraics]) if ws.algebraics else ca.SX(0, 1)
+    u = _vc(*[s for _, s in ws.inputs]) if ws.inputs else ca.SX(0, 1)
+    p = _vc(*[s for s, *_ in params]) if params else ca.SX(0, 1)
+    flow_names = [n for n, _ in flows]
+    all_names = names + flow_names
+    all_exprs = _vc(exprs, *[e for _, e in flows]) if flows else exprs
+    units += [u_ for u_ in _flow_units(flows)]
+    sub_from = [tree.qdd] + eq.extra_from
+    sub_to = [eq.qdd] + eq.extra_to
+    all_exprs, zdot, g_alg, y_out = ca.substitute([all_exprs, zdot, g_alg, y_out], sub_from, sub_to)
+
+    x = _vc(eq.q_diff, eq.qd_diff, z_states)
+    ode = _vc(eq.q_diff_dot, eq.qdd_diff, zdot)
+    alg_vars = _vc(eq.alg_vars, z_alg)
+    alg = _vc(eq.alg_res, g_alg)
+    bad = ca.symvar(_vc(ode, alg, all_exprs, y_out))
+    allowed = {s.name() for s in ca.symvar(_vc(t, x, alg_vars, p, u))}
+    leftover = [s.name() for s in bad if s.name() not in allowed]
+    if leftover:
+        raise StructureError(f"internal: unresolved symbols {leftover[:5]} (please report)")
+
+    return CompiledModel(
+        name=model.name or type(model).__name__, t=t, x=x, z=alg_vars, p=p, u=u,
+        ode=ode, alg=alg,
+        x_names=[s.name() for s in ca.vertsplit(x)], z_names=[s.name() for s in ca.vertsplit(alg_vars)],
+        x_start=eq.x_start + [i.start for i in ws.states],
+        z_start=eq.z_start + [a.start for a in ws.algebraics],
+        params=[(s.name(), d, par.unit, par.description, par) for s, d, par, _ in params],
+        inputs=[(c.path, c.start, c.unit, c.description) for c, _ in ws.inputs],
+        outputs=[(c.path, c.unit, c.description) for c, _ in ws.outputs], y=y_out,
+        recorded_names=all_names, recorded=all_exprs, recorded_units=units,
+        equations=Equations(q=tree.q, qd=tree.qd, qdd=tree.qdd, M=eq.M, R0=eq.R0,
+                            phi=phi, q_names=tree.q_names, qd_names=tree.qd_names, t=t, p=p, u=u,
+                            z=z_states),
+        coordinates=tree.q_names,
+        kinematic_equations=eq.kin,
+    )
+
+
+def _resolve(ws: Workspace, pieces: list) -> list:
+    """Substitute signal placeholders, their rates and state-derivative placeholders."""
+    missing = [o for o in ws.signal_sym if o not in ws.signal_expr]
+    if missing:
+        o = missing[0]
+        raise StructureError(f"{type(o.owner).__name__} '{o.owner.path}' never sets its output "
+                             f"'{o.path}' (call e.output in physics)")
+    syms, vals = [], []
+    for o, s in ws.signal_sym.items():
+        syms.append(s)
+        vals.append(ws.signal_expr[o])
+    for info in ws.states:
+        if info.placeholder is not None:
+            syms.append(info.placeholder)
+            vals.append(info.der)
+    # rates of signals, only those some expression needs
+    used = {s.name() for s in ca.symvar(_vc(*[ca.vec(x) for x in pieces + vals]))}
+    sig_by_name = {s.name(): (s, v) for s, v in zip(syms, vals)}
+    extra_s, extra_v = [], []
+    todo = [n for n in used if n.startswith("der(sig:")]
+    resolved_cache = {}
+    while todo:
+        name = todo.pop()
+        base = name[4:-1]
+        if base in sig_by_name:
+            s_base, v_base = sig_by_name[base]
+        else:
+            s_base = next(x for x in extra_s if x.name() == base)
+            v_base = extra_v[extra_s.index(s_base)]
+        if base not in resolved_cache:
+            resolved_cache[base] = substitute_all([v_base], syms + extra_s, vals + extra_v)[0]
+        rate = der_with(resolved_cache[base], ws.der_table)
+        s = ws.der_table[base]
+        extra_s.append(s)
+        extra_v.append(rate)
+        for n in ca.symvar(rate):
+            if n.name().startswith("der(sig:") and n.name() not in {x.name() for x in extra_s}:
+                todo.append(n.name())
+    return substitute_all(pieces, syms + extra_s, vals + extra_v)
+
+
+class _Motion:
+    """Accelerations solved: the differential/algebraic split of the mechanical states."""
+
+
+def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
+    nq = tree.q.numel()
+    q, qd, qdd = tree.q, tree.qd, tree.qdd
+    A = ca.jacobian(R_q, qdd)
+    R0 = ca.substitute(R_q, qdd, ca.SX.zeros(nq))
+    out = _Motion()
+    out.M, out.R0 = A, R0
+    out.extra_from, out.extra_to = [], []
+    out.kin = {}
+    sp = A.sparsity()
+    row_nnz = [0] * nq
+    for r in sp.get_triplet()[0]:
+        row_nnz[r] += 1
+    massive = [k for k in range(nq) if row_nnz[k] > 0]
+    massless = [k for k in range(nq) if row_nnz[k] == 0]
+    nc = phi.numel()
+    if ca.depends_on(A, qdd):
+        raise SingularModelError("the equations of motion are not linear in the accelerations "
+                                 "(a force depends nonlinearly on an acceleration)")
+    idx = lambda v, ks: _vc(*[v[k] for k in ks]) if ks else ca.SX(0, 1)
+    qM, qdM, qddM = idx(q, massive), idx(qd, massive), idx(qdd, massive)
+    A_MM = A[massive, massive] if massive else ca.SX(0, 0)
+    if nc:
+        if massless:
+            raise StructureError(
+                "a closed kinematic loop together with massless nodes "
+                f"({', '.join(tree.q_names[k] for k in massless)}) is not supported yet; give "
+                "those nodes a mass")
+        phi_q = ca.jacobian(phi, q)
+        phid = der_with(phi, ws.der_table)
+        gamma = ca.substitute(der_with(phid, ws.der_table), qdd, ca.SX.zeros(nq))
+        KKT = ca.blockcat([[A_MM, phi_q.T], [phi_q, ca.SX(nc, nc)]])
+        rhs = _vc(-R0, -gamma - 2 * alpha * phid - alpha ** 2 * phi)
+        sol = ca.solve(KKT, rhs)
+        qdd_sol, out.lam = sol[:nq], sol[nq:]
+        out.phi_q = phi_q
+    else:
+        out.lam = ca.SX(0, 1)
+        R0M = idx(R0, massive)
+        if A_MM.sparsity().is_diag() or (A_MM.nnz() == len(massive) and _is_diag(A_MM)):
+            qdd_M = -R0M / ca.diag(A_MM)
+        else:
+            qdd_M = ca.solve(A_MM, -R0M)
+        qdd_sol = ca.SX.zeros(nq)
+        for i, k in enumerate(massive):
+            qdd_sol[k] = qdd_M[i]
+    # massless coordinates: algebraic velocity (a damper holds them) or position (springs only)
+    vel_alg = [k for k in massless if ca.depends_on(R0[k], qd[k])]
+    pos_alg = [k for k in massless if k not in vel_alg]
+    out.q_diff = _vc(idx(q, massive), idx(q, vel_alg)) if nq else ca.SX(0, 1)
+    out.q_diff_dot = _vc(idx(qd, massive), idx(qd, vel_alg)) if nq else ca.SX(0, 1)
+    out.qd_diff = qdM
+    out.qdd_diff = idx(qdd_sol, massive) if massive else ca.SX(0, 1)
+    out.alg_vars = _vc(idx(qd, vel_alg), idx(q, pos_alg))
+    out.alg_res = _vc(idx(R0, vel_alg), idx(R0, pos_alg))
+    if massless:
+        out.alg_res = ca.substitute(out.alg_res, qdd, qdd_sol)
+    if pos_alg:
+        # velocities (and accelerations) of spring-only massless nodes follow from d/dt R = 0
+        qdP, qddP = idx(qd, pos_alg), idx(qdd, pos_alg)
+        RP = idx(R0, pos_alg)
+        dR = der_with(RP, ws.der_table)
+        J = ca.jacobian(dR, qdP)
+        qdP_sol = ca.solve(J, -ca.substitute(dR, qdP, ca.SX.zeros(len(pos_alg))))
+        ddR = der_with(dR, ws.der_table)
+        J2 = ca.jacobian(ddR, qddP)
+        qddP_sol = ca.solve(J2, -ca.substitute(ddR, qddP, ca.SX.zeros(len(pos_alg))))
+        out.extra_from, out.extra_to = [qdP], [qdP_sol]
+        for i, k in enumerate(pos_alg):
+            qdd_sol[k] = qddP_sol[i]
+        if ca.depends_on(_vc(out.qdd_diff, out.alg_res), qdP):
+            out.qdd_diff, out.alg_res = ca.substitute([out.qdd_diff, out.alg_res], [qdP], [qdP_sol])
+    out.qdd = qdd_sol
+    out.x_start = [0.0] * (len(massive) + len(vel_alg)) + [0.0] * len(massive)
+    out.z_start = [0.0] * (len(vel_alg) + len(pos_alg))
+    out.massless = [tree.q_names[k] for k in massless]
+    return out
+
+
+def _is_diag(A) -> bool:
+    r, c = A.sparsity().get_triplet()
+    return all(i == j for i, j in zip(r, c))
+
+
+def _port_flows(ws, tree, explicit, lam_tree, lam_loop):
+    """Flow of every port of every component: explicit ones plus relation reactions."""
+    total: dict = {}
+    order = []
+
+    def add(p, v):
+        if p not in total:
+            total[p] = ca.SX(0)
+            order.append(p)
+        total[p] = total[p] + v
+
+    k = 0
+    for p, _ in ws.flows:
+        d = p.domain.dim
+        add(p, explicit[k:k + d])
+        k += d
+    k = 0
+    for r, *_ in tree.fired:
+        for p, v in r.flows(lam_tree[k:k + r.dim]):
+            add(p, v)
+        k += r.dim
+    k = 0
+    for r in tree.loops:
+        for p, v in r.flows(lam_loop[k:k + r.dim]):
+            add(p, v)
+        k += r.dim
+    out = []
+    for p in order:
+        if isinstance(p, InternalNode):
+            continue
+        for j, fname in enumerate(p.domain.flows):
+            out.append((f"{p.path}.{fname}", total[p][j] if p.domain.dim > 1 else total[p]))
+    return out
+
+
+def _flow_units(flows):
+    units = {"f": "N", "tau": "N.m", "fx": "N", "fy": "N"}
+    return [units.get(n.rsplit(".", 1)[1], "") for n, _ in flows]
+
+
+def _recorded(flat, ws, tree):
+    """Names and expressions of every potential, velocity, state and signal."""
+    names, exprs, units = [], [], []
+    seen = set()
+
+    def rec(name, ex, unit=""):
+        if name not in seen:
+            seen.add(name)
+            names.append(name)
+            exprs.append(ex)
+            units.append(unit)
+
+    for n in tree.nodes:
+        for p in n.ports:
+            dom = p.domain
+            if isinstance(p, InternalNode):
+                rec(p.path, n.pos, dom.potential_units[0])
+                base = p.owner.path
+                if p.velocity:
+                    rec(f"{base}.{p.velocity}" if base else p.velocity, n.vel, dom.velocity_units[0])
+                if p.acceleration:
+                    rec(f"{base}.{p.acceleration}" if base else p.acceleration, n.acc,
+                        dom.velocity_units[0] + "2")
+                continue
+            for j, pot in enumerate(dom.potentials):
+                rec(f"{p.path}.{pot}", n.pos[j], dom.potential_units[j])
+    for info in ws.states:
+        rec(info.sym.name(), info.sym, info.unit)
+    for a in ws.algebraics:
+        rec(a.sym.name(), a.sym, a.unit)
+    for name, ex, unit, _ in ws.variables:
+        rec(name, ex, unit)
+    for o, s in ws.signal_sym.items():
+        rec(o.path, s)
+    for i, o in ws.source.items():
+        if o in ws.signal_sym:
+            rec(i.path, ws.signal_sym[o])
+    for c, s in ws.inputs:
+        rec(c.path, s)
+    for c, e in ws.outputs:
+        rec(c.path, e)
+    return names, (_vc(*[ca.vec(e) for e in exprs]) if exprs else ca.SX(0, 1)), units

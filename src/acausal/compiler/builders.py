@@ -1,0 +1,215 @@
+"""What a component sees while being compiled: StructureBuilder, then PhysicsBuilder.
+
+Both are thin views of the compiler's workspace for one component; every method documents
+its units through the ports it takes (translational: m, m/s, N; rotational: rad, rad/s, N.m).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import casadi as ca
+
+from ..core.component import Component
+from ..core.errors import StructureError
+from ..core.interface import Input, Output
+from ..core.ports import Domain, PhysicalPort, Port, RealInput, RealOutput
+from .kinematics import InternalNode, LinearRelation
+from .symbolic import der_with
+
+
+@dataclass
+class StateInfo:
+    sym: ca.SX
+    start: float
+    unit: str
+    description: str
+    owner: Component
+    der: ca.SX | None = None
+    placeholder: ca.SX | None = None
+
+
+@dataclass
+class Workspace:
+    """Everything components declare, collected for the assembly."""
+    t: ca.SX
+    der_table: dict = field(default_factory=dict)
+    relations: list = field(default_factory=list)
+    internal_nodes: list = field(default_factory=list)
+    states: list[StateInfo] = field(default_factory=list)
+    algebraics: list[StateInfo] = field(default_factory=list)
+    residuals: list = field(default_factory=list)           # (owner, expr)
+    signal_sym: dict = field(default_factory=dict)          # RealOutput -> placeholder SX
+    signal_expr: dict = field(default_factory=dict)         # RealOutput -> expression
+    source: dict = field(default_factory=dict)              # RealInput -> RealOutput
+    inputs: list = field(default_factory=list)              # (Input, SX)
+    outputs: list = field(default_factory=list)             # (Output, expr)
+    kinetic: list = field(default_factory=list)
+    potential: list = field(default_factory=list)
+    flows: list = field(default_factory=list)               # (port, expr) explicit flows
+    variables: list = field(default_factory=list)           # (name, expr, unit)
+    node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
+
+    def signal(self, port: Port) -> ca.SX:
+        """The placeholder standing for the value of a signal port."""
+        src = self.source.get(port, port) if isinstance(port, RealInput) else port
+        if isinstance(src, RealInput):                       # unconnected, optional input
+            raise StructureError(f"input '{port.path}' is not connected to any output")
+        if src not in self.signal_sym:
+            s = ca.SX.sym(f"sig:{src.path}")
+            self.signal_sym[src] = s
+            self.der_table[s.name()] = _lazy_signal_rate(self, s)
+        return self.signal_sym[src]
+
+
+def _lazy_signal_rate(ws: Workspace, s: ca.SX) -> ca.SX:
+    """A placeholder for ds/dt, resolved once the signal's expression is known."""
+    d = ca.SX.sym(f"der({s.name()})")
+    ws.der_table[d.name()] = _lazy_signal_rate(ws, d) if s.name().count("der(") < 2 else None
+    return d
+
+
+class _Base:
+    def __init__(self, ws: Workspace, owner: Component):
+        self._ws, self._owner = ws, owner
+
+    @property
+    def time(self) -> ca.SX:
+        """Simulation time t [s]."""
+        return self._ws.t
+
+    def der(self, expr) -> ca.SX:
+        """Total time derivative of an expression of the motion, states and time."""
+        return der_with(expr, self._ws.der_table)
+
+    def input(self, port: RealInput) -> ca.SX:
+        """The value of a signal input (or output) port."""
+        self._mine(port)
+        return self._ws.signal(port)
+
+    def _mine(self, port: Port):
+        if port.owner is not self._owner:
+            raise StructureError(f"{self._owner.path}: port '{port.path}' belongs to another "
+                                 f"component")
+
+    def _name(self, name: str) -> str:
+        return f"{self._owner.path}.{name}" if self._owner.path else name
+
+
+class StructureBuilder(_Base):
+    """Phase 1: kinematic relations, internal nodes, states, algebraic variables."""
+
+    def linear(self, coeffs: dict, rhs=0.0, name: str = "") -> None:
+        """Declare Σ coeff·pos(port) = rhs between 1-D ports (or internal nodes).
+
+        Coefficients may depend on parameters; ``rhs`` also on time, states and signals
+        (prescribed motion). The flow at each port is coeff·λ, λ the reaction.
+        """
+        for p in coeffs:
+            self._mine(p)
+        self._ws.relations.append(LinearRelation(self._owner, list(coeffs), list(coeffs.values()),
+                                                 rhs, name or f"{self._owner.path}"))
+
+    def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
+             preferred: bool = True) -> InternalNode:
+        """An internal point (e.g. a centre of mass) named ``name``; its velocity and
+        acceleration are recorded as ``velocity`` / ``acceleration`` when given. A preferred
+        node becomes the coordinate of its rigid cluster when it needs one."""
+        n = InternalNode(domain, velocity, acceleration, preferred)
+        n.owner, n.name = self._owner, name
+        self._ws.internal_nodes.append(n)
+        return n
+
+    def state(self, name: str, start: float = 0.0, unit: str = "", description: str = "",
+              der=None) -> ca.SX:
+        """An internal state (a motor current, a controller integral). Its derivative is set
+        here (required when the state is used in a relation) or later by
+        PhysicsBuilder.derivative."""
+        s = ca.SX.sym(self._name(name))
+        info = StateInfo(s, float(start), unit, description, self._owner)
+        self._ws.states.append(info)
+        if der is not None:
+            info.der = ca.SX(der)
+            self._ws.der_table[s.name()] = info.der
+        else:
+            d = ca.SX.sym(f"der({s.name()})")
+            self._ws.der_table[s.name()] = d
+            info.placeholder = d
+        return s
+
+    def algebraic(self, name: str, start: float = 0.0, unit: str = "",
+                  description: str = "") -> ca.SX:
+        """An algebraic variable, fixed by a residual equation given in physics."""
+        s = ca.SX.sym(self._name(name))
+        self._ws.algebraics.append(StateInfo(s, float(start), unit, description, self._owner))
+        self._ws.der_table[s.name()] = None
+        return s
+
+
+class PhysicsBuilder(_Base):
+    """Phase 2: energies, flows, state derivatives, residuals, outputs, recorded variables."""
+
+    def _node(self, port: PhysicalPort):
+        self._mine(port)
+        return self._ws.node_of[port]
+
+    def pos(self, port: PhysicalPort) -> ca.SX:
+        """Potential of a port: s [m], phi [rad], or (x, y, phi) for a planar frame."""
+        return self._node(port).pos
+
+    def vel(self, port: PhysicalPort) -> ca.SX:
+        """Time derivative of the port's potential [m/s, rad/s]."""
+        return self._node(port).vel
+
+    def acc(self, port: PhysicalPort) -> ca.SX:
+        """Second time derivative of the port's potential [m/s², rad/s²]."""
+        return self._node(port).acc
+
+    def flow(self, port: PhysicalPort, value) -> None:
+        """Set the flow (force [N] or torque [N.m]) acting on this component through
+        ``port``, positive into the component (Modelica's sign): the component pushes the
+        connection with −value."""
+        self._mine(port)
+        self._ws.flows.append((port, ca.SX(value)))
+
+    def kinetic_energy(self, T) -> None:
+        """Add kinetic energy [J], a function of port velocities and positions."""
+        self._ws.kinetic.append(ca.SX(T))
+
+    def potential_energy(self, V) -> None:
+        """Add potential energy [J] (conservative forces: generalized force −∂V/∂q)."""
+        self._ws.potential.append(ca.SX(V))
+
+    def derivative(self, state: ca.SX, expr) -> None:
+        """Set the time derivative of an internal state declared in structure()."""
+        for info in self._ws.states:
+            if info.sym is state:
+                break
+        else:
+            raise StructureError(f"{self._owner.path}: derivative() of a symbol that is not a "
+                                 f"state declared in structure()")
+        if info.der is not None:
+            raise StructureError(f"{self._owner.path}: derivative of '{state.name()}' given twice")
+        info.der = ca.SX(expr)
+
+    def residual(self, expr) -> None:
+        """Add an equation expr = 0 (for algebraic variables)."""
+        self._ws.residuals.append((self._owner, ca.SX(expr)))
+
+    def output(self, port: RealOutput, expr) -> None:
+        """Set the value of a signal output."""
+        self._mine(port)
+        self._ws.signal(port)
+        self._ws.signal_expr[port] = ca.SX(expr)
+
+    def variable(self, name: str, expr, unit: str = "", description: str = "") -> None:
+        """Record ``expr`` as ``<component>.<name>`` in results."""
+        self._ws.variables.append((self._name(name), ca.SX(expr), unit, description))
+
+    def model_input(self, comp: Input) -> ca.SX:
+        u = ca.SX.sym(comp.path)
+        self._ws.der_table[u.name()] = None
+        self._ws.inputs.append((comp, u))
+        return u
+
+    def model_output(self, comp: Output, expr) -> None:
+        self._ws.outputs.append((comp, ca.SX(expr)))

@@ -1,0 +1,159 @@
+"""CompiledModel: the seam between the compiler and everything downstream.
+
+It holds, by name, the states, algebraic variables, parameters (with defaults), inputs and
+outputs, and the CasADi objects: the semi-explicit DAE
+
+    ẋ = ode(t, x, z, p, u),   0 = alg(t, x, z, p, u)
+
+as a dict for ``casadi.integrator`` (its ``p`` is [parameters; inputs]), Functions for the
+right-hand side and the recorded variables, and the pieces of Lagrange's equations
+(``equations``): M(q) and the bias R0(q, q̇) of M q̈ + R0 = 0, Φ(q) for loops.
+"""
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass, field
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import ParameterError
+
+
+@dataclass
+class Equations:
+    """Lagrange's equations M(q) q̈ + R0(q, q̇, t) = 0 (+ Φ_qᵀλ for loops), with their symbols.
+
+    R0 = (Ṁ q̇ − ∂T/∂q) + ∂V/∂q − Q: everything but the inertia term. ``phi`` is the vector of
+    loop-closing constraints Φ(q, t).
+    """
+    q: ca.SX
+    qd: ca.SX
+    qdd: ca.SX
+    M: ca.SX
+    R0: ca.SX
+    phi: ca.SX
+    q_names: list
+    qd_names: list
+    t: ca.SX
+    p: ca.SX
+    u: ca.SX
+    z: ca.SX
+
+    def __str__(self):
+        lines = [f"q = [{', '.join(self.q_names)}]", f"M(q) =\n{self.M}", f"R0 =\n{self.R0}"]
+        if self.phi.numel():
+            lines.append(f"Phi =\n{self.phi}")
+        return "\n".join(lines)
+
+
+@dataclass
+class CompiledModel:
+    name: str
+    t: ca.SX
+    x: ca.SX
+    z: ca.SX
+    p: ca.SX
+    u: ca.SX
+    ode: ca.SX
+    alg: ca.SX
+    x_names: list
+    z_names: list
+    x_start: list
+    z_start: list
+    params: list            # (name, default, unit, description, Parameter)
+    inputs: list            # (name, start, unit, description)
+    outputs: list           # (name, unit, description)
+    y: ca.SX
+    recorded_names: list
+    recorded: ca.SX
+    recorded_units: list
+    equations: Equations
+    coordinates: list
+    kinematic_equations: dict = field(default_factory=dict)
+    _cache: dict = field(default_factory=dict, repr=False)
+
+    # ---- names ----------------------------------------------------------------------------
+    @property
+    def param_names(self) -> list[str]:
+        return [p[0] for p in self.params]
+
+    @property
+    def param_defaults(self) -> dict[str, float]:
+        return {p[0]: p[1] for p in self.params}
+
+    @property
+    def input_names(self) -> list[str]:
+        return [i[0] for i in self.inputs]
+
+    @property
+    def output_names(self) -> list[str]:
+        return [o[0] for o in self.outputs]
+
+    def param_vector(self, overrides: dict | None = None) -> np.ndarray:
+        """Parameter values [defaults with ``overrides`` by dotted name], checked."""
+        values = self.param_defaults
+        for name, v in (overrides or {}).items():
+            if name not in values:
+                raise ParameterError(f"model '{self.name}' has no parameter '{name}'"
+                                     f"{_suggest(name, values)}")
+            par = self.params[self.param_names.index(name)][4]
+            values[name] = par.check(v, name.rsplit(".", 1)[0])
+        return np.array([values[n] for n in self.param_names], dtype=float)
+
+    # ---- CasADi objects ---------------------------------------------------------------------
+    @property
+    def dae(self) -> dict:
+        """The DAE as a dict for ``casadi.integrator``: x, z, p = [params; inputs], t, ode, alg."""
+        d = {"x": self.x, "p": ca.vertcat(self.p, self.u), "t": self.t, "ode": self.ode}
+        if self.z.numel():
+            d.update(z=self.z, alg=self.alg)
+        return d
+
+    @property
+    def rhs(self) -> ca.Function:
+        """Function (t, x, z, p, u) -> (ode, alg)."""
+        if "rhs" not in self._cache:
+            self._cache["rhs"] = ca.Function("rhs", [self.t, self.x, self.z, self.p, self.u],
+                                             [self.ode, self.alg], ["t", "x", "z", "p", "u"],
+                                             ["ode", "alg"])
+        return self._cache["rhs"]
+
+    @property
+    def recorded_function(self) -> ca.Function:
+        """Function (t, x, z, p, u) -> every recorded variable (see ``recorded_names``)."""
+        if "rec" not in self._cache:
+            self._cache["rec"] = ca.Function("recorded", [self.t, self.x, self.z, self.p, self.u],
+                                             [self.recorded], ["t", "x", "z", "p", "u"], ["v"])
+        return self._cache["rec"]
+
+    @property
+    def output_function(self) -> ca.Function:
+        """Function (t, x, z, p, u) -> outputs y (the model's Output components)."""
+        if "y" not in self._cache:
+            self._cache["y"] = ca.Function("outputs", [self.t, self.x, self.z, self.p, self.u],
+                                           [self.y], ["t", "x", "z", "p", "u"], ["y"])
+        return self._cache["y"]
+
+    def expression(self, name: str) -> ca.SX:
+        """The symbolic expression of a recorded variable, in t, x, z, p, u."""
+        try:
+            return self.recorded[self.recorded_names.index(name)]
+        except ValueError:
+            raise KeyError(f"no variable '{name}' in model '{self.name}'"
+                           f"{_suggest(name, self.recorded_names)}") from None
+
+    def simulate(self, t_final: float, **kwargs):
+        """Simulate; see acausal.simulation.simulate for the arguments."""
+        from ..simulation import simulate
+        return simulate(self, t_final, **kwargs)
+
+    def __repr__(self):
+        return (f"<CompiledModel '{self.name}': {len(self.x_names)} states, "
+                f"{len(self.z_names)} algebraic, {len(self.params)} parameters, "
+                f"{len(self.inputs)} inputs, {len(self.outputs)} outputs>")
+
+
+def _suggest(name: str, options) -> str:
+    close = difflib.get_close_matches(name, list(options), n=3)
+    return f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""

@@ -1,0 +1,58 @@
+"""Symbolic helpers on CasADi SX: the total time derivative and repeated substitution."""
+from __future__ import annotations
+
+import casadi as ca
+
+from ..core.errors import StructureError
+
+
+class UnknownDerivative(StructureError):
+    """An expression was differentiated in time through a symbol whose rate is unknown."""
+
+
+def der_with(ex, table: dict) -> ca.SX:
+    """Total time derivative of ``ex``: Σ ∂ex/∂s · ṡ over the symbols s it depends on.
+
+    ``table`` maps symbol names to their derivative (an SX; None when it is unknown, as for
+    a model input). Symbols missing from the table are constants (derivative 0). Cost is
+    proportional to the size of ``ex`` only.
+    """
+    ex = ca.SX(ex)
+    if ex.is_constant():
+        return ca.SX.zeros(ex.shape)
+    syms = ca.symvar(ex)
+    args, rates = [], []
+    for s in syms:
+        d = table.get(s.name(), 0)
+        if d is None:
+            raise UnknownDerivative(
+                f"the time derivative of '{s.name()}' is needed but unknown (it is a model "
+                f"input or an algebraic variable); use a filtered source (exact=False) or give "
+                f"the signal as a function of time")
+        if isinstance(d, (int, float)) and d == 0:
+            continue
+        args.append(s)
+        rates.append(ca.SX(d))
+    if not args:
+        return ca.SX.zeros(ex.shape)
+    return ca.jtimes(ex, ca.vertcat(*args), ca.vertcat(*rates))
+
+
+def substitute_all(exprs: list, syms: list, values: list, what: str = "signals") -> list:
+    """Substitute ``syms`` by ``values`` in ``exprs`` until none is left (values may refer to
+    other symbols of the list). A cycle raises a StructureError naming the symbols in it."""
+    if not syms:
+        return exprs
+    v = ca.vertcat(*syms)
+    vals = [ca.SX(x) for x in values]
+    for _ in range(len(syms) + 1):
+        pending = [i for i, x in enumerate(vals) if ca.depends_on(x, v)]
+        if not pending:
+            break
+        vals = ca.substitute(vals, [v], [ca.vertcat(*vals)])
+    else:
+        names = [syms[i].name() for i in pending]
+        raise StructureError(f"algebraic loop among {what}: {', '.join(names)} depend on each "
+                             f"other without a state in between; break the loop with a state "
+                             f"(e.g. a first-order block) or a mass")
+    return ca.substitute([ca.SX(e) for e in exprs], [v], [ca.vertcat(*vals)])

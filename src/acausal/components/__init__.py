@@ -1,0 +1,1 @@
+"""The component library, one module per domain (Modelica names and sign conventions)."""

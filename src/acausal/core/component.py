@@ -1,0 +1,176 @@
+"""Component, Model and connect(): the modelling language.
+
+A Component declares parameters (class attributes of type Parameter) and ports (class
+attributes of a Port type; each instance gets its own copies). It describes itself to the
+compiler in two phases, both optional:
+
+``structure(self, s)``
+    kinematic relations between its ports (rigid, gear-like, prescribed in time), internal
+    nodes, internal states and algebraic variables (``s`` is the compiler's StructureBuilder);
+``physics(self, e)``
+    given the symbolic motion of its ports, its kinetic and potential energy, the flows
+    (forces, torques) on its ports, state derivatives, residual equations, outputs and
+    recorded variables (``e`` is the compiler's PhysicsBuilder).
+
+A Model is a component made of components: assigning a component or port to an attribute of
+a model names it; ``connect(a, b)`` joins two ports acausally.
+"""
+from __future__ import annotations
+
+import copy
+
+from .errors import ParameterError, PortConnectionError
+from .parameter import Parameter
+from .ports import PhysicalPort, Port, RealInput, RealOutput
+
+
+class Component:
+    """Base of every component. Keyword arguments set parameters by name."""
+
+    def __init__(self, name: str | None = None, **params):
+        d = self.__dict__
+        d["_values"] = {}
+        d["_owner"] = None
+        d["_name"] = name or ""
+        d["_children"] = {}
+        d["_ports"] = {}
+        for pname, par in self.parameters().items():
+            d["_values"][pname] = par.default
+        for pname, value in params.items():
+            par = self.parameters().get(pname)
+            if par is None:
+                known = ", ".join(self.parameters()) or "none"
+                raise ParameterError(
+                    f"{type(self).__name__} has no parameter '{pname}' (its parameters: {known})")
+            d["_values"][pname] = par.check(value, f"{type(self).__name__}")
+        for cls in reversed(type(self).__mro__):
+            for pname, template in vars(cls).items():
+                if isinstance(template, Port):
+                    setattr(self, pname, copy.copy(template))
+
+    # ---- naming ------------------------------------------------------------------------
+    @classmethod
+    def parameters(cls) -> dict[str, Parameter]:
+        """The declared parameters, by name, in declaration order (base classes first)."""
+        out = {}
+        for klass in reversed(cls.__mro__):
+            for n, v in vars(klass).items():
+                if isinstance(v, Parameter):
+                    out[n] = v
+        return out
+
+    @property
+    def name(self) -> str:
+        return self._name
+
+    @property
+    def owner(self) -> "Component | None":
+        return self._owner
+
+    @property
+    def path(self) -> str:
+        """Dotted name relative to the outermost model (which itself has no prefix)."""
+        if self._owner is None:
+            return ""
+        parent = self._owner.path
+        return f"{parent}.{self._name}" if parent else self._name
+
+    @property
+    def ports(self) -> dict[str, Port]:
+        return dict(self._ports)
+
+    @property
+    def children(self) -> dict[str, "Component"]:
+        return dict(self._children)
+
+    def __setattr__(self, key, value):
+        if isinstance(value, Port) and not key.startswith("_"):
+            value.owner, value.name = self, key
+            self._ports[key] = value
+        elif isinstance(value, Component) and not key.startswith("_"):
+            if value._owner is not None and value._owner is not self:
+                raise PortConnectionError(
+                    f"component '{value.path}' already belongs to a model; create a new one "
+                    f"for '{key}'")
+            value.__dict__["_owner"], value.__dict__["_name"] = self, key
+            self._children[key] = value
+        object.__setattr__(self, key, value)
+
+    def __repr__(self):
+        vals = ", ".join(f"{k}={v:g}" for k, v in self._values.items())
+        return f"{type(self).__name__}({vals}) at '{self.path or self._name}'"
+
+    # ---- the two phases (defaults: nothing) ----------------------------------------------
+    def structure(self, s) -> None:
+        """Declare kinematic relations, internal nodes and states. Default: none."""
+
+    def physics(self, e) -> None:
+        """Contribute energies, flows, state derivatives, outputs. Default: none."""
+
+
+class Model(Component):
+    """A component made of components, connected by ``connect``.
+
+    Subclass it and build the parts in ``__init__``, or build one ad hoc::
+
+        m = Model("osc")
+        m.fixed = Fixed(); m.spring = Spring(c=10); m.mass = Mass(m=1)
+        m.connect(m.fixed.flange, m.spring.flange_a)
+    """
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        self.__dict__["_connections"] = []
+
+    @property
+    def connections(self) -> list[tuple[Port, Port]]:
+        return list(self._connections)
+
+    def connect(self, a: Port, b: Port) -> None:
+        """Join ports ``a`` and ``b``: potentials equal, flows sum to zero (signals: b = a)."""
+        _check_connectable(a, b)
+        self._connections.append((a, b))
+
+
+def connect(a: Port, b: Port) -> None:
+    """Join two ports; the connection belongs to the innermost model that holds both."""
+    _check_connectable(a, b)
+    holder = _common_model(a, b)
+    holder._connections.append((a, b))
+
+
+def _check_connectable(a, b) -> None:
+    for p in (a, b):
+        if not isinstance(p, Port):
+            raise PortConnectionError(f"connect() takes ports, got {p!r}")
+        if p.owner is None:
+            raise PortConnectionError(f"port {p!r} is not part of a component")
+    if a is b:
+        raise PortConnectionError(f"cannot connect port '{a.path}' to itself")
+    if isinstance(a, PhysicalPort) != isinstance(b, PhysicalPort) or (
+            isinstance(a, PhysicalPort) and a.domain != b.domain):
+        raise PortConnectionError(
+            f"cannot connect '{a.path}' ({a.kind}) to '{b.path}' ({b.kind}): ports of "
+            f"different kinds; use a component that converts between them "
+            f"(e.g. IdealRollingWheel or IdealGearR2T for rotational <-> translational)")
+    if isinstance(a, RealOutput) and isinstance(b, RealOutput):
+        raise PortConnectionError(
+            f"cannot connect two outputs '{a.path}' and '{b.path}': an output drives inputs")
+
+
+def _ancestors(c):
+    out = []
+    while c is not None:
+        out.append(c)
+        c = c.owner
+    return out
+
+
+def _common_model(a: Port, b: Port) -> Model:
+    up_a = _ancestors(a.owner)
+    for c in _ancestors(b.owner):
+        if c in up_a and isinstance(c, Model):
+            return c
+    raise PortConnectionError(
+        f"'{a.path}' and '{b.path}' are not in one model: assign both components to "
+        f"attributes of the same Model before connecting them")

@@ -1,0 +1,34 @@
+"""The exceptions of acausal: every user mistake is one of these, naming the part at fault."""
+
+
+class AcausalError(Exception):
+    """Base of every error acausal raises for a bad model or a bad request."""
+
+
+class ParameterError(AcausalError, ValueError):
+    """A parameter name that does not exist, or a value out of its range."""
+
+
+class ConnectionError_(AcausalError):
+    """Ports of different kinds connected, or a port connected wrongly."""
+
+
+class StructureError(AcausalError):
+    """The model cannot be compiled: unconnected ports, no dynamics, bad or redundant loops."""
+
+
+class SingularModelError(StructureError):
+    """The equations cannot be solved for the accelerations (a massless part with no law)."""
+
+
+class InitializationError(AcausalError):
+    """Initial values that conflict or cannot be met."""
+
+
+class SimulationError(AcausalError):
+    """The integrator failed, or simulate() was called with bad arguments."""
+
+
+# Public name: Python's builtin ConnectionError means something else (sockets).
+PortConnectionError = ConnectionError_
+del ConnectionError_

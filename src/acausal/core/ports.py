@@ -1,0 +1,87 @@
+"""Ports (connectors): what components are connected by.
+
+A physical port carries potential variables (equal at a connection) and flow variables (summed
+to zero at a connection; a flow is positive into the component, as in Modelica). A signal port
+carries one causal real value.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True)
+class Domain:
+    """A kind of physical port: names and units of its potentials and flows."""
+    name: str
+    potentials: tuple[str, ...]
+    flows: tuple[str, ...]
+    potential_units: tuple[str, ...]
+    flow_units: tuple[str, ...]
+    velocity_units: tuple[str, ...]
+
+    @property
+    def dim(self) -> int:
+        return len(self.potentials)
+
+
+TRANSLATIONAL = Domain("translational", ("s",), ("f",), ("m",), ("N",), ("m/s",))
+ROTATIONAL = Domain("rotational", ("phi",), ("tau",), ("rad",), ("N.m",), ("rad/s",))
+PLANAR = Domain("planar", ("x", "y", "phi"), ("fx", "fy", "tau"), ("m", "m", "rad"),
+                ("N", "N", "N.m"), ("m/s", "m/s", "rad/s"))
+
+
+class Port:
+    """Base of all ports. Named by the attribute of the component it is assigned to."""
+    kind = "port"
+    #: Whether an unconnected port is an error (signal inputs, sensor flanges).
+    required = False
+
+    def __init__(self, description: str = "", *, required: bool | None = None):
+        self.description = description
+        self.owner = None
+        self.name = ""
+        if required is not None:
+            self.required = required
+
+    @property
+    def path(self) -> str:
+        """Dotted name, e.g. ``crane.cart.flange_a``."""
+        return f"{self.owner.path}.{self.name}" if self.owner is not None else self.name
+
+    def __repr__(self):
+        return f"<{type(self).__name__} {self.path}>"
+
+
+class PhysicalPort(Port):
+    """A port with potentials and flows of a Domain."""
+    domain: Domain
+
+    @property
+    def kind(self) -> str:
+        return self.domain.name
+
+
+class TranslationalFlange(PhysicalPort):
+    """1-D translational flange: position s [m], cut force f [N] (positive into the component)."""
+    domain = TRANSLATIONAL
+
+
+class RotationalFlange(PhysicalPort):
+    """1-D rotational flange: angle phi [rad], cut torque tau [N.m] (positive into the component)."""
+    domain = ROTATIONAL
+
+
+class Frame(PhysicalPort):
+    """Planar frame: x, y [m], phi [rad]; fx, fy [N], tau [N.m], resolved in the world frame."""
+    domain = PLANAR
+
+
+class RealInput(Port):
+    """A causal real input signal; must be connected to exactly one RealOutput."""
+    kind = "signal"
+    required = True
+
+
+class RealOutput(Port):
+    """A causal real output signal."""
+    kind = "signal"

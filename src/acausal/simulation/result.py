@@ -1,0 +1,72 @@
+"""Result: the simulated trajectories of every variable, by dotted name."""
+from __future__ import annotations
+
+import difflib
+
+import numpy as np
+
+
+class Result:
+    """Trajectories on the output grid: ``res.t`` [s], ``res["mass.s"]`` (numpy arrays)."""
+
+    def __init__(self, t: np.ndarray, names: list[str], values: np.ndarray, units: list[str],
+                 model_name: str = ""):
+        self.t = t
+        self.names = list(names)
+        self._values = values            # shape (len(names), len(t))
+        self._index = {n: i for i, n in enumerate(names)}
+        self.units = dict(zip(names, units))
+        self.model_name = model_name
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        if name == "time" or name == "t":
+            return self.t
+        try:
+            return self._values[self._index[name]]
+        except KeyError:
+            close = difflib.get_close_matches(name, self.names, n=3)
+            hint = f"; did you mean {', '.join(map(repr, close))}?" if close else ""
+            raise KeyError(f"no variable '{name}' in the result of '{self.model_name}'{hint}") \
+                from None
+
+    def __contains__(self, name: str) -> bool:
+        return name in self._index
+
+    def final(self, name: str) -> float:
+        """The value of ``name`` at the last time point."""
+        return float(self[name][-1])
+
+    def to_pandas(self):
+        """A pandas DataFrame indexed by time (needs pandas)."""
+        import pandas as pd
+        return pd.DataFrame(self._values.T, index=pd.Index(self.t, name="time"),
+                            columns=self.names)
+
+    def to_csv(self, path, names: list[str] | None = None) -> None:
+        """Write time and the chosen (default: all) variables as CSV with a header line."""
+        names = names or self.names
+        data = np.column_stack([self.t] + [self[n] for n in names])
+        header = ",".join(["time"] + names)
+        np.savetxt(path, data, delimiter=",", header=header, comments="")
+
+    def plot(self, *names: str, ax=None, path=None):
+        """Plot variables against time (needs matplotlib); save to ``path`` if given."""
+        import matplotlib
+        if path is not None:
+            matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        if ax is None:
+            _, ax = plt.subplots()
+        for n in names:
+            unit = self.units.get(n, "")
+            ax.plot(self.t, self[n], label=f"{n} [{unit}]" if unit else n)
+        ax.set_xlabel("time [s]")
+        ax.grid(True)
+        ax.legend()
+        if path is not None:
+            ax.figure.savefig(path, dpi=120, bbox_inches="tight")
+        return ax
+
+    def __repr__(self):
+        return (f"<Result of '{self.model_name}': {len(self.t)} time points, "
+                f"{len(self.names)} variables>")

@@ -1,0 +1,120 @@
+"""simulate(): a compiled model through a CasADi integrator onto a time grid."""
+from __future__ import annotations
+
+from typing import Callable
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import SimulationError
+from .initialization import initial_state
+from .result import Result
+
+SOLVERS = ("cvodes", "idas", "rk", "collocation")
+
+
+def input_expression(name: str, value, t: ca.SX, grid: np.ndarray) -> ca.SX:
+    """An input as an SX expression of time t.
+
+    ``value`` is a number (constant), a callable of time (called with the symbol t when it
+    accepts one — numpy ufuncs do — otherwise sampled on a fine grid and linearly
+    interpolated), or samples: a pair (times, values), or an array of values on ``grid``
+    (linear interpolation).
+    """
+    if callable(value):
+        try:
+            ex = value(t)
+            ex = ca.SX(ex) if not isinstance(ex, ca.SX) else ex
+            if ex.numel() == 1:
+                return ex
+        except Exception:
+            pass
+        fine = np.linspace(grid[0], grid[-1], max(2001, 4 * len(grid)))
+        try:
+            vals = np.array([float(value(tk)) for tk in fine])
+        except Exception as e:
+            raise SimulationError(f"input '{name}': calling it with a time failed: {e}") from None
+        return ca.pw_lin(t, ca.DM(fine), ca.DM(vals))
+    if isinstance(value, tuple) and len(value) == 2:
+        tt, vv = (np.asarray(a, dtype=float).ravel() for a in value)
+        if tt.size != vv.size or tt.size < 2 or np.any(np.diff(tt) <= 0):
+            raise SimulationError(f"input '{name}': samples need ≥ 2 increasing times and as many "
+                                  f"values")
+        return ca.pw_lin(t, ca.DM(tt), ca.DM(vv))
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 0:
+        return ca.SX(float(arr))
+    if arr.size != len(grid):
+        raise SimulationError(f"input '{name}': {arr.size} samples but the output grid has "
+                              f"{len(grid)} points; give (times, values) instead")
+    return ca.pw_lin(t, ca.DM(grid), ca.DM(arr.ravel()))
+
+
+def simulate(model, t_final: float, *, t=None, params: dict | None = None,
+             inputs: dict | None = None, x0: dict | None = None, solver: str | None = None,
+             rtol: float = 1e-8, atol: float = 1e-10, max_step: float | None = None,
+             options: dict | None = None) -> Result:
+    """Simulate ``model`` from t = 0 (or t[0]) to ``t_final`` [s].
+
+    t        output grid (default: 501 points); params: overrides by dotted name;
+    inputs   per input name: a number, a callable of time, (times, values) or values on t;
+    x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``);
+    solver   'cvodes' (ODE default), 'idas' (DAE default), or CasADi's fixed-step 'rk' /
+             'collocation' (set ``options={'number_of_finite_elements': n}``);
+    rtol, atol, max_step: integrator tolerances and step limit.
+    """
+    grid = np.linspace(0.0, float(t_final), 501) if t is None else np.asarray(t, dtype=float)
+    if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
+        raise SimulationError("t must be an increasing grid of at least two times")
+    if t is not None and abs(grid[-1] - t_final) > 1e-12 * max(1.0, abs(t_final)):
+        raise SimulationError(f"the grid ends at {grid[-1]} but t_final is {t_final}")
+    p = model.param_vector(params)
+    inputs = dict(inputs or {})
+    unknown = set(inputs) - set(model.input_names)
+    if unknown:
+        raise SimulationError(f"model '{model.name}' has no input {sorted(unknown)}; its inputs: "
+                              f"{model.input_names or 'none'}")
+    u_ex = [input_expression(n, inputs.get(n, start), model.t, grid)
+            for n, start, *_ in model.inputs]
+    u_expr = ca.vertcat(*u_ex) if u_ex else ca.SX(0, 1)
+    u0 = np.array(ca.evalf(ca.substitute(u_expr, model.t, grid[0]))).ravel()
+    xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0])
+
+    has_alg = model.z.numel() > 0
+    solver = solver or ("idas" if has_alg else "cvodes")
+    if solver not in SOLVERS:
+        raise SimulationError(f"unknown solver '{solver}'; choose one of {SOLVERS}")
+    if solver == "cvodes" and has_alg:
+        raise SimulationError(f"model '{model.name}' has algebraic variables "
+                              f"{model.z_names[:3]}...; use solver='idas'")
+    ode, alg = ca.substitute([model.ode, model.alg], [model.u], [u_expr])
+    dae = {"x": model.x, "p": model.p, "t": model.t, "ode": ode}
+    if has_alg:
+        dae.update(z=model.z, alg=alg)
+    opts = {}
+    if solver in ("cvodes", "idas"):
+        opts.update(abstol=atol, reltol=rtol, max_num_steps=100000)
+        if max_step is not None:
+            opts["max_step_size"] = max_step
+    opts.update(options or {})
+    try:
+        F = ca.integrator("sim", solver, dae, float(grid[0]), grid[1:], opts)
+        sol = F(x0=xs, z0=zs, p=p)
+    except RuntimeError as e:
+        raise SimulationError(f"simulation of '{model.name}' failed: {_short(e)}; check the "
+                              f"parameters and initial values, or try a smaller rtol/atol or "
+                              f"another solver") from None
+    X = np.hstack([np.asarray(xs).reshape(-1, 1), np.array(sol["xf"])])
+    Z = np.hstack([np.asarray(zs).reshape(-1, 1), np.array(sol["zf"])]) if has_alg else \
+        np.zeros((0, grid.size))
+    U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
+        if model.u.numel() else np.zeros((0, grid.size))
+    rec = model.recorded_function.map(grid.size)
+    V = np.array(rec(grid.reshape(1, -1), X, Z, np.tile(p.reshape(-1, 1), (1, grid.size)), U))
+    return Result(grid, model.recorded_names, V, model.recorded_units, model.name)
+
+
+def _short(e: Exception) -> str:
+    lines = [ln for ln in str(e).splitlines() if ln.strip()]
+    msg = next((ln for ln in lines if "Error" in ln or "error" in ln or "failed" in ln), lines[-1] if lines else str(e))
+    return msg.strip()[:300]
