@@ -105,9 +105,21 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
     R, phi, phi_eps, zdot, g_alg, y_out, exprs, explicit = pieces
     R_q, R_eps = R[:nq], R[nq:]
 
+    cut = _vc(*ws.cut_flow_sym.values()) if ws.cut_flow_sym else ca.SX(0, 1)
+    if ca.depends_on(_vc(R_q, phi), cut):
+        raise StructureError("a measured cut force/torque (force or torque sensor) feeds back "
+                             "into the forces of the model; this implicit loop is not supported "
+                             "yet: measure the force elsewhere (e.g. a spring's f)")
     eq = _solve_motion(tree, R_q, phi, t, ws, baumgarte)
     lam_tree = -(R_eps + ca.mtimes(phi_eps.T, eq.lam)) if eps.numel() else ca.SX(0, 1)
-    flows = _port_flows(ws, tree, explicit, lam_tree, eq.lam)
+    flows, flow_of = _port_flows(ws, tree, explicit, lam_tree, eq.lam)
+    if ws.cut_flow_sym:
+        values = _vc(*[flow_of[p] for p in ws.cut_flow_sym])
+        zdot, g_alg, y_out, exprs, values = ca.substitute(
+            [zdot, g_alg, y_out, exprs, values], [cut], [values])
+        flows = [(n, ca.substitute(e, cut, values)) for n, e in flows]
+        if ca.depends_on(values, cut):
+            raise StructureError("force sensors measure each other in a loop; not supported")
 
     # ---- states, algebraic variables, recorded values ---------------------------------
     z_states = _vc(*[i.sym for i in ws.states]) if ws.states else ca.SX(0, 1)
@@ -311,7 +323,8 @@ def _port_flows(ws, tree, explicit, lam_tree, lam_loop):
             continue
         for j, fname in enumerate(p.domain.flows):
             out.append((f"{p.path}.{fname}", total[p][j] if p.domain.dim > 1 else total[p]))
-    return out
+    flow_of = {p: total.get(p, ca.SX.zeros(p.domain.dim)) for p in ws.cut_flow_sym}
+    return out, flow_of
 
 
 def _flow_units(flows):

@@ -48,6 +48,7 @@ class Workspace:
     flows: list = field(default_factory=list)               # (port, expr) explicit flows
     variables: list = field(default_factory=list)           # (name, expr, unit)
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
+    cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
 
     def signal(self, port: Port) -> ca.SX:
         """The placeholder standing for the value of a signal port."""
@@ -170,6 +171,15 @@ class PhysicsBuilder(_Base):
         connection with −value."""
         self._mine(port)
         self._ws.flows.append((port, ca.SX(value)))
+
+    def cut_flow(self, port: PhysicalPort) -> ca.SX:
+        """The total flow through one of this component's ports (force [N] / torque [N.m],
+        positive into the component), reactions included: what a force or torque sensor
+        measures. It may feed outputs and state derivatives, not forces of the model."""
+        self._mine(port)
+        if port not in self._ws.cut_flow_sym:
+            self._ws.cut_flow_sym[port] = ca.SX.sym(f"flow:{port.path}", port.domain.dim)
+        return self._ws.cut_flow_sym[port]
 
     def kinetic_energy(self, T) -> None:
         """Add kinetic energy [J], a function of port velocities and positions."""
