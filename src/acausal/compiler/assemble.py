@@ -82,8 +82,8 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
                              f"{', '.join(a.sym.name() for a in ws.algebraics) or 'none'}")
 
     # ---- Lagrange's equations for [q; ε] ---------------------------------------------
-    T = sum(ws.kinetic, ca.SX(0))
-    V = sum(ws.potential, ca.SX(0))
+    T = ca.sum1(_vc(*ws.kinetic)) if ws.kinetic else ca.SX(0)
+    V = ca.sum1(_vc(*ws.potential)) if ws.potential else ca.SX(0)
     R = der_with(ca.gradient(T, qda), ws.der_table) - ca.gradient(T, qa) + ca.gradient(V, qa)
     if ws.flows:
         v = _vc(*[ws.node_of[p].vel for p, _ in ws.flows])
@@ -226,7 +226,7 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
     if ca.depends_on(A, qdd):
         raise SingularModelError("the equations of motion are not linear in the accelerations "
                                  "(a force depends nonlinearly on an acceleration)")
-    idx = lambda v, ks: _vc(*[v[k] for k in ks]) if ks else ca.SX(0, 1)
+    idx = lambda v, ks: v[ks] if ks else ca.SX(0, 1)
     qM, qdM, qddM = idx(q, massive), idx(qd, massive), idx(qdd, massive)
     A_MM = A[massive, massive] if massive else ca.SX(0, 0)
     if nc:
@@ -251,8 +251,7 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
         else:
             qdd_M = ca.solve(A_MM, -R0M)
         qdd_sol = ca.SX.zeros(nq)
-        for i, k in enumerate(massive):
-            qdd_sol[k] = qdd_M[i]
+        qdd_sol[massive] = qdd_M
     # massless coordinates: algebraic velocity (a damper holds them) or position (springs only)
     vel_alg = [k for k in massless if ca.depends_on(R0[k], qd[k])]
     pos_alg = [k for k in massless if k not in vel_alg]
@@ -275,8 +274,7 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
         J2 = ca.jacobian(ddR, qddP)
         qddP_sol = ca.solve(J2, -ca.substitute(ddR, qddP, ca.SX.zeros(len(pos_alg))))
         out.extra_from, out.extra_to = [qdP], [qdP_sol]
-        for i, k in enumerate(pos_alg):
-            qdd_sol[k] = qddP_sol[i]
+        qdd_sol[pos_alg] = qddP_sol
         if ca.depends_on(_vc(out.qdd_diff, out.alg_res), qdP):
             out.qdd_diff, out.alg_res = ca.substitute([out.qdd_diff, out.alg_res], [qdP], [qdP_sol])
     out.qdd = qdd_sol
@@ -298,9 +296,10 @@ def _port_flows(ws, tree, explicit, lam_tree, lam_loop):
 
     def add(p, v):
         if p not in total:
-            total[p] = ca.SX(0)
+            total[p] = v
             order.append(p)
-        total[p] = total[p] + v
+        else:
+            total[p] = total[p] + v
 
     k = 0
     for p, _ in ws.flows:
@@ -373,4 +372,5 @@ def _recorded(flat, ws, tree):
         rec(c.path, s)
     for c, e in ws.outputs:
         rec(c.path, e)
-    return names, (_vc(*[ca.vec(e) for e in exprs]) if exprs else ca.SX(0, 1)), units
+    return names, (_vc(*[e if e.size2() == 1 else ca.vec(e) for e in exprs]) if exprs
+                   else ca.SX(0, 1)), units

@@ -14,7 +14,7 @@ from ..core.errors import StructureError
 from ..core.interface import Input, Output
 from ..core.ports import Domain, PhysicalPort, Port, RealInput, RealOutput
 from .kinematics import InternalNode, LinearRelation
-from .symbolic import der_with
+from .symbolic import der_with, sx
 
 
 @dataclass
@@ -49,6 +49,13 @@ class Workspace:
     variables: list = field(default_factory=list)           # (name, expr, unit)
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
+
+    def is_varying(self, ex: ca.SX) -> bool:
+        """Whether ``ex`` depends on time, states, signals or inputs (not only parameters)."""
+        if ex.is_constant():
+            return False
+        names = self.der_table
+        return any(s.name() == "t" or s.name() in names for s in ca.symvar(ex))
 
     def signal(self, port: Port) -> ca.SX:
         """The placeholder standing for the value of a signal port."""
@@ -107,8 +114,9 @@ class StructureBuilder(_Base):
         """
         for p in coeffs:
             self._mine(p)
+        varying = isinstance(rhs, ca.SX) and self._ws.is_varying(rhs)
         self._ws.relations.append(LinearRelation(self._owner, list(coeffs), list(coeffs.values()),
-                                                 rhs, name or f"{self._owner.path}"))
+                                                 rhs, name or f"{self._owner.path}", varying))
 
     def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
              preferred: bool = True) -> InternalNode:
@@ -129,7 +137,7 @@ class StructureBuilder(_Base):
         info = StateInfo(s, float(start), unit, description, self._owner)
         self._ws.states.append(info)
         if der is not None:
-            info.der = ca.SX(der)
+            info.der = sx(der)
             self._ws.der_table[s.name()] = info.der
         else:
             d = ca.SX.sym(f"der({s.name()})")
@@ -170,7 +178,7 @@ class PhysicsBuilder(_Base):
         ``port``, positive into the component (Modelica's sign): the component pushes the
         connection with −value."""
         self._mine(port)
-        self._ws.flows.append((port, ca.SX(value)))
+        self._ws.flows.append((port, sx(value)))
 
     def cut_flow(self, port: PhysicalPort) -> ca.SX:
         """The total flow through one of this component's ports (force [N] / torque [N.m],
@@ -183,11 +191,11 @@ class PhysicsBuilder(_Base):
 
     def kinetic_energy(self, T) -> None:
         """Add kinetic energy [J], a function of port velocities and positions."""
-        self._ws.kinetic.append(ca.SX(T))
+        self._ws.kinetic.append(sx(T))
 
     def potential_energy(self, V) -> None:
         """Add potential energy [J] (conservative forces: generalized force −∂V/∂q)."""
-        self._ws.potential.append(ca.SX(V))
+        self._ws.potential.append(sx(V))
 
     def derivative(self, state: ca.SX, expr) -> None:
         """Set the time derivative of an internal state declared in structure()."""
@@ -199,21 +207,21 @@ class PhysicsBuilder(_Base):
                                  f"state declared in structure()")
         if info.der is not None:
             raise StructureError(f"{self._owner.path}: derivative of '{state.name()}' given twice")
-        info.der = ca.SX(expr)
+        info.der = sx(expr)
 
     def residual(self, expr) -> None:
         """Add an equation expr = 0 (for algebraic variables)."""
-        self._ws.residuals.append((self._owner, ca.SX(expr)))
+        self._ws.residuals.append((self._owner, sx(expr)))
 
     def output(self, port: RealOutput, expr) -> None:
         """Set the value of a signal output."""
         self._mine(port)
         self._ws.signal(port)
-        self._ws.signal_expr[port] = ca.SX(expr)
+        self._ws.signal_expr[port] = sx(expr)
 
     def variable(self, name: str, expr, unit: str = "", description: str = "") -> None:
         """Record ``expr`` as ``<component>.<name>`` in results."""
-        self._ws.variables.append((self._name(name), ca.SX(expr), unit, description))
+        self._ws.variables.append((self._name(name), sx(expr), unit, description))
 
     def model_input(self, comp: Input) -> ca.SX:
         u = ca.SX.sym(comp.path)
@@ -222,4 +230,4 @@ class PhysicsBuilder(_Base):
         return u
 
     def model_output(self, comp: Output, expr) -> None:
-        self._ws.outputs.append((comp, ca.SX(expr)))
+        self._ws.outputs.append((comp, sx(expr)))

@@ -20,7 +20,7 @@ import casadi as ca
 
 from ..core.errors import StructureError
 from ..core.ports import Domain, PhysicalPort
-from .symbolic import der_with
+from .symbolic import combine, der_with
 
 
 class InternalNode(PhysicalPort):
@@ -60,37 +60,43 @@ class LinearRelation:
     """Σ a_i · pos(port_i) = b for 1-D ports: rigid offsets, gears, prescribed motion.
 
     The coefficients a_i may depend on parameters only; b on parameters, time, internal
-    states and signals (prescribed motion). The flow at port i is a_i·λ, λ the reaction.
+    states and signals (prescribed motion: ``varying``). The flow at port i is a_i·λ, λ the
+    reaction.
     """
     dim = 1
 
-    def __init__(self, owner, ports: list[PhysicalPort], coeffs: list, rhs, name: str = ""):
+    def __init__(self, owner, ports: list[PhysicalPort], coeffs: list, rhs, name: str = "",
+                 varying: bool = True):
         for p in ports:
             if p.domain.dim != 1:
                 raise StructureError(f"{owner.path}: a linear relation joins 1-D ports; "
                                      f"'{p.path}' is {p.kind}")
-        self.owner, self.ports, self.coeffs = owner, list(ports), [ca.SX(c) for c in coeffs]
-        self.rhs = ca.SX(rhs)
+        self.owner, self.ports = owner, list(ports)
+        self.coeffs = [c if isinstance(c, ca.SX) else float(c) for c in coeffs]
+        self.rhs = rhs if isinstance(rhs, ca.SX) else float(rhs)
+        self.varying = varying
         self.name = name or f"{owner.path}: relation"
         self.nodes: list[Node] = []
 
     def solve(self, j: int, der, eps: ca.SX) -> tuple[ca.SX, ca.SX, ca.SX]:
         """Position, velocity, acceleration of node j from the others and the relaxation eps."""
         a = self.coeffs
-        b, bd = self.rhs, der(self.rhs)
-        bdd = der(bd)
+        b = self.rhs
+        bd = der(b) if self.varying else 0.0
+        bdd = der(bd) if self.varying else 0.0
         e, ed, edd = eps
         others = [i for i in range(len(a)) if i != j]
-        pos = (b + e - sum((a[i] * self.nodes[i].pos for i in others), ca.SX(0))) / a[j]
-        vel = (bd + ed - sum((a[i] * self.nodes[i].vel for i in others), ca.SX(0))) / a[j]
-        acc = (bdd + edd - sum((a[i] * self.nodes[i].acc for i in others), ca.SX(0))) / a[j]
+        neg = [(-a[i] if isinstance(a[i], float) else -a[i], i) for i in others]
+        pos = combine(b, [(1, e)] + [(c, self.nodes[i].pos) for c, i in neg], a[j])
+        vel = combine(bd, [(1, ed)] + [(c, self.nodes[i].vel) for c, i in neg], a[j])
+        acc = combine(bdd, [(1, edd)] + [(c, self.nodes[i].acc) for c, i in neg], a[j])
         return pos, vel, acc
 
     def residual(self) -> ca.SX:
-        return sum((a * n.pos for a, n in zip(self.coeffs, self.nodes)), ca.SX(0)) - self.rhs
+        return combine(-self.rhs, [(a, n.pos) for a, n in zip(self.coeffs, self.nodes)])
 
     def flows(self, lam: ca.SX) -> list[tuple[PhysicalPort, ca.SX]]:
-        return [(p, a * lam) for p, a in zip(self.ports, self.coeffs)]
+        return [(p, combine(0, [(a, lam)])) for p, a in zip(self.ports, self.coeffs)]
 
 
 @dataclass
@@ -171,8 +177,12 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
             q.append(s); qd.append(v); qdd.append(a)
             q_names.append(qname); qd_names.append(vname)
         n.coordinate = idx
-        n.pos, n.vel, n.acc = (ca.vertcat(*[q[i] for i in idx]), ca.vertcat(*[qd[i] for i in idx]),
-                               ca.vertcat(*[qdd[i] for i in idx]))
+        if len(idx) == 1:
+            n.pos, n.vel, n.acc = q[idx[0]], qd[idx[0]], qdd[idx[0]]
+        else:
+            n.pos, n.vel, n.acc = (ca.vertcat(*[q[i] for i in idx]),
+                                   ca.vertcat(*[qd[i] for i in idx]),
+                                   ca.vertcat(*[qdd[i] for i in idx]))
         propagate([n])
     for r in relations:               # relations among nodes that were all known already
         if id(r) not in used:
