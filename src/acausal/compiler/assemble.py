@@ -22,7 +22,7 @@ from .builders import PhysicsBuilder, StructureBuilder, Workspace
 from .compiled import CompiledModel, Equations
 from .flatten import flatten
 from .kinematics import InternalNode, Node, build_tree
-from .symbolic import der_with, substitute_all
+from .symbolic import UnknownDerivative, der_with, substitute_all
 
 _vc = ca.vertcat
 
@@ -87,22 +87,19 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
     R = der_with(ca.gradient(T, qda), ws.der_table) - ca.gradient(T, qa) + ca.gradient(V, qa)
     if ws.flows:
         v = _vc(*[ws.node_of[p].vel for p, _ in ws.flows])
-        f = _vc(*[-ca.vec(fl) for _, fl in ws.flows])        # force on the node: −flow
-        R = R - ca.jtimes(v, qda, f, True)
+        f = _vc(*[fl for _, fl in ws.flows])                 # flow into the component
+        R = R + ca.jtimes(v, qda, f, True)                   # node force is −flow
     loops = tree.loops
-    phi = _vc(*[r.residual() for r in loops]) if loops else ca.SX(0, 1)
+    phi = tree.loop_residual
     phi_eps = ca.jacobian(phi, eps)
 
-    # ---- everything that is an expression of the model, resolved together --------------
-    names, exprs, units = _recorded(flat, ws, tree)
+    # ---- signals, state derivatives, relaxations: substituted -------------------------
+    resolve = _resolver(ws, eps, epsd, epsdd)
     pieces = [R, phi, phi_eps, _vc(*[i.der for i in ws.states]) if ws.states else ca.SX(0, 1),
               _vc(*[r for _, r in ws.residuals]) if ws.residuals else ca.SX(0, 1),
-              _vc(*[e for _, e in ws.outputs]) if ws.outputs else ca.SX(0, 1), exprs,
-              _vc(*[ca.vec(fl) for _, fl in ws.flows]) if ws.flows else ca.SX(0, 1)]
-    pieces = _resolve(ws, pieces)
-    zero = ca.SX.zeros(eps.numel())
-    pieces = ca.substitute(pieces, [eps, epsd, epsdd], [zero, zero, zero])
-    R, phi, phi_eps, zdot, g_alg, y_out, exprs, explicit = pieces
+              _vc(*[e for _, e in ws.outputs]) if ws.outputs else ca.SX(0, 1),
+              _vc(*[fl for _, fl in ws.flows]) if ws.flows else ca.SX(0, 1)]
+    R, phi, phi_eps, zdot, g_alg, y_out, explicit = resolve(pieces)
     R_q, R_eps = R[:nq], R[nq:]
 
     cut = _vc(*ws.cut_flow_sym.values()) if ws.cut_flow_sym else ca.SX(0, 1)
@@ -112,37 +109,47 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
                              "yet: measure the force elsewhere (e.g. a spring's f)")
     eq = _solve_motion(tree, R_q, phi, t, ws, baumgarte)
     lam_tree = -(R_eps + ca.mtimes(phi_eps.T, eq.lam)) if eps.numel() else ca.SX(0, 1)
-    flows, flow_of = _port_flows(ws, tree, explicit, lam_tree, eq.lam)
-    if ws.cut_flow_sym:
-        values = _vc(*[flow_of[p] for p in ws.cut_flow_sym])
-        zdot, g_alg, y_out, exprs, values = ca.substitute(
-            [zdot, g_alg, y_out, exprs, values], [cut], [values])
-        flows = [(n, ca.substitute(e, cut, values)) for n, e in flows]
-        if ca.depends_on(values, cut):
-            raise StructureError("force sensors measure each other in a loop; not supported")
+    sub_from = [tree.qdd] + eq.extra_from
+    sub_to = [eq.qdd] + eq.extra_to
 
-    # ---- states, algebraic variables, recorded values ---------------------------------
+    def flows():
+        return _port_flows(ws, tree, explicit, lam_tree, eq.lam)
+
+    cut_values = ca.SX(0, 1)
+    if ws.cut_flow_sym:
+        _, flow_of = flows()
+        cut_values = _vc(*[flow_of[p] for p in ws.cut_flow_sym])
+        if ca.depends_on(cut_values, cut):
+            raise StructureError("force sensors measure each other in a loop; not supported")
+        zdot, g_alg, y_out = ca.substitute([zdot, g_alg, y_out], [cut], [cut_values])
+    zdot, g_alg, y_out = ca.substitute([zdot, g_alg, y_out], sub_from, sub_to)
+
+    def recorded():
+        """Every potential, velocity, flow, state, variable and signal, by name (built on
+        first use: large models need not pay for it to be simulated or exported)."""
+        names, exprs, units = _recorded(flat, ws, tree)
+        fl, _ = flows()
+        names += [n for n, _ in fl]
+        units += _flow_units(fl)
+        exprs = resolve([_vc(exprs, *[e for _, e in fl])])[0]
+        exprs = ca.substitute([ca.substitute(exprs, cut, cut_values)], sub_from, sub_to)[0]
+        return names, exprs, units
+
+    # ---- states, algebraic variables ----------------------------------------------------
     z_states = _vc(*[i.sym for i in ws.states]) if ws.states else ca.SX(0, 1)
     z_alg = _vc(*[a.sym for a in ws.algebraics]) if ws.algebraics else ca.SX(0, 1)
     u = _vc(*[s for _, s in ws.inputs]) if ws.inputs else ca.SX(0, 1)
     p = _vc(*[s for s, *_ in params]) if params else ca.SX(0, 1)
-    flow_names = [n for n, _ in flows]
-    all_names = names + flow_names
-    all_exprs = _vc(exprs, *[e for _, e in flows]) if flows else exprs
-    units += [u_ for u_ in _flow_units(flows)]
-    sub_from = [tree.qdd] + eq.extra_from
-    sub_to = [eq.qdd] + eq.extra_to
-    all_exprs, zdot, g_alg, y_out = ca.substitute([all_exprs, zdot, g_alg, y_out], sub_from, sub_to)
-
     x = _vc(eq.q_diff, eq.qd_diff, z_states)
     ode = _vc(eq.q_diff_dot, eq.qdd_diff, zdot)
     alg_vars = _vc(eq.alg_vars, z_alg)
     alg = _vc(eq.alg_res, g_alg)
-    bad = ca.symvar(_vc(ode, alg, all_exprs, y_out))
-    allowed = {s.name() for s in ca.symvar(_vc(t, x, alg_vars, p, u))}
-    leftover = [s.name() for s in bad if s.name() not in allowed]
-    if leftover:
-        raise StructureError(f"internal: unresolved symbols {leftover[:5]} (please report)")
+    resolve.check([ode, alg, y_out])
+    check = ca.Function("check", [t, x, alg_vars, p, u], [ode, alg, y_out],
+                        {"allow_free": True})
+    if check.has_free():
+        raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
+                             f"(please report)")
 
     return CompiledModel(
         name=model.name or type(model).__name__, t=t, x=x, z=alg_vars, p=p, u=u,
@@ -153,17 +160,39 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
         params=[(s.name(), d, par.unit, par.description, par) for s, d, par, _ in params],
         inputs=[(c.path, c.start, c.unit, c.description) for c, _ in ws.inputs],
         outputs=[(c.path, c.unit, c.description) for c, _ in ws.outputs], y=y_out,
-        recorded_names=all_names, recorded=all_exprs, recorded_units=units,
+        recorder=recorded,
         equations=Equations(q=tree.q, qd=tree.qd, qdd=tree.qdd, M=eq.M, R0=eq.R0,
                             phi=phi, q_names=tree.q_names, qd_names=tree.qd_names, t=t, p=p, u=u,
                             z=z_states),
         coordinates=tree.q_names,
-        kinematic_equations=eq.kin,
     )
 
 
-def _resolve(ws: Workspace, pieces: list) -> list:
-    """Substitute signal placeholders, their rates and state-derivative placeholders."""
+class _Resolver:
+    """Substitutes signal placeholders (and their rates), state-derivative placeholders and
+    the relaxations ε (by zero) in any expression, with values resolved once."""
+
+    def __init__(self, syms, vals, zeros_for, failed):
+        self.syms, self.failed = syms, failed
+        self.sv = _vc(*syms) if syms else ca.SX(0, 1)
+        self.vals = _vc(*vals) if vals else ca.SX(0, 1)
+        self.zeros_for = zeros_for
+
+    def __call__(self, pieces: list) -> list:
+        if self.syms:
+            pieces = ca.substitute(pieces, [self.sv], [self.vals])
+        z = [ca.SX.zeros(v.numel()) for v in self.zeros_for]
+        pieces = ca.substitute(pieces, self.zeros_for, z)
+        self.check(pieces)
+        return pieces
+
+    def check(self, pieces):
+        for sym, err in self.failed:
+            if any(ca.depends_on(x, sym) for x in pieces):
+                raise err
+
+
+def _resolver(ws: Workspace, eps, epsd, epsdd) -> _Resolver:
     missing = [o for o in ws.signal_sym if o not in ws.signal_expr]
     if missing:
         o = missing[0]
@@ -177,30 +206,28 @@ def _resolve(ws: Workspace, pieces: list) -> list:
         if info.placeholder is not None:
             syms.append(info.placeholder)
             vals.append(info.der)
-    # rates of signals, only those some expression needs
-    used = {s.name() for s in ca.symvar(_vc(*[ca.vec(x) for x in pieces + vals]))}
-    sig_by_name = {s.name(): (s, v) for s, v in zip(syms, vals)}
-    extra_s, extra_v = [], []
-    todo = [n for n in used if n.startswith("der(sig:")]
-    resolved_cache = {}
-    while todo:
-        name = todo.pop()
-        base = name[4:-1]
-        if base in sig_by_name:
-            s_base, v_base = sig_by_name[base]
-        else:
-            s_base = next(x for x in extra_s if x.name() == base)
-            v_base = extra_v[extra_s.index(s_base)]
-        if base not in resolved_cache:
-            resolved_cache[base] = substitute_all([v_base], syms + extra_s, vals + extra_v)[0]
-        rate = der_with(resolved_cache[base], ws.der_table)
-        s = ws.der_table[base]
-        extra_s.append(s)
-        extra_v.append(rate)
-        for n in ca.symvar(rate):
-            if n.name().startswith("der(sig:") and n.name() not in {x.name() for x in extra_s}:
-                todo.append(n.name())
-    return substitute_all(pieces, syms + extra_s, vals + extra_v)
+    vals = substitute_all(vals, syms, vals) if syms else vals
+    # rates of signals (prescribed motion): d/dt of the resolved signal expressions
+    failed = []
+    by_name = {s.name(): v for s, v in zip(syms, vals)}
+    for name in list(ws.der_table):
+        if not name.startswith("sig:"):
+            continue
+        level, base, value = ws.der_table[name], name, by_name[name]
+        while level is not None and level.name().startswith("der("):
+            try:
+                value = resolve_once(der_with(value, ws.der_table), syms, vals)
+            except UnknownDerivative as e:
+                failed.append((level, e))
+                break
+            syms.append(level)
+            vals.append(value)
+            level = ws.der_table.get(level.name())
+    return _Resolver(syms, vals, [eps, epsd, epsdd], failed)
+
+
+def resolve_once(ex, syms, vals):
+    return ca.substitute([ex], [_vc(*syms)], [_vc(*vals)])[0] if syms else ex
 
 
 class _Motion:
@@ -215,7 +242,6 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
     out = _Motion()
     out.M, out.R0 = A, R0
     out.extra_from, out.extra_to = [], []
-    out.kin = {}
     sp = A.sparsity()
     row_nnz = [0] * nq
     for r in sp.get_triplet()[0]:
@@ -301,21 +327,14 @@ def _port_flows(ws, tree, explicit, lam_tree, lam_loop):
         else:
             total[p] = total[p] + v
 
-    k = 0
-    for p, _ in ws.flows:
-        d = p.domain.dim
-        add(p, explicit[k:k + d])
-        k += d
-    k = 0
-    for r, *_ in tree.fired:
-        for p, v in r.flows(lam_tree[k:k + r.dim]):
+    for (p, _), v in zip(ws.flows, _split(explicit, [p.domain.dim for p, _ in ws.flows])):
+        add(p, v)
+    for (r, *_), lam in zip(tree.fired, _split(lam_tree, [r.dim for r, *_ in tree.fired])):
+        for p, v in r.flows(lam):
             add(p, v)
-        k += r.dim
-    k = 0
-    for r in tree.loops:
-        for p, v in r.flows(lam_loop[k:k + r.dim]):
+    for r, lam in zip(tree.loops, _split(lam_loop, [r.dim for r in tree.loops])):
+        for p, v in r.flows(lam):
             add(p, v)
-        k += r.dim
     out = []
     for p in order:
         if isinstance(p, InternalNode):
@@ -324,6 +343,16 @@ def _port_flows(ws, tree, explicit, lam_tree, lam_loop):
             out.append((f"{p.path}.{fname}", total[p][j] if p.domain.dim > 1 else total[p]))
     flow_of = {p: total.get(p, ca.SX.zeros(p.domain.dim)) for p in ws.cut_flow_sym}
     return out, flow_of
+
+
+def _split(v: ca.SX, dims: list[int]) -> list[ca.SX]:
+    """Consecutive pieces of v with the given sizes (one call: slicing costs per piece)."""
+    if all(d == 1 for d in dims):
+        return ca.vertsplit(v) if dims else []
+    offsets = [0]
+    for d in dims:
+        offsets.append(offsets[-1] + d)
+    return ca.vertsplit(v, offsets)
 
 
 def _flow_units(flows):

@@ -50,13 +50,6 @@ class Workspace:
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
 
-    def is_varying(self, ex: ca.SX) -> bool:
-        """Whether ``ex`` depends on time, states, signals or inputs (not only parameters)."""
-        if ex.is_constant():
-            return False
-        names = self.der_table
-        return any(s.name() == "t" or s.name() in names for s in ca.symvar(ex))
-
     def signal(self, port: Port) -> ca.SX:
         """The placeholder standing for the value of a signal port."""
         src = self.source.get(port, port) if isinstance(port, RealInput) else port
@@ -114,9 +107,8 @@ class StructureBuilder(_Base):
         """
         for p in coeffs:
             self._mine(p)
-        varying = isinstance(rhs, ca.SX) and self._ws.is_varying(rhs)
         self._ws.relations.append(LinearRelation(self._owner, list(coeffs), list(coeffs.values()),
-                                                 rhs, name or f"{self._owner.path}", varying))
+                                                 rhs, name or f"{self._owner.path}"))
 
     def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
              preferred: bool = True) -> InternalNode:

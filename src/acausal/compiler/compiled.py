@@ -65,12 +65,9 @@ class CompiledModel:
     inputs: list            # (name, start, unit, description)
     outputs: list           # (name, unit, description)
     y: ca.SX
-    recorded_names: list
-    recorded: ca.SX
-    recorded_units: list
+    recorder: object        # () -> (names, expressions, units) of every recorded variable
     equations: Equations
     coordinates: list
-    kinematic_equations: dict = field(default_factory=dict)
     _cache: dict = field(default_factory=dict, repr=False)
 
     # ---- names ----------------------------------------------------------------------------
@@ -100,6 +97,26 @@ class CompiledModel:
             par = self.params[self.param_names.index(name)][4]
             values[name] = par.check(v, name.rsplit(".", 1)[0])
         return np.array([values[n] for n in self.param_names], dtype=float)
+
+    # ---- recorded variables (built on first use) -------------------------------------------
+    def _recorded(self):
+        if "recorded" not in self._cache:
+            self._cache["recorded"] = self.recorder()
+        return self._cache["recorded"]
+
+    @property
+    def recorded_names(self) -> list[str]:
+        """Dotted names of every variable a Result holds."""
+        return self._recorded()[0]
+
+    @property
+    def recorded(self) -> ca.SX:
+        """Expressions (in t, x, z, p, u) of the recorded variables, stacked."""
+        return self._recorded()[1]
+
+    @property
+    def recorded_units(self) -> list[str]:
+        return self._recorded()[2]
 
     # ---- CasADi objects ---------------------------------------------------------------------
     @property

@@ -42,6 +42,7 @@ class Node:
     vel: ca.SX | None = None
     acc: ca.SX | None = None
     coordinate: list[int] | None = None          # indices of q if this node is a free root
+    form: dict | None = None                     # linear form of pos over the tree's atoms
 
     @property
     def domain(self) -> Domain:
@@ -59,14 +60,13 @@ class Node:
 class LinearRelation:
     """Σ a_i · pos(port_i) = b for 1-D ports: rigid offsets, gears, prescribed motion.
 
-    The coefficients a_i may depend on parameters only; b on parameters, time, internal
-    states and signals (prescribed motion: ``varying``). The flow at port i is a_i·λ, λ the
-    reaction.
+    The coefficients a_i are numbers or expressions of parameters; b may also depend on
+    time, internal states and signals (prescribed motion). The flow at port i is a_i·λ, λ
+    the reaction.
     """
     dim = 1
 
-    def __init__(self, owner, ports: list[PhysicalPort], coeffs: list, rhs, name: str = "",
-                 varying: bool = True):
+    def __init__(self, owner, ports: list[PhysicalPort], coeffs: list, rhs, name: str = ""):
         for p in ports:
             if p.domain.dim != 1:
                 raise StructureError(f"{owner.path}: a linear relation joins 1-D ports; "
@@ -74,29 +74,93 @@ class LinearRelation:
         self.owner, self.ports = owner, list(ports)
         self.coeffs = [c if isinstance(c, ca.SX) else float(c) for c in coeffs]
         self.rhs = rhs if isinstance(rhs, ca.SX) else float(rhs)
-        self.varying = varying
         self.name = name or f"{owner.path}: relation"
         self.nodes: list[Node] = []
 
-    def solve(self, j: int, der, eps: ca.SX) -> tuple[ca.SX, ca.SX, ca.SX]:
-        """Position, velocity, acceleration of node j from the others and the relaxation eps."""
-        a = self.coeffs
-        b = self.rhs
-        bd = der(b) if self.varying else 0.0
-        bdd = der(bd) if self.varying else 0.0
-        e, ed, edd = eps
-        others = [i for i in range(len(a)) if i != j]
-        neg = [(-a[i] if isinstance(a[i], float) else -a[i], i) for i in others]
-        pos = combine(b, [(1, e)] + [(c, self.nodes[i].pos) for c, i in neg], a[j])
-        vel = combine(bd, [(1, ed)] + [(c, self.nodes[i].vel) for c, i in neg], a[j])
-        acc = combine(bdd, [(1, edd)] + [(c, self.nodes[i].acc) for c, i in neg], a[j])
-        return pos, vel, acc
+    def solve(self, j: int, atoms: "Atoms", eps: int) -> dict:
+        """Linear form of node j's position from the other nodes', the rhs and the relaxation
+        atom ``eps``: pos_j = (b + ε − Σ_{i≠j} a_i pos_i) / a_j."""
+        form = {eps: 1.0}
+        _axpy(form, 1.0, atoms.constant(self.rhs))
+        for i, (a, n) in enumerate(zip(self.coeffs, self.nodes)):
+            if i != j:
+                _axpy(form, -a, n.form)
+        return _scale(form, self.coeffs[j])
 
-    def residual(self) -> ca.SX:
-        return combine(-self.rhs, [(a, n.pos) for a, n in zip(self.coeffs, self.nodes)])
+    def residual(self, atoms: "Atoms") -> dict:
+        """Linear form of Σ a_i pos_i − b (a loop-closing constraint)."""
+        form = {}
+        for a, n in zip(self.coeffs, self.nodes):
+            _axpy(form, a, n.form)
+        _axpy(form, -1.0, atoms.constant(self.rhs))
+        return form
 
     def flows(self, lam: ca.SX) -> list[tuple[PhysicalPort, ca.SX]]:
         return [(p, combine(0, [(a, lam)])) for p, a in zip(self.ports, self.coeffs)]
+
+
+def _axpy(form: dict, a, other: dict) -> None:
+    """form += a · other (linear forms: atom index -> coefficient)."""
+    for k, c in other.items():
+        v = c if (isinstance(a, float) and a == 1.0) else a * c
+        form[k] = form[k] + v if k in form else v
+
+
+def _scale(form: dict, a) -> dict:
+    if isinstance(a, float) and a == 1.0:
+        return form
+    return {k: c / a for k, c in form.items()}
+
+
+class Atoms:
+    """The independent quantities node positions are linear in: coordinates, relaxations ε,
+    and right-hand sides of relations (constants and prescribed motions). Each has a position,
+    velocity and acceleration expression."""
+
+    def __init__(self):
+        self.pos, self.vel, self.acc = [], [], []
+        self.rhs = []                  # indices of atoms whose rates are derived in bulk
+        self._const = {}
+
+    def add(self, pos, vel, acc) -> int:
+        self.pos.append(pos); self.vel.append(vel); self.acc.append(acc)
+        return len(self.pos) - 1
+
+    def constant(self, b) -> dict:
+        """Linear form of a relation's rhs b: nothing for 0, an atom otherwise."""
+        if isinstance(b, float):
+            if b == 0.0:
+                return {}
+            key = ("num", b)
+            if key not in self._const:
+                self._const[key] = self.add(ca.SX(b), ca.SX(0), ca.SX(0))
+            return {self._const[key]: 1.0}
+        k = self.add(b, None, None)
+        self.rhs.append(k)
+        return {k: 1.0}
+
+    def materialize(self, der) -> tuple[ca.SX, ca.SX, ca.SX]:
+        """Stacked position, velocity and acceleration of all atoms (rates of the rhs atoms
+        by one total-derivative call on all of them)."""
+        if self.rhs:
+            b = ca.vertcat(*[self.pos[k] for k in self.rhs])
+            bd = der(b)
+            bds, bdds = ca.vertsplit(bd), ca.vertsplit(der(bd))
+            for i, k in enumerate(self.rhs):
+                self.vel[k], self.acc[k] = bds[i], bdds[i]
+        return (ca.vertcat(*self.pos), ca.vertcat(*self.vel), ca.vertcat(*self.acc))
+
+
+def _forms_to_matrix(forms: list[dict], n_atoms: int):
+    """Sparse matrix S with S[i, k] = forms[i][k] (DM when every coefficient is a number)."""
+    rows, cols, vals = [], [], []
+    for i, f in enumerate(forms):
+        for k, c in f.items():
+            rows.append(i); cols.append(k); vals.append(c)
+    sp = ca.Sparsity.triplet(len(forms), n_atoms, rows, cols)
+    if all(isinstance(v, float) for v in vals):
+        return ca.DM(sp, ca.DM(vals) if vals else ca.DM(0, 1))
+    return ca.SX(sp, ca.vertcat(*[ca.SX(v) for v in vals]))
 
 
 @dataclass
@@ -110,6 +174,7 @@ class Tree:
     qd_names: list[str]
     fired: list = field(default_factory=list)      # (relation, eps, epsd, epsdd)
     loops: list = field(default_factory=list)      # relations that close loops
+    loop_residual: ca.SX = None                    # Φ of the loop relations, stacked
 
 
 def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
@@ -123,13 +188,14 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
         for n in r.nodes:
             by_node[n.index].append(r)
     used = set()
+    atoms = Atoms()
     q, qd, qdd, q_names, qd_names = [], [], [], [], []
     fired, loops = [], []
-    def der(ex):
-        return der_with(ex, der_table)
+    for n in nodes:
+        n.form = None
 
     def visit(r):
-        unknown = [i for i, n in enumerate(r.nodes) if n.pos is None]
+        unknown = [i for i, n in enumerate(r.nodes) if n.form is None]
         if len(unknown) > 1:
             return None
         used.add(id(r))
@@ -139,9 +205,9 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
         j = unknown[0]
         k = len(fired)
         e, ed, edd = (ca.SX.sym(f"eps{k}"), ca.SX.sym(f"epsd{k}"), ca.SX.sym(f"epsdd{k}"))
-        der_table[e.name()], der_table[ed.name()] = ed, edd
+        der_table[e.name()], der_table[ed.name()], der_table[edd.name()] = ed, edd, None
         node = r.nodes[j]
-        node.pos, node.vel, node.acc = r.solve(j, der, (e, ed, edd))
+        node.form = r.solve(j, atoms, atoms.add(e, ed, edd))
         fired.append((r, e, ed, edd))
         return node
 
@@ -155,40 +221,43 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
                     if new is not None:
                         stack.append(new)
 
-    # ground: relations with no unknown besides one node fire first
-    propagate_roots = []
+    grounded = []                     # relations that fix a node by themselves fire first
     for r in relations:
-        if id(r) not in used and len({n.index for n in r.nodes}) == 1 and len(r.nodes) == 1:
+        if len(r.nodes) == 1 and id(r) not in used:
             new = visit(r)
             if new is not None:
-                propagate_roots.append(new)
-    propagate(propagate_roots)
+                grounded.append(new)
+    propagate(grounded)
     order = [n for n in nodes if n.preferred] + [n for n in nodes if not n.preferred]
     for n in order:
-        if n.pos is not None:
+        if n.form is not None:
             continue
-        idx = []
-        for k, pname in enumerate(n.domain.potentials):
-            qname = n.name if _is_named_state(n) and n.domain.dim == 1 else f"{n.name}.{pname}"
-            vname = _velocity_name(n, qname)
-            s, v, a = ca.SX.sym(qname), ca.SX.sym(vname), ca.SX.sym(f"der({vname})")
-            der_table[s.name()], der_table[v.name()] = v, a
-            idx.append(len(q))
-            q.append(s); qd.append(v); qdd.append(a)
-            q_names.append(qname); qd_names.append(vname)
-        n.coordinate = idx
-        if len(idx) == 1:
-            n.pos, n.vel, n.acc = q[idx[0]], qd[idx[0]], qdd[idx[0]]
-        else:
-            n.pos, n.vel, n.acc = (ca.vertcat(*[q[i] for i in idx]),
-                                   ca.vertcat(*[qd[i] for i in idx]),
-                                   ca.vertcat(*[qdd[i] for i in idx]))
+        if n.domain.dim != 1:
+            raise StructureError(f"'{n.name}': {n.domain.name} frames are not supported yet")
+        qname = n.name if _is_named_state(n) else f"{n.name}.{n.domain.potentials[0]}"
+        vname = _velocity_name(n, qname)
+        s, v, a = ca.SX.sym(qname), ca.SX.sym(vname), ca.SX.sym(f"der({vname})")
+        der_table[s.name()], der_table[v.name()], der_table[a.name()] = v, a, None
+        n.coordinate = [len(q)]
+        q.append(s); qd.append(v); qdd.append(a)
+        q_names.append(qname); qd_names.append(vname)
+        n.form = {atoms.add(s, v, a): 1.0}
         propagate([n])
     for r in relations:               # relations among nodes that were all known already
         if id(r) not in used:
             visit(r)
-    return Tree(nodes, ca.vertcat(*q) if q else ca.SX(0, 1), ca.vertcat(*qd) if qd else ca.SX(0, 1),
-                ca.vertcat(*qdd) if qdd else ca.SX(0, 1), q_names, qd_names, fired, loops)
+
+    # materialize: every node's motion is a sparse linear map of the atoms' motion
+    forms = [n.form for n in nodes] + [r.residual(atoms) for r in loops]
+    S = _forms_to_matrix(forms, len(atoms.pos))
+    P, Vv, A = atoms.materialize(lambda ex: der_with(ex, der_table))
+    pos, vel, acc = (ca.vertsplit(ca.mtimes(S, X)) for X in (P, Vv, A))
+    for i, n in enumerate(nodes):
+        n.pos, n.vel, n.acc = pos[i], vel[i], acc[i]
+    nn = len(nodes)
+    residual = ca.vertcat(*pos[nn:]) if loops else ca.SX(0, 1)
+    vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)
+    return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, residual)
 
 
 def _is_named_state(n: Node) -> bool:

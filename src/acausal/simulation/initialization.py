@@ -2,9 +2,9 @@
 
 The given values are hard equations v_i(x, z) = value_i; closed loops add Φ = 0 and Φ̇ = 0;
 algebraic equations 0 = alg hold. Among the states that satisfy them, the ones chosen are
-closest (least squares) to the states' start values. Solved by Gauss–Newton on the hard
-equations with the soft ones projected onto their null space; exact in one step for linear
-(1-D) kinematics.
+closest (least squares) to the states' start values: each iteration projects the start values
+onto the equations linearized at the current point (exact in one step for 1-D kinematics).
+The cost grows with the number of equations k (a k × k system), not with the model size.
 """
 from __future__ import annotations
 
@@ -19,11 +19,10 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
     w = ca.vertcat(model.x, model.z)
     nx = model.x.numel()
     hard, labels, targets = [], [], []
+    direct = dict(zip(model.x_names + model.z_names, ca.vertsplit(w)))
     for name, value in x0.items():
-        if name in model.x_names:
-            ex = model.x[model.x_names.index(name)]
-        elif name in model.z_names:
-            ex = model.z[model.z_names.index(name)]
+        if name in direct:
+            ex = direct[name]
         else:
             try:
                 ex = model.expression(name)
@@ -44,34 +43,36 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
     if model.z.numel():
         eqs.append(model.alg)
         labels += [f"algebraic equation for {n}" for n in model.z_names]
-    H = ca.vertcat(*[ca.vec(e) for e in eqs]) if eqs else ca.SX(0, 1)
-    f = ca.Function("init", [w, model.t, model.p, model.u], [H, ca.jacobian(H, w)])
     start = np.array(list(model.x_start) + list(model.z_start), dtype=float)
+    if not eqs:
+        return start[:nx], start[nx:]
+    H = ca.vertcat(*[ca.vec(e) for e in eqs])
+    f = ca.Function("init", [w, model.t, model.p, model.u], [H, ca.jacobian(H, w)])
     wk = start.copy()
-    ngiven = len(hard)
+    scale = 1 + max(abs(v) for v in targets) if targets else 1.0
     for _ in range(50):
-        h, J = (np.array(a, dtype=float) for a in f(wk, t0, p, u0))
-        h = h.ravel()
-        if h.size == 0:
+        h, J = _eval(f, wk, t0, p, u0)
+        # closest point to the start values on the linearized equations:
+        #   w = start + Jᵀ (J Jᵀ)⁺ (J (wk − start) − h)    (J is k × n with k small)
+        lam = np.linalg.lstsq(J @ J.T, J @ (wk - start) - h, rcond=1e-12)[0]
+        new = start + J.T @ lam
+        done = np.linalg.norm(new - wk) < 1e-13 * (1 + np.linalg.norm(wk))
+        wk = new
+        if done:
             break
-        # step: satisfy hard equations (min-norm), then move towards starts in the null space
-        Jp = np.linalg.pinv(J, rcond=1e-10)
-        step = -Jp @ h
-        N = np.eye(w.numel()) - Jp @ J
-        step += N @ (start - wk - step)
-        wk = wk + step
-        if np.linalg.norm(step) < 1e-13 * (1 + np.linalg.norm(wk)):
-            break
-    h, J = (np.array(a, dtype=float) for a in f(wk, t0, p, u0))
-    h = h.ravel()
-    if h.size and np.max(np.abs(h)) > 1e-8 * (1 + np.max(np.abs(targets or [0]))):
-        raise InitializationError(_conflict(f, wk, t0, p, u0, labels, targets, ngiven, h))
+    h, J = _eval(f, wk, t0, p, u0)
+    if np.max(np.abs(h)) > 1e-8 * scale:
+        raise InitializationError(_conflict(J, labels, targets, len(hard), h))
     return wk[:nx], wk[nx:]
 
 
-def _conflict(f, wk, t0, p, u0, labels, targets, ngiven, h) -> str:
+def _eval(f, w, t0, p, u0):
+    h, J = f(w, t0, p, u0)
+    return np.array(h, dtype=float).ravel(), np.array(J, dtype=float)
+
+
+def _conflict(J, labels, targets, ngiven, h) -> str:
     bad = [labels[i] for i in np.flatnonzero(np.abs(h) > 1e-8)]
-    _, J = (np.array(a, dtype=float) for a in f(wk, t0, p, u0))
     given = list(range(ngiven))
     for i in given:
         for j in given:

@@ -1,7 +1,7 @@
 """simulate(): a compiled model through a CasADi integrator onto a time grid."""
 from __future__ import annotations
 
-from typing import Callable
+import warnings
 
 import casadi as ca
 import numpy as np
@@ -23,7 +23,9 @@ def input_expression(name: str, value, t: ca.SX, grid: np.ndarray) -> ca.SX:
     """
     if callable(value):
         try:
-            ex = value(t)
+            with warnings.catch_warnings():      # numpy ufuncs on SX: the casadi result is wanted
+                warnings.simplefilter("ignore", FutureWarning)
+                ex = value(t)
             ex = ca.SX(ex) if not isinstance(ex, ca.SX) else ex
             if ex.numel() == 1:
                 return ex
