@@ -18,7 +18,8 @@ import casadi as ca
 from ..core.component import Component, Model
 from ..core.errors import SingularModelError, StructureError
 from ..core.ports import RealInput, RealOutput
-from .builders import PhysicsBuilder, StructureBuilder, Workspace
+from .batch import run_physics
+from .builders import StructureBuilder, Workspace
 from .compiled import CompiledModel, Equations
 from .flatten import flatten
 from .kinematics import InternalNode, Node, build_tree
@@ -56,8 +57,7 @@ def compile(model: Model, *, baumgarte: float = 20.0) -> CompiledModel:
         for r in ws.relations:
             r.nodes = [ws.node_of[p] for p in r.ports]
         tree = build_tree(nodes, ws.relations, ws.der_table)
-        for c in flat.components:
-            c.physics(PhysicsBuilder(ws, c))
+        run_physics(ws, flat.components)
     finally:
         for c in flat.components:
             c.__dict__.pop("_symbols", None)
