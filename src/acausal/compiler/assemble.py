@@ -141,6 +141,10 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
     u = _vc(*[s for _, s in ws.inputs]) if ws.inputs else ca.SX(0, 1)
     p = _vc(*[s for s, *_ in params]) if params else ca.SX(0, 1)
     x = _vc(eq.q_diff, eq.qd_diff, z_states)
+    if x.numel() == 0:
+        raise StructureError(f"model '{model.name or type(model).__name__}' has no dynamics: no "
+                             f"part can move (every node is fixed or prescribed) and no component "
+                             f"has states; add a mass or inertia that is free to move")
     ode = _vc(eq.q_diff_dot, eq.qdd_diff, zdot)
     alg_vars = _vc(eq.alg_vars, z_alg)
     alg = _vc(eq.alg_res, g_alg)
@@ -256,6 +260,7 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
     qM, qdM, qddM = idx(q, massive), idx(qd, massive), idx(qdd, massive)
     A_MM = A[massive, massive] if massive else ca.SX(0, 0)
     if nc:
+        _check_loops(tree, phi, q)
         if massless:
             raise StructureError(
                 "a closed kinematic loop together with massless nodes "
@@ -308,6 +313,29 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
     out.z_start = [0.0] * (len(vel_alg) + len(pos_alg))
     out.massless = [tree.q_names[k] for k in massless]
     return out
+
+
+def _check_loops(tree, phi, q) -> None:
+    """Loop constraints that no coordinate can satisfy are inconsistent (or, when they hold
+    anyway, redundant: their reaction is undetermined). Both are errors naming the parts."""
+    phi_q = ca.jacobian(phi, q)
+    rows = set(phi_q.sparsity().get_triplet()[0])
+    for i, r in enumerate(tree.loops):
+        if i in rows:
+            continue
+        parts = sorted({p.owner.path for n in r.nodes for p in n.ports} - {r.owner.path})
+        val = ca.Function("phi", [], [phi[i]], {"allow_free": True})
+        kind = "inconsistent" if val.has_free() else None
+        if kind is None:
+            res = float(val()["o0"])
+            kind = "inconsistent" if abs(res) > 1e-12 else "redundant"
+        text = ("cannot close: the parts it joins are fixed with a different offset" if
+                kind == "inconsistent" else
+                "is redundant: it joins parts that are already rigidly fixed, so its reaction "
+                "is undetermined")
+        raise StructureError(f"the rigid loop through '{r.owner.path}' ({type(r.owner).__name__}) "
+                             f"{text}; parts in the loop: {', '.join(parts)}. Remove the "
+                             f"component or fix its parameters")
 
 
 def _is_diag(A) -> bool:

@@ -157,10 +157,9 @@ def _forms_to_matrix(forms: list[dict], n_atoms: int):
     for i, f in enumerate(forms):
         for k, c in f.items():
             rows.append(i); cols.append(k); vals.append(c)
-    sp = ca.Sparsity.triplet(len(forms), n_atoms, rows, cols)
     if all(isinstance(v, float) for v in vals):
-        return ca.DM(sp, ca.DM(vals) if vals else ca.DM(0, 1))
-    return ca.SX(sp, ca.vertcat(*[ca.SX(v) for v in vals]))
+        return ca.DM.triplet(rows, cols, ca.DM(vals), len(forms), n_atoms)
+    return ca.SX.triplet(rows, cols, ca.vertcat(*[ca.SX(v) for v in vals]), len(forms), n_atoms)
 
 
 @dataclass

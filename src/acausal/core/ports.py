@@ -46,7 +46,8 @@ class Port:
     @property
     def path(self) -> str:
         """Dotted name, e.g. ``crane.cart.flange_a``."""
-        return f"{self.owner.path}.{self.name}" if self.owner is not None else self.name
+        owner = self.owner.path if self.owner is not None else ""
+        return f"{owner}.{self.name}" if owner else self.name
 
     def __repr__(self):
         return f"<{type(self).__name__} {self.path}>"

@@ -2,8 +2,8 @@
 
 The given values are hard equations v_i(x, z) = value_i; closed loops add Φ = 0 and Φ̇ = 0;
 algebraic equations 0 = alg hold. Among the states that satisfy them, the ones chosen are
-closest (least squares) to the states' start values: each iteration projects the start values
-onto the equations linearized at the current point (exact in one step for 1-D kinematics).
+closest (least squares) to the states' start values, algebraic variables being free: each
+iteration projects the start values onto the equations linearized at the current point (exact in one step for 1-D kinematics).
 The cost grows with the number of equations k (a k × k system), not with the model size.
 """
 from __future__ import annotations
@@ -50,12 +50,16 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
     f = ca.Function("init", [w, model.t, model.p, model.u], [H, ca.jacobian(H, w)])
     wk = start.copy()
     scale = 1 + max(abs(v) for v in targets) if targets else 1.0
+    # states keep their start values where they can; algebraic variables are (nearly) free
+    D = np.ones(w.numel())
+    D[nx:] = 1e8
     for _ in range(50):
         h, J = _eval(f, wk, t0, p, u0)
-        # closest point to the start values on the linearized equations:
-        #   w = start + Jᵀ (J Jᵀ)⁺ (J (wk − start) − h)    (J is k × n with k small)
-        lam = np.linalg.lstsq(J @ J.T, J @ (wk - start) - h, rcond=1e-12)[0]
-        new = start + J.T @ lam
+        # closest point to the start values (metric D⁻¹) on the linearized equations:
+        #   w = start + D Jᵀ (J D Jᵀ)⁺ (J (wk − start) − h)    (J is k × n with k small)
+        JD = J * D
+        lam = np.linalg.lstsq(JD @ J.T, J @ (wk - start) - h, rcond=1e-14)[0]
+        new = start + JD.T @ lam
         done = np.linalg.norm(new - wk) < 1e-13 * (1 + np.linalg.norm(wk))
         wk = new
         if done:
