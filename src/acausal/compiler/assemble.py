@@ -159,12 +159,12 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
         name=model.name or type(model).__name__, t=t, x=x, z=alg_vars, p=p, u=u,
         ode=ode, alg=alg,
         x_names=[s.name() for s in ca.vertsplit(x)], z_names=[s.name() for s in ca.vertsplit(alg_vars)],
-        x_start=eq.x_start + [i.start for i in ws.states],
-        z_start=eq.z_start + [a.start for a in ws.algebraics],
+        start=_start_values(eq.x_start + [i.start for i in ws.states]
+                            + eq.z_start + [a.start for a in ws.algebraics], p),
         params=[(s.name(), d, par.unit, par.description, par) for s, d, par, _ in params],
         inputs=[(c.path, c.start, c.unit, c.description) for c, _ in ws.inputs],
         outputs=[(c.path, c.unit, c.description) for c, _ in ws.outputs], y=y_out,
-        recorder=recorded,
+        recorder=recorded, events=_events(ws.events, p),
         equations=Equations(q=tree.q, qd=tree.qd, qdd=tree.qdd, M=eq.M, R0=eq.R0,
                             phi=phi, q_names=tree.q_names, qd_names=tree.qd_names, t=t, p=p, u=u,
                             z=z_states),
@@ -313,6 +313,28 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
     out.z_start = [0.0] * (len(vel_alg) + len(pos_alg))
     out.massless = [tree.q_names[k] for k in massless]
     return out
+
+
+def _events(events: list, p: ca.SX) -> ca.Function:
+    """Function p -> (first times, periods) of the declared time events (period 0: once)."""
+    times = _vc(*[e[0] for e in events]) if events else ca.SX(0, 1)
+    periods = _vc(*[e[1] for e in events]) if events else ca.SX(0, 1)
+    f = ca.Function("events", [p], [times, periods], ["p"], ["times", "periods"],
+                    {"allow_free": True})
+    if f.has_free():
+        raise StructureError(f"event times may depend on parameters only; these depend on "
+                             f"other symbols: {f.get_free()[:5]}")
+    return f
+
+
+def _start_values(values: list, p: ca.SX) -> ca.Function:
+    """Function p -> start values of [x; z] (numbers, or expressions of parameters)."""
+    v = _vc(*[ca.SX(x) for x in values]) if values else ca.SX(0, 1)
+    f = ca.Function("start", [p], [v], ["p"], ["start"], {"allow_free": True})
+    if f.has_free():
+        raise StructureError(f"start values may depend on parameters only; these depend on "
+                             f"other symbols: {f.get_free()[:5]}")
+    return f
 
 
 def _check_loops(tree, phi, q) -> None:

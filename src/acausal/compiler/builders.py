@@ -20,7 +20,7 @@ from .symbolic import der_with, sx
 @dataclass
 class StateInfo:
     sym: ca.SX
-    start: float
+    start: object            # float, or SX of parameters
     unit: str
     description: str
     owner: Component
@@ -49,6 +49,7 @@ class Workspace:
     variables: list = field(default_factory=list)           # (name, expr, unit)
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
+    events: list = field(default_factory=list)              # (time, period) of time events
 
     def signal(self, port: Port) -> ca.SX:
         """The placeholder standing for the value of a signal port."""
@@ -67,6 +68,11 @@ def _lazy_signal_rate(ws: Workspace, s: ca.SX) -> ca.SX:
     d = ca.SX.sym(f"der({s.name()})")
     ws.der_table[d.name()] = _lazy_signal_rate(ws, d) if s.name().count("der(") < 2 else None
     return d
+
+
+def _start(value):
+    """A start value: a number, or an SX expression of parameters (evaluated at simulation)."""
+    return value if isinstance(value, ca.SX) else float(value)
 
 
 class _Base:
@@ -120,13 +126,14 @@ class StructureBuilder(_Base):
         self._ws.internal_nodes.append(n)
         return n
 
-    def state(self, name: str, start: float = 0.0, unit: str = "", description: str = "",
+    def state(self, name: str, start=0.0, unit: str = "", description: str = "",
               der=None) -> ca.SX:
-        """An internal state (a motor current, a controller integral). Its derivative is set
+        """An internal state (a motor current, a controller integral), starting at ``start``
+        (a number or an expression of parameters) unless x0 says otherwise. Its derivative is set
         here (required when the state is used in a relation) or later by
         PhysicsBuilder.derivative."""
         s = ca.SX.sym(self._name(name))
-        info = StateInfo(s, float(start), unit, description, self._owner)
+        info = StateInfo(s, _start(start), unit, description, self._owner)
         self._ws.states.append(info)
         if der is not None:
             info.der = sx(der)
@@ -137,11 +144,11 @@ class StructureBuilder(_Base):
             info.placeholder = d
         return s
 
-    def algebraic(self, name: str, start: float = 0.0, unit: str = "",
+    def algebraic(self, name: str, start=0.0, unit: str = "",
                   description: str = "") -> ca.SX:
         """An algebraic variable, fixed by a residual equation given in physics."""
         s = ca.SX.sym(self._name(name))
-        self._ws.algebraics.append(StateInfo(s, float(start), unit, description, self._owner))
+        self._ws.algebraics.append(StateInfo(s, _start(start), unit, description, self._owner))
         self._ws.der_table[s.name()] = None
         return s
 
@@ -200,6 +207,12 @@ class PhysicsBuilder(_Base):
         if info.der is not None:
             raise StructureError(f"{self._owner.path}: derivative of '{state.name()}' given twice")
         info.der = sx(expr)
+
+    def time_event(self, time, period=None) -> None:
+        """Declare a discontinuity in time at ``time`` [s] (and every ``period`` [s] after it),
+        both numbers or expressions of parameters: the integrator is restarted there instead
+        of stepping across the jump."""
+        self._ws.events.append((sx(time), sx(period) if period is not None else ca.SX(0)))
 
     def residual(self, expr) -> None:
         """Add an equation expr = 0 (for algebraic variables)."""

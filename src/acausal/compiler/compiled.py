@@ -59,8 +59,8 @@ class CompiledModel:
     alg: ca.SX
     x_names: list
     z_names: list
-    x_start: list
-    z_start: list
+    start: ca.Function      # p -> start values of [x; z]
+    events: ca.Function     # p -> (times, periods) of time events
     params: list            # (name, default, unit, description, Parameter)
     inputs: list            # (name, start, unit, description)
     outputs: list           # (name, unit, description)
@@ -97,6 +97,19 @@ class CompiledModel:
             par = self.params[self.param_names.index(name)][4]
             values[name] = par.check(v, name.rsplit(".", 1)[0])
         return np.array([values[n] for n in self.param_names], dtype=float)
+
+    def event_times(self, p: np.ndarray, t0: float, t1: float) -> list[float]:
+        """Times of the declared time events strictly inside (t0, t1), sorted."""
+        times, periods = (np.array(v, dtype=float).ravel() for v in self.events(p))
+        out = set()
+        for first, period in zip(times, periods):
+            if period > 0:
+                k0 = max(0, int(np.ceil((t0 - first) / period)))
+                ts = first + period * np.arange(k0, k0 + int((t1 - first) / period) + 2)
+            else:
+                ts = [first]
+            out.update(float(x) for x in ts if t0 < x < t1)
+        return sorted(out)
 
     # ---- recorded variables (built on first use) -------------------------------------------
     def _recorded(self):

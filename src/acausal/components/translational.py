@@ -1,51 +1,146 @@
-"""1-D translational mechanics, after Modelica.Mechanics.Translational.
+"""1-D translational mechanics, after Modelica.Mechanics.Translational (MSL 4.0).
 
-Sign conventions as in MSL: a flange's cut force f is positive into the component; a
-compliant element's ``f`` is the force on flange_b (flange_a gets −f); ``s_rel`` =
-flange_b.s − flange_a.s. A Mass's ``s`` is the position of its centre, flange_a.s = s − L/2,
+Names, parameters, defaults and sign conventions are MSL's, so a model written against MSL
+translates line by line: ``Mass(m=1, L=0.5)``, ``Force(useSupport=True)``,
+``connect(force.flange, mass.flange_a)``.
+
+Sign conventions (MSL): a flange's cut force ``f`` [N] is the force acting *on the component*
+through that flange (positive in the positive s direction, Modelica's flow sign); a compliant
+element's ``f`` is the force on flange_b (flange_a gets −f), ``s_rel`` = flange_b.s −
+flange_a.s. A Mass's (or Rod's) ``s`` is the position of its centre: flange_a.s = s − L/2,
 flange_b.s = s + L/2.
+
+Parameters: where MSL gives a parameter only a ``start`` value (Mass.m, Spring.c, ...) that
+value is the default; where MSL gives none at all (ConstantForce.f_constant, ...) the
+parameter is required when the component is created (a ParameterError otherwise).
+
+Structural (Boolean) parameters of MSL — ``useSupport``, ``exact``, ``ForceDirection`` — are
+keyword arguments fixed at construction (they change the ports or the equations). With
+``useSupport=False`` (the MSL default) the component is implicitly fixed to the ground at
+s = 0; with ``True`` it gets a ``support`` flange (the housing) that must be connected and
+receives the reaction force (support.f = −flange.f).
+
+Not here (non-smooth, later): ElastoGap, friction (SupportFriction, Brake,
+MassWithStopAndFriction), SignForce, InverseSpeedDependentForce, EddyCurrentForce; nor the
+adaptors, InitializeFlange, RelativeStates, Vehicle. Differences from MSL are listed in each
+docstring.
 """
 from __future__ import annotations
 
-from ..core import Component, Parameter, RealInput, TranslationalFlange
+import math
+
+import casadi as ca
+
+from ..core import Component, Parameter, ParameterError, RealInput, RealOutput, \
+    TranslationalFlange
 from ..core.ports import TRANSLATIONAL
+from .signals import _Vector
 
 Flange = TranslationalFlange
 
+__all__ = [
+    # interfaces
+    "PartialRigid", "PartialCompliant", "PartialCompliantWithRelativeStates",
+    "PartialElementaryOneFlangeAndSupport2", "PartialForce", "PartialAbsoluteSensor",
+    "PartialRelativeSensor",
+    # components
+    "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper",
+    # sources
+    "Force", "Force2", "ConstantForce", "ForceStep", "LinearSpeedDependentForce",
+    "QuadraticSpeedDependentForce", "Position", "Speed", "Accelerate", "Move",
+    "ConstantSpeed",
+    # sensors
+    "PositionSensor", "SpeedSensor", "AccSensor", "ForceSensor", "PowerSensor",
+    "MultiSensor", "RelPositionSensor", "RelSpeedSensor", "RelAccSensor",
+]
 
-class Fixed(Component):
-    """Flange fixed in the housing at position s0 [m]."""
-    s0 = Parameter(0.0, "m", "fixed offset position of the housing")
-    flange = Flange("fixed flange")
+
+# =========================================================================================
+# Interfaces
+# =========================================================================================
+class _WithOptions(Component):
+    """A component with structural Boolean options and required parameters.
+
+    ``options`` (class attribute, name → default) are MSL's ``parameter Boolean ...``: given
+    as keyword arguments, read as plain booleans ``self.<name>``, fixed once the component is
+    built. ``required`` names parameters MSL declares without any value: they must be given.
+    Subclasses create option-dependent ports in ``_conditional_ports``.
+    """
+    options: dict[str, bool] = {}
+    required: tuple[str, ...] = ()
+
+    @classmethod
+    def all_options(cls) -> dict[str, bool]:
+        """The structural options of this class and its bases, with their defaults."""
+        out: dict[str, bool] = {}
+        for klass in reversed(cls.__mro__):
+            out.update(vars(klass).get("options", {}))
+        return out
+
+    def __init__(self, name: str | None = None, **kwargs):
+        kind = type(self).__name__
+        opts = {}
+        for key, default in self.all_options().items():
+            value = kwargs.pop(key, default)
+            if not isinstance(value, bool):
+                raise ParameterError(f"{kind}: option '{key}' must be True or False, got "
+                                     f"{value!r}")
+            opts[key] = value
+        for key in kwargs:
+            if key not in self.parameters():
+                known = ", ".join(list(self.parameters()) + list(opts)) or "none"
+                raise ParameterError(f"{kind} has no parameter '{key}' (its parameters and "
+                                     f"options: {known})")
+        missing = [p for p in self.required if p not in kwargs]
+        if missing:
+            given = ", ".join(f"{p}=..." for p in missing)
+            raise ParameterError(f"{kind}: parameter{'s' if len(missing) > 1 else ''} "
+                                 f"{', '.join(repr(p) for p in missing)} "
+                                 f"{'have' if len(missing) > 1 else 'has'} no default (as in "
+                                 f"MSL); give {'them' if len(missing) > 1 else 'it'}: "
+                                 f"{kind}({given})")
+        super().__init__(name, **kwargs)
+        self.__dict__.update(opts)
+        self._conditional_ports()
+
+    def _conditional_ports(self) -> None:
+        """Create the ports that exist only for some options (default: none)."""
+
+
+class PartialRigid(_WithOptions):
+    """Two rigidly connected flanges at distance ``L`` [m]; ``s`` [m] is the centre:
+    flange_a.s = s − L/2, flange_b.s = s + L/2 (the forces at the flanges may differ)."""
+    L = Parameter(0.0, "m", "length of component, from left flange to right flange "
+                            "(= flange_b.s - flange_a.s)")
+    flange_a = Flange("left flange of translational component")
+    flange_b = Flange("right flange of translational component")
+
+    def _centre(self, s):
+        """The internal node ``s`` (the centre). Default: not a preferred coordinate."""
+        return s.node("s", TRANSLATIONAL, preferred=False)
 
     def structure(self, s):
-        s.linear({self.flange: 1.0}, self.s0)
+        self._s = self._centre(s)
+        s.linear({self.flange_a: 1.0, self._s: -1.0}, -self.L / 2, f"{self.path}: flange_a")
+        s.linear({self.flange_b: 1.0, self._s: -1.0}, self.L / 2, f"{self.path}: flange_b")
 
 
-class Mass(Component):
-    """Sliding mass m [kg] of length L [m]; states s [m] (centre) and v [m/s]; a [m/s²]."""
-    m = Parameter(1.0, "kg", "mass of the sliding mass", positive=True)
-    L = Parameter(0.0, "m", "length of the component, from left to right flange", nonnegative=True)
-    flange_a = Flange("left flange")
-    flange_b = Flange("right flange")
+class PartialCompliant(_WithOptions):
+    """Two flanges and a force f [N] = flange_b.f = −flange_a.f depending on s_rel and v_rel.
 
-    def structure(self, s):
-        self._centre = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
-        s.linear({self.flange_a: 1.0, self._centre: -1.0}, -self.L / 2)
-        s.linear({self.flange_b: 1.0, self._centre: -1.0}, self.L / 2)
-
-    def physics(self, e):
-        e.kinetic_energy(0.5 * self.m * e.vel(self._centre) ** 2)
-
-
-class PartialCompliant(Component):
-    """Two flanges and a force f [N] = flange_b.f = −flange_a.f, depending on s_rel, v_rel."""
-    flange_a = Flange("left flange")
-    flange_b = Flange("right flange")
+    Records s_rel = flange_b.s − flange_a.s [m], v_rel = der(s_rel) [m/s], f [N] and, when
+    ``loss_power`` gives one, lossPower [W]. Subclasses define ``force(s_rel, v_rel)``.
+    """
+    flange_a = Flange("left flange of compliant 1-dim. translational component")
+    flange_b = Flange("right flange of compliant 1-dim. translational component")
 
     def force(self, s_rel, v_rel):
         """The force f [N] on flange_b for relative position s_rel [m] and speed v_rel [m/s]."""
         raise NotImplementedError
+
+    def loss_power(self, s_rel, v_rel, f):
+        """Dissipated power [W] (MSL's lossPower), or None for a lossless element."""
+        return None
 
     def physics(self, e):
         s_rel = e.pos(self.flange_b) - e.pos(self.flange_a)
@@ -53,13 +148,130 @@ class PartialCompliant(Component):
         f = self.force(s_rel, v_rel)
         e.flow(self.flange_b, f)
         e.flow(self.flange_a, -f)
-        e.variable("s_rel", s_rel, "m")
-        e.variable("v_rel", v_rel, "m/s")
-        e.variable("f", f, "N")
+        e.variable("s_rel", s_rel, "m", "relative distance (= flange_b.s - flange_a.s)")
+        e.variable("v_rel", v_rel, "m/s", "relative velocity (= der(s_rel))")
+        e.variable("f", f, "N", "force between flanges (positive in direction of flange axis "
+                                "R)")
+        loss = self.loss_power(s_rel, v_rel, f)
+        if loss is not None:
+            e.variable("lossPower", loss, "W", "loss power leaving component via heatPort")
+
+
+class PartialCompliantWithRelativeStates(PartialCompliant):
+    """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states. Here the same
+    as PartialCompliant: the compiler chooses the coordinates."""
+
+
+class PartialElementaryOneFlangeAndSupport2(_WithOptions):
+    """One ``flange`` and, with ``useSupport=True``, a ``support`` (housing) flange.
+
+    Records s = flange.s − support.s [m] (support.s = 0 without support). What acts on the
+    flange reacts on the support: support.f = −flange.f.
+    """
+    options = {"useSupport": False}
+    flange = Flange("flange of component")
+
+    def _conditional_ports(self):
+        if self.useSupport:
+            self.support = Flange("support/housing of component", required=True)
+
+    def __getattr__(self, name):
+        if name == "support":
+            raise AttributeError(f"{type(self).__name__} '{self.path or self.name}' has no "
+                                 f"'support' flange (useSupport=False: it is fixed to the "
+                                 f"ground); create it with useSupport=True")
+        raise AttributeError(name)
+
+    # relative motion of the flange with respect to the support
+    def _s(self, e):
+        """flange.s − support.s [m]."""
+        return e.pos(self.flange) - (e.pos(self.support) if self.useSupport else 0.0)
+
+    def _v(self, e):
+        """der(flange.s − support.s) [m/s]."""
+        return e.vel(self.flange) - (e.vel(self.support) if self.useSupport else 0.0)
+
+    def _a(self, e):
+        """der(der(flange.s − support.s)) [m/s²]."""
+        return e.acc(self.flange) - (e.acc(self.support) if self.useSupport else 0.0)
+
+    def _drive(self, e, flange_f) -> None:
+        """Set flange.f = flange_f [N] and its reaction support.f = −flange_f."""
+        e.flow(self.flange, flange_f)
+        if self.useSupport:
+            e.flow(self.support, -flange_f)
+
+    def _prescribe(self, s, rhs) -> None:
+        """Declare flange.s − support.s = rhs (prescribed motion; the reaction goes to the
+        flange and, opposite, to the support)."""
+        coeffs = {self.flange: 1.0}
+        if self.useSupport:
+            coeffs[self.support] = -1.0
+        s.linear(coeffs, rhs, f"{self.path}: prescribed position")
+
+    def _record_s(self, e):
+        e.variable("s", self._s(e), "m", "distance between flange and support "
+                                         "(= flange.s - support.s)")
+
+
+class PartialForce(PartialElementaryOneFlangeAndSupport2):
+    """A force law on ``flange`` (relative to the support). MSL's variable ``f`` = flange.f
+    [N] is recorded: a force f_constant > 0 pushing the flange's body forward has
+    f = −f_constant. Subclasses define ``flange_force(e)`` (the value of flange.f)."""
+    flange = Flange("flange of component", required=True)
+
+    def flange_force(self, e):
+        """flange.f [N] (the force on the connected body is −flange.f)."""
+        raise NotImplementedError
+
+    def physics(self, e):
+        f = self.flange_force(e)
+        self._drive(e, f)
+        self._record_s(e)
+        e.variable("f", f, "N", "accelerating force acting at flange (= flange.f)")
+
+    def _speed(self, e):
+        v = self._v(e)
+        e.variable("v", v, "m/s", "velocity of flange with respect to support (= der(s))")
+        return v
+
+
+# =========================================================================================
+# Components
+# =========================================================================================
+class Fixed(_WithOptions):
+    """Flange fixed in the housing at position ``s0`` [m]."""
+    s0 = Parameter(0.0, "m", "fixed offset position of housing")
+    flange = Flange("flange fixed in housing at a given position")
+
+    def structure(self, s):
+        s.linear({self.flange: 1.0}, self.s0, f"{self.path}: fixed")
+
+
+class Mass(PartialRigid):
+    """Sliding mass with inertia ``m`` [kg] and length ``L`` [m], without friction.
+
+    States s [m] (centre: flange_a.s = s − L/2, flange_b.s = s + L/2) and v [m/s];
+    a [m/s²] recorded; m·a = flange_a.f + flange_b.f. m must be > 0 (MSL: min = 0; a mass of
+    zero is a Rod).
+    """
+    m = Parameter(1.0, "kg", "mass of the sliding mass", positive=True)
+
+    def _centre(self, s):
+        return s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
+
+    def physics(self, e):
+        e.kinetic_energy(0.5 * self.m * e.vel(self._s) ** 2)
+
+
+class Rod(PartialRigid):
+    """Massless rod of length ``L`` [m]: flange_b.s = flange_a.s + L, 0 = flange_a.f +
+    flange_b.f; ``s`` [m] is its centre."""
 
 
 class Spring(PartialCompliant):
-    """Linear spring: f = c·(s_rel − s_rel0)."""
+    """Linear spring: f = c·(s_rel − s_rel0); c [N/m] ≥ 0 (default 1 = MSL start value),
+    s_rel0 [m] unstretched length."""
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     s_rel0 = Parameter(0.0, "m", "unstretched spring length")
 
@@ -67,18 +279,363 @@ class Spring(PartialCompliant):
         return self.c * (s_rel - self.s_rel0)
 
 
-class Damper(PartialCompliant):
-    """Linear damper: f = d·v_rel."""
+class Damper(PartialCompliantWithRelativeStates):
+    """Linear damper: f = d·v_rel; d [N.s/m] ≥ 0 (default 0 = MSL start value).
+    lossPower = f·v_rel [W]."""
     d = Parameter(0.0, "N.s/m", "damping constant", nonnegative=True)
 
     def force(self, s_rel, v_rel):
         return self.d * v_rel
 
+    def loss_power(self, s_rel, v_rel, f):
+        return f * v_rel
 
-class Force(Component):
-    """External force f [N] (RealInput ``f``) acting on ``flange`` in its positive direction."""
-    f = RealInput("driving force as input signal")
-    flange = Flange("flange on which the force acts")
+
+class SpringDamper(PartialCompliantWithRelativeStates):
+    """Linear spring and damper in parallel: f = c·(s_rel − s_rel0) + d·v_rel;
+    c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL start values). lossPower = d·v_rel² [W]."""
+    c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
+    d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
+    s_rel0 = Parameter(0.0, "m", "unstretched spring length")
+
+    def force(self, s_rel, v_rel):
+        return self.c * (s_rel - self.s_rel0) + self.d * v_rel
+
+    def loss_power(self, s_rel, v_rel, f):
+        return self.d * v_rel ** 2
+
+
+# =========================================================================================
+# Sources
+# =========================================================================================
+class Force(PartialElementaryOneFlangeAndSupport2):
+    """External force: the input signal ``f`` [N] drives the body connected to ``flange`` in
+    the positive direction (flange.f = −f; support.f = f with useSupport)."""
+    f = RealInput("driving force as input signal [N]")
+    flange = Flange("flange of component", required=True)
 
     def physics(self, e):
-        e.flow(self.flange, -e.input(self.f))
+        self._drive(e, -e.input(self.f))
+        self._record_s(e)
+
+
+class Force2(_WithOptions):
+    """Input signal ``f`` [N] acting on two flanges: flange_a.f = f, flange_b.f = −f
+    (a positive f pushes the two connected bodies apart)."""
+    f = RealInput("driving force as input signal [N]")
+    flange_a = Flange("left flange of component", required=True)
+    flange_b = Flange("right flange of component", required=True)
+
+    def physics(self, e):
+        f = e.input(self.f)
+        e.flow(self.flange_a, f)
+        e.flow(self.flange_b, -f)
+
+
+class ConstantForce(PartialForce):
+    """Constant force f_constant [N] on the flange's body, not dependent on speed
+    (f = flange.f = −f_constant). Required: f_constant (MSL gives no default)."""
+    f_constant = Parameter(0.0, "N", "nominal force (if negative, force is acting as load in "
+                                     "positive direction of motion)")
+    required = ("f_constant",)
+
+    def flange_force(self, e):
+        return -self.f_constant
+
+
+class ForceStep(PartialForce):
+    """Force step: f = −offsetForce − (0 if time < startTime else stepForce) [N].
+
+    The jump is not a solver event: the variable-step integrator finds it by reducing its
+    step (give ``max_step`` to simulate if needed).
+    """
+    stepForce = Parameter(1.0, "N", "height of force step (if negative, force is acting as "
+                                    "load)")
+    offsetForce = Parameter(0.0, "N", "offset of force")
+    startTime = Parameter(0.0, "s", "force = offset for time < startTime")
+
+    def flange_force(self, e):
+        return -self.offsetForce - ca.if_else(e.time < self.startTime, 0.0, self.stepForce)
+
+
+class LinearSpeedDependentForce(PartialForce):
+    """f = −f_nominal·|v/v_nominal| (ForceDirection=True: same direction both ways) or
+    −f_nominal·v/v_nominal (ForceDirection=False); v = der(s) [m/s].
+    Required: f_nominal [N], v_nominal [m/s] > 0 (MSL gives no defaults)."""
+    options = {"ForceDirection": True}
+    f_nominal = Parameter(0.0, "N", "nominal force (if negative, force is acting as load in "
+                                    "positive direction of motion)")
+    v_nominal = Parameter(1.0, "m/s", "nominal speed", positive=True)
+    required = ("f_nominal", "v_nominal")
+
+    def flange_force(self, e):
+        x = self._speed(e) / self.v_nominal
+        return -self.f_nominal * (ca.fabs(x) if self.ForceDirection else x)
+
+
+class QuadraticSpeedDependentForce(PartialForce):
+    """f = −f_nominal·(v/v_nominal)² (ForceDirection=True: same direction both ways) or
+    −f_nominal·(v/v_nominal)·|v/v_nominal| (ForceDirection=False); v = der(s) [m/s].
+    Required: f_nominal [N], v_nominal [m/s] > 0 (MSL gives no defaults)."""
+    options = {"ForceDirection": True}
+    f_nominal = Parameter(0.0, "N", "nominal force (if negative, force is acting as load in "
+                                    "positive direction of motion)")
+    v_nominal = Parameter(1.0, "m/s", "nominal speed", positive=True)
+    required = ("f_nominal", "v_nominal")
+
+    def flange_force(self, e):
+        x = self._speed(e) / self.v_nominal
+        return -self.f_nominal * (x ** 2 if self.ForceDirection else x * ca.fabs(x))
+
+
+class Position(PartialElementaryOneFlangeAndSupport2):
+    """Forced movement of ``flange`` (relative to the support) by the reference position
+    ``s_ref`` [m].
+
+    exact=False (default, as MSL): s_ref passes MSL's 2nd-order (Bessel) filter with cut-off
+    f_crit [Hz] (default 50): a = ((s_ref − s)·w_crit − af·v)·(w_crit/bf), w_crit = 2π·f_crit,
+    af = 1.3617, bf = 0.6180; states s [m], v [m/s] (any signal works, model inputs too).
+    exact=True: flange.s − support.s = s_ref exactly; s_ref must be a function of time (its
+    first two derivatives are taken by algorithmic differentiation).
+
+    Differences from MSL: the filter starts at s = 0, v = 0 (MSL: s = s_ref(0) by an initial
+    equation): when s_ref(0) ≠ 0 give ``x0={"<name>.s": s_ref(0)}``. With exact=True, v and a
+    are the actual relative speed and acceleration (MSL: dummies 0).
+    """
+    options = {"exact": False}
+    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
+                                   "input signal", positive=True)
+    s_ref = RealInput("reference position of flange as input signal [m]")
+    af = 1.3617   # s coefficient of Bessel filter
+    bf = 0.6180   # s*s coefficient of Bessel filter
+
+    def structure(self, s):
+        if self.exact:
+            self._prescribe(s, s.input(self.s_ref))
+        else:
+            self._xv = s.state("v", 0.0, "m/s", "absolute velocity of flange (filter state)")
+            self._xs = s.state("s", 0.0, "m", "distance between flange and support (filter "
+                                              "state)", der=self._xv)
+            self._prescribe(s, self._xs)
+
+    def physics(self, e):
+        if self.exact:
+            self._record_s(e)
+            e.variable("v", self._v(e), "m/s", "velocity of flange with respect to support")
+            e.variable("a", self._a(e), "m/s2", "acceleration of flange with respect to "
+                                                "support")
+            return
+        w_crit = 2 * math.pi * self.f_crit
+        a = ((e.input(self.s_ref) - self._xs) * w_crit - self.af * self._xv) * (w_crit / self.bf)
+        e.derivative(self._xv, a)
+        e.variable("a", a, "m/s2", "absolute acceleration of flange")
+
+
+class Speed(PartialElementaryOneFlangeAndSupport2):
+    """Forced movement of ``flange`` (relative to the support) by the reference speed
+    ``v_ref`` [m/s]. s = ∫v is a state (start 0, as MSL's s(start=0, fixed=true)).
+
+    exact=False (default): v follows v_ref through a first-order filter with cut-off f_crit
+    [Hz]: a = (v_ref − v)·2π·f_crit; v is a state (any signal works).
+    exact=True: v = v_ref exactly; v_ref must be a function of time (differentiated once).
+
+    Differences from MSL: the filter starts at v = 0 (MSL: v = v_ref(0) by an initial
+    equation): give ``x0={"<name>.v": v_ref(0)}`` when it differs. With exact=True, a is the
+    actual acceleration (MSL: dummy 0).
+    """
+    options = {"exact": False}
+    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
+                                   "input signal", positive=True)
+    v_ref = RealInput("reference speed of flange as input signal [m/s]")
+
+    def structure(self, s):
+        if self.exact:
+            v = s.input(self.v_ref)
+        else:
+            v = self._xv = s.state("v", 0.0, "m/s", "absolute velocity of flange (filter "
+                                                    "state)")
+        self._xs = s.state("s", 0.0, "m", "distance between flange and support", der=v)
+        self._prescribe(s, self._xs)
+
+    def physics(self, e):
+        if self.exact:
+            e.variable("v", e.input(self.v_ref), "m/s", "absolute velocity of flange")
+            e.variable("a", self._a(e), "m/s2", "absolute acceleration of flange")
+            return
+        a = (e.input(self.v_ref) - self._xv) * (2 * math.pi * self.f_crit)
+        e.derivative(self._xv, a)
+        e.variable("a", a, "m/s2", "absolute acceleration of flange")
+
+
+class Accelerate(PartialElementaryOneFlangeAndSupport2):
+    """Forced movement of ``flange`` (relative to the support) by the acceleration signal
+    ``a_ref`` [m/s²]; s [m] and v [m/s] are states integrated from 0 (MSL: start=0,
+    fixed=true)."""
+    a_ref = RealInput("absolute acceleration of flange as input signal [m/s2]")
+
+    def structure(self, s):
+        self._xv = s.state("v", 0.0, "m/s", "absolute velocity of flange",
+                           der=s.input(self.a_ref))
+        self._xs = s.state("s", 0.0, "m", "distance between flange and support", der=self._xv)
+        self._prescribe(s, self._xs)
+
+    def physics(self, e):
+        e.variable("a", e.input(self.a_ref), "m/s2", "absolute acceleration of flange")
+
+
+class Move(PartialElementaryOneFlangeAndSupport2):
+    """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
+    (position [m]), ``u[2]`` (velocity [m/s]), ``u[3]`` (acceleration [m/s²]), numbered from 1
+    as in MSL: ``connect(src.y, move.u[1])``.
+
+    Difference from MSL: the compiler cannot yet be told that u[2], u[3] are the derivatives
+    of u[1]; the motion is s = u[1] with its velocity and acceleration taken from u[1] by
+    algorithmic differentiation (u[1] must be a function of time, as for
+    Position(exact=True)). For consistent signals (MSL's requirement) this is the same
+    motion; MSL's deliberate inconsistent use (u[2] = u[3] = 0 to get position-dependent
+    forces only) is not reproduced. u[2], u[3] must be connected; they are recorded as
+    ``v_u``, ``a_u`` next to the actual ``v``, ``a`` so the two can be compared.
+    """
+
+    def _conditional_ports(self):
+        super()._conditional_ports()
+        for i, what in enumerate(("position", "velocity", "acceleration"), start=1):
+            setattr(self, f"u[{i}]", RealInput(f"{what} of flange as input signal"))
+        self.__dict__["u"] = _Vector("Move", "u", [getattr(self, f"u[{i}]")
+                                                   for i in (1, 2, 3)])
+
+    def structure(self, s):
+        self._prescribe(s, s.input(self.u[1]))
+
+    def physics(self, e):
+        self._record_s(e)
+        e.variable("v", self._v(e), "m/s", "velocity of flange with respect to support")
+        e.variable("a", self._a(e), "m/s2", "acceleration of flange with respect to support")
+        e.variable("v_u", e.input(self.u[2]), "m/s", "velocity input u[2]")
+        e.variable("a_u", e.input(self.u[3]), "m/s2", "acceleration input u[3]")
+
+
+class ConstantSpeed(PartialForce):
+    """Constant speed v = v_fixed [m/s] of flange relative to support, not dependent on
+    force; s [m] is a state (start 0). Records f = flange.f [N] (the reaction).
+    Required: v_fixed (MSL gives no default)."""
+    v_fixed = Parameter(0.0, "m/s", "fixed speed (if negative, force is acting as load)")
+    required = ("v_fixed",)
+
+    def structure(self, s):
+        self._xs = s.state("s", 0.0, "m", "distance between flange and support",
+                           der=self.v_fixed)
+        self._prescribe(s, self._xs)
+
+    def physics(self, e):
+        e.variable("v", self.v_fixed, "m/s", "velocity of flange with respect to support "
+                                             "(= der(s))")
+        e.variable("f", e.cut_flow(self.flange), "N", "accelerating force acting at flange "
+                                                      "(= flange.f)")
+
+
+# =========================================================================================
+# Sensors
+# =========================================================================================
+class PartialAbsoluteSensor(_WithOptions):
+    """Measures an absolute quantity of ``flange`` (no force: flange.f = 0)."""
+    flange = Flange("flange to be measured", required=True)
+
+
+class PartialRelativeSensor(_WithOptions):
+    """Measures between ``flange_a`` and ``flange_b`` (0 = flange_a.f + flange_b.f)."""
+    flange_a = Flange("left flange of sensor", required=True)
+    flange_b = Flange("right flange of sensor", required=True)
+
+
+class _RigidRelativeSensor(PartialRelativeSensor):
+    """flange_a.s = flange_b.s; the cut force flange_a.f = −flange_b.f passes through."""
+
+    def structure(self, s):
+        s.linear({self.flange_a: 1.0, self.flange_b: -1.0}, 0.0, f"{self.path}: rigid")
+
+
+class PositionSensor(PartialAbsoluteSensor):
+    """Output ``s`` [m]: absolute position of flange."""
+    s = RealOutput("absolute position of flange as output signal [m]")
+
+    def physics(self, e):
+        e.output(self.s, e.pos(self.flange))
+
+
+class SpeedSensor(PartialAbsoluteSensor):
+    """Output ``v`` [m/s]: absolute velocity of flange."""
+    v = RealOutput("absolute velocity of flange as output signal [m/s]")
+
+    def physics(self, e):
+        e.output(self.v, e.vel(self.flange))
+
+
+class AccSensor(PartialAbsoluteSensor):
+    """Output ``a`` [m/s²]: absolute acceleration of flange; v [m/s] recorded."""
+    a = RealOutput("absolute acceleration of flange as output signal [m/s2]")
+
+    def physics(self, e):
+        e.variable("v", e.vel(self.flange), "m/s", "absolute velocity of flange")
+        e.output(self.a, e.acc(self.flange))
+
+
+class ForceSensor(_RigidRelativeSensor):
+    """Output ``f`` [N] = flange_a.f = −flange_b.f: the cut force between the two flanges
+    (rigid: flange_a.s = flange_b.s). It may feed outputs and state derivatives (a
+    controller with a state), not directly a force of the same model."""
+    f = RealOutput("force in flange_a and flange_b (f = flange_a.f = -flange_b.f) [N]")
+
+    def physics(self, e):
+        e.output(self.f, e.cut_flow(self.flange_a))
+
+
+class PowerSensor(_RigidRelativeSensor):
+    """Output ``power`` [W] = flange_a.f·der(flange_a.s) (rigid)."""
+    power = RealOutput("power in flange flange_a as output signal [W]")
+
+    def physics(self, e):
+        e.output(self.power, e.cut_flow(self.flange_a) * e.vel(self.flange_a))
+
+
+class MultiSensor(_RigidRelativeSensor):
+    """Outputs ``f`` = flange_a.f [N], ``v`` = der(flange_a.s) [m/s] and ``power`` = f·v [W]
+    (rigid)."""
+    power = RealOutput("power in flange flange_a as output signal [W]")
+    f = RealOutput("force in flange_a and flange_b (f = flange_a.f = -flange_b.f) [N]")
+    v = RealOutput("absolute velocity of flange as output signal [m/s]")
+
+    def physics(self, e):
+        f, v = e.cut_flow(self.flange_a), e.vel(self.flange_a)
+        e.output(self.f, f)
+        e.output(self.v, v)
+        e.output(self.power, f * v)
+
+
+class RelPositionSensor(PartialRelativeSensor):
+    """Output ``s_rel`` = flange_b.s − flange_a.s [m]."""
+    s_rel = RealOutput("distance between two flanges (= flange_b.s - flange_a.s) [m]")
+
+    def physics(self, e):
+        e.output(self.s_rel, e.pos(self.flange_b) - e.pos(self.flange_a))
+
+
+class RelSpeedSensor(PartialRelativeSensor):
+    """Output ``v_rel`` = der(flange_b.s − flange_a.s) [m/s]; s_rel recorded."""
+    v_rel = RealOutput("relative velocity between two flanges (= der(flange_b.s) - "
+                       "der(flange_a.s)) [m/s]")
+
+    def physics(self, e):
+        e.variable("s_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "m")
+        e.output(self.v_rel, e.vel(self.flange_b) - e.vel(self.flange_a))
+
+
+class RelAccSensor(PartialRelativeSensor):
+    """Output ``a_rel`` [m/s²], second derivative of flange_b.s − flange_a.s; s_rel and
+    v_rel recorded."""
+    a_rel = RealOutput("relative acceleration between two flanges (= der(v_rel)) [m/s2]")
+
+    def physics(self, e):
+        e.variable("s_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "m")
+        e.variable("v_rel", e.vel(self.flange_b) - e.vel(self.flange_a), "m/s")
+        e.output(self.a_rel, e.acc(self.flange_b) - e.acc(self.flange_a))

@@ -43,7 +43,7 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
     if model.z.numel():
         eqs.append(model.alg)
         labels += [f"algebraic equation for {n}" for n in model.z_names]
-    start = np.array(list(model.x_start) + list(model.z_start), dtype=float)
+    start = np.array(model.start(p), dtype=float).ravel()
     if not eqs:
         return start[:nx], start[nx:]
     H = ca.vertcat(*[ca.vec(e) for e in eqs])

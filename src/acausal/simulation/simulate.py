@@ -99,21 +99,42 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if max_step is not None:
             opts["max_step_size"] = max_step
     opts.update(options or {})
-    try:
-        F = ca.integrator("sim", solver, dae, float(grid[0]), grid[1:], opts)
-        sol = F(x0=xs, z0=zs, p=p)
-    except RuntimeError as e:
-        raise SimulationError(f"simulation of '{model.name}' failed: {_short(e)}; check the "
-                              f"parameters and initial values, or try a smaller rtol/atol or "
-                              f"another solver") from None
-    X = np.hstack([np.asarray(xs).reshape(-1, 1), np.array(sol["xf"])])
-    Z = np.hstack([np.asarray(zs).reshape(-1, 1), np.array(sol["zf"])]) if has_alg else \
-        np.zeros((0, grid.size))
+    X, Z = [np.asarray(xs, dtype=float).reshape(-1, 1)], [np.asarray(zs, dtype=float).reshape(-1, 1)]
+    x, z = X[0][:, 0], Z[0][:, 0]
+    for a, b, pts in _segments(grid, model.event_times(p, grid[0], grid[-1])):
+        # integrate up to just before an event, restart at it (the jump is never stepped over)
+        if a != grid[0] and a in grid:           # an output time exactly at the event
+            X.append(x.reshape(-1, 1))
+            Z.append(z.reshape(-1, 1))
+        end = b if b == grid[-1] else b - 1e-12 * max(1.0, abs(b))
+        tout = list(pts) + ([] if pts and pts[-1] == b else [end])
+        tout = [min(tt, end) for tt in tout]
+        try:
+            F = ca.integrator("sim", solver, dae, float(a), tout, opts)
+            sol = F(x0=x, z0=z, p=p)
+        except RuntimeError as e:
+            raise SimulationError(f"simulation of '{model.name}' failed between t = {a:g} and "
+                                  f"{b:g} s: {_short(e)}; check the parameters and initial "
+                                  f"values, or try a smaller rtol/atol or another solver") from None
+        xf, zf = np.array(sol["xf"]), np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
+        X.append(xf[:, :len(pts)])
+        Z.append(zf[:, :len(pts)])
+        x, z = xf[:, -1], (zf[:, -1] if has_alg else z)
+    X, Z = np.hstack(X), np.hstack(Z)
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
     rec = model.recorded_function.map(grid.size)
     V = np.array(rec(grid.reshape(1, -1), X, Z, np.tile(p.reshape(-1, 1), (1, grid.size)), U))
     return Result(grid, model.recorded_names, V, model.recorded_units, model.name)
+
+
+def _segments(grid: np.ndarray, events: list[float]):
+    """(start, end, output times in (start, end]) of the pieces between time events."""
+    bounds = [grid[0]] + [e for e in events] + [grid[-1]]
+    for a, b in zip(bounds, bounds[1:]):
+        last = b == grid[-1]
+        pts = [float(tt) for tt in grid[1:] if a < tt < b or (tt == b and last)]
+        yield float(a), float(b), pts
 
 
 def _short(e: Exception) -> str:

@@ -1,0 +1,732 @@
+"""1-D rotational mechanics, after Modelica.Mechanics.Rotational (MSL 4.0), plus a DC motor.
+
+Sign conventions as in MSL: a flange's cut torque ``tau`` is positive into the component
+(Modelica's flow sign); a compliant element's ``tau`` is the torque on flange_b (flange_a gets
+−tau); ``phi_rel`` = flange_b.phi − flange_a.phi. An ``Inertia``'s states are ``phi`` [rad] and
+``w`` [rad/s], with flange_a.phi = flange_b.phi = phi.
+
+Structural (Boolean) parameters of MSL — ``useSupport``, ``useSupportR``/``useSupportT``,
+``exact``, ``TorqueDirection`` — are keyword arguments fixed at construction (they change the
+ports or the equations): ``IdealGear(ratio=3, useSupport=True)``. With ``useSupport=False``
+(the MSL default) the component is implicitly fixed to the ground; with ``True`` it gets a
+``support`` flange (the housing) that must be connected and receives the reaction torque.
+
+Parameters: where MSL gives a parameter only a ``start`` value (Inertia.J, Spring.c,
+IdealGear.ratio, ...) that value is the default; where MSL gives none at all
+(ConstantTorque.tau_constant, ConstantSpeed.w_fixed, ...) the parameter is required when the
+component is created (a ParameterError otherwise).
+
+Differences from MSL, by necessity of a Python library, are listed in each docstring.
+Friction, backlash, clutches and stops (non-smooth elements) are not here yet.
+"""
+from __future__ import annotations
+
+import math
+
+import casadi as ca
+
+from ..core import Component, Parameter, RealInput, RealOutput, RotationalFlange, \
+    TranslationalFlange
+from ..core.ports import ROTATIONAL
+from .signals import _Vector
+# The structural-options base is shared with the translational library (one implementation).
+from .translational import _WithOptions
+
+Flange = RotationalFlange
+
+__all__ = [
+    # interfaces
+    "PartialElementaryOneFlangeAndSupport2", "PartialElementaryTwoFlangesAndSupport2",
+    "PartialElementaryRotationalToTranslational", "PartialCompliant", "PartialTorque",
+    "PartialAbsoluteSensor", "PartialRelativeSensor",
+    # components
+    "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
+    "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T",
+    # sources
+    "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
+    "LinearSpeedDependentTorque", "TorqueStep", "Position", "Speed", "Accelerate", "Move",
+    "ConstantSpeed",
+    # sensors
+    "AngleSensor", "SpeedSensor", "AccSensor", "TorqueSensor", "PowerSensor", "MultiSensor",
+    "RelAngleSensor", "RelSpeedSensor", "RelAccSensor",
+    # actuators
+    "DCMotor",
+]
+
+
+# =========================================================================================
+# Interfaces: supports
+# =========================================================================================
+def _support_port(description: str = "support/housing of the component") -> RotationalFlange:
+    return RotationalFlange(description, required=True)
+
+
+class _OneSupport(_WithOptions):
+    """Shared by the MSL partials with one optional rotational ``support`` (``useSupport``)."""
+    options = {"useSupport": False}
+
+    def _conditional_ports(self):
+        if self.useSupport:
+            self.support = _support_port()
+
+    def __getattr__(self, name):
+        if name == "support":
+            raise AttributeError(f"{type(self).__name__} '{self.path or self.name}' has no "
+                                 f"'support' flange (useSupport=False: it is fixed to the "
+                                 f"ground); create it with useSupport=True")
+        raise AttributeError(name)
+
+    def _phi_support(self, e):
+        """Absolute angle of the support [rad] (0 when implicitly grounded)."""
+        return e.pos(self.support) if self.useSupport else 0.0
+
+    def _w_support(self, e):
+        """Absolute angular velocity of the support [rad/s]."""
+        return e.vel(self.support) if self.useSupport else 0.0
+
+    def _a_support(self, e):
+        """Absolute angular acceleration of the support [rad/s²]."""
+        return e.acc(self.support) if self.useSupport else 0.0
+
+    def _relative(self, s, coeffs: dict, rhs=0.0, name: str = "") -> None:
+        """Declare Σ a_i·(phi_i − phi_support) = rhs (support dropped when grounded)."""
+        coeffs = dict(coeffs)
+        if self.useSupport:
+            coeffs[self.support] = -sum(coeffs.values())
+        s.linear(coeffs, rhs, name)
+
+
+class PartialElementaryOneFlangeAndSupport2(_OneSupport):
+    """One ``flange`` and, with ``useSupport=True``, a ``support`` (housing) flange.
+
+    The reaction of what acts on ``flange`` goes to the support: support.tau = −flange.tau.
+    """
+    flange = Flange("flange of shaft")
+
+    def _drive(self, e, tau) -> None:
+        """Apply the accelerating torque ``tau`` [N.m] on flange (flange.tau = −tau) and
+        its reaction on the support."""
+        e.flow(self.flange, -tau)
+        if self.useSupport:
+            e.flow(self.support, tau)
+
+
+class PartialElementaryTwoFlangesAndSupport2(_OneSupport):
+    """``flange_a``, ``flange_b`` and, with ``useSupport=True``, a ``support`` flange."""
+    flange_a = Flange("flange of left shaft")
+    flange_b = Flange("flange of right shaft")
+
+
+class PartialElementaryRotationalToTranslational(_WithOptions):
+    """Rotational ``flangeR`` and translational ``flangeT``; with ``useSupportR`` /
+    ``useSupportT`` a rotational ``supportR`` / translational ``supportT`` housing flange."""
+    options = {"useSupportR": False, "useSupportT": False}
+    flangeR = Flange("flange of rotational shaft")
+    flangeT = TranslationalFlange("flange of translational rod")
+
+    def _conditional_ports(self):
+        if self.useSupportR:
+            self.supportR = _support_port("rotational support/housing of component")
+        if self.useSupportT:
+            self.supportT = TranslationalFlange("translational support/housing of component",
+                                                required=True)
+
+    def _declare(self, s, aR, aT, name: str) -> None:
+        """aR·(flangeR.phi − supportR.phi) + aT·(flangeT.s − supportT.s) = 0."""
+        coeffs = {self.flangeR: aR, self.flangeT: aT}
+        if self.useSupportR:
+            coeffs[self.supportR] = -aR
+        if self.useSupportT:
+            coeffs[self.supportT] = -aT
+        s.linear(coeffs, 0.0, name)
+
+
+# =========================================================================================
+# Components
+# =========================================================================================
+class Fixed(Component):
+    """Flange fixed in the housing at a given angle phi0 [rad]."""
+    phi0 = Parameter(0.0, "rad", "fixed offset angle of housing")
+    flange = Flange("flange fixed in housing at angle phi0")
+
+    def structure(self, s):
+        s.linear({self.flange: 1.0}, self.phi0)
+
+
+class Inertia(Component):
+    """1-D rotational component with inertia J [kg.m²]; states phi [rad] and w [rad/s];
+    a [rad/s²] recorded. flange_a.phi = flange_b.phi = phi.
+
+    MSL allows J = 0 (min=0); here J must be > 0 (a massless rigid link is a connection).
+    """
+    J = Parameter(1.0, "kg.m2", "moment of inertia", positive=True)
+    flange_a = Flange("left flange of shaft")
+    flange_b = Flange("right flange of shaft")
+
+    def structure(self, s):
+        self._body = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
+        s.linear({self.flange_a: 1.0, self._body: -1.0}, 0.0)
+        s.linear({self.flange_b: 1.0, self._body: -1.0}, 0.0)
+
+    def physics(self, e):
+        e.kinetic_energy(0.5 * self.J * e.vel(self._body) ** 2)
+
+
+class Disc(Component):
+    """Rigid massless disc: flange_b is rotated by deltaPhi [rad] with respect to flange_a.
+
+    flange_a.phi = phi − deltaPhi/2, flange_b.phi = phi + deltaPhi/2 (phi recorded).
+    """
+    deltaPhi = Parameter(0.0, "rad", "fixed rotation of left flange with respect to right "
+                                     "flange (= flange_b.phi - flange_a.phi)")
+    flange_a = Flange("left flange of shaft")
+    flange_b = Flange("right flange of shaft")
+
+    def structure(self, s):
+        s.linear({self.flange_b: 1.0, self.flange_a: -1.0}, self.deltaPhi)
+
+    def physics(self, e):
+        e.variable("phi", e.pos(self.flange_a) + self.deltaPhi / 2, "rad",
+                   "absolute rotation angle of component")
+
+
+class PartialCompliant(Component):
+    """Two flanges and a torque tau [N.m] = flange_b.tau = −flange_a.tau, a function of
+    phi_rel = flange_b.phi − flange_a.phi [rad] and w_rel = der(phi_rel) [rad/s].
+
+    Records phi_rel, w_rel, a_rel, tau (and lossPower [W] for elements with damping).
+    """
+    flange_a = Flange("left flange of compliant 1-dim. rotational component")
+    flange_b = Flange("right flange of compliant 1-dim. rotational component")
+
+    def torque(self, phi_rel, w_rel):
+        """The torque tau [N.m] on flange_b for phi_rel [rad] and w_rel [rad/s]."""
+        raise NotImplementedError
+
+    def loss_power(self, phi_rel, w_rel):
+        """Dissipated power [W] (None: no dissipation)."""
+        return None
+
+    def physics(self, e):
+        phi_rel = e.pos(self.flange_b) - e.pos(self.flange_a)
+        w_rel = e.vel(self.flange_b) - e.vel(self.flange_a)
+        tau = self.torque(phi_rel, w_rel)
+        e.flow(self.flange_b, tau)
+        e.flow(self.flange_a, -tau)
+        e.variable("phi_rel", phi_rel, "rad", "relative rotation angle (flange_b - flange_a)")
+        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity")
+        e.variable("tau", tau, "N.m", "torque between flanges (= flange_b.tau)")
+        loss = self.loss_power(phi_rel, w_rel)
+        if loss is not None:
+            e.variable("a_rel", e.acc(self.flange_b) - e.acc(self.flange_a), "rad/s2",
+                       "relative angular acceleration")
+            e.variable("lossPower", loss, "W", "loss power leaving the component as heat")
+
+
+class Spring(PartialCompliant):
+    """Linear 1-D rotational spring: tau = c·(phi_rel − phi_rel0).
+
+    Default c = 1e5 N.m/rad: MSL's start value (MSL declares no default).
+    """
+    c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
+    phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
+
+    def torque(self, phi_rel, w_rel):
+        return self.c * (phi_rel - self.phi_rel0)
+
+
+class Damper(PartialCompliant):
+    """Linear 1-D rotational damper: tau = d·w_rel; lossPower = tau·w_rel."""
+    d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
+
+    def torque(self, phi_rel, w_rel):
+        return self.d * w_rel
+
+    def loss_power(self, phi_rel, w_rel):
+        return self.d * w_rel ** 2
+
+
+class SpringDamper(PartialCompliant):
+    """Linear spring and damper in parallel: tau = c·(phi_rel − phi_rel0) + d·w_rel;
+    lossPower = d·w_rel². Default c = 1e5 N.m/rad (MSL's start value)."""
+    c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
+    d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
+    phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
+
+    def torque(self, phi_rel, w_rel):
+        return self.c * (phi_rel - self.phi_rel0) + self.d * w_rel
+
+    def loss_power(self, phi_rel, w_rel):
+        return self.d * w_rel ** 2
+
+
+class IdealGear(PartialElementaryTwoFlangesAndSupport2):
+    """Ideal gear without inertia: phi_a = ratio·phi_b, 0 = ratio·flange_a.tau + flange_b.tau,
+    with phi_a = flange_a.phi − phi_support, phi_b = flange_b.phi − phi_support (recorded).
+
+    ``ratio`` (flange_a.phi/flange_b.phi, default 1 = MSL start value) must not be 0; the
+    support (useSupport=True) takes −(flange_a.tau + flange_b.tau).
+    """
+    ratio = Parameter(1.0, "1", "transmission ratio (flange_a.phi/flange_b.phi)", nonzero=True)
+
+    def structure(self, s):
+        self._relative(s, {self.flange_a: 1.0, self.flange_b: -self.ratio}, 0.0,
+                       f"{self.path}: phi_a = ratio*phi_b")
+
+    def physics(self, e):
+        phi_s = self._phi_support(e)
+        e.variable("phi_a", e.pos(self.flange_a) - phi_s, "rad",
+                   "angle between left shaft flange and support")
+        e.variable("phi_b", e.pos(self.flange_b) - phi_s, "rad",
+                   "angle between right shaft flange and support")
+
+
+class IdealPlanetary(Component):
+    """Ideal planetary gear box (Willis): (1 + ratio)·carrier.phi = sun.phi + ratio·ring.phi;
+    ring.tau = ratio·sun.tau, carrier.tau = −(1 + ratio)·sun.tau.
+
+    ``ratio`` = ring teeth / sun teeth (default 100/50 = MSL start value), > 0.
+    """
+    ratio = Parameter(2.0, "1", "number of ring_teeth/sun_teeth (e.g. ratio=100/50)",
+                      positive=True)
+    sun = Flange("flange of sun shaft")
+    carrier = Flange("flange of carrier shaft")
+    ring = Flange("flange of ring shaft")
+
+    def structure(self, s):
+        s.linear({self.carrier: 1.0 + self.ratio, self.sun: -1.0, self.ring: -self.ratio},
+                 0.0, f"{self.path}: (1 + ratio)*carrier.phi = sun.phi + ratio*ring.phi")
+
+
+class IdealRollingWheel(PartialElementaryRotationalToTranslational):
+    """Ideal rolling wheel without inertia: (flangeR.phi − supportR.phi)·radius =
+    flangeT.s − supportT.s; 0 = radius·flangeT.f + flangeR.tau.
+
+    ``radius`` [m] > 0 (default 0.3 = MSL start value).
+    """
+    radius = Parameter(0.3, "m", "wheel radius", positive=True)
+
+    def structure(self, s):
+        self._declare(s, self.radius, -1.0, f"{self.path}: radius*phi = s")
+
+
+class IdealGearR2T(PartialElementaryRotationalToTranslational):
+    """Gearbox rotational → translational: (flangeR.phi − supportR.phi) =
+    ratio·(flangeT.s − supportT.s); 0 = ratio·flangeR.tau + flangeT.f.
+
+    ``ratio`` [rad/m] ≠ 0 (default 1 = MSL start value).
+    """
+    ratio = Parameter(1.0, "rad/m", "transmission ratio (flangeR.phi/flangeT.s)",
+                      nonzero=True)
+
+    def structure(self, s):
+        self._declare(s, 1.0, -self.ratio, f"{self.path}: phi = ratio*s")
+
+
+# =========================================================================================
+# Sources
+# =========================================================================================
+class Torque(PartialElementaryOneFlangeAndSupport2):
+    """Input signal ``tau`` [N.m] acting as external torque on ``flange``: flange.tau = −tau
+    (a positive tau accelerates the flange); support.tau = tau with useSupport."""
+    tau = RealInput("accelerating torque acting at flange (= -flange.tau)")
+
+    def physics(self, e):
+        self._drive(e, e.input(self.tau))
+
+
+class Torque2(Component):
+    """Input signal ``tau`` [N.m] acting on two flanges: flange_a.tau = tau,
+    flange_b.tau = −tau."""
+    tau = RealInput("torque driving the two flanges")
+    flange_a = Flange("flange a")
+    flange_b = Flange("flange b")
+
+    def physics(self, e):
+        tau = e.input(self.tau)
+        e.flow(self.flange_a, tau)
+        e.flow(self.flange_b, -tau)
+
+
+class PartialTorque(PartialElementaryOneFlangeAndSupport2):
+    """A torque source depending on time and on the flange's motion relative to the support.
+
+    Records phi = flange.phi − phi_support [rad], w = der(phi) [rad/s] and the accelerating
+    torque tau = −flange.tau [N.m]. Subclasses define ``torque(e, phi, w)``.
+    """
+
+    def torque(self, e, phi, w):
+        """The accelerating torque [N.m] (acting on flange, positive direction)."""
+        raise NotImplementedError
+
+    def physics(self, e):
+        phi = e.pos(self.flange) - self._phi_support(e)
+        w = e.vel(self.flange) - self._w_support(e)
+        tau = self.torque(e, phi, w)
+        self._drive(e, tau)
+        e.variable("phi", phi, "rad", "angle of flange with respect to support")
+        e.variable("w", w, "rad/s", "angular velocity of flange with respect to support")
+        e.variable("tau", tau, "N.m", "accelerating torque acting at flange (= -flange.tau)")
+
+
+class ConstantTorque(PartialTorque):
+    """Constant torque tau = tau_constant [N.m], not dependent on speed (positive: accelerates
+    in positive direction). Required: tau_constant (MSL gives no default)."""
+    tau_constant = Parameter(0.0, "N.m", "constant torque (if negative, torque is acting as "
+                                         "load in positive direction of rotation)")
+    required = ("tau_constant",)
+
+    def torque(self, e, phi, w):
+        return self.tau_constant
+
+
+class QuadraticSpeedDependentTorque(PartialTorque):
+    """tau = tau_nominal·(w/w_nominal)² (TorqueDirection=True: same direction both ways), or
+    tau_nominal·(w/w_nominal)·|w/w_nominal| (TorqueDirection=False).
+
+    Required: tau_nominal, w_nominal (MSL gives no defaults).
+    """
+    options = {"TorqueDirection": True}
+    tau_nominal = Parameter(0.0, "N.m", "nominal torque (if negative, torque is acting as "
+                                        "load in positive direction of rotation)")
+    w_nominal = Parameter(1.0, "rad/s", "nominal speed", positive=True)
+    required = ("tau_nominal", "w_nominal")
+
+    def torque(self, e, phi, w):
+        x = w / self.w_nominal
+        return self.tau_nominal * (x ** 2 if self.TorqueDirection else x * ca.fabs(x))
+
+
+class LinearSpeedDependentTorque(PartialTorque):
+    """tau = tau_nominal·|w/w_nominal| (TorqueDirection=True) or tau_nominal·w/w_nominal
+    (TorqueDirection=False). Required: tau_nominal, w_nominal (MSL gives no defaults)."""
+    options = {"TorqueDirection": True}
+    tau_nominal = Parameter(0.0, "N.m", "nominal torque (if negative, torque is acting as "
+                                        "load in positive direction of rotation)")
+    w_nominal = Parameter(1.0, "rad/s", "nominal speed", positive=True)
+    required = ("tau_nominal", "w_nominal")
+
+    def torque(self, e, phi, w):
+        x = w / self.w_nominal
+        return self.tau_nominal * (ca.fabs(x) if self.TorqueDirection else x)
+
+
+class TorqueStep(PartialTorque):
+    """tau = offsetTorque + (0 if time < startTime else stepTorque) [N.m]."""
+    stepTorque = Parameter(1.0, "N.m", "height of torque step (if negative, torque is acting "
+                                       "as load)")
+    offsetTorque = Parameter(0.0, "N.m", "offset of torque")
+    startTime = Parameter(0.0, "s", "torque = offset for time < startTime")
+
+    def torque(self, e, phi, w):
+        return self.offsetTorque + ca.if_else(e.time < self.startTime, 0.0, self.stepTorque)
+
+
+class _PrescribedMotion(PartialElementaryOneFlangeAndSupport2):
+    """flange.phi − phi_support = (a function of time, signals and internal states)."""
+
+    def _prescribe(self, s, rhs):
+        self._relative(s, {self.flange: 1.0}, rhs, f"{self.path}: prescribed angle")
+
+    def _record_relative(self, e, *which):
+        """Record phi, w, a of flange relative to support (those not already states)."""
+        if "phi" in which:
+            e.variable("phi", e.pos(self.flange) - self._phi_support(e), "rad",
+                       "rotation angle of flange with respect to support")
+        if "w" in which:
+            e.variable("w", e.vel(self.flange) - self._w_support(e), "rad/s",
+                       "angular velocity of flange with respect to support")
+        if "a" in which:
+            e.variable("a", e.acc(self.flange) - self._a_support(e), "rad/s2",
+                       "angular acceleration of flange with respect to support")
+
+
+class Position(_PrescribedMotion):
+    """Forced movement of ``flange`` (relative to support) by the reference angle ``phi_ref``.
+
+    exact=False (default, as MSL): phi_ref passes a critically damped 2nd-order Bessel filter
+    with cut-off f_crit [Hz] (default 50): a = ((phi_ref − phi)·w_crit − af·w)·(w_crit/bf),
+    w_crit = 2π·f_crit, af = 1.3617, bf = 0.6180; states phi [rad], w [rad/s] (any signal
+    works, model inputs included).
+    exact=True: flange.phi − phi_support = phi_ref exactly; phi_ref must be a function of time
+    (its first two derivatives are taken by algorithmic differentiation).
+
+    Differences from MSL: the filter starts at phi = 0, w = 0 (MSL: phi = phi_ref(0) by an
+    initial equation): when phi_ref(0) ≠ 0 give ``x0={"<name>.phi": phi_ref(0)}``. With
+    exact=True, w and a are the actual relative speed and acceleration (MSL: dummies 0).
+    """
+    options = {"exact": False}
+    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
+                                   "input signal", positive=True)
+    phi_ref = RealInput("reference angle of flange with respect to support [rad]")
+    af = 1.3617   # s coefficient of Bessel filter
+    bf = 0.6180   # s*s coefficient of Bessel filter
+
+    def structure(self, s):
+        if self.exact:
+            self._prescribe(s, s.input(self.phi_ref))
+        else:
+            self._w = s.state("w", 0.0, "rad/s", "angular velocity of flange with respect to "
+                                                 "support (filter state)")
+            self._phi = s.state("phi", 0.0, "rad", "rotation angle of flange with respect to "
+                                                   "support (filter state)", der=self._w)
+            self._prescribe(s, self._phi)
+
+    def physics(self, e):
+        if self.exact:
+            self._record_relative(e, "phi", "w", "a")
+            return
+        w_crit = 2 * math.pi * self.f_crit
+        a = ((e.input(self.phi_ref) - self._phi) * w_crit - self.af * self._w) * (w_crit / self.bf)
+        e.derivative(self._w, a)
+        e.variable("a", a, "rad/s2", "angular acceleration of flange with respect to support")
+
+
+class Speed(_PrescribedMotion):
+    """Forced movement of ``flange`` (relative to support) by the reference speed ``w_ref``.
+
+    phi = ∫w is a state (start 0, as MSL's phi(start=0, fixed=true)).
+    exact=False (default): w follows w_ref through a first-order filter with cut-off f_crit
+    [Hz]: a = (w_ref − w)·2π·f_crit; w is a state (any signal works).
+    exact=True: w = w_ref exactly; w_ref must be a function of time (differentiated once).
+
+    Difference from MSL: the filter starts at w = 0 (MSL: w = w_ref(0) by an initial
+    equation): give ``x0={"<name>.w": w_ref(0)}`` when it differs.
+    """
+    options = {"exact": False}
+    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
+                                   "input signal", positive=True)
+    w_ref = RealInput("reference angular velocity of flange with respect to support [rad/s]")
+
+    def structure(self, s):
+        if self.exact:
+            w = s.input(self.w_ref)
+        else:
+            w = self._w = s.state("w", 0.0, "rad/s", "angular velocity of flange with respect "
+                                                     "to support (filter state)")
+        self._phi = s.state("phi", 0.0, "rad", "rotation angle of flange with respect to "
+                                               "support", der=w)
+        self._prescribe(s, self._phi)
+
+    def physics(self, e):
+        if self.exact:
+            self._record_relative(e, "w", "a")
+            return
+        a = (e.input(self.w_ref) - self._w) * (2 * math.pi * self.f_crit)
+        e.derivative(self._w, a)
+        e.variable("a", a, "rad/s2", "angular acceleration of flange with respect to support")
+
+
+class Accelerate(_PrescribedMotion):
+    """Forced movement of ``flange`` (relative to support) by the acceleration ``a_ref``
+    [rad/s²]; phi and w are states integrated from 0 (MSL: start=0, fixed=true)."""
+    a_ref = RealInput("absolute angular acceleration of flange with respect to support")
+
+    def structure(self, s):
+        self._w = s.state("w", 0.0, "rad/s", "angular velocity of flange with respect to "
+                                             "support", der=s.input(self.a_ref))
+        self._phi = s.state("phi", 0.0, "rad", "rotation angle of flange with respect to "
+                                               "support", der=self._w)
+        self._prescribe(s, self._phi)
+
+    def physics(self, e):
+        e.variable("a", e.input(self.a_ref), "rad/s2",
+                   "angular acceleration of flange with respect to support")
+
+
+class Move(_PrescribedMotion):
+    """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
+    (angle [rad]), ``u[2]`` (angular velocity [rad/s]), ``u[3]`` (angular acceleration
+    [rad/s²]), numbered from 1 as in MSL: ``connect(src.y, move.u[1])``.
+
+    Difference from MSL (same as translational.Move): the compiler cannot yet be told that
+    u[2], u[3] are the derivatives of u[1]; the motion is phi = u[1], with its velocity and
+    acceleration taken from u[1] by algorithmic differentiation (u[1] must be a function of
+    time, as for Position(exact=True)). For consistent signals (MSL's requirement) this is
+    the same motion; MSL's deliberately inconsistent use (u[2] = u[3] = 0) is not
+    reproduced. u[2], u[3] must be connected; they are recorded as ``w_u``, ``a_u`` next to
+    the actual ``w``, ``a`` so that the two can be compared.
+    """
+
+    def _conditional_ports(self):
+        super()._conditional_ports()
+        for i, what in enumerate(("angle", "angular velocity", "angular acceleration"), 1):
+            setattr(self, f"u[{i}]", RealInput(f"{what} of flange with respect to support "
+                                               f"as input signal"))
+        self.__dict__["u"] = _Vector("Move", "u", [getattr(self, f"u[{i}]") for i in (1, 2, 3)])
+
+    def structure(self, s):
+        self._prescribe(s, s.input(self.u[1]))
+
+    def physics(self, e):
+        self._record_relative(e, "phi", "w", "a")
+        e.variable("w_u", e.input(self.u[2]), "rad/s", "angular velocity input u[2]")
+        e.variable("a_u", e.input(self.u[3]), "rad/s2", "angular acceleration input u[3]")
+
+
+class ConstantSpeed(_PrescribedMotion):
+    """Constant speed w = w_fixed [rad/s] of flange relative to support, not dependent on
+    torque; phi is a state (start 0). Records also tau = −flange.tau [N.m], the torque the
+    source delivers (not an MSL variable). Required: w_fixed (MSL gives no default)."""
+    w_fixed = Parameter(0.0, "rad/s", "fixed speed")
+    required = ("w_fixed",)
+
+    def structure(self, s):
+        self._phi = s.state("phi", 0.0, "rad", "angle of flange with respect to support",
+                            der=self.w_fixed)
+        self._prescribe(s, self._phi)
+
+    def physics(self, e):
+        e.variable("w", self.w_fixed, "rad/s",
+                   "angular velocity of flange with respect to support")
+        e.variable("tau", -e.cut_flow(self.flange), "N.m",
+                   "torque the source applies to the flange (= -flange.tau)")
+
+
+# =========================================================================================
+# Sensors
+# =========================================================================================
+class PartialAbsoluteSensor(Component):
+    """Measures an absolute quantity of ``flange`` (no torque: flange.tau = 0)."""
+    flange = Flange("flange to be measured", required=True)
+
+
+class PartialRelativeSensor(Component):
+    """Measures between ``flange_a`` and ``flange_b``."""
+    flange_a = Flange("left flange of shaft", required=True)
+    flange_b = Flange("right flange of shaft", required=True)
+
+
+class AngleSensor(PartialAbsoluteSensor):
+    """Output ``phi`` [rad]: absolute angle of flange."""
+    phi = RealOutput("absolute angle of flange [rad]")
+
+    def physics(self, e):
+        e.output(self.phi, e.pos(self.flange))
+
+
+class SpeedSensor(PartialAbsoluteSensor):
+    """Output ``w`` [rad/s]: absolute angular velocity of flange."""
+    w = RealOutput("absolute angular velocity of flange [rad/s]")
+
+    def physics(self, e):
+        e.output(self.w, e.vel(self.flange))
+
+
+class AccSensor(PartialAbsoluteSensor):
+    """Output ``a`` [rad/s²]: absolute angular acceleration of flange."""
+    a = RealOutput("absolute angular acceleration of flange [rad/s2]")
+
+    def physics(self, e):
+        e.output(self.a, e.acc(self.flange))
+
+
+class _RigidRelativeSensor(PartialRelativeSensor):
+    """flange_a.phi = flange_b.phi; the cut torque tau = flange_a.tau = −flange_b.tau."""
+
+    def structure(self, s):
+        s.linear({self.flange_a: 1.0, self.flange_b: -1.0}, 0.0, f"{self.path}: rigid")
+
+
+class TorqueSensor(_RigidRelativeSensor):
+    """Output ``tau`` [N.m] = flange_a.tau: the cut torque transmitted from flange_a to
+    flange_b (rigid: flange_a.phi = flange_b.phi)."""
+    tau = RealOutput("torque in flange flange_a and flange_b (tau = flange_a.tau = "
+                     "-flange_b.tau) [N.m]")
+
+    def physics(self, e):
+        e.output(self.tau, e.cut_flow(self.flange_a))
+
+
+class PowerSensor(_RigidRelativeSensor):
+    """Output ``power`` [W] = flange_a.tau·der(flange_a.phi) (rigid)."""
+    power = RealOutput("power in flange flange_a [W]")
+
+    def physics(self, e):
+        e.output(self.power, e.cut_flow(self.flange_a) * e.vel(self.flange_a))
+
+
+class MultiSensor(_RigidRelativeSensor):
+    """Outputs ``w`` [rad/s] of flange_a, ``tau`` = flange_a.tau [N.m] and
+    ``power`` = tau·w [W] (rigid)."""
+    power = RealOutput("power in flange flange_a [W]")
+    w = RealOutput("absolute angular velocity of flange_a [rad/s]")
+    tau = RealOutput("torque in flange flange_a and flange_b (tau = flange_a.tau = "
+                     "-flange_b.tau) [N.m]")
+
+    def physics(self, e):
+        w, tau = e.vel(self.flange_a), e.cut_flow(self.flange_a)
+        e.output(self.w, w)
+        e.output(self.tau, tau)
+        e.output(self.power, tau * w)
+
+
+class RelAngleSensor(PartialRelativeSensor):
+    """Output ``phi_rel`` = flange_b.phi − flange_a.phi [rad]."""
+    phi_rel = RealOutput("relative angle between two flanges (= flange_b.phi - "
+                         "flange_a.phi) [rad]")
+
+    def physics(self, e):
+        e.output(self.phi_rel, e.pos(self.flange_b) - e.pos(self.flange_a))
+
+
+class RelSpeedSensor(PartialRelativeSensor):
+    """Output ``w_rel`` = der(flange_b.phi − flange_a.phi) [rad/s]; phi_rel recorded."""
+    w_rel = RealOutput("relative angular velocity between two flanges [rad/s]")
+
+    def physics(self, e):
+        e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad")
+        e.output(self.w_rel, e.vel(self.flange_b) - e.vel(self.flange_a))
+
+
+class RelAccSensor(PartialRelativeSensor):
+    """Output ``a_rel`` [rad/s²], second derivative of flange_b.phi − flange_a.phi;
+    phi_rel and w_rel recorded."""
+    a_rel = RealOutput("relative angular acceleration between two flanges [rad/s2]")
+
+    def physics(self, e):
+        e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad")
+        e.variable("w_rel", e.vel(self.flange_b) - e.vel(self.flange_a), "rad/s")
+        e.output(self.a_rel, e.acc(self.flange_b) - e.acc(self.flange_a))
+
+
+# =========================================================================================
+# Actuators
+# =========================================================================================
+class DCMotor(PartialElementaryOneFlangeAndSupport2):
+    """Permanent-magnet DC motor driven by the armature voltage ``v`` [V] (RealInput).
+
+    Armature:  L·di/dt = v − R·i − k·w_rel    (state ``i`` [A], start 0)
+    Air gap:   tau_el = k·i on ``flange`` (reaction −k·i on ``support`` with useSupport)
+    Rotor:     inertia J on ``flange``; states ``phi`` [rad], ``w`` [rad/s] (absolute)
+
+    w_rel = w − support speed. k [N.m/A] is both the torque and the back-emf constant
+    [V.s/rad]. Defaults follow MSL's DC_PermanentMagnet data record
+    (Electrical.Machines.Utilities.ParameterRecords.DcPermanentMagnetData): R = Ra = 0.05 Ω,
+    L = La = 1.5 mH, J = Jr = 0.15 kg.m², and k = (VaNominal − Ra·IaNominal)/wNominal =
+    (100 V − 5 V)/(1425 rpm) = 2/π ≈ 0.6366 N.m/A. Records tau_el [N.m], vi = k·w_rel [V]
+    (induced voltage) and the electrical input power pin = v·i [W].
+    """
+    R = Parameter(0.05, "Ohm", "armature resistance", nonnegative=True)
+    L = Parameter(0.0015, "H", "armature inductance", positive=True)
+    k = Parameter(2.0 / math.pi, "N.m/A", "motor constant (torque per current = back-emf per "
+                                          "speed)")
+    J = Parameter(0.15, "kg.m2", "rotor's moment of inertia", positive=True)
+    v = RealInput("armature voltage [V]")
+
+    def structure(self, s):
+        self._rotor = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
+        s.linear({self.flange: 1.0, self._rotor: -1.0}, 0.0)
+        self._i = s.state("i", 0.0, "A", "armature current")
+
+    def physics(self, e):
+        w = e.vel(self._rotor)
+        w_rel = w - self._w_support(e)
+        v = e.input(self.v)
+        tau_el = self.k * self._i
+        e.kinetic_energy(0.5 * self.J * w ** 2)
+        self._drive(e, tau_el)
+        e.derivative(self._i, (v - self.R * self._i - self.k * w_rel) / self.L)
+        e.variable("tau_el", tau_el, "N.m", "electrical (air gap) torque")
+        e.variable("vi", self.k * w_rel, "V", "induced (back-emf) voltage")
+        e.variable("pin", v * self._i, "W", "electrical input power")

@@ -1,0 +1,577 @@
+"""Causal signal blocks, after Modelica.Blocks (MSL 4.0): sources, math, continuous blocks.
+
+Names, parameters, defaults and equations are those of the MSL blocks, so a block diagram
+written against MSL translates line by line: ``Step(height=2, startTime=1)``,
+``connect(step.y, feedback.u1)``, ``PID(k=..., Ti=..., Td=..., Nd=...)``.
+
+Signals are dimensionless in general (``Real``); time parameters are in seconds [s],
+frequencies in [Hz], angles in [rad]. Numeric parameters are acausal Parameters (symbolic,
+changeable at simulation time without recompiling); structural data (a table, the number of
+inputs of ``Sum``) and initial values of block states are constructor arguments.
+
+Initialization: a block's states start at their start values (``y_start``, ``x_start``, ...),
+which is MSL's ``initType=Init.InitialState`` (and what MSL tools do with ``Init.NoInit`` when
+nothing else fixes the state). Other initial values are given at simulation time by the
+dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}`` (MSL's
+``Init.InitialOutput``). Steady-state initialization is not provided.
+
+Sources are expressions of time built with CasADi functions (``if_else``, ``floor``), so they
+are exact, differentiable where the MSL signal is, and usable inside optimal control
+problems. Discontinuous sources (Step, Pulse, TimeTable jumps) generate no solver events:
+the variable-step integrator resolves the jump by reducing its step; give ``max_step`` to
+``simulate`` if a pulse is shorter than the steps the integrator would otherwise take.
+
+A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
+mechanical part; a purely algebraic loop is reported by the compiler as an error.
+"""
+from __future__ import annotations
+
+import math
+
+import casadi as ca
+import numpy as np
+
+from ..core import Component, Parameter, ParameterError, RealInput, RealOutput
+
+#: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
+EPS = 1e-15
+
+__all__ = [
+    "SO", "SISO", "SI2SO", "SignalSource",
+    "Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid", "TimeTable",
+    "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
+    "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID",
+]
+
+
+# ---- interfaces (Modelica.Blocks.Interfaces) --------------------------------------------------
+class SO(Component):
+    """Single output ``y``."""
+    y = RealOutput("connector of Real output signal")
+
+
+class SISO(SO):
+    """Single input ``u``, single output ``y``."""
+    u = RealInput("connector of Real input signal")
+
+
+class SI2SO(SO):
+    """Two inputs ``u1``, ``u2``, single output ``y``."""
+    u1 = RealInput("connector of Real input signal 1")
+    u2 = RealInput("connector of Real input signal 2")
+
+
+class SignalSource(SO):
+    """A source y = offset + (0 before startTime, else ``signal(time)``).
+
+    Subclasses implement ``signal(t)``: the value without offset at time t ≥ startTime [s].
+    """
+    offset = Parameter(0.0, "", "offset of output signal y")
+    startTime = Parameter(0.0, "s", "output y = offset for time < startTime")
+
+    def signal(self, t):
+        raise NotImplementedError
+
+    def events(self) -> list:
+        """Times [s] where the signal jumps or kinks, as (time, period or None) pairs; the
+        integrator restarts there instead of stepping across."""
+        return [(self.startTime, None)]
+
+    def physics(self, e):
+        t = e.time
+        e.output(self.y, self.offset + ca.if_else(t < self.startTime, 0, self.signal(t)))
+        for time, period in self.events():
+            e.time_event(time, period)
+
+
+class _Vector:
+    """Ports of a vector connector (``Sum.u``), numbered from 1 as in Modelica: ``u[1]``."""
+
+    def __init__(self, owner_type: str, name: str, items: list):
+        self._owner_type, self._name, self._items = owner_type, name, list(items)
+
+    def __getitem__(self, i: int):
+        if not isinstance(i, (int, np.integer)) or not 1 <= i <= len(self._items):
+            raise IndexError(f"{self._owner_type}.{self._name}[{i}]: index out of range; the "
+                             f"elements are numbered 1..{len(self._items)} as in Modelica")
+        return self._items[i - 1]
+
+    def __len__(self):
+        return len(self._items)
+
+    def __iter__(self):
+        return iter(self._items)
+
+    def __repr__(self):
+        return f"[{', '.join(p.path if p.owner.path else p.name for p in self._items)}]"
+
+
+def _start(value, what: str) -> float:
+    """A start value given to a constructor, as float (a ParameterError otherwise)."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{what} must be a number, got {value!r}") from None
+    if not math.isfinite(v):
+        raise ParameterError(f"{what} must be finite, got {v}")
+    return v
+
+
+# ---- sources (Modelica.Blocks.Sources) ----------------------------------------------------------
+class Constant(SO):
+    """Constant output: y = k."""
+    k = Parameter(1.0, "", "constant output value")
+
+    def physics(self, e):
+        e.output(self.y, self.k)
+
+
+class Step(SignalSource):
+    """Step: y = offset + (0 if time < startTime else height)."""
+    height = Parameter(1.0, "", "height of step")
+
+    def signal(self, t):
+        return self.height
+
+
+class Ramp(SignalSource):
+    """Ramp from offset to offset + height between startTime and startTime + duration [s]
+    (duration = 0 gives a step)."""
+    height = Parameter(1.0, "", "height of ramps")
+    duration = Parameter(2.0, "s", "duration of ramp (= 0.0 gives a Step)", nonnegative=True)
+
+    def signal(self, t):
+        tau = t - self.startTime
+        return ca.if_else(tau < self.duration, tau * self.height / self.duration, self.height)
+
+    def events(self):
+        return [(self.startTime, None), (self.startTime + self.duration, None)]
+
+
+class Sine(SignalSource):
+    """Sine: y = offset + amplitude·sin(2π·f·(time − startTime) + phase) after startTime."""
+    amplitude = Parameter(1.0, "", "amplitude of sine wave")
+    f = Parameter(1.0, "Hz", "frequency of sine wave")
+    phase = Parameter(0.0, "rad", "phase of sine wave")
+
+    def signal(self, t):
+        return self.amplitude * ca.sin(2 * ca.pi * self.f * (t - self.startTime) + self.phase)
+
+
+class Cosine(SignalSource):
+    """Cosine: y = offset + amplitude·cos(2π·f·(time − startTime) + phase) after startTime."""
+    amplitude = Parameter(1.0, "", "amplitude of cosine wave")
+    f = Parameter(1.0, "Hz", "frequency of cosine wave")
+    phase = Parameter(0.0, "rad", "phase of cosine wave")
+
+    def signal(self, t):
+        return self.amplitude * ca.cos(2 * ca.pi * self.f * (t - self.startTime) + self.phase)
+
+
+class ExpSine(SignalSource):
+    """Exponentially damped sine: y = offset + amplitude·exp(−damping·τ)·sin(2π·f·τ + phase),
+    τ = time − startTime ≥ 0."""
+    amplitude = Parameter(1.0, "", "amplitude of sine wave")
+    f = Parameter(2.0, "Hz", "frequency of sine wave")
+    phase = Parameter(0.0, "rad", "phase of sine wave")
+    damping = Parameter(1.0, "1/s", "damping coefficient of sine wave")
+
+    def signal(self, t):
+        tau = t - self.startTime
+        return (self.amplitude * ca.exp(-tau * self.damping)
+                * ca.sin(2 * ca.pi * self.f * tau + self.phase))
+
+
+class _Periodic(SignalSource):
+    """A periodic source: period [s], nperiod periods (< 0: infinitely many) from startTime.
+
+    Every corner of the wave is a time event: the integrator restarts there, so it never
+    steps over a pulse.
+    """
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+    nperiod = Parameter(-1, "", "number of periods (< 0 means infinite number of periods)")
+
+    def wave(self, tp):
+        """The value within one period at tp ∈ [0, period) [s]."""
+        raise NotImplementedError
+
+    def corners(self) -> list:
+        """Times within a period [s] where the wave jumps or kinks."""
+        return []
+
+    def events(self):
+        return [(self.startTime + c, self.period) for c in [ca.SX(0)] + self.corners()]
+
+    def signal(self, t):
+        tau = t - self.startTime
+        count = ca.floor(tau / self.period)
+        tp = tau - count * self.period
+        done = ca.logic_and(self.nperiod >= 0, count >= self.nperiod)
+        return ca.if_else(done, 0, self.wave(tp))
+
+
+class Pulse(_Periodic):
+    """Pulse train: amplitude during the first ``width`` percent of every period, else 0."""
+    amplitude = Parameter(1.0, "", "amplitude of pulse")
+    width = Parameter(50.0, "%", "width of pulse in % of period", positive=True)
+
+    def wave(self, tp):
+        return ca.if_else(tp < self.period * self.width / 100, self.amplitude, 0)
+
+    def corners(self):
+        return [self.period * self.width / 100]
+
+
+class Trapezoid(_Periodic):
+    """Trapezoid: rises to amplitude in ``rising``, holds ``width``, falls in ``falling`` [s],
+    then 0 until the end of the period."""
+    amplitude = Parameter(1.0, "", "amplitude of trapezoid")
+    rising = Parameter(0.0, "s", "rising duration of trapezoid", nonnegative=True)
+    width = Parameter(0.5, "s", "width duration of trapezoid", nonnegative=True)
+    falling = Parameter(0.0, "s", "falling duration of trapezoid", nonnegative=True)
+
+    def wave(self, tp):
+        a = self.amplitude
+        t_w = self.rising + self.width
+        t_f = t_w + self.falling
+        return ca.if_else(tp < self.rising, a * tp / self.rising,
+                          ca.if_else(tp < t_w, a,
+                                     ca.if_else(tp < t_f, a * (t_f - tp) / self.falling, 0)))
+
+    def corners(self):
+        t_w = self.rising + self.width
+        return [self.rising, t_w, t_w + self.falling]
+
+
+class TimeTable(SignalSource):
+    """Linear interpolation in a table of [time, value] rows (MSL Sources.TimeTable).
+
+    ``table`` (constructor argument, an (n, 2) array-like): times in the first column,
+    non-decreasing, the first one 0 when n > 1; a time given twice is a jump (the later row
+    holds from that time on). For time ≥ startTime the output is
+    ``offset + interp((time − shiftTime)/timeScale)``, extrapolated through the first or
+    last two rows outside the table; before startTime it is ``offset``; a one-row table gives
+    its value. ``shiftTime`` [s] defaults to startTime (the MSL binding: the table then
+    follows startTime, also when startTime is changed at simulation time); giving it at
+    construction makes it a parameter of its own.
+    """
+    timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
+
+    def __new__(cls, name=None, *, table=None, shiftTime=None, **params):
+        if cls is TimeTable and shiftTime is not None:
+            cls = _ShiftedTimeTable
+        return super().__new__(cls)
+
+    def __init__(self, name: str | None = None, *, table=None, shiftTime=None, **params):
+        if name is not None and not isinstance(name, str):
+            raise ParameterError("TimeTable: give the table by keyword, TimeTable(table=...)")
+        if shiftTime is not None:
+            params["shiftTime"] = shiftTime
+        super().__init__(name, **params)
+        self.__dict__["table"] = _check_table(table)
+
+    def _shift(self):
+        return self.startTime
+
+    def signal(self, t):
+        tab = self.table
+        tau = (t - self._shift()) / self.timeScale
+        n = tab.shape[0]
+        if n == 1:
+            return ca.SX(tab[0, 1])
+
+        def piece(j):      # MSL: interval [j-1, j]; a zero-length one gives the value of row j
+            t0, y0 = tab[j - 1]
+            t1, y1 = tab[j]
+            if t1 - t0 <= 100 * EPS * abs(t1):
+                return ca.SX(y1)
+            return y0 + (y1 - y0) / (t1 - t0) * (tau - t0)
+
+        expr = piece(n - 1)
+        for j in range(n - 2, 0, -1):
+            expr = ca.if_else(tau < tab[j, 0], piece(j), expr)
+        return expr
+
+    def events(self):
+        shift = self._shift()
+        return [(self.startTime, None)] + [(shift + self.timeScale * float(tk), None)
+                                           for tk in self.table[1:-1, 0]]
+
+
+class _ShiftedTimeTable(TimeTable):
+    """TimeTable with an explicit shiftTime parameter (created by TimeTable(shiftTime=...))."""
+    shiftTime = Parameter(0.0, "s", "shift time of first table column")
+
+    def _shift(self):
+        return self.shiftTime
+
+
+_ShiftedTimeTable.__name__ = "TimeTable"        # what messages and repr call it
+
+
+def _check_table(table) -> np.ndarray:
+    if table is None:
+        raise ParameterError("TimeTable: no table given; pass table=[[t0, y0], [t1, y1], ...]")
+    try:
+        tab = np.array(table, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"TimeTable: table must be numbers in rows [time, value], got "
+                             f"{table!r}") from None
+    if tab.ndim == 1 and tab.size == 2:
+        tab = tab.reshape(1, 2)
+    if tab.ndim != 2 or tab.shape[1] != 2 or tab.shape[0] < 1:
+        raise ParameterError(f"TimeTable: table must have rows [time, value] (shape (n, 2)), "
+                             f"got shape {tab.shape}")
+    if not np.all(np.isfinite(tab)):
+        raise ParameterError("TimeTable: table contains non-finite values")
+    if tab.shape[0] > 1:
+        if tab[0, 0] != 0.0:
+            raise ParameterError(f"TimeTable: the first point in time has to be 0, but is "
+                                 f"table[1,1] = {tab[0, 0]}; shift the table with shiftTime")
+        if np.any(np.diff(tab[:, 0]) < 0):
+            raise ParameterError("TimeTable: the times (first column) must be non-decreasing")
+    return tab
+
+
+# ---- math (Modelica.Blocks.Math) ---------------------------------------------------------------
+class Gain(SISO):
+    """y = k·u."""
+    k = Parameter(1.0, "1", "gain value multiplied with input signal")
+
+    def physics(self, e):
+        e.output(self.y, self.k * e.input(self.u))
+
+
+class Add(SI2SO):
+    """y = k1·u1 + k2·u2."""
+    k1 = Parameter(1.0, "", "gain of input signal 1")
+    k2 = Parameter(1.0, "", "gain of input signal 2")
+
+    def physics(self, e):
+        e.output(self.y, self.k1 * e.input(self.u1) + self.k2 * e.input(self.u2))
+
+
+class Add3(SO):
+    """y = k1·u1 + k2·u2 + k3·u3."""
+    k1 = Parameter(1.0, "", "gain of input signal 1")
+    k2 = Parameter(1.0, "", "gain of input signal 2")
+    k3 = Parameter(1.0, "", "gain of input signal 3")
+    u1 = RealInput("connector of Real input signal 1")
+    u2 = RealInput("connector of Real input signal 2")
+    u3 = RealInput("connector of Real input signal 3")
+
+    def physics(self, e):
+        e.output(self.y, self.k1 * e.input(self.u1) + self.k2 * e.input(self.u2)
+                 + self.k3 * e.input(self.u3))
+
+
+class Feedback(SO):
+    """y = u1 − u2 (commanded minus feedback signal)."""
+    u1 = RealInput("commanded input")
+    u2 = RealInput("feedback input")
+
+    def physics(self, e):
+        e.output(self.y, e.input(self.u1) - e.input(self.u2))
+
+
+class Product(SI2SO):
+    """y = u1·u2."""
+
+    def physics(self, e):
+        e.output(self.y, e.input(self.u1) * e.input(self.u2))
+
+
+class Division(SI2SO):
+    """y = u1/u2."""
+
+    def physics(self, e):
+        e.output(self.y, e.input(self.u1) / e.input(self.u2))
+
+
+class Sum(SO):
+    """y = Σ k[i]·u[i], i = 1..nin.
+
+    ``nin`` (constructor argument) is the number of inputs; the inputs are ``u[1]`` ..
+    ``u[nin]`` and the gains parameters ``k[1]`` .. ``k[nin]`` (default 1; ``k=[...]`` at
+    construction, ``params={"sum.k[2]": -1}`` at simulation time). ``sum.u`` is indexed from
+    1 as in Modelica: ``connect(src.y, sum.u[1])``.
+    """
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, nin: int = 1, k=None, **params):
+        if cls is Sum:
+            cls = Sum._with_inputs(nin)
+        return super().__new__(cls)
+
+    @staticmethod
+    def _with_inputs(nin) -> type:
+        if isinstance(nin, bool) or not isinstance(nin, (int, np.integer)) or nin < 1:
+            raise ParameterError(f"Sum: nin (number of inputs) must be an integer >= 1, "
+                                 f"got {nin!r}")
+        nin = int(nin)
+        if nin not in Sum._classes:
+            attrs = {"__doc__": Sum.__doc__, "__module__": Sum.__module__,
+                     "__qualname__": "Sum", "_nin": nin}
+            for i in range(1, nin + 1):
+                p = Parameter(1.0, "", f"gain of input u[{i}]")
+                p.__set_name__(None, f"k[{i}]")
+                attrs[f"k[{i}]"] = p
+                attrs[f"u[{i}]"] = RealInput(f"connector of Real input signal {i}")
+            Sum._classes[nin] = type("Sum", (Sum,), attrs)
+        return Sum._classes[nin]
+
+    def __init__(self, name: str | None = None, *, nin: int = 1, k=None, **params):
+        if params:
+            raise ParameterError(f"Sum has parameters k[1]..k[{self._nin}] only, given as "
+                                 f"k=[...]; got {', '.join(params)}")
+        super().__init__(name)
+        n = self._nin
+        if k is not None:
+            ks = np.atleast_1d(np.asarray(k, dtype=object)).ravel()
+            if ks.size != n:
+                raise ParameterError(f"Sum: k has {ks.size} elements but nin = {n}")
+            for i, v in enumerate(ks, start=1):
+                setattr(self, f"k[{i}]", v)
+        self.__dict__["u"] = _Vector("Sum", "u", [getattr(self, f"u[{i}]")
+                                                  for i in range(1, n + 1)])
+
+    @property
+    def nin(self) -> int:
+        return self._nin
+
+    def __reduce_ex__(self, protocol):          # the class is made per nin: rebuild it by nin
+        return _new_sum, (self._nin,), self.__dict__
+
+    def physics(self, e):
+        e.output(self.y, sum((getattr(self, f"k[{i}]") * e.input(p)
+                              for i, p in enumerate(self.u, start=1)), ca.SX(0)))
+
+
+def _new_sum(nin: int) -> Sum:
+    return object.__new__(Sum._with_inputs(nin))
+
+
+# ---- continuous (Modelica.Blocks.Continuous) ----------------------------------------------------
+def _approx_derivative(u, x, k, T):
+    """MSL Continuous.Derivative, k·s/(T·s + 1): (der(x), y); both 0 when |k| < eps."""
+    zero_gain = ca.fabs(k) < EPS
+    return (ca.if_else(zero_gain, 0, (u - x) / T),
+            ca.if_else(zero_gain, 0, k / T * (u - x)))
+
+
+class _StartValues:
+    """Start values of a block's states, given as constructor keyword arguments."""
+    _starts: tuple = ()
+
+    def __init__(self, name: str | None = None, **kwargs):
+        starts = {s: _start(kwargs.pop(s, 0.0), f"{type(self).__name__}: {s}")
+                  for s in self._starts}
+        super().__init__(name, **kwargs)
+        self.__dict__.update(starts)
+
+
+class Integrator(_StartValues, SISO):
+    """y = k·∫u dt: der(y) = k·u, y(0) = y_start (constructor argument)."""
+    _starts = ("y_start",)
+    k = Parameter(1.0, "1", "integrator gain")
+
+    def structure(self, s):
+        self._y = s.state("y", self.y_start, description="integrator output (state)")
+
+    def physics(self, e):
+        e.derivative(self._y, self.k * e.input(self.u))
+        e.output(self.y, self._y)
+
+
+class Derivative(_StartValues, SISO):
+    """Approximated derivative y = k·s/(T·s + 1)·u: der(x) = (u − x)/T, y = (k/T)·(u − x);
+    x(0) = x_start. With k = 0 the block gives y = 0."""
+    _starts = ("x_start",)
+    k = Parameter(1.0, "1", "gain")
+    T = Parameter(0.01, "s", "time constant (T > 0 required)", positive=True)
+
+    def structure(self, s):
+        self._x = s.state("x", self.x_start, description="state of block")
+
+    def physics(self, e):
+        xdot, y = _approx_derivative(e.input(self.u), self._x, self.k, self.T)
+        e.derivative(self._x, xdot)
+        e.output(self.y, y)
+
+
+class FirstOrder(_StartValues, SISO):
+    """First order y = k/(T·s + 1)·u: der(y) = (k·u − y)/T, y(0) = y_start."""
+    _starts = ("y_start",)
+    k = Parameter(1.0, "1", "gain")
+    T = Parameter(1.0, "s", "time constant", nonzero=True)
+
+    def structure(self, s):
+        self._y = s.state("y", self.y_start, description="output (state)")
+
+    def physics(self, e):
+        e.derivative(self._y, (self.k * e.input(self.u) - self._y) / self.T)
+        e.output(self.y, self._y)
+
+
+class SecondOrder(_StartValues, SISO):
+    """Second order y = k/((s/w)² + 2·D·(s/w) + 1)·u: der(y) = yd,
+    der(yd) = w·(w·(k·u − y) − 2·D·yd); y(0) = y_start, yd(0) = yd_start."""
+    _starts = ("y_start", "yd_start")
+    k = Parameter(1.0, "1", "gain")
+    w = Parameter(1.0, "rad/s", "angular frequency")
+    D = Parameter(1.0, "1", "damping")
+
+    def structure(self, s):
+        self._y = s.state("y", self.y_start, description="output (state)")
+        self._yd = s.state("yd", self.yd_start, description="derivative of y (state)")
+
+    def physics(self, e):
+        e.derivative(self._y, self._yd)
+        e.derivative(self._yd, self.w * (self.w * (self.k * e.input(self.u) - self._y)
+                                         - 2 * self.D * self._yd))
+        e.output(self.y, self._y)
+
+
+class PI(_StartValues, SISO):
+    """PI controller y = k·(1 + 1/(T·s))·u: der(x) = u/T, y = k·(x + u); x(0) = x_start."""
+    _starts = ("x_start",)
+    k = Parameter(1.0, "1", "gain")
+    T = Parameter(1.0, "s", "time constant (T > 0 required)", positive=True)
+
+    def structure(self, s):
+        self._x = s.state("x", self.x_start, description="state of block")
+
+    def physics(self, e):
+        u = e.input(self.u)
+        e.derivative(self._x, u / self.T)
+        e.output(self.y, self.k * (self._x + u))
+
+
+class PID(_StartValues, SISO):
+    """PID controller in additive form (MSL Continuous.PID): y = k·(P.y + I.y + D.y) with
+    P.y = u, I: der(I.y) = u/Ti, D: approximated derivative Td·s/(Td/Nd·s + 1)·u
+    (der(D.x) = (u − D.x)/T, D.y = (Td/T)·(u − D.x), T = max(Td/Nd, 100·eps)).
+
+    States ``I.y`` (start xi_start) and ``D.x`` (start xd_start), named as the states of the
+    MSL block's sub-blocks (``PID.I.y``, ``PID.D.x``); ``P.y``, ``I.y``, ``D.y`` are recorded.
+    """
+    _starts = ("xi_start", "xd_start")
+    k = Parameter(1.0, "1", "gain")
+    Ti = Parameter(0.5, "s", "time constant of integrator", positive=True)
+    Td = Parameter(0.1, "s", "time constant of derivative block", nonnegative=True)
+    Nd = Parameter(10.0, "1", "the higher Nd, the more ideal the derivative block",
+                   positive=True)
+
+    def structure(self, s):
+        self._xi = s.state("I.y", self.xi_start, description="integral part (state)")
+        self._xd = s.state("D.x", self.xd_start, description="state of derivative block")
+
+    def physics(self, e):
+        u = e.input(self.u)
+        e.derivative(self._xi, u / self.Ti)
+        xd_dot, d_y = _approx_derivative(u, self._xd, self.Td, ca.fmax(self.Td / self.Nd,
+                                                                       100 * EPS))
+        e.derivative(self._xd, xd_dot)
+        e.variable("P.y", u, description="proportional part")
+        e.variable("D.y", d_y, description="derivative part")
+        e.output(self.y, self.k * (u + self._xi + d_y))
