@@ -15,9 +15,8 @@ from __future__ import annotations
 
 import casadi as ca
 
-from ..core.component import Component, Model
+from ..core.component import Model
 from ..core.errors import SingularModelError, StructureError
-from ..core.ports import RealInput, RealOutput
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
 from .compiled import CompiledModel, Equations
@@ -36,6 +35,7 @@ def compile(model: Model, *, baumgarte: float = 20.0) -> CompiledModel:
     """
     flat = flatten(model)
     ws = Workspace(t=ca.SX.sym("t"))
+    ws.der_table["t"] = 1
     ws.source = flat.signal_source
     params = []                                    # (name, default, Parameter, component)
     try:
@@ -61,6 +61,8 @@ def compile(model: Model, *, baumgarte: float = 20.0) -> CompiledModel:
     finally:
         for c in flat.components:
             c.__dict__.pop("_symbols", None)
+    ws.p = _vc(*[s for s, *_ in params]) if params else ca.SX(0, 1)
+    ws.p_default = [d for _, d, *_ in params]
     return _assemble(model, flat, ws, tree, params, baumgarte)
 
 
@@ -89,7 +91,6 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
         v = _vc(*[ws.node_of[p].vel for p, _ in ws.flows])
         f = _vc(*[fl for _, fl in ws.flows])                 # flow into the component
         R = R + ca.jtimes(v, qda, f, True)                   # node force is −flow
-    loops = tree.loops
     phi = tree.loop_residual
     phi_eps = ca.jacobian(phi, eps)
 
@@ -217,7 +218,7 @@ def _resolver(ws: Workspace, eps, epsd, epsdd) -> _Resolver:
     for name in list(ws.der_table):
         if not name.startswith("sig:"):
             continue
-        level, base, value = ws.der_table[name], name, by_name[name]
+        level, value = ws.der_table[name], by_name[name]
         while level is not None and level.name().startswith("der("):
             try:
                 value = resolve_once(der_with(value, ws.der_table), syms, vals)
@@ -257,10 +258,10 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
         raise SingularModelError("the equations of motion are not linear in the accelerations "
                                  "(a force depends nonlinearly on an acceleration)")
     idx = lambda v, ks: v[ks] if ks else ca.SX(0, 1)
-    qM, qdM, qddM = idx(q, massive), idx(qd, massive), idx(qdd, massive)
+    qdM = idx(qd, massive)
     A_MM = A[massive, massive] if massive else ca.SX(0, 0)
     if nc:
-        _check_loops(tree, phi, q)
+        _check_loops(tree, phi, q, ws.p, ws.p_default)
         if massless:
             raise StructureError(
                 "a closed kinematic loop together with massless nodes "
@@ -337,7 +338,7 @@ def _start_values(values: list, p: ca.SX) -> ca.Function:
     return f
 
 
-def _check_loops(tree, phi, q) -> None:
+def _check_loops(tree, phi, q, p, p_default) -> None:
     """Loop constraints that no coordinate can satisfy are inconsistent (or, when they hold
     anyway, redundant: their reaction is undetermined). Both are errors naming the parts."""
     phi_q = ca.jacobian(phi, q)
@@ -346,11 +347,11 @@ def _check_loops(tree, phi, q) -> None:
         if i in rows:
             continue
         parts = sorted({p.owner.path for n in r.nodes for p in n.ports} - {r.owner.path})
-        val = ca.Function("phi", [], [phi[i]], {"allow_free": True})
-        kind = "inconsistent" if val.has_free() else None
+        val = ca.Function("phi", [p], [phi[i]], {"allow_free": True})
+        kind = "inconsistent" if val.has_free() else None    # moves in time: over-constrained
         if kind is None:
-            res = float(val()["o0"])
-            kind = "inconsistent" if abs(res) > 1e-12 else "redundant"
+            res = float(val(p_default))
+            kind = "inconsistent" if abs(res) > 1e-10 else "redundant"
         text = ("cannot close: the parts it joins are fixed with a different offset" if
                 kind == "inconsistent" else
                 "is redundant: it joins parts that are already rigidly fixed, so its reaction "

@@ -2,7 +2,7 @@
 
 Each SX operation issued from Python costs ~20 µs, so a chain of 10 000 springs spends most of
 its compile time inside the springs' physics(). For classes that declare
-``batch_physics = True`` (their physics reads only port motion, parameters and time, and
+``batch_physics = True`` in their own class body (their physics reads only port motion, parameters and time, and
 writes flows, energies and variables), physics() runs once on stand-in symbols; the result
 becomes a casadi Function, mapped over all instances in one call. The expressions are the
 same as instance by instance. Classes that do anything else fall back to the plain path.
@@ -73,7 +73,7 @@ def run_physics(ws: Workspace, components: list) -> None:
         points.setdefault(id(n.owner), []).append(n)
     groups: dict = {}
     for c in components:
-        if getattr(type(c), "batch_physics", False):
+        if vars(type(c)).get("batch_physics", False):      # not inherited: a subclass may differ
             ports = tuple(sorted(c.ports)) + tuple(sorted(n.name for n in points.get(id(c), [])))
             groups.setdefault((type(c), ports), []).append(c)
         else:

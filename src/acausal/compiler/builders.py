@@ -50,6 +50,8 @@ class Workspace:
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
     events: list = field(default_factory=list)              # (time, period) of time events
+    p: object = None                                        # parameter symbols, stacked
+    p_default: list = field(default_factory=list)           # their default values
 
     def signal(self, port: Port) -> ca.SX:
         """The placeholder standing for the value of a signal port."""

@@ -25,12 +25,10 @@ import math
 
 import casadi as ca
 
-from ..core import Component, Parameter, RealInput, RealOutput, RotationalFlange, \
+from ..core import Component, Parameter, PortVector, RealInput, RealOutput, RotationalFlange, \
     TranslationalFlange
 from ..core.ports import ROTATIONAL
-from .signals import _Vector
 # The structural-options base is shared with the translational library (one implementation).
-from .translational import _WithOptions
 
 Flange = RotationalFlange
 
@@ -61,7 +59,7 @@ def _support_port(description: str = "support/housing of the component") -> Rota
     return RotationalFlange(description, required=True)
 
 
-class _OneSupport(_WithOptions):
+class _OneSupport(Component):
     """Shared by the MSL partials with one optional rotational ``support`` (``useSupport``)."""
     options = {"useSupport": False}
 
@@ -117,7 +115,7 @@ class PartialElementaryTwoFlangesAndSupport2(_OneSupport):
     flange_b = Flange("flange of right shaft")
 
 
-class PartialElementaryRotationalToTranslational(_WithOptions):
+class PartialElementaryRotationalToTranslational(Component):
     """Rotational ``flangeR`` and translational ``flangeT``; with ``useSupportR`` /
     ``useSupportT`` a rotational ``supportR`` / translational ``supportT`` housing flange."""
     options = {"useSupportR": False, "useSupportT": False}
@@ -162,6 +160,7 @@ class Inertia(Component):
     J = Parameter(1.0, "kg.m2", "moment of inertia", positive=True)
     flange_a = Flange("left flange of shaft")
     flange_b = Flange("right flange of shaft")
+    batch_physics = True
 
     def structure(self, s):
         self._body = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
@@ -198,6 +197,7 @@ class PartialCompliant(Component):
     """
     flange_a = Flange("left flange of compliant 1-dim. rotational component")
     flange_b = Flange("right flange of compliant 1-dim. rotational component")
+    batch_physics = True
 
     def torque(self, phi_rel, w_rel):
         """The torque tau [N.m] on flange_b for phi_rel [rad] and w_rel [rad/s]."""
@@ -419,6 +419,7 @@ class TorqueStep(PartialTorque):
     startTime = Parameter(0.0, "s", "torque = offset for time < startTime")
 
     def torque(self, e, phi, w):
+        e.time_event(self.startTime)
         return self.offsetTorque + ca.if_else(e.time < self.startTime, 0.0, self.stepTorque)
 
 
@@ -553,7 +554,7 @@ class Move(_PrescribedMotion):
         for i, what in enumerate(("angle", "angular velocity", "angular acceleration"), 1):
             setattr(self, f"u[{i}]", RealInput(f"{what} of flange with respect to support "
                                                f"as input signal"))
-        self.__dict__["u"] = _Vector("Move", "u", [getattr(self, f"u[{i}]") for i in (1, 2, 3)])
+        self.__dict__["u"] = PortVector("Move", "u", [getattr(self, f"u[{i}]") for i in (1, 2, 3)])
 
     def structure(self, s):
         self._prescribe(s, s.input(self.u[1]))

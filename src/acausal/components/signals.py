@@ -31,7 +31,7 @@ import math
 import casadi as ca
 import numpy as np
 
-from ..core import Component, Parameter, ParameterError, RealInput, RealOutput
+from ..core import Component, Parameter, PortVector, ParameterError, RealInput, RealOutput
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
 EPS = 1e-15
@@ -82,28 +82,6 @@ class SignalSource(SO):
         e.output(self.y, self.offset + ca.if_else(t < self.startTime, 0, self.signal(t)))
         for time, period in self.events():
             e.time_event(time, period)
-
-
-class _Vector:
-    """Ports of a vector connector (``Sum.u``), numbered from 1 as in Modelica: ``u[1]``."""
-
-    def __init__(self, owner_type: str, name: str, items: list):
-        self._owner_type, self._name, self._items = owner_type, name, list(items)
-
-    def __getitem__(self, i: int):
-        if not isinstance(i, (int, np.integer)) or not 1 <= i <= len(self._items):
-            raise IndexError(f"{self._owner_type}.{self._name}[{i}]: index out of range; the "
-                             f"elements are numbered 1..{len(self._items)} as in Modelica")
-        return self._items[i - 1]
-
-    def __len__(self):
-        return len(self._items)
-
-    def __iter__(self):
-        return iter(self._items)
-
-    def __repr__(self):
-        return f"[{', '.join(p.path if p.owner.path else p.name for p in self._items)}]"
 
 
 def _start(value, what: str) -> float:
@@ -432,7 +410,7 @@ class Sum(SO):
                 raise ParameterError(f"Sum: k has {ks.size} elements but nin = {n}")
             for i, v in enumerate(ks, start=1):
                 setattr(self, f"k[{i}]", v)
-        self.__dict__["u"] = _Vector("Sum", "u", [getattr(self, f"u[{i}]")
+        self.__dict__["u"] = PortVector("Sum", "u", [getattr(self, f"u[{i}]")
                                                   for i in range(1, n + 1)])
 
     @property

@@ -31,10 +31,9 @@ import math
 
 import casadi as ca
 
-from ..core import Component, Parameter, ParameterError, RealInput, RealOutput, \
+from ..core import Component, Parameter, PortVector, RealInput, RealOutput, \
     TranslationalFlange
 from ..core.ports import TRANSLATIONAL
-from .signals import _Vector
 
 Flange = TranslationalFlange
 
@@ -58,56 +57,13 @@ __all__ = [
 # =========================================================================================
 # Interfaces
 # =========================================================================================
-class _WithOptions(Component):
-    """A component with structural Boolean options and required parameters.
-
-    ``options`` (class attribute, name → default) are MSL's ``parameter Boolean ...``: given
-    as keyword arguments, read as plain booleans ``self.<name>``, fixed once the component is
-    built. ``required`` names parameters MSL declares without any value: they must be given.
-    Subclasses create option-dependent ports in ``_conditional_ports``.
-    """
-    options: dict[str, bool] = {}
-    required: tuple[str, ...] = ()
-
-    @classmethod
-    def all_options(cls) -> dict[str, bool]:
-        """The structural options of this class and its bases, with their defaults."""
-        out: dict[str, bool] = {}
-        for klass in reversed(cls.__mro__):
-            out.update(vars(klass).get("options", {}))
-        return out
-
-    def __init__(self, name: str | None = None, **kwargs):
-        kind = type(self).__name__
-        opts = {}
-        for key, default in self.all_options().items():
-            value = kwargs.pop(key, default)
-            if not isinstance(value, bool):
-                raise ParameterError(f"{kind}: option '{key}' must be True or False, got "
-                                     f"{value!r}")
-            opts[key] = value
-        for key in kwargs:
-            if key not in self.parameters():
-                known = ", ".join(list(self.parameters()) + list(opts)) or "none"
-                raise ParameterError(f"{kind} has no parameter '{key}' (its parameters and "
-                                     f"options: {known})")
-        missing = [p for p in self.required if p not in kwargs]
-        if missing:
-            given = ", ".join(f"{p}=..." for p in missing)
-            raise ParameterError(f"{kind}: parameter{'s' if len(missing) > 1 else ''} "
-                                 f"{', '.join(repr(p) for p in missing)} "
-                                 f"{'have' if len(missing) > 1 else 'has'} no default (as in "
-                                 f"MSL); give {'them' if len(missing) > 1 else 'it'}: "
-                                 f"{kind}({given})")
-        super().__init__(name, **kwargs)
-        self.__dict__.update(opts)
-        self._conditional_ports()
-
-    def _conditional_ports(self) -> None:
-        """Create the ports that exist only for some options (default: none)."""
+def _who(c: Component) -> str:
+    """'Force 'drive.force'' (or just the class name for a component not in a model)."""
+    where = c.path or c.name
+    return f"{type(c).__name__} '{where}'" if where else type(c).__name__
 
 
-class PartialRigid(_WithOptions):
+class PartialRigid(Component):
     """Two rigidly connected flanges at distance ``L`` [m]; ``s`` [m] is the centre:
     flange_a.s = s − L/2, flange_b.s = s + L/2 (the forces at the flanges may differ)."""
     L = Parameter(0.0, "m", "length of component, from left flange to right flange "
@@ -125,7 +81,7 @@ class PartialRigid(_WithOptions):
         s.linear({self.flange_b: 1.0, self._s: -1.0}, self.L / 2, f"{self.path}: flange_b")
 
 
-class PartialCompliant(_WithOptions):
+class PartialCompliant(Component):
     """Two flanges and a force f [N] = flange_b.f = −flange_a.f depending on s_rel and v_rel.
 
     Records s_rel = flange_b.s − flange_a.s [m], v_rel = der(s_rel) [m/s], f [N] and, when
@@ -162,7 +118,7 @@ class PartialCompliantWithRelativeStates(PartialCompliant):
     as PartialCompliant: the compiler chooses the coordinates."""
 
 
-class PartialElementaryOneFlangeAndSupport2(_WithOptions):
+class PartialElementaryOneFlangeAndSupport2(Component):
     """One ``flange`` and, with ``useSupport=True``, a ``support`` (housing) flange.
 
     Records s = flange.s − support.s [m] (support.s = 0 without support). What acts on the
@@ -177,9 +133,10 @@ class PartialElementaryOneFlangeAndSupport2(_WithOptions):
 
     def __getattr__(self, name):
         if name == "support":
-            raise AttributeError(f"{type(self).__name__} '{self.path or self.name}' has no "
+            raise AttributeError(f"{_who(self)} has no "
                                  f"'support' flange (useSupport=False: it is fixed to the "
-                                 f"ground); create it with useSupport=True")
+                                 f"ground); create it with "
+                                 f"{type(self).__name__}(useSupport=True)")
         raise AttributeError(name)
 
     # relative motion of the flange with respect to the support
@@ -239,7 +196,7 @@ class PartialForce(PartialElementaryOneFlangeAndSupport2):
 # =========================================================================================
 # Components
 # =========================================================================================
-class Fixed(_WithOptions):
+class Fixed(Component):
     """Flange fixed in the housing at position ``s0`` [m]."""
     s0 = Parameter(0.0, "m", "fixed offset position of housing")
     flange = Flange("flange fixed in housing at a given position")
@@ -256,6 +213,7 @@ class Mass(PartialRigid):
     zero is a Rod).
     """
     m = Parameter(1.0, "kg", "mass of the sliding mass", positive=True)
+    batch_physics = True
 
     def _centre(self, s):
         return s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
@@ -272,6 +230,7 @@ class Rod(PartialRigid):
 class Spring(PartialCompliant):
     """Linear spring: f = c·(s_rel − s_rel0); c [N/m] ≥ 0 (default 1 = MSL start value),
     s_rel0 [m] unstretched length."""
+    batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     s_rel0 = Parameter(0.0, "m", "unstretched spring length")
 
@@ -282,6 +241,7 @@ class Spring(PartialCompliant):
 class Damper(PartialCompliantWithRelativeStates):
     """Linear damper: f = d·v_rel; d [N.s/m] ≥ 0 (default 0 = MSL start value).
     lossPower = f·v_rel [W]."""
+    batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.s/m", "damping constant", nonnegative=True)
 
     def force(self, s_rel, v_rel):
@@ -294,6 +254,7 @@ class Damper(PartialCompliantWithRelativeStates):
 class SpringDamper(PartialCompliantWithRelativeStates):
     """Linear spring and damper in parallel: f = c·(s_rel − s_rel0) + d·v_rel;
     c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL start values). lossPower = d·v_rel² [W]."""
+    batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
     s_rel0 = Parameter(0.0, "m", "unstretched spring length")
@@ -319,7 +280,7 @@ class Force(PartialElementaryOneFlangeAndSupport2):
         self._record_s(e)
 
 
-class Force2(_WithOptions):
+class Force2(Component):
     """Input signal ``f`` [N] acting on two flanges: flange_a.f = f, flange_b.f = −f
     (a positive f pushes the two connected bodies apart)."""
     f = RealInput("driving force as input signal [N]")
@@ -346,8 +307,7 @@ class ConstantForce(PartialForce):
 class ForceStep(PartialForce):
     """Force step: f = −offsetForce − (0 if time < startTime else stepForce) [N].
 
-    The jump is not a solver event: the variable-step integrator finds it by reducing its
-    step (give ``max_step`` to simulate if needed).
+    The jump at startTime is a time event: the integrator restarts there.
     """
     stepForce = Parameter(1.0, "N", "height of force step (if negative, force is acting as "
                                     "load)")
@@ -355,6 +315,7 @@ class ForceStep(PartialForce):
     startTime = Parameter(0.0, "s", "force = offset for time < startTime")
 
     def flange_force(self, e):
+        e.time_event(self.startTime)
         return -self.offsetForce - ca.if_else(e.time < self.startTime, 0.0, self.stepForce)
 
 
@@ -501,7 +462,7 @@ class Move(PartialElementaryOneFlangeAndSupport2):
         super()._conditional_ports()
         for i, what in enumerate(("position", "velocity", "acceleration"), start=1):
             setattr(self, f"u[{i}]", RealInput(f"{what} of flange as input signal"))
-        self.__dict__["u"] = _Vector("Move", "u", [getattr(self, f"u[{i}]")
+        self.__dict__["u"] = PortVector("Move", "u", [getattr(self, f"u[{i}]")
                                                    for i in (1, 2, 3)])
 
     def structure(self, s):
@@ -537,12 +498,12 @@ class ConstantSpeed(PartialForce):
 # =========================================================================================
 # Sensors
 # =========================================================================================
-class PartialAbsoluteSensor(_WithOptions):
+class PartialAbsoluteSensor(Component):
     """Measures an absolute quantity of ``flange`` (no force: flange.f = 0)."""
     flange = Flange("flange to be measured", required=True)
 
 
-class PartialRelativeSensor(_WithOptions):
+class PartialRelativeSensor(Component):
     """Measures between ``flange_a`` and ``flange_b`` (0 = flange_a.f + flange_b.f)."""
     flange_a = Flange("left flange of sensor", required=True)
     flange_b = Flange("right flange of sensor", required=True)

@@ -8,11 +8,11 @@ from .errors import (AcausalError, InitializationError, ParameterError, PortConn
 from .interface import Input, Output
 from .parameter import Parameter
 from .ports import (PLANAR, ROTATIONAL, TRANSLATIONAL, Domain, Frame, PhysicalPort, Port,
-                    RealInput, RealOutput, RotationalFlange, TranslationalFlange)
+                    PortVector, RealInput, RealOutput, RotationalFlange, TranslationalFlange)
 
 __all__ = [
     "Component", "Model", "connect", "Input", "Output", "Parameter",
-    "Port", "PhysicalPort", "Domain", "TranslationalFlange", "RotationalFlange", "Frame",
+    "Port", "PhysicalPort", "PortVector", "Domain", "TranslationalFlange", "RotationalFlange", "Frame",
     "RealInput", "RealOutput", "TRANSLATIONAL", "ROTATIONAL", "PLANAR",
     "AcausalError", "ParameterError", "PortConnectionError", "StructureError",
     "SingularModelError", "InitializationError", "SimulationError",

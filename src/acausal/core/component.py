@@ -21,11 +21,20 @@ import copy
 
 from .errors import ParameterError, PortConnectionError
 from .parameter import Parameter
-from .ports import PhysicalPort, Port, RealInput, RealOutput
+from .ports import PhysicalPort, Port, RealOutput
 
 
 class Component:
-    """Base of every component. Keyword arguments set parameters by name."""
+    """Base of every component.
+
+    Keyword arguments set parameters by name, and structural options: ``options`` (a class
+    attribute, name -> default) are MSL's ``parameter Boolean`` settings such as
+    ``useSupport``; they are plain booleans ``self.<name>``, fixed once the component is built,
+    and may add ports (``_conditional_ports``). ``required`` names parameters that have no
+    default (MSL declares them without a value): they must be given.
+    """
+    options: dict[str, bool] = {}
+    required: tuple[str, ...] = ()
 
     def __init__(self, name: str | None = None, **params):
         d = self.__dict__
@@ -34,19 +43,46 @@ class Component:
         d["_name"] = name or ""
         d["_children"] = {}
         d["_ports"] = {}
-        for pname, par in self.parameters().items():
+        kind = type(self).__name__
+        opts = {}
+        for key, default in self.all_options().items():
+            value = params.pop(key, default)
+            if not isinstance(value, bool):
+                raise ParameterError(f"{kind}: option '{key}' must be True or False, got "
+                                     f"{value!r}")
+            opts[key] = value
+        declared = self.parameters()
+        for pname, par in declared.items():
             d["_values"][pname] = par.default
         for pname, value in params.items():
-            par = self.parameters().get(pname)
+            par = declared.get(pname)
             if par is None:
-                known = ", ".join(self.parameters()) or "none"
+                known = ", ".join(list(declared) + list(opts)) or "none"
                 raise ParameterError(
-                    f"{type(self).__name__} has no parameter '{pname}' (its parameters: {known})")
-            d["_values"][pname] = par.check(value, f"{type(self).__name__}")
+                    f"{kind} has no parameter '{pname}' (its parameters and options: {known})")
+            d["_values"][pname] = par.check(value, kind)
+        missing = [p for p in self.required if p not in params]
+        if missing:
+            given = ", ".join(f"{p}=..." for p in missing)
+            raise ParameterError(f"{kind}: parameter(s) {', '.join(repr(p) for p in missing)} "
+                                 f"have no default (as in MSL); give them: {kind}({given})")
         for cls in reversed(type(self).__mro__):
             for pname, template in vars(cls).items():
                 if isinstance(template, Port):
                     setattr(self, pname, copy.copy(template))
+        d.update(opts)
+        self._conditional_ports()
+
+    @classmethod
+    def all_options(cls) -> dict[str, bool]:
+        """The structural options of this class and its bases, with their defaults."""
+        out: dict[str, bool] = {}
+        for klass in reversed(cls.__mro__):
+            out.update(vars(klass).get("options", {}))
+        return out
+
+    def _conditional_ports(self) -> None:
+        """Create the ports that exist only for some options (default: none)."""
 
     # ---- naming ------------------------------------------------------------------------
     @classmethod
@@ -84,6 +120,10 @@ class Component:
         return dict(self._children)
 
     def __setattr__(self, key, value):
+        if key in self.all_options():
+            raise ParameterError(f"{type(self).__name__} '{self.path or self.name}': option "
+                                 f"'{key}' is structural and fixed when the component is "
+                                 f"created: {type(self).__name__}({key}={value!r})")
         if isinstance(value, Port) and not key.startswith("_"):
             value.owner, value.name = self, key
             self._ports[key] = value

@@ -6,6 +6,7 @@ carries one causal real value.
 """
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass
 
 
@@ -86,3 +87,29 @@ class RealInput(Port):
 class RealOutput(Port):
     """A causal real output signal."""
     kind = "signal"
+
+
+class PortVector:
+    """Ports of a vector connector (``Sum.u``), numbered from 1 as in Modelica: ``u[1]``."""
+
+    def __init__(self, owner_type: str, name: str, items: list):
+        self._owner_type, self._name, self._items = owner_type, name, list(items)
+
+    def __getitem__(self, i: int):
+        try:
+            i = operator.index(i)
+        except TypeError:
+            i = None
+        if i is None or not 1 <= i <= len(self._items):
+            raise IndexError(f"{self._owner_type}.{self._name}[{i}]: index out of range; the "
+                             f"elements are numbered 1..{len(self._items)} as in Modelica")
+        return self._items[i - 1]
+
+    def __len__(self):
+        return len(self._items)
+
+    def __iter__(self):
+        return iter(self._items)
+
+    def __repr__(self):
+        return f"[{', '.join(p.path for p in self._items)}]"
