@@ -13,6 +13,8 @@
 """
 from __future__ import annotations
 
+import gc
+
 import casadi as ca
 
 from ..core.component import Model
@@ -33,6 +35,16 @@ def compile(model: Model, *, baumgarte: float = 20.0) -> CompiledModel:
     ``baumgarte`` [1/s] is the rate at which the constraint violation of closed loops is
     damped (Φ̈ + 2αΦ̇ + α²Φ = 0); it only matters for models with loops.
     """
+    gc_was_enabled = gc.isenabled()
+    gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
+    try:
+        return _compile(model, baumgarte)
+    finally:
+        if gc_was_enabled:
+            gc.enable()
+
+
+def _compile(model: Model, baumgarte: float) -> CompiledModel:
     flat = flatten(model)
     ws = Workspace(t=ca.SX.sym("t"))
     ws.der_table["t"] = 1

@@ -150,11 +150,31 @@ class CompiledModel:
         return self._cache["rhs"]
 
     @property
+    def recorded_rows(self) -> list[int]:
+        """For each recorded name, its row in ``recorded_function``'s output (names that are
+        the same expression, e.g. the positions of connected ports, share a row)."""
+        return self._recorded_unique()[1]
+
+    def _recorded_unique(self):
+        if "unique" not in self._cache:
+            rows, unique, seen = [], [], {}
+            for e in ca.vertsplit(self.recorded):
+                key = e.element_hash()
+                if key not in seen:
+                    seen[key] = len(unique)
+                    unique.append(e)
+                rows.append(seen[key])
+            self._cache["unique"] = (ca.vertcat(*unique) if unique else ca.SX(0, 1), rows)
+        return self._cache["unique"]
+
+    @property
     def recorded_function(self) -> ca.Function:
-        """Function (t, x, z, p, u) -> every recorded variable (see ``recorded_names``)."""
+        """Function (t, x, z, p, u) -> the distinct recorded expressions; the row of each
+        recorded name is ``recorded_rows[i]``."""
         if "rec" not in self._cache:
             self._cache["rec"] = ca.Function("recorded", [self.t, self.x, self.z, self.p, self.u],
-                                             [self.recorded], ["t", "x", "z", "p", "u"], ["v"])
+                                             [self._recorded_unique()[0]],
+                                             ["t", "x", "z", "p", "u"], ["v"])
         return self._cache["rec"]
 
     @property

@@ -9,20 +9,30 @@ import numpy as np
 class Result:
     """Trajectories on the output grid: ``res.t`` [s], ``res["mass.s"]`` (numpy arrays)."""
 
-    def __init__(self, t: np.ndarray, names: list[str], values: np.ndarray, units: list[str],
-                 model_name: str = ""):
+    def __init__(self, t: np.ndarray, names: list[str], values, units: list[str],
+                 model_name: str = "", rows: list[int] | None = None):
+        """``values``: rows of trajectories (numpy array or casadi DM, converted row by row
+        on access); ``rows[i]`` is the row of ``names[i]`` (default: i)."""
         self.t = t
         self.names = list(names)
-        self._values = values            # shape (len(names), len(t))
-        self._index = {n: i for i, n in enumerate(names)}
+        self._values = values
+        rows = range(len(names)) if rows is None else rows
+        self._index = dict(zip(names, rows))
+        self._rows: dict[int, np.ndarray] = {}
         self.units = dict(zip(names, units))
         self.model_name = model_name
+
+    def _row(self, r: int) -> np.ndarray:
+        if r not in self._rows:
+            v = self._values[r, :]
+            self._rows[r] = np.asarray(v.full() if hasattr(v, "full") else v, float).ravel()
+        return self._rows[r]
 
     def __getitem__(self, name: str) -> np.ndarray:
         if name == "time" or name == "t":
             return self.t
         try:
-            return self._values[self._index[name]]
+            return self._row(self._index[name])
         except KeyError:
             close = difflib.get_close_matches(name, self.names, n=3)
             hint = f"; did you mean {', '.join(map(repr, close))}?" if close else ""
@@ -39,8 +49,8 @@ class Result:
     def to_pandas(self):
         """A pandas DataFrame indexed by time (needs pandas)."""
         import pandas as pd
-        return pd.DataFrame(self._values.T, index=pd.Index(self.t, name="time"),
-                            columns=self.names)
+        return pd.DataFrame({n: self[n] for n in self.names},
+                            index=pd.Index(self.t, name="time"))
 
     def to_csv(self, path, names: list[str] | None = None) -> None:
         """Write time and the chosen (default: all) variables as CSV with a header line."""

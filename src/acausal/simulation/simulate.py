@@ -89,8 +89,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     if solver == "cvodes" and has_alg:
         raise SimulationError(f"model '{model.name}' has algebraic variables "
                               f"{model.z_names[:3]}...; use solver='idas'")
-    ode, alg = ca.substitute([model.ode, model.alg], [model.u], [u_expr])
-    dae = {"x": model.x, "p": model.p, "t": model.t, "ode": ode}
+    # inputs become expressions of time, parameters their values: the integrator sees the
+    # same folded arithmetic as a hand-written model with numbers (changing a parameter
+    # rebuilds only the integrator, never the model)
+    ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, ca.SX(p)])
+    dae = {"x": model.x, "t": model.t, "ode": ode}
     if has_alg:
         dae.update(z=model.z, alg=alg)
     opts = {}
@@ -111,7 +114,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         tout = [min(tt, end) for tt in tout]
         try:
             F = ca.integrator("sim", solver, dae, float(a), tout, opts)
-            sol = F(x0=x, z0=z, p=p)
+            sol = F(x0=x, z0=z)
         except RuntimeError as e:
             raise SimulationError(f"simulation of '{model.name}' failed between t = {a:g} and "
                                   f"{b:g} s: {_short(e)}; check the parameters and initial "
@@ -124,8 +127,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
     rec = model.recorded_function.map(grid.size)
-    V = np.array(rec(grid.reshape(1, -1), X, Z, np.tile(p.reshape(-1, 1), (1, grid.size)), U))
-    return Result(grid, model.recorded_names, V, model.recorded_units, model.name)
+    V = rec(grid.reshape(1, -1), X, Z, np.tile(p.reshape(-1, 1), (1, grid.size)), U)
+    return Result(grid, model.recorded_names, V, model.recorded_units, model.name,
+                  rows=model.recorded_rows)
 
 
 def _segments(grid: np.ndarray, events: list[float]):

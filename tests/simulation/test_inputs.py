@@ -1,0 +1,116 @@
+"""Model inputs given as a constant, a callable of time, (times, values) samples and an array
+on the output grid, checked against closed forms of a forced oscillator
+(m x'' + c x = F(t), x(0) = x'(0) = 0) and a scipy model."""
+import math
+
+import numpy as np
+import pytest
+from scipy.integrate import solve_ivp
+
+import acausal
+from acausal.components.translational import Fixed, Force, Mass, Spring
+
+MASS, STIFF = 0.5, 8.0
+W = np.sqrt(STIFF / MASS)      # 4 rad/s
+T_END = 3.0
+GRID = np.linspace(0.0, T_END, 301)
+
+
+@pytest.fixture(scope="module")
+def compiled():
+    m = acausal.Model("forced")
+    m.wall = Fixed()
+    m.spring = Spring(c=STIFF)
+    m.mass = Mass(m=MASS)
+    m.force = Force()
+    m.F = acausal.Input(start=0.25, unit="N", description="force on the mass")
+    m.connect(m.wall.flange, m.spring.flange_a)
+    m.connect(m.spring.flange_b, m.mass.flange_a)
+    m.connect(m.force.flange, m.mass.flange_b)
+    m.connect(m.F.y, m.force.f)
+    return acausal.compile(m)
+
+
+def step_response(F0, t):
+    return F0 / STIFF * (1 - np.cos(W * t))
+
+
+def ramp_response(a, t):
+    """F = a t."""
+    return a / STIFF * (t - np.sin(W * t) / W)
+
+
+def sine_response(A, Om, t):
+    """F = A sin(Om t), Om != W."""
+    return A / (MASS * (W ** 2 - Om ** 2)) * (np.sin(Om * t) - Om / W * np.sin(W * t))
+
+
+def test_input_names(compiled):
+    assert compiled.input_names == ["F"]
+
+
+def test_constant(compiled):
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": 1.5})
+    np.testing.assert_allclose(res["mass.s"], step_response(1.5, GRID), atol=1e-6)
+    np.testing.assert_allclose(res["F"], 1.5)
+    np.testing.assert_allclose(res["force.flange.f"], -1.5)
+
+
+def test_start_value_when_not_given(compiled):
+    res = compiled.simulate(T_END, t=GRID)
+    np.testing.assert_allclose(res["mass.s"], step_response(0.25, GRID), atol=1e-6)
+
+
+def test_symbolic_callable(compiled):
+    """A callable that works on CasADi symbols (numpy ufuncs) becomes an exact expression."""
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": lambda t: 2.0 * np.sin(3.0 * t)})
+    np.testing.assert_allclose(res["mass.s"], sine_response(2.0, 3.0, GRID), atol=1e-6)
+    np.testing.assert_allclose(res["F"], 2.0 * np.sin(3.0 * GRID), atol=1e-12)
+
+
+def test_numeric_callable(compiled):
+    """A callable that only takes floats (math.sin, branches) is sampled finely (2001 points
+    here) and interpolated linearly: the force error is below h²/8·max|F''| = 5e-6 N, which
+    bounds the displacement error by ~5e-6 m over 3 s (1.8e-6 m observed)."""
+    def force(t):
+        return 2.0 * math.sin(3.0 * t) if t >= 0 else 0.0
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": force})
+    np.testing.assert_allclose(res["mass.s"], sine_response(2.0, 3.0, GRID), atol=5e-6)
+
+
+def test_samples(compiled):
+    """(times, values) on a grid unrelated to the output grid; linear between samples."""
+    ts = np.linspace(0.0, T_END, 7)
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": (ts, 0.8 * ts)})
+    np.testing.assert_allclose(res["mass.s"], ramp_response(0.8, GRID), atol=1e-6)
+
+
+def test_array_on_grid(compiled):
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": 0.8 * GRID})
+    np.testing.assert_allclose(res["mass.s"], ramp_response(0.8, GRID), atol=1e-6)
+    np.testing.assert_allclose(res["F"], 0.8 * GRID, atol=1e-12)
+
+
+def test_piecewise_linear_samples_against_scipy(compiled):
+    """Ramp up, hold, ramp down: compared with scipy (np.interp), integrated piece by piece."""
+    ts = np.array([0.0, 0.5, 1.5, 2.0, 3.0])
+    fs = np.array([0.0, 1.0, 1.0, -0.5, -0.5])
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": (ts, fs)})
+
+    def rhs(t, y):
+        return [y[1], (np.interp(t, ts, fs) - STIFF * y[0]) / MASS]
+    y, ref = np.zeros(2), []
+    for a, b in zip(ts[:-1], ts[1:]):
+        pts = GRID[(GRID >= a) & (GRID < b)]
+        sol = solve_ivp(rhs, (a, b), y, t_eval=pts, rtol=1e-12, atol=1e-14, method="DOP853")
+        ref.append(sol.y[0])
+        y = solve_ivp(rhs, (a, b), y, rtol=1e-12, atol=1e-14, method="DOP853").y[:, -1]
+    ref = np.concatenate(ref + [[y[0]]])
+    np.testing.assert_allclose(res["mass.s"], ref, atol=1e-6)
+
+
+def test_bad_inputs(compiled):
+    with pytest.raises(acausal.SimulationError, match="FF"):
+        compiled.simulate(T_END, t=GRID, inputs={"FF": 1.0})
+    with pytest.raises(acausal.SimulationError, match="'F'"):
+        compiled.simulate(T_END, t=GRID, inputs={"F": np.zeros(7)})      # not on the grid
