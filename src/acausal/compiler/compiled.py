@@ -150,40 +150,37 @@ class CompiledModel:
         return self._cache["rhs"]
 
     @property
-    def recorded_rows(self) -> list[int]:
-        """For each recorded name, its row in ``recorded_function``'s output (names that are
-        the same expression, e.g. the positions of connected ports, share a row)."""
+    def recorded_layout(self) -> list[tuple[str, int]]:
+        """Where each recorded name's values come from: ("x", i) for a name that is state i,
+        ("r", j) for row j of ``recorded_function``'s output (names that are one expression,
+        e.g. the positions of connected ports, share a row)."""
         return self._recorded_unique()[1]
 
     def _recorded_unique(self):
         if "unique" not in self._cache:
-            rows, unique, seen = [], [], {}
+            states = {e.element_hash(): i for i, e in enumerate(ca.vertsplit(self.x))}
+            layout, unique, seen = [], [], {}
             for e in ca.vertsplit(self.recorded):
                 key = e.element_hash()
+                if key in states:
+                    layout.append(("x", states[key]))
+                    continue
                 if key not in seen:
                     seen[key] = len(unique)
                     unique.append(e)
-                rows.append(seen[key])
-            self._cache["unique"] = (ca.vertcat(*unique) if unique else ca.SX(0, 1), rows)
+                layout.append(("r", seen[key]))
+            self._cache["unique"] = (ca.vertcat(*unique) if unique else ca.SX(0, 1), layout)
         return self._cache["unique"]
 
     @property
     def recorded_function(self) -> ca.Function:
-        """Function (t, x, z, p, u) -> the distinct recorded expressions; the row of each
-        recorded name is ``recorded_rows[i]``."""
+        """Function (t, x, z, p, u) -> the distinct recorded expressions that are not states
+        (see ``recorded_layout``)."""
         if "rec" not in self._cache:
             self._cache["rec"] = ca.Function("recorded", [self.t, self.x, self.z, self.p, self.u],
                                              [self._recorded_unique()[0]],
                                              ["t", "x", "z", "p", "u"], ["v"])
         return self._cache["rec"]
-
-    @property
-    def output_function(self) -> ca.Function:
-        """Function (t, x, z, p, u) -> outputs y (the model's Output components)."""
-        if "y" not in self._cache:
-            self._cache["y"] = ca.Function("outputs", [self.t, self.x, self.z, self.p, self.u],
-                                           [self.y], ["t", "x", "z", "p", "u"], ["y"])
-        return self._cache["y"]
 
     def expression(self, name: str) -> ca.SX:
         """The symbolic expression of a recorded variable, in t, x, z, p, u."""

@@ -9,24 +9,22 @@ import numpy as np
 class Result:
     """Trajectories on the output grid: ``res.t`` [s], ``res["mass.s"]`` (numpy arrays)."""
 
-    def __init__(self, t: np.ndarray, names: list[str], values, units: list[str],
-                 model_name: str = "", rows: list[int] | None = None):
-        """``values``: rows of trajectories (numpy array or casadi DM, converted row by row
-        on access); ``rows[i]`` is the row of ``names[i]`` (default: i)."""
+    def __init__(self, t: np.ndarray, names: list[str], layout: list[tuple[str, int]],
+                 units: list[str], sources: dict, model_name: str = ""):
+        """``layout[i]`` = (source key, row) of ``names[i]``; ``sources`` maps a key to an
+        array of trajectories (rows × len(t)) or to a callable giving one on first use."""
         self.t = t
         self.names = list(names)
-        self._values = values
-        rows = range(len(names)) if rows is None else rows
-        self._index = dict(zip(names, rows))
-        self._rows: dict[int, np.ndarray] = {}
+        self._index = dict(zip(names, layout))
+        self._sources = dict(sources)
         self.units = dict(zip(names, units))
         self.model_name = model_name
 
-    def _row(self, r: int) -> np.ndarray:
-        if r not in self._rows:
-            v = self._values[r, :]
-            self._rows[r] = np.asarray(v.full() if hasattr(v, "full") else v, float).ravel()
-        return self._rows[r]
+    def _row(self, where: tuple[str, int]) -> np.ndarray:
+        key, r = where
+        if callable(self._sources[key]):
+            self._sources[key] = self._sources[key]()
+        return self._sources[key][r]
 
     def __getitem__(self, name: str) -> np.ndarray:
         if name == "time" or name == "t":

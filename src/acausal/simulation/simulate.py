@@ -126,10 +126,14 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     X, Z = np.hstack(X), np.hstack(Z)
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
-    rec = model.recorded_function.map(grid.size)
-    V = rec(grid.reshape(1, -1), X, Z, np.tile(p.reshape(-1, 1), (1, grid.size)), U)
-    return Result(grid, model.recorded_names, V, model.recorded_units, model.name,
-                  rows=model.recorded_rows)
+    P = np.tile(p.reshape(-1, 1), (1, grid.size))
+
+    def evaluate():            # the recorded variables that are not states, on first access
+        V = model.recorded_function.map(grid.size)(grid.reshape(1, -1), X, Z, P, U)
+        return np.asarray(V.full(), dtype=float)
+
+    return Result(grid, model.recorded_names, model.recorded_layout, model.recorded_units,
+                  {"x": X, "r": evaluate}, model.name)
 
 
 def _segments(grid: np.ndarray, events: list[float]):
