@@ -16,6 +16,7 @@ from __future__ import annotations
 import gc
 
 import casadi as ca
+import numpy as np
 
 from ..core.component import Model
 from ..core.errors import SingularModelError, StructureError
@@ -49,6 +50,7 @@ def _compile(model: Model, baumgarte: float) -> CompiledModel:
     ws = Workspace(t=ca.SX.sym("t"))
     ws.der_table["t"] = 1
     ws.source = flat.signal_source
+    ws.components = flat.components
     params = []                                    # (name, default, Parameter, component)
     try:
         for c in flat.components:
@@ -355,15 +357,17 @@ def _check_loops(tree, phi, q, p, p_default) -> None:
     anyway, redundant: their reaction is undetermined). Both are errors naming the parts."""
     phi_q = ca.jacobian(phi, q)
     rows = set(phi_q.sparsity().get_triplet()[0])
-    for i, r in enumerate(tree.loops):
-        if i in rows:
+    k = 0
+    for r, dim, _ in tree.loops:
+        i, k = k, k + dim
+        if all(row in rows for row in range(i, k)):
             continue
         parts = sorted({p.owner.path for n in r.nodes for p in n.ports} - {r.owner.path})
-        val = ca.Function("phi", [p], [phi[i]], {"allow_free": True})
+        val = ca.Function("phi", [p], [phi[i:k]], {"allow_free": True})
         kind = "inconsistent" if val.has_free() else None    # moves in time: over-constrained
         if kind is None:
-            res = float(val(p_default))
-            kind = "inconsistent" if abs(res) > 1e-10 else "redundant"
+            res = np.max(np.abs(np.array(val(p_default), dtype=float)))
+            kind = "inconsistent" if res > 1e-10 else "redundant"
         text = ("cannot close: the parts it joins are fixed with a different offset" if
                 kind == "inconsistent" else
                 "is redundant: it joins parts that are already rigidly fixed, so its reaction "
@@ -392,11 +396,15 @@ def _port_flows(ws, tree, explicit, lam_tree, lam_loop):
 
     for (p, _), v in zip(ws.flows, _split(explicit, [p.domain.dim for p, _ in ws.flows])):
         add(p, v)
-    for (r, *_), lam in zip(tree.fired, _split(lam_tree, [r.dim for r, *_ in tree.fired])):
-        for p, v in r.flows(lam):
+    extra = {}
+    for (r, dim, flows), lam in zip(tree.loops, _split(lam_loop, [b[1] for b in tree.loops])):
+        if flows is None:
+            extra[id(r)] = lam                 # extra rows of a relation that also fired
+            continue
+        for p, v in flows(lam):
             add(p, v)
-    for r, lam in zip(tree.loops, _split(lam_loop, [r.dim for r in tree.loops])):
-        for p, v in r.flows(lam):
+    for (r, e, *_), lam in zip(tree.fired, _split(lam_tree, [f[1].numel() for f in tree.fired])):
+        for p, v in (r.flows(lam) if r.linear else r.flows_fired(lam, extra.get(id(r)))):
             add(p, v)
     out = []
     for p in order:

@@ -63,7 +63,7 @@ class _TraceBuilder(PhysicsBuilder):
         raise _NotBatchable
 
     input = output = cut_flow = derivative = residual = model_input = model_output = _refuse
-    time_event = _refuse
+    time_event = outer = _refuse
 
 
 def run_physics(ws: Workspace, components: list) -> None:

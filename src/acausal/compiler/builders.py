@@ -13,7 +13,8 @@ from ..core.component import Component
 from ..core.errors import StructureError
 from ..core.interface import Input, Output
 from ..core.ports import Domain, PhysicalPort, Port, RealInput, RealOutput
-from .kinematics import InternalNode, LinearRelation
+from .kinematics import InternalNode
+from .relations import LinearRelation, PrismaticJoint, RevoluteJoint, RigidTransform
 from .symbolic import der_with, sx
 
 
@@ -50,6 +51,7 @@ class Workspace:
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
     events: list = field(default_factory=list)              # (time, period) of time events
+    components: list = field(default_factory=list)          # all of them, flattened
     p: object = None                                        # parameter symbols, stacked
     p_default: list = field(default_factory=list)           # their default values
 
@@ -117,6 +119,28 @@ class StructureBuilder(_Base):
             self._mine(p)
         self._ws.relations.append(LinearRelation(self._owner, list(coeffs), list(coeffs.values()),
                                                  rhs, name or f"{self._owner.path}"))
+
+    def transform(self, frame_a, frame_b, r=(0.0, 0.0), phi=0.0, name: str = "") -> None:
+        """Planar frames rigidly joined: frame_b = frame_a translated by r [m] (resolved in
+        frame_a) and rotated by phi [rad]. With frame_a None, frame_b is fixed in the world
+        at position r and angle phi."""
+        for p in (frame_a, frame_b):
+            if p is not None:
+                self._mine(p)
+        self._ws.relations.append(RigidTransform(self._owner, frame_a, frame_b, r, phi, name))
+
+    def revolute(self, frame_a, frame_b, angle, name: str = "") -> None:
+        """frame_b = frame_a rotated by the 1-D node ``angle`` [rad] about their common origin."""
+        for p in (frame_a, frame_b, angle):
+            self._mine(p)
+        self._ws.relations.append(RevoluteJoint(self._owner, frame_a, frame_b, angle, name))
+
+    def prismatic(self, frame_a, frame_b, s, e=(1.0, 0.0), name: str = "") -> None:
+        """frame_b = frame_a translated by s·e: ``s`` a 1-D node [m], ``e`` a unit axis
+        resolved in frame_a; no relative rotation."""
+        for p in (frame_a, frame_b, s):
+            self._mine(p)
+        self._ws.relations.append(PrismaticJoint(self._owner, frame_a, frame_b, s, e, name))
 
     def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
              preferred: bool = True) -> InternalNode:
@@ -229,6 +253,19 @@ class PhysicsBuilder(_Base):
     def variable(self, name: str, expr, unit: str = "", description: str = "") -> None:
         """Record ``expr`` as ``<component>.<name>`` in results."""
         self._ws.variables.append((self._name(name), sx(expr), unit, description))
+
+    def outer(self, cls) -> Component:
+        """The one component of class ``cls`` in the model (Modelica's inner/outer), e.g. the
+        planar World whose gravity every Body uses; while compiling, its parameters read as
+        symbols."""
+        found = [c for c in self._ws.components if isinstance(c, cls)]
+        if len(found) != 1:
+            raise StructureError(
+                f"{type(self._owner).__name__} '{self._owner.path}' needs exactly one "
+                f"{cls.__name__} in the model, found {len(found)}"
+                f"{': ' + ', '.join(c.path for c in found) if found else ''}; "
+                f"{'add one' if not found else 'keep one'}")
+        return found[0]
 
     def model_input(self, comp: Input) -> ca.SX:
         u = ca.SX.sym(comp.path)

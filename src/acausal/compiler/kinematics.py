@@ -18,7 +18,6 @@ from dataclasses import dataclass, field
 
 import casadi as ca
 
-from ..core.errors import StructureError
 from ..core.ports import Domain, PhysicalPort
 from .symbolic import combine, der_with
 
@@ -57,61 +56,6 @@ class Node:
         return any(getattr(p, "preferred", False) for p in self.ports)
 
 
-class LinearRelation:
-    """Σ a_i · pos(port_i) = b for 1-D ports: rigid offsets, gears, prescribed motion.
-
-    The coefficients a_i are numbers or expressions of parameters; b may also depend on
-    time, internal states and signals (prescribed motion). The flow at port i is a_i·λ, λ
-    the reaction.
-    """
-    dim = 1
-
-    def __init__(self, owner, ports: list[PhysicalPort], coeffs: list, rhs, name: str = ""):
-        for p in ports:
-            if p.domain.dim != 1:
-                raise StructureError(f"{owner.path}: a linear relation joins 1-D ports; "
-                                     f"'{p.path}' is {p.kind}")
-        self.owner, self.ports = owner, list(ports)
-        self.coeffs = [c if isinstance(c, ca.SX) else float(c) for c in coeffs]
-        self.rhs = rhs if isinstance(rhs, ca.SX) else float(rhs)
-        self.name = name or f"{owner.path}: relation"
-        self.nodes: list[Node] = []
-
-    def solve(self, j: int, atoms: "Atoms", eps: int) -> dict:
-        """Linear form of node j's position from the other nodes', the rhs and the relaxation
-        atom ``eps``: pos_j = (b + ε − Σ_{i≠j} a_i pos_i) / a_j."""
-        form = {eps: 1.0}
-        _axpy(form, 1.0, atoms.constant(self.rhs))
-        for i, (a, n) in enumerate(zip(self.coeffs, self.nodes)):
-            if i != j:
-                _axpy(form, -a, n.form)
-        return _scale(form, self.coeffs[j])
-
-    def residual(self, atoms: "Atoms") -> dict:
-        """Linear form of Σ a_i pos_i − b (a loop-closing constraint)."""
-        form = {}
-        for a, n in zip(self.coeffs, self.nodes):
-            _axpy(form, a, n.form)
-        _axpy(form, -1.0, atoms.constant(self.rhs))
-        return form
-
-    def flows(self, lam: ca.SX) -> list[tuple[PhysicalPort, ca.SX]]:
-        return [(p, combine(0, [(a, lam)])) for p, a in zip(self.ports, self.coeffs)]
-
-
-def _axpy(form: dict, a, other: dict) -> None:
-    """form += a · other (linear forms: atom index -> coefficient)."""
-    for k, c in other.items():
-        v = c if (isinstance(a, float) and a == 1.0) else a * c
-        form[k] = form[k] + v if k in form else v
-
-
-def _scale(form: dict, a) -> dict:
-    if isinstance(a, float) and a == 1.0:
-        return form
-    return {k: c / a for k, c in form.items()}
-
-
 class Atoms:
     """The independent quantities node positions are linear in: coordinates, relaxations ε,
     and right-hand sides of relations (constants and prescribed motions). Each has a position,
@@ -139,14 +83,22 @@ class Atoms:
         self.rhs.append(k)
         return {k: 1.0}
 
+    def motion(self, k: int, der) -> tuple:
+        """(pos, vel, acc) of atom k, deriving the rates of a rhs atom now if needed."""
+        if self.vel[k] is None:
+            self.vel[k] = der(self.pos[k])
+            self.acc[k] = der(self.vel[k])
+        return self.pos[k], self.vel[k], self.acc[k]
+
     def materialize(self, der) -> tuple[ca.SX, ca.SX, ca.SX]:
         """Stacked position, velocity and acceleration of all atoms (rates of the rhs atoms
         by one total-derivative call on all of them)."""
-        if self.rhs:
-            b = ca.vertcat(*[self.pos[k] for k in self.rhs])
+        pending = [k for k in self.rhs if self.vel[k] is None]
+        if pending:
+            b = ca.vertcat(*[self.pos[k] for k in pending])
             bd = der(b)
             bds, bdds = ca.vertsplit(bd), ca.vertsplit(der(bd))
-            for i, k in enumerate(self.rhs):
+            for i, k in enumerate(pending):
                 self.vel[k], self.acc[k] = bds[i], bdds[i]
         return (ca.vertcat(*self.pos), ca.vertcat(*self.vel), ca.vertcat(*self.acc))
 
@@ -172,8 +124,9 @@ class Tree:
     q_names: list[str]
     qd_names: list[str]
     fired: list = field(default_factory=list)      # (relation, eps, epsd, epsdd)
-    loops: list = field(default_factory=list)      # relations that close loops
-    loop_residual: ca.SX = None                    # Φ of the loop relations, stacked
+    loops: list = field(default_factory=list)      # (relation, dim, flows(λ) or None) per block;
+    #                                                None: extra rows of a fired relation
+    loop_residual: ca.SX = None                    # Φ of the loops, stacked in that order
 
 
 def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
@@ -188,25 +141,56 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
             by_node[n.index].append(r)
     used = set()
     atoms = Atoms()
+    der = lambda ex: der_with(ex, der_table)                       # noqa: E731
     q, qd, qdd, q_names, qd_names = [], [], [], [], []
-    fired, loops = [], []
+    fired, lin_loops, nl_loops = [], [], []       # nl_loops: (relation, Φ rows, flows)
     for n in nodes:
         n.form = None
+        n.pos = n.vel = n.acc = None
+
+    def known(n: Node) -> bool:
+        return n.form is not None or n.pos is not None
+
+    def values(n: Node):
+        """(pos, vel, acc) of a known node; 1-D nodes are materialized from their form."""
+        if n.pos is None:
+            parts = [(c, atoms.motion(k, der)) for k, c in n.form.items()]
+            n.pos, n.vel, n.acc = (combine(0, [(c, m[i]) for c, m in parts]) for i in range(3))
+        return n.pos, n.vel, n.acc
+
+    def relax(dim: int):
+        k = len(fired)
+        e, ed, edd = (ca.SX.sym(f"eps{k}", dim), ca.SX.sym(f"epsd{k}", dim),
+                      ca.SX.sym(f"epsdd{k}", dim))
+        for i in range(dim):
+            der_table[e[i].name()], der_table[ed[i].name()] = ed[i], edd[i]
+            der_table[edd[i].name()] = None
+        return e, ed, edd
 
     def visit(r):
-        unknown = [i for i, n in enumerate(r.nodes) if n.form is None]
-        if len(unknown) > 1:
+        unknown = [i for i, n in enumerate(r.nodes) if not known(n)]
+        if len(unknown) > 1 or (unknown and not r.can_solve(unknown[0])):
             return None
         used.add(id(r))
         if not unknown:
-            loops.append(r)
+            if r.linear:
+                lin_loops.append(r)
+            else:
+                nl_loops.append((r, r.loop_residual(values), r.flows_loop))
             return None
         j = unknown[0]
-        k = len(fired)
-        e, ed, edd = (ca.SX.sym(f"eps{k}"), ca.SX.sym(f"epsd{k}"), ca.SX.sym(f"epsdd{k}"))
-        der_table[e.name()], der_table[ed.name()], der_table[edd.name()] = ed, edd, None
         node = r.nodes[j]
-        node.form = r.solve(j, atoms, atoms.add(e, ed, edd))
+        e, ed, edd = relax(node.domain.dim if not r.linear else 1)
+        if r.linear:
+            node.form = r.solve(j, atoms, atoms.add(e, ed, edd))
+        else:
+            (pos, vel, acc), extra = r.fire(j, values)
+            if node.domain.dim == 1:
+                node.form = {atoms.add(pos + e, vel + ed, acc + edd): 1.0}
+            else:
+                node.pos, node.vel, node.acc = pos + e, vel + ed, acc + edd
+            if extra is not None:
+                nl_loops.append((r, extra, None))        # its flows: with the fired ones
         fired.append((r, e, ed, edd))
         return node
 
@@ -229,33 +213,43 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
     propagate(grounded)
     order = [n for n in nodes if n.preferred] + [n for n in nodes if not n.preferred]
     for n in order:
-        if n.form is not None:
+        if known(n):
             continue
-        if n.domain.dim != 1:
-            raise StructureError(f"'{n.name}': {n.domain.name} frames are not supported yet")
-        qname = n.name if _is_named_state(n) else f"{n.name}.{n.domain.potentials[0]}"
-        vname = _velocity_name(n, qname)
-        s, v, a = ca.SX.sym(qname), ca.SX.sym(vname), ca.SX.sym(f"der({vname})")
-        der_table[s.name()], der_table[v.name()], der_table[a.name()] = v, a, None
-        n.coordinate = [len(q)]
-        q.append(s); qd.append(v); qdd.append(a)
-        q_names.append(qname); qd_names.append(vname)
-        n.form = {atoms.add(s, v, a): 1.0}
+        dim = n.domain.dim
+        syms = []
+        for pot in n.domain.potentials:
+            qname = n.name if _is_named_state(n) and dim == 1 else f"{n.name}.{pot}"
+            vname = _velocity_name(n, qname)
+            s, v, a = ca.SX.sym(qname), ca.SX.sym(vname), ca.SX.sym(f"der({vname})")
+            der_table[s.name()], der_table[v.name()], der_table[a.name()] = v, a, None
+            q.append(s); qd.append(v); qdd.append(a)
+            q_names.append(qname); qd_names.append(vname)
+            syms.append((s, v, a))
+        n.coordinate = list(range(len(q) - dim, len(q)))
+        if dim == 1:
+            n.form = {atoms.add(*syms[0]): 1.0}
+        else:
+            n.pos, n.vel, n.acc = (ca.vertcat(*[x[i] for x in syms]) for i in range(3))
         propagate([n])
     for r in relations:               # relations among nodes that were all known already
         if id(r) not in used:
             visit(r)
 
-    # materialize: every node's motion is a sparse linear map of the atoms' motion
-    forms = [n.form for n in nodes] + [r.residual(atoms) for r in loops]
+    # materialize 1-D nodes: their motion is a sparse linear map of the atoms' motion
+    one_d = [n for n in nodes if n.domain.dim == 1]
+    forms = [n.form for n in one_d] + [r.residual(atoms) for r in lin_loops]
     S = _forms_to_matrix(forms, len(atoms.pos))
-    P, Vv, A = atoms.materialize(lambda ex: der_with(ex, der_table))
+    P, Vv, A = atoms.materialize(der)
     pos, vel, acc = (ca.vertsplit(ca.mtimes(S, X)) for X in (P, Vv, A))
-    for i, n in enumerate(nodes):
+    for i, n in enumerate(one_d):
         n.pos, n.vel, n.acc = pos[i], vel[i], acc[i]
-    nn = len(nodes)
-    residual = ca.vertcat(*pos[nn:]) if loops else ca.SX(0, 1)
-    vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)
+    rows = pos[len(one_d):]
+    loops = [(r, 1, r.flows) for r in lin_loops]
+    for r, phi, flows in nl_loops:
+        rows += ca.vertsplit(phi)
+        loops.append((r, phi.numel(), flows))
+    residual = ca.vertcat(*rows) if rows else ca.SX(0, 1)
+    vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)      # noqa: E731
     return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, residual)
 
 

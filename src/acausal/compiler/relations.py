@@ -1,0 +1,278 @@
+"""Kinematic relations components declare between their ports (and internal nodes).
+
+A relation can determine any one of its nodes from the others (it *fires* in the tree) or,
+when all its nodes are known already, close a loop (a constraint Φ = 0). Either way the flows
+(forces, torques) it exerts at its ports follow from its reaction λ by virtual work:
+flow_i = (∂Φ/∂pose_i)ᵀ λ, with Φ the relation written so that the fired node's relaxation ε
+enters as Φ = ε.
+
+- LinearRelation: Σ a_i·pos_i = b between 1-D ports: rigid offsets, gears, prescribed motion.
+- RigidTransform, RevoluteJoint, PrismaticJoint: planar frames, frame_b = frame_a ⊕ a relative
+  pose that is constant or given by a joint coordinate (a 1-D node).
+"""
+from __future__ import annotations
+
+import casadi as ca
+
+from ..core.errors import StructureError
+from ..core.ports import PhysicalPort
+from .symbolic import combine
+
+
+class LinearRelation:
+    """Σ a_i · pos(port_i) = b for 1-D ports: rigid offsets, gears, prescribed motion.
+
+    The coefficients a_i are numbers or expressions of parameters; b may also depend on
+    time, internal states and signals (prescribed motion). The flow at port i is a_i·λ, λ
+    the reaction.
+    """
+    linear = True
+    dim = 1
+
+    def __init__(self, owner, ports: list[PhysicalPort], coeffs: list, rhs, name: str = ""):
+        for p in ports:
+            if p.domain.dim != 1:
+                raise StructureError(f"{owner.path}: a linear relation joins 1-D ports; "
+                                     f"'{p.path}' is {p.kind}")
+        self.owner, self.ports = owner, list(ports)
+        self.coeffs = [c if isinstance(c, ca.SX) else float(c) for c in coeffs]
+        self.rhs = rhs if isinstance(rhs, ca.SX) else float(rhs)
+        self.name = name or f"{owner.path}: relation"
+        self.nodes = []
+
+    def can_solve(self, j: int) -> bool:
+        return True
+
+    def solve(self, j: int, atoms, eps: int) -> dict:
+        """Linear form of node j's position from the other nodes', the rhs and the relaxation
+        atom ``eps``: pos_j = (b + ε − Σ_{i≠j} a_i pos_i) / a_j."""
+        form = {eps: 1.0}
+        _axpy(form, 1.0, atoms.constant(self.rhs))
+        for i, (a, n) in enumerate(zip(self.coeffs, self.nodes)):
+            if i != j:
+                _axpy(form, -a, n.form)
+        return _scale(form, self.coeffs[j])
+
+    def residual(self, atoms) -> dict:
+        """Linear form of Σ a_i pos_i − b (a loop-closing constraint)."""
+        form = {}
+        for a, n in zip(self.coeffs, self.nodes):
+            _axpy(form, a, n.form)
+        _axpy(form, -1.0, atoms.constant(self.rhs))
+        return form
+
+    def flows(self, lam: ca.SX) -> list[tuple[PhysicalPort, ca.SX]]:
+        return [(p, combine(0, [(a, lam)])) for p, a in zip(self.ports, self.coeffs)]
+
+
+def _axpy(form: dict, a, other: dict) -> None:
+    """form += a · other (linear forms: atom index -> coefficient)."""
+    for k, c in other.items():
+        v = c if (isinstance(a, float) and a == 1.0) else a * c
+        form[k] = form[k] + v if k in form else v
+
+
+def _scale(form: dict, a) -> dict:
+    if isinstance(a, float) and a == 1.0:
+        return form
+    return {k: c / a for k, c in form.items()}
+
+
+# ---- planar frames ------------------------------------------------------------------------
+def _rot(phi, v):
+    """R(phi)·v for a 2-vector v."""
+    c, s = ca.cos(phi), ca.sin(phi)
+    return ca.vertcat(c * v[0] - s * v[1], s * v[0] + c * v[1])
+
+
+class FrameRelation:
+    """A nonlinear relation among nodes of given dimensions, with parameters.
+
+    Subclasses give ``dims`` (one per node), ``solve_local(j, vals, par)`` -> (value of node
+    j, extra constraint rows or None) from the others' values, and
+    ``residual_local(vals, par)`` (all nodes known). From these, velocities, accelerations
+    and the Jacobians for the flows are derived once per class and direction by AD on local
+    symbols (casadi Functions), so firing a relation costs one Function call.
+    """
+    linear = False
+    dims: tuple[int, ...] = ()
+    _cache: dict = {}
+
+    def __init__(self, owner, ports: list, params: list, name: str = ""):
+        self.owner, self.ports = owner, list(ports)
+        self.params = [p if isinstance(p, ca.SX) else ca.SX(p) for p in params]
+        self.name = name or f"{owner.path}"
+        self.nodes = []
+        for p, d in zip(self.ports, self.dims):
+            if p.domain.dim != d:
+                raise StructureError(f"{owner.path}: port '{p.path}' should be "
+                                     f"{'a planar frame' if d == 3 else 'a 1-D flange'}")
+
+    # to be given by subclasses
+    def solve_local(self, j, vals, par):
+        raise NotImplementedError
+
+    def residual_local(self, vals, par):
+        raise NotImplementedError
+
+    def can_solve(self, j: int) -> bool:
+        return True
+
+    # derived, cached per class
+    def _locals(self):
+        vals = [ca.SX.sym(f"n{i}", d) for i, d in enumerate(self.dims)]
+        vels = [ca.SX.sym(f"v{i}", d) for i, d in enumerate(self.dims)]
+        accs = [ca.SX.sym(f"a{i}", d) for i, d in enumerate(self.dims)]
+        par = [ca.SX.sym(f"p{k}", p.numel()) for k, p in enumerate(self.params)]
+        return vals, vels, accs, par
+
+    def _solver(self, j: int) -> ca.Function:
+        key = (type(self), self.dims, "solve", j, tuple(p.numel() for p in self.params))
+        if key not in FrameRelation._cache:
+            vals, vels, accs, par = self._locals()
+            others = [i for i in range(len(self.dims)) if i != j]
+            value, extra = self.solve_local(j, {i: vals[i] for i in others}, par)
+            X = ca.vertcat(*[vals[i] for i in others])
+            Xd = ca.vertcat(*[vels[i] for i in others])
+            Xdd = ca.vertcat(*[accs[i] for i in others])
+            vel = ca.jtimes(value, X, Xd)
+            acc = ca.jtimes(vel, ca.vertcat(X, Xd), ca.vertcat(Xd, Xdd))
+            J = ca.jacobian(value, X)
+            extra = extra if extra is not None else ca.SX(0, 1)
+            Je = ca.jacobian(extra, X)
+            Jej = ca.SX(extra.numel(), self.dims[j])
+            ins = [vals[i] for i in others] + [vels[i] for i in others] + \
+                  [accs[i] for i in others] + par
+            FrameRelation._cache[key] = ca.Function(
+                f"{type(self).__name__}_solve{j}", ins, [value, vel, acc, J, extra, Je, Jej])
+        return FrameRelation._cache[key]
+
+    def _residual(self) -> ca.Function:
+        key = (type(self), self.dims, "residual", tuple(p.numel() for p in self.params))
+        if key not in FrameRelation._cache:
+            vals, _, _, par = self._locals()
+            phi = self.residual_local({i: v for i, v in enumerate(vals)}, par)
+            X = ca.vertcat(*vals)
+            FrameRelation._cache[key] = ca.Function(f"{type(self).__name__}_residual",
+                                                    vals + par, [phi, ca.jacobian(phi, X)])
+        return FrameRelation._cache[key]
+
+    def fire(self, j: int, node_values) -> tuple:
+        """Node j from the others: (pos, vel, acc), and the rows of extra constraints (or
+        None). ``node_values(n)`` gives (pos, vel, acc) of a known node. Keeps what the
+        flows need."""
+        others = [i for i in range(len(self.dims)) if i != j]
+        known = [node_values(self.nodes[i]) for i in others]
+        args = [k[0] for k in known] + [k[1] for k in known] + [k[2] for k in known]
+        pos, vel, acc, J, extra, Je, _ = self._solver(j)(*args, *self.params)
+        self._fired = (j, others, J, Je)
+        return (pos, vel, acc), (extra if extra.numel() else None)
+
+    def flows_fired(self, lam: ca.SX, lam_extra: ca.SX | None):
+        """Flows at the ports when this relation fired: λ at node j (relaxation ε added to
+        it), −Jᵢᵀλ at the others; extra constraint rows add Jeᵢᵀ λ_extra."""
+        j, others, J, Je = self._fired
+        out = {j: lam}
+        col = 0
+        for i in others:
+            d = self.dims[i]
+            f = -ca.mtimes(J[:, col:col + d].T, lam)
+            if lam_extra is not None and lam_extra.numel():
+                f = f + ca.mtimes(Je[:, col:col + d].T, lam_extra)
+            out[i] = f
+            col += d
+        return [(self.ports[i], out[i]) for i in range(len(self.dims))]
+
+    def loop_residual(self, node_values):
+        vals = [node_values(n)[0] for n in self.nodes]
+        phi, J = self._residual()(*vals, *self.params)
+        self._loop = J
+        return phi
+
+    def flows_loop(self, lam: ca.SX):
+        out, col = [], 0
+        for p, d in zip(self.ports, self.dims):
+            out.append((p, ca.mtimes(self._loop[:, col:col + d].T, lam)))
+            col += d
+        return out
+
+
+class RigidTransform(FrameRelation):
+    """frame_b = frame_a ⊕ (r resolved in frame_a [m], phi [rad]); without frame_a, frame_b is
+    fixed in the world at (r, phi)."""
+    dims = (3, 3)
+
+    def __init__(self, owner, frame_a, frame_b, r, phi, name=""):
+        if frame_a is None:
+            self.dims = (3,)
+            super().__init__(owner, [frame_b], [ca.vertcat(*r), phi], name)
+        else:
+            super().__init__(owner, [frame_a, frame_b], [ca.vertcat(*r), phi], name)
+
+    def solve_local(self, j, vals, par):
+        r, phi = par
+        if len(self.dims) == 1:
+            return ca.vertcat(r, phi), None
+        if j == 1:
+            a = vals[0]
+            return ca.vertcat(a[:2] + _rot(a[2], r), a[2] + phi), None
+        b = vals[1]
+        pa = b[2] - phi
+        return ca.vertcat(b[:2] - _rot(pa, r), pa), None
+
+    def residual_local(self, vals, par):
+        r, phi = par
+        if len(self.dims) == 1:
+            return vals[0] - ca.vertcat(r, phi)
+        a, b = vals[0], vals[1]
+        return b - ca.vertcat(a[:2] + _rot(a[2], r), a[2] + phi)
+
+
+class RevoluteJoint(FrameRelation):
+    """frame_b = frame_a rotated by the joint angle (a 1-D node) about their common origin."""
+    dims = (3, 3, 1)
+
+    def __init__(self, owner, frame_a, frame_b, angle, name=""):
+        super().__init__(owner, [frame_a, frame_b, angle], [], name)
+
+    def solve_local(self, j, vals, par):
+        if j == 1:
+            a, q = vals[0], vals[2]
+            return ca.vertcat(a[:2], a[2] + q), None
+        if j == 0:
+            b, q = vals[1], vals[2]
+            return ca.vertcat(b[:2], b[2] - q), None
+        a, b = vals[0], vals[1]
+        return b[2] - a[2], b[:2] - a[:2]
+
+    def residual_local(self, vals, par):
+        a, b, q = vals[0], vals[1], vals[2]
+        return b - ca.vertcat(a[:2], a[2] + q)
+
+
+class PrismaticJoint(FrameRelation):
+    """frame_b = frame_a translated by s·e (s the joint coordinate, a 1-D node; e a unit
+    vector resolved in frame_a); no relative rotation."""
+    dims = (3, 3, 1)
+
+    def __init__(self, owner, frame_a, frame_b, s, e, name=""):
+        super().__init__(owner, [frame_a, frame_b, s], [ca.vertcat(*e)], name)
+
+    def solve_local(self, j, vals, par):
+        (e,) = par
+        if j == 1:
+            a, s = vals[0], vals[2]
+            return ca.vertcat(a[:2] + s * _rot(a[2], e), a[2]), None
+        if j == 0:
+            b, s = vals[1], vals[2]
+            return ca.vertcat(b[:2] - s * _rot(b[2], e), b[2]), None
+        a, b = vals[0], vals[1]
+        d = b[:2] - a[:2]
+        ea = _rot(a[2], e)
+        n = ca.vertcat(-ea[1], ea[0])
+        return ca.dot(ea, d) / ca.dot(e, e), ca.vertcat(ca.dot(n, d), b[2] - a[2])
+
+    def residual_local(self, vals, par):
+        (e,) = par
+        a, b, s = vals[0], vals[1], vals[2]
+        return b - ca.vertcat(a[:2] + s * _rot(a[2], e), a[2])
