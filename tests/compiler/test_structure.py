@@ -196,7 +196,7 @@ def test_mass_matrix_of_two_mass_chain():
     m.connect(m.m1.flange_b, m.s2.flange_a)
     m.connect(m.s2.flange_b, m.m2.flange_a)
     c = acausal.compile(m)
-    eq = c.equations
+    eq = c.lagrange
     assert eq.q_names == ["m1.s", "m2.s"]
     Mfun = ca.Function("M", [eq.q, eq.p], [eq.M])
     R0fun = ca.Function("R0", [eq.q, eq.qd, eq.p], [eq.R0])

@@ -22,7 +22,7 @@ from ..core.component import Model
 from ..core.errors import SingularModelError, StructureError
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
-from .compiled import CompiledModel, Equations
+from .compiled import CompiledModel, Lagrange
 from .flatten import flatten
 from .kinematics import InternalNode, Node, build_tree
 from .symbolic import UnknownDerivative, der_with, substitute_all
@@ -100,21 +100,25 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
     # ---- Lagrange's equations for [q; ε] ---------------------------------------------
     T = ca.sum1(_vc(*ws.kinetic)) if ws.kinetic else ca.SX(0)
     V = ca.sum1(_vc(*ws.potential)) if ws.potential else ca.SX(0)
-    R = der_with(ca.gradient(T, qda), ws.der_table) - ca.gradient(T, qa) + ca.gradient(V, qa)
+    R_T = der_with(ca.gradient(T, qda), ws.der_table) - ca.gradient(T, qa)   # inertia
+    R_V = ca.gradient(V, qa)                                                 # conservative
+    R_Q = ca.SX.zeros(qa.numel())                                            # −Q of flows
     if ws.flows:
         v = _vc(*[ws.node_of[p].vel for p, _ in ws.flows])
         f = _vc(*[fl for _, fl in ws.flows])                 # flow into the component
-        R = R + ca.jtimes(v, qda, f, True)                   # node force is −flow
+        R_Q = ca.jtimes(v, qda, f, True)                     # node force is −flow
     phi = tree.loop_residual
     phi_eps = ca.jacobian(phi, eps)
 
     # ---- signals, state derivatives, relaxations: substituted -------------------------
     resolve = _resolver(ws, eps, epsd, epsdd)
-    pieces = [R, phi, phi_eps, _vc(*[i.der for i in ws.states]) if ws.states else ca.SX(0, 1),
+    pieces = [R_T, R_V, R_Q, phi, phi_eps,
+              _vc(*[i.der for i in ws.states]) if ws.states else ca.SX(0, 1),
               _vc(*[r for _, r in ws.residuals]) if ws.residuals else ca.SX(0, 1),
               _vc(*[e for _, e in ws.outputs]) if ws.outputs else ca.SX(0, 1),
               _vc(*[fl for _, fl in ws.flows]) if ws.flows else ca.SX(0, 1)]
-    R, phi, phi_eps, zdot, g_alg, y_out, explicit = resolve(pieces)
+    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit = resolve(pieces)
+    R = R_T + R_V + R_Q
     R_q, R_eps = R[:nq], R[nq:]
 
     cut = _vc(*ws.cut_flow_sym.values()) if ws.cut_flow_sym else ca.SX(0, 1)
@@ -180,9 +184,8 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
         inputs=[(c.path, c.start, c.unit, c.description) for c, _ in ws.inputs],
         outputs=[(c.path, c.unit, c.description) for c, _ in ws.outputs], y=y_out,
         recorder=recorded, events=_events(ws.events, p),
-        equations=Equations(q=tree.q, qd=tree.qd, qdd=tree.qdd, M=eq.M, R0=eq.R0,
-                            phi=phi, q_names=tree.q_names, qd_names=tree.qd_names, t=t, p=p, u=u,
-                            z=z_states),
+        lagrange=Lagrange.split(tree, R_T[:nq], R_V[:nq], R_Q[:nq], phi, t, p, u,
+                                [c.path for c, _ in ws.inputs], z_states),
         coordinates=tree.q_names,
     )
 

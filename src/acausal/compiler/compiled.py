@@ -7,7 +7,7 @@ outputs, and the CasADi objects: the semi-explicit DAE
 
 as a dict for ``casadi.integrator`` (its ``p`` is [parameters; inputs]), Functions for the
 right-hand side and the recorded variables, and the pieces of Lagrange's equations
-(``equations``): M(q) and the bias R0(q, q̇) of M q̈ + R0 = 0, Φ(q) for loops.
+(``lagrange``): M(q), C, K, gravity, Coriolis, input matrix, Φ(q) for loops.
 """
 from __future__ import annotations
 
@@ -21,29 +21,79 @@ from ..core.errors import ParameterError
 
 
 @dataclass
-class Equations:
-    """Lagrange's equations M(q) q̈ + R0(q, q̇, t) = 0 (+ Φ_qᵀλ for loops), with their symbols.
+class Lagrange:
+    """Lagrange's equations of a compiled model, as CasADi expressions of the coordinates q,
+    their rates q̇ (``qd``), the inputs u, time t, parameters p (and internal states z):
 
-    R0 = (Ṁ q̇ − ∂T/∂q) + ∂V/∂q − Q: everything but the inertia term. ``phi`` is the vector of
-    loop-closing constraints Φ(q, t).
+        M(q) q̈ + C q̇ + K q = gravity(q) + coriolis(q, q̇) + B u + Q_rest  (− Φ_qᵀ λ)
+
+    - ``M`` the mass matrix; ``coriolis`` = −(Ṁ q̇ − ∂T/∂q), the centrifugal and Coriolis
+      terms; ``gravity`` = −∂V/∂q from potential energies;
+    - the generalized forces Q of all port forces and torques (springs, dampers, sources,
+      actuators) are split as Q = −K q − C q̇ + B u + Q_rest when their stiffness and damping
+      are linear (``K``, ``C`` constant); otherwise ``K`` and ``C`` are None and Q_rest = Q − B u;
+    - ``B`` = ∂Q/∂u, the input matrix of the model's Inputs (``u_names``);
+    - ``phi`` the loop constraints Φ(q, t) = 0 and ``phi_q`` their Jacobian.
+    ``R0`` = −(gravity + coriolis + Q) is everything but the inertia term: M q̈ + R0 = 0.
     """
     q: ca.SX
     qd: ca.SX
     qdd: ca.SX
-    M: ca.SX
-    R0: ca.SX
-    phi: ca.SX
     q_names: list
     qd_names: list
+    M: ca.SX
+    C: ca.SX | None
+    K: ca.SX | None
+    gravity: ca.SX
+    coriolis: ca.SX
+    B: ca.SX
+    Q_rest: ca.SX
+    phi: ca.SX
+    phi_q: ca.SX
+    R0: ca.SX
     t: ca.SX
     p: ca.SX
     u: ca.SX
+    u_names: list
     z: ca.SX
 
+    @classmethod
+    def split(cls, tree, R_T, R_V, R_Q, phi, t, p, u, u_names, z) -> "Lagrange":
+        q, qd, qdd = tree.q, tree.qd, tree.qdd
+        zero = ca.SX.zeros(qdd.numel())
+        M = ca.jacobian(R_T, qdd)
+        coriolis = -ca.substitute(R_T, qdd, zero)
+        Q = -R_Q
+        B = ca.jacobian(Q, u)
+        Qnu = ca.substitute(Q, u, ca.SX.zeros(u.numel()))
+        K, C = -ca.jacobian(Qnu, q), -ca.jacobian(Qnu, qd)
+        if ca.depends_on(ca.vertcat(ca.vec(K), ca.vec(C)), ca.vertcat(q, qd, qdd)):
+            K = C = None
+            rest = Qnu
+        else:
+            rest = ca.simplify(Qnu + ca.mtimes(K, q) + ca.mtimes(C, qd))
+        R0 = ca.substitute(R_T + R_V + R_Q, qdd, zero)
+        return cls(q, qd, qdd, tree.q_names, tree.qd_names, M, C, K, -R_V, coriolis, B, rest,
+                   phi, ca.jacobian(phi, q), R0, t, p, u, list(u_names), z)
+
+    def function(self, *names: str) -> ca.Function:
+        """A casadi Function (q, qd, u, t, p) -> the named pieces ('M', 'gravity', ...)."""
+        outs = [getattr(self, n) for n in names]
+        if any(o is None for o in outs):
+            raise ValueError(f"{[n for n, o in zip(names, outs) if o is None]} not linear here")
+        return ca.Function("lagrange", [self.q, self.qd, self.u, self.t, self.p], outs,
+                           ["q", "qd", "u", "t", "p"], list(names), {"allow_free": True})
+
     def __str__(self):
-        lines = [f"q = [{', '.join(self.q_names)}]", f"M(q) =\n{self.M}", f"R0 =\n{self.R0}"]
+        def show(name, ex):
+            return f"{name} =\n{ex}" if ex is not None else f"{name}: not linear"
+        lines = [f"q = [{', '.join(self.q_names)}]", f"u = [{', '.join(self.u_names)}]",
+                 "M q'' + C q' + K q = gravity + coriolis + B u + Q_rest",
+                 show("M", self.M), show("C", self.C), show("K", self.K),
+                 show("gravity", self.gravity), show("coriolis", self.coriolis),
+                 show("B", self.B), show("Q_rest", self.Q_rest)]
         if self.phi.numel():
-            lines.append(f"Phi =\n{self.phi}")
+            lines += [show("Phi", self.phi), show("Phi_q", self.phi_q)]
         return "\n".join(lines)
 
 
@@ -66,7 +116,7 @@ class CompiledModel:
     outputs: list           # (name, unit, description)
     y: ca.SX
     recorder: object        # () -> (names, expressions, units) of every recorded variable
-    equations: Equations
+    lagrange: Lagrange
     coordinates: list
     _cache: dict = field(default_factory=dict, repr=False)
 

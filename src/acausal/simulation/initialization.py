@@ -35,9 +35,9 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
         labels.append(name)
         targets.append(float(value))
     eqs = [h - v for h, v in zip(hard, targets)]
-    phi = model.equations.phi
+    phi = model.lagrange.phi
     if phi.numel():
-        eqs += [phi, ca.jtimes(phi, model.equations.q, model.equations.qd)
+        eqs += [phi, ca.jtimes(phi, model.lagrange.q, model.lagrange.qd)
                 + ca.jacobian(phi, model.t)]
         labels += [f"loop constraint {i}" for i in range(phi.numel())] * 2
     if model.z.numel():
