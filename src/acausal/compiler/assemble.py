@@ -56,9 +56,13 @@ def _compile(model: Model, baumgarte: float) -> CompiledModel:
         for c in flat.components:
             syms = {}
             for pname, par in c.parameters().items():
-                s = ca.SX.sym(f"{c.path}.{pname}" if c.path else pname)
-                syms[pname] = s
-                params.append((s, c._values[pname], par, c))
+                value = c._values[pname]
+                elements = []
+                for k, ename in enumerate(par.element_names()):
+                    s = ca.SX.sym(f"{c.path}.{ename}" if c.path else ename)
+                    elements.append(s)
+                    params.append((s, value if par.size is None else value[k], par, c))
+                syms[pname] = elements[0] if par.size is None else _vc(*elements)
             c.__dict__["_symbols"] = syms
         for c in flat.components:
             c.structure(StructureBuilder(ws, c))
@@ -430,7 +434,7 @@ def _split(v: ca.SX, dims: list[int]) -> list[ca.SX]:
 
 
 def _flow_units(flows):
-    units = {"f": "N", "tau": "N.m", "fx": "N", "fy": "N"}
+    units = {"f": "N", "tau": "N.m", "fx": "N", "fy": "N", "t": "N.m"}
     return [units.get(n.rsplit(".", 1)[1], "") for n, _ in flows]
 
 

@@ -105,7 +105,7 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
         inputs += trio
     saved = rep.__dict__["_symbols"]
     pnames = list(saved)
-    stand = {p: ca.SX.sym(p) for p in pnames}
+    stand = {p: ca.SX.sym(p, saved[p].numel()) for p in pnames}
     table["t"] = 1
     rep.__dict__["_symbols"] = stand
     try:

@@ -145,7 +145,7 @@ class CompiledModel:
                 raise ParameterError(f"model '{self.name}' has no parameter '{name}'"
                                      f"{_suggest(name, values)}")
             par = self.params[self.param_names.index(name)][4]
-            values[name] = par.check(v, name.rsplit(".", 1)[0])
+            values[name] = par.check_scalar(v, name.rsplit(".", 1)[0])
         return np.array([values[n] for n in self.param_names], dtype=float)
 
     def event_times(self, p: np.ndarray, t0: float, t1: float) -> list[float]:

@@ -79,6 +79,11 @@ def _scale(form: dict, a) -> dict:
 
 
 # ---- planar frames ------------------------------------------------------------------------
+def _vec(v) -> ca.SX:
+    """A vector given as an SX or as a sequence of numbers / SX."""
+    return v if isinstance(v, ca.SX) else ca.vertcat(*[ca.SX(x) for x in v])
+
+
 def _rot(phi, v):
     """R(phi)·v for a 2-vector v."""
     c, s = ca.cos(phi), ca.sin(phi)
@@ -205,9 +210,9 @@ class RigidTransform(FrameRelation):
     def __init__(self, owner, frame_a, frame_b, r, phi, name=""):
         if frame_a is None:
             self.dims = (3,)
-            super().__init__(owner, [frame_b], [ca.vertcat(*r), phi], name)
+            super().__init__(owner, [frame_b], [_vec(r), phi], name)
         else:
-            super().__init__(owner, [frame_a, frame_b], [ca.vertcat(*r), phi], name)
+            super().__init__(owner, [frame_a, frame_b], [_vec(r), phi], name)
 
     def solve_local(self, j, vals, par):
         r, phi = par
@@ -256,7 +261,7 @@ class PrismaticJoint(FrameRelation):
     dims = (3, 3, 1)
 
     def __init__(self, owner, frame_a, frame_b, s, e, name=""):
-        super().__init__(owner, [frame_a, frame_b, s], [ca.vertcat(*e)], name)
+        super().__init__(owner, [frame_a, frame_b, s], [_vec(e)], name)
 
     def solve_local(self, j, vals, par):
         (e,) = par

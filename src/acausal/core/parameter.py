@@ -7,7 +7,9 @@ from .errors import ParameterError
 class Parameter:
     """A component parameter, declared as a class attribute.
 
-    ``default`` is the value used when none is given; ``unit`` is the SI unit (text);
+    ``default`` is the value used when none is given (a number, or a tuple for a vector
+    parameter such as a position r: its elements are the parameters ``r[1]``, ``r[2]``);
+    ``unit`` is the SI unit (text);
     ``positive`` requires the value to be > 0 (masses, inertias); ``nonzero`` requires it to be
     different from 0 (gear ratios, radii).
 
@@ -16,9 +18,10 @@ class Parameter:
     writes keep the parameter symbolic and it can be changed at simulation time.
     """
 
-    def __init__(self, default: float, unit: str = "", description: str = "", *,
+    def __init__(self, default, unit: str = "", description: str = "", *,
                  positive: bool = False, nonzero: bool = False, nonnegative: bool = False):
-        self.default = float(default)
+        self.size = None if isinstance(default, (int, float)) else len(default)
+        self.default = float(default) if self.size is None else tuple(map(float, default))
         self.unit = unit
         self.description = description
         self.positive = positive
@@ -40,8 +43,31 @@ class Parameter:
     def __set__(self, instance, value):
         instance.__dict__["_values"][self.name] = self.check(value, instance)
 
-    def check(self, value, where) -> float:
-        """The value as float, or a ParameterError naming ``where`` (a component or a name)."""
+    def element_names(self) -> list[str]:
+        """Names of the scalar parameters this one stands for: ``r[1]``, ``r[2]`` for a
+        vector (Modelica's numbering), the name itself for a scalar."""
+        if self.size is None:
+            return [self.name]
+        return [f"{self.name}[{i + 1}]" for i in range(self.size)]
+
+    def check(self, value, where):
+        """The value as float (a tuple of them for a vector), or a ParameterError naming
+        ``where`` (a component or a name)."""
+        if self.size is not None and not isinstance(value, (int, float, str)):
+            try:
+                items = list(value)
+            except TypeError:
+                items = None
+            if items is None or len(items) != self.size:
+                raise ParameterError(f"parameter '{_label(where)}.{self.name}' takes "
+                                     f"{self.size} values, got {value!r}")
+            return tuple(self.check_scalar(v, where) for v in items)
+        if self.size is not None:
+            raise ParameterError(f"parameter '{_label(where)}.{self.name}' takes {self.size} "
+                                 f"values, got {value!r}")
+        return self.check_scalar(value, where)
+
+    def check_scalar(self, value, where) -> float:
         try:
             v = float(value)
         except (TypeError, ValueError):

@@ -27,7 +27,7 @@ class Domain:
 
 TRANSLATIONAL = Domain("translational", ("s",), ("f",), ("m",), ("N",), ("m/s",))
 ROTATIONAL = Domain("rotational", ("phi",), ("tau",), ("rad",), ("N.m",), ("rad/s",))
-PLANAR = Domain("planar", ("x", "y", "phi"), ("fx", "fy", "tau"), ("m", "m", "rad"),
+PLANAR = Domain("planar", ("x", "y", "phi"), ("fx", "fy", "t"), ("m", "m", "rad"),
                 ("N", "N", "N.m"), ("m/s", "m/s", "rad/s"))
 
 
@@ -74,7 +74,9 @@ class RotationalFlange(PhysicalPort):
 
 
 class Frame(PhysicalPort):
-    """Planar frame: x, y [m], phi [rad]; fx, fy [N], tau [N.m], resolved in the world frame."""
+    """Planar frame (PlanarMechanics): x, y [m], phi [rad]; cut force fx, fy [N] and torque
+    t [N.m] about the frame's origin, resolved in the world frame, positive into the
+    component (t counter-clockwise, like phi)."""
     domain = PLANAR
 
 
