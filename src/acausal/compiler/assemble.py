@@ -8,8 +8,8 @@
        R = d/dt(∂T/∂q̇) − ∂T/∂q + ∂V/∂q − Q = 0,  Q = Σ J_portᵀ f_port;
 5. signals, state derivatives and relaxations are substituted; the equations are solved for
    the accelerations (elementwise when the mass matrix is diagonal, else a symbolic solve),
-   closed loops get multipliers (index-1 form with Baumgarte stabilization), massless nodes
-   become algebraic variables of a semi-explicit DAE.
+   closed loops get multipliers (stabilized index-2 form: the constraints hold exactly),
+   massless nodes become algebraic variables of a semi-explicit DAE.
 """
 from __future__ import annotations
 
@@ -30,22 +30,18 @@ from .symbolic import UnknownDerivative, der_with, substitute_all
 _vc = ca.vertcat
 
 
-def compile(model: Model, *, baumgarte: float = 20.0) -> CompiledModel:
-    """Compile ``model`` into a CompiledModel.
-
-    ``baumgarte`` [1/s] is the rate at which the constraint violation of closed loops is
-    damped (Φ̈ + 2αΦ̇ + α²Φ = 0); it only matters for models with loops.
-    """
+def compile(model: Model) -> CompiledModel:
+    """Compile ``model`` into a CompiledModel."""
     gc_was_enabled = gc.isenabled()
     gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
     try:
-        return _compile(model, baumgarte)
+        return _compile(model)
     finally:
         if gc_was_enabled:
             gc.enable()
 
 
-def _compile(model: Model, baumgarte: float) -> CompiledModel:
+def _compile(model: Model) -> CompiledModel:
     flat = flatten(model)
     ws = Workspace(t=ca.SX.sym("t"))
     ws.der_table["t"] = 1
@@ -81,10 +77,10 @@ def _compile(model: Model, baumgarte: float) -> CompiledModel:
             c.__dict__.pop("_symbols", None)
     ws.p = _vc(*[s for s, *_ in params]) if params else ca.SX(0, 1)
     ws.p_default = [d for _, d, *_ in params]
-    return _assemble(model, flat, ws, tree, params, baumgarte)
+    return _assemble(model, flat, ws, tree, params)
 
 
-def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledModel:
+def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
     t = ws.t
     nq = tree.q.numel()
     eps = _vc(*[f[1] for f in tree.fired]) if tree.fired else ca.SX(0, 1)
@@ -130,7 +126,7 @@ def _assemble(model, flat, ws: Workspace, tree, params, baumgarte) -> CompiledMo
         raise StructureError("a measured cut force/torque (force or torque sensor) feeds back "
                              "into the forces of the model; this implicit loop is not supported "
                              "yet: measure the force elsewhere (e.g. a spring's f)")
-    eq = _solve_motion(tree, R_q, phi, t, ws, baumgarte)
+    eq = _solve_motion(tree, R_q, phi, t, ws)
     lam_tree = -(R_eps + ca.mtimes(phi_eps.T, eq.lam)) if eps.numel() else ca.SX(0, 1)
     sub_from = [tree.qdd] + eq.extra_from
     sub_to = [eq.qdd] + eq.extra_to
@@ -260,7 +256,7 @@ class _Motion:
     """Accelerations solved: the differential/algebraic split of the mechanical states."""
 
 
-def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
+def _solve_motion(tree, R_q, phi, t, ws) -> _Motion:
     nq = tree.q.numel()
     q, qd, qdd = tree.q, tree.qd, tree.qdd
     A = ca.jacobian(R_q, qdd)
@@ -288,14 +284,20 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
                 "a closed kinematic loop together with massless nodes "
                 f"({', '.join(tree.q_names[k] for k in massless)}) is not supported yet; give "
                 "those nodes a mass")
+        # accelerations and multipliers from [M Φ_qᵀ; Φ_q 0][q̈; λ] = [−R0; −γ], γ = Φ̈ at
+        # q̈ = 0; the positions and velocities are then held on Φ = 0 and Φ̇ = 0 exactly (to
+        # the solver's Newton tolerance) by the stabilized index-2 form of Gear, Gupta and
+        # Leimkuhler: q̇ = q̇_state + Φ_qᵀμ, v̇ = q̈ + Φ_qᵀν, 0 = Φ, 0 = Φ̇, with μ = ν = 0 on the
+        # exact solution. Unlike Baumgarte's method this leaves no drift to tune away, and
+        # unlike coordinate partitioning it needs no choice of independent coordinates.
         phi_q = ca.jacobian(phi, q)
         phid = der_with(phi, ws.der_table)
         gamma = ca.substitute(der_with(phid, ws.der_table), qdd, ca.SX.zeros(nq))
         KKT = ca.blockcat([[A_MM, phi_q.T], [phi_q, ca.SX(nc, nc)]])
-        rhs = _vc(-R0, -gamma - 2 * alpha * phid - alpha ** 2 * phi)
-        sol = ca.solve(KKT, rhs)
+        sol = ca.solve(KKT, _vc(-R0, -gamma))
         qdd_sol, out.lam = sol[:nq], sol[nq:]
-        out.phi_q = phi_q
+        mu, nu = ca.SX.sym("loops.mu", nc), ca.SX.sym("loops.nu", nc)
+        out.ggl = (mu, nu, ca.mtimes(phi_q.T, mu), ca.mtimes(phi_q.T, nu), phi, phid)
     else:
         out.lam = ca.SX(0, 1)
         R0M = idx(R0, massive)
@@ -314,6 +316,12 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
     out.qdd_diff = idx(qdd_sol, massive) if massive else ca.SX(0, 1)
     out.alg_vars = _vc(idx(qd, vel_alg), idx(q, pos_alg))
     out.alg_res = _vc(idx(R0, vel_alg), idx(R0, pos_alg))
+    if nc:
+        mu, nu, dq, dv, phi_, phid_ = out.ggl
+        out.q_diff_dot = out.q_diff_dot + dq
+        out.qdd_diff = out.qdd_diff + dv
+        out.alg_vars = _vc(out.alg_vars, mu, nu)
+        out.alg_res = _vc(out.alg_res, phi_, phid_)
     if massless:
         out.alg_res = ca.substitute(out.alg_res, qdd, qdd_sol)
     if pos_alg:
@@ -332,7 +340,7 @@ def _solve_motion(tree, R_q, phi, t, ws, alpha) -> _Motion:
             out.qdd_diff, out.alg_res = ca.substitute([out.qdd_diff, out.alg_res], [qdP], [qdP_sol])
     out.qdd = qdd_sol
     out.x_start = [0.0] * (len(massive) + len(vel_alg)) + [0.0] * len(massive)
-    out.z_start = [0.0] * (len(vel_alg) + len(pos_alg))
+    out.z_start = [0.0] * (len(vel_alg) + len(pos_alg) + 2 * nc)
     out.massless = [tree.q_names[k] for k in massless]
     return out
 
