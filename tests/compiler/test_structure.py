@@ -129,10 +129,16 @@ def test_inconsistent_rigid_loop(with_oscillator):
 
 
 def test_redundant_rigid_loop():
-    """Walls at 0 and 1 joined by a rod of length 1: consistent, but the rod's force is
-    undetermined; the error names the rod and says the loop is redundant."""
-    with pytest.raises(acausal.StructureError, match=r"'rod'.*redundant"):
-        acausal.compile(_walls_joined_by_rod(1.0, True))
+    """Walls at 0 and 1 joined by a rod of length 1: consistent but redundant (the rod's force
+    is statically indeterminate). Reported by name and handled: the constraint is dropped with
+    a warning, and the oscillator beside it moves as its closed form says."""
+    with pytest.warns(UserWarning, match=r"redundant.*rod"):
+        c = acausal.compile(_walls_joined_by_rod(1.0, True))
+    assert c.mobility.redundant == ["rod"] and c.mobility.dof == 1
+    t = np.linspace(0.0, 2.0, 41)
+    res = c.simulate(2.0, t=t, x0={"mass.s": 0.1})
+    np.testing.assert_allclose(res["mass.s"], 0.1 * np.cos(2.0 * t), atol=1e-6)
+    np.testing.assert_allclose(res["right.flange.s"], 1.0, atol=1e-14)
 
 
 def test_x0_conflict_between_rigidly_joined_masses():

@@ -16,7 +16,6 @@ from __future__ import annotations
 import gc
 
 import casadi as ca
-import numpy as np
 
 from ..core.component import Model
 from ..core.errors import SingularModelError, StructureError
@@ -25,6 +24,7 @@ from .builders import StructureBuilder, Workspace
 from .compiled import CompiledModel, Lagrange
 from .flatten import flatten
 from .kinematics import InternalNode, Node, build_tree
+from .loops import analyse_loops
 from .symbolic import UnknownDerivative, der_with, substitute_all
 
 _vc = ca.vertcat
@@ -126,13 +126,16 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
         raise StructureError("a measured cut force/torque (force or torque sensor) feeds back "
                              "into the forces of the model; this implicit loop is not supported "
                              "yet: measure the force elsewhere (e.g. a spring's f)")
-    eq = _solve_motion(tree, R_q, phi, t, ws)
-    lam_tree = -(R_eps + ca.mtimes(phi_eps.T, eq.lam)) if eps.numel() else ca.SX(0, 1)
+    keep, mobility = analyse_loops(tree, phi, ws)
+    eq = _solve_motion(tree, R_q, phi[keep], t, ws)
+    lam = ca.SX.zeros(phi.numel())               # dropped (redundant) rows carry nothing
+    lam[keep] = eq.lam
+    lam_tree = -(R_eps + ca.mtimes(phi_eps.T, lam)) if eps.numel() else ca.SX(0, 1)
     sub_from = [tree.qdd] + eq.extra_from
     sub_to = [eq.qdd] + eq.extra_to
 
     def flows():
-        return _port_flows(ws, tree, explicit, lam_tree, eq.lam)
+        return _port_flows(ws, tree, explicit, lam_tree, lam)
 
     cut_values = ca.SX(0, 1)
     if ws.cut_flow_sym:
@@ -184,7 +187,8 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
         inputs=[(c.path, c.start, c.unit, c.description) for c, _ in ws.inputs],
         outputs=[(c.path, c.unit, c.description) for c, _ in ws.outputs], y=y_out,
         recorder=recorded, events=_events(ws.events, p),
-        lagrange=Lagrange.split(tree, R_T[:nq], R_V[:nq], R_Q[:nq], phi, t, p, u,
+        mobility=mobility,
+        lagrange=Lagrange.split(tree, R_T[:nq], R_V[:nq], R_Q[:nq], phi[keep], t, p, u,
                                 [c.path for c, _ in ws.inputs], z_states),
         coordinates=tree.q_names,
     )
@@ -278,7 +282,6 @@ def _solve_motion(tree, R_q, phi, t, ws) -> _Motion:
     qdM = idx(qd, massive)
     A_MM = A[massive, massive] if massive else ca.SX(0, 0)
     if nc:
-        _check_loops(tree, phi, q, ws.p, ws.p_default)
         if massless:
             raise StructureError(
                 "a closed kinematic loop together with massless nodes "
@@ -365,31 +368,6 @@ def _start_values(values: list, p: ca.SX) -> ca.Function:
         raise StructureError(f"start values may depend on parameters only; these depend on "
                              f"other symbols: {f.get_free()[:5]}")
     return f
-
-
-def _check_loops(tree, phi, q, p, p_default) -> None:
-    """Loop constraints that no coordinate can satisfy are inconsistent (or, when they hold
-    anyway, redundant: their reaction is undetermined). Both are errors naming the parts."""
-    phi_q = ca.jacobian(phi, q)
-    rows = set(phi_q.sparsity().get_triplet()[0])
-    k = 0
-    for r, dim, _ in tree.loops:
-        i, k = k, k + dim
-        if all(row in rows for row in range(i, k)):
-            continue
-        parts = sorted({p.owner.path for n in r.nodes for p in n.ports} - {r.owner.path})
-        val = ca.Function("phi", [p], [phi[i:k]], {"allow_free": True})
-        kind = "inconsistent" if val.has_free() else None    # moves in time: over-constrained
-        if kind is None:
-            res = np.max(np.abs(np.array(val(p_default), dtype=float)))
-            kind = "inconsistent" if res > 1e-10 else "redundant"
-        text = ("cannot close: the parts it joins are fixed with a different offset" if
-                kind == "inconsistent" else
-                "is redundant: it joins parts that are already rigidly fixed, so its reaction "
-                "is undetermined")
-        raise StructureError(f"the rigid loop through '{r.owner.path}' ({type(r.owner).__name__}) "
-                             f"{text}; parts in the loop: {', '.join(parts)}. Remove the "
-                             f"component or fix its parameters")
 
 
 def _is_diag(A) -> bool:

@@ -117,6 +117,7 @@ class CompiledModel:
     y: ca.SX
     recorder: object        # () -> (names, expressions, units) of every recorded variable
     lagrange: Lagrange
+    mobility: object        # loops.Mobility: Gruebler count, degrees of freedom, redundancy
     coordinates: list
     _cache: dict = field(default_factory=dict, repr=False)
 

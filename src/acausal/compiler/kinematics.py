@@ -127,6 +127,7 @@ class Tree:
     loops: list = field(default_factory=list)      # (relation, dim, flows(λ) or None) per block;
     #                                                None: extra rows of a fired relation
     loop_residual: ca.SX = None                    # Φ of the loops, stacked in that order
+    loop_rows: list = field(default_factory=list)  # a name for each row of Φ
 
 
 def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
@@ -245,12 +246,15 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
         n.pos, n.vel, n.acc = pos[i], vel[i], acc[i]
     rows = pos[len(one_d):]
     loops = [(r, 1, r.flows) for r in lin_loops]
+    names = [r.owner.path for r in lin_loops]
     for r, phi, flows in nl_loops:
         rows += ca.vertsplit(phi)
         loops.append((r, phi.numel(), flows))
+        names += [f"{r.owner.path}.{c}" for c in r.row_names(flows is None)]
     residual = ca.vertcat(*rows) if rows else ca.SX(0, 1)
     vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)      # noqa: E731
-    return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, residual)
+    return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, residual,
+                names)
 
 
 def _is_named_state(n: Node) -> bool:

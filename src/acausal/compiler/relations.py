@@ -123,6 +123,11 @@ class FrameRelation:
     def can_solve(self, j: int) -> bool:
         return True
 
+    def row_names(self, extra: bool) -> tuple[str, ...]:
+        """Names of the constraint rows: all of the residual, or the extra rows left when
+        the joint's coordinate was solved from its frames."""
+        return ("x", "y", "phi")
+
     # derived, cached per class
     def _locals(self):
         vals = [ca.SX.sym(f"n{i}", d) for i, d in enumerate(self.dims)]
@@ -254,6 +259,9 @@ class RevoluteJoint(FrameRelation):
         a, b, q = vals[0], vals[1], vals[2]
         return b - ca.vertcat(a[:2], a[2] + q)
 
+    def row_names(self, extra):
+        return ("x", "y") if extra else ("x", "y", "phi")
+
 
 class PrismaticJoint(FrameRelation):
     """frame_b = frame_a translated by s·e (s the joint coordinate, a 1-D node; e a unit
@@ -281,3 +289,6 @@ class PrismaticJoint(FrameRelation):
         (e,) = par
         a, b, s = vals[0], vals[1], vals[2]
         return b - ca.vertcat(a[:2] + s * _rot(a[2], e), a[2])
+
+    def row_names(self, extra):
+        return ("normal", "phi") if extra else ("x", "y", "phi")

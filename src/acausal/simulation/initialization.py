@@ -8,18 +8,26 @@ The cost grows with the number of equations k (a k × k system), not with the mo
 """
 from __future__ import annotations
 
+import warnings
+
 import casadi as ca
 import numpy as np
 
 from ..core.errors import InitializationError
 
 
-def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
-    """(x, z) consistent with ``x0`` (names → values) at time t0 with parameters p."""
+def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
+                  guess: dict | None = None):
+    """(x, z) consistent with ``x0`` (names → values, held exactly) at time t0 with
+    parameters p, closest to the start values, where ``guess`` (state names → values)
+    replaces them. Closed loops are assembled this way: fix the driving joint in x0, guess
+    the others. Warns, naming them, when loop assembly moved states off their guess or start
+    value."""
     w = ca.vertcat(model.x, model.z)
     nx = model.x.numel()
     hard, labels, targets = [], [], []
-    direct = dict(zip(model.x_names + model.z_names, ca.vertsplit(w)))
+    names = model.x_names + model.z_names
+    direct = dict(zip(names, ca.vertsplit(w)))
     for name, value in x0.items():
         if name in direct:
             ex = direct[name]
@@ -44,6 +52,11 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
         eqs.append(model.alg)
         labels += [f"algebraic equation for {n}" for n in model.z_names]
     start = np.array(model.start(p), dtype=float).ravel()
+    for name, value in (guess or {}).items():
+        if name not in direct:
+            raise InitializationError(f"guess: '{name}' is not a state of '{model.name}' (its "
+                                      f"states: {', '.join(names[:8])}...)")
+        start[names.index(name)] = float(value)
     if not eqs:
         return start[:nx], start[nx:]
     H = ca.vertcat(*[ca.vec(e) for e in eqs])
@@ -67,6 +80,12 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float):
     h, J = _eval(f, wk, t0, p, u0)
     if np.max(np.abs(h)) > 1e-8 * scale:
         raise InitializationError(_conflict(J, labels, targets, len(hard), h))
+    if phi.numel():
+        moved = [f"{n}: {a:.6g} -> {b:.6g}" for n, a, b in zip(names[:nx], start, wk)
+                 if n not in x0 and abs(a - b) > 1e-9 * (1 + abs(a))]
+        if moved:
+            warnings.warn("initial values changed to close the kinematic loops: "
+                          + "; ".join(moved), stacklevel=3)
     return wk[:nx], wk[nx:]
 
 

@@ -53,14 +53,18 @@ def input_expression(name: str, value, t: ca.SX, grid: np.ndarray) -> ca.SX:
 
 
 def simulate(model, t_final: float, *, t=None, params: dict | None = None,
-             inputs: dict | None = None, x0: dict | None = None, solver: str | None = None,
+             inputs: dict | None = None, x0: dict | None = None, guess: dict | None = None,
+             solver: str | None = None,
              rtol: float = 1e-8, atol: float = 1e-10, max_step: float | None = None,
              options: dict | None = None) -> Result:
     """Simulate ``model`` from t = 0 (or t[0]) to ``t_final`` [s].
 
     t        output grid (default: 501 points); params: overrides by dotted name;
     inputs   per input name: a number, a callable of time, (times, values) or values on t;
-    x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``);
+    x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``),
+             held exactly;
+    guess    start values by state name, used where x0 and the constraints leave freedom
+             (closed loops: fix the driver in x0, guess the other joints);
     solver   'cvodes' (ODE default), 'idas' (DAE default), or CasADi's fixed-step 'rk' /
              'collocation' (set ``options={'number_of_finite_elements': n}``);
     rtol, atol, max_step: integrator tolerances and step limit.
@@ -80,7 +84,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             for n, start, *_ in model.inputs]
     u_expr = ca.vertcat(*u_ex) if u_ex else ca.SX(0, 1)
     u0 = np.array(ca.evalf(ca.substitute(u_expr, model.t, grid[0]))).ravel()
-    xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0])
+    xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess)
 
     has_alg = model.z.numel() > 0
     solver = solver or ("idas" if has_alg else "cvodes")
