@@ -25,6 +25,7 @@ from .compiled import CompiledModel, Lagrange
 from .flatten import flatten
 from .kinematics import InternalNode, Node, build_tree
 from .loops import analyse_loops
+from .recursive import articulated_solve
 from .symbolic import UnknownDerivative, der_with, substitute_all
 
 _vc = ca.vertcat
@@ -127,7 +128,13 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
                              "into the forces of the model; this implicit loop is not supported "
                              "yet: measure the force elsewhere (e.g. a spring's f)")
     keep, mobility = analyse_loops(tree, phi, ws)
-    eq = _solve_motion(tree, R_q, phi[keep], t, ws)
+    bodies, T_other = [], None
+    if ws.bodies:                  # planar rigid bodies, for the articulated-body recursion
+        flat_b = resolve([_vc(*[_vc(pos, vel, m, I) for pos, vel, m, I in ws.bodies])])[0]
+        bodies = [(b[0:3], b[3:6], b[6], b[7]) for b in ca.vertsplit(flat_b, 8)]
+        T_other = resolve([ca.sum1(_vc(*ws.kinetic_other)) if ws.kinetic_other
+                           else ca.SX(0)])[0]
+    eq = _solve_motion(tree, R_q, phi[keep], t, ws, (bodies, T_other))
     lam = ca.SX.zeros(phi.numel())               # dropped (redundant) rows carry nothing
     lam[keep] = eq.lam
     lam_tree = -(R_eps + ca.mtimes(phi_eps.T, lam)) if eps.numel() else ca.SX(0, 1)
@@ -260,13 +267,14 @@ class _Motion:
     """Accelerations solved: the differential/algebraic split of the mechanical states."""
 
 
-def _solve_motion(tree, R_q, phi, t, ws) -> _Motion:
+def _solve_motion(tree, R_q, phi, t, ws, bodies) -> _Motion:
     nq = tree.q.numel()
     q, qd, qdd = tree.q, tree.qd, tree.qdd
     A = ca.jacobian(R_q, qdd)
     R0 = ca.substitute(R_q, qdd, ca.SX.zeros(nq))
     out = _Motion()
     out.M, out.R0 = A, R0
+    out.method = "diagonal mass matrix"
     out.extra_from, out.extra_to = [], []
     sp = A.sparsity()
     row_nnz = [0] * nq
@@ -307,7 +315,12 @@ def _solve_motion(tree, R_q, phi, t, ws) -> _Motion:
         if A_MM.sparsity().is_diag() or (A_MM.nnz() == len(massive) and _is_diag(A_MM)):
             qdd_M = -R0M / ca.diag(A_MM)
         else:
-            qdd_M = ca.solve(A_MM, -R0M)
+            qdd_M = None
+            if not massless and nq > 2:      # a planar tree: the O(N) recursion if it fits
+                qdd_M = articulated_solve(q, qd, *bodies, -R0M, A_MM, ws.p, ws.p_default)
+            out.method = "articulated-body recursion" if qdd_M is not None else "dense solve"
+            if qdd_M is None:
+                qdd_M = ca.solve(A_MM, -R0M)
         qdd_sol = ca.SX.zeros(nq)
         qdd_sol[massive] = qdd_M
     # massless coordinates: algebraic velocity (a damper holds them) or position (springs only)

@@ -63,7 +63,7 @@ class _TraceBuilder(PhysicsBuilder):
         raise _NotBatchable
 
     input = output = cut_flow = derivative = residual = model_input = model_output = _refuse
-    time_event = outer = _refuse
+    time_event = outer = rigid_body = _refuse
 
 
 def run_physics(ws: Workspace, components: list) -> None:
@@ -135,6 +135,8 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
         row += k
         if kind in ("T", "V"):
             (ws.kinetic if kind == "T" else ws.potential).append(ca.sum2(block))
+            if kind == "T":
+                ws.kinetic_other.append(ca.sum2(block))
             continue
         cols = ca.horzsplit(block)
         if kind == "flow":

@@ -45,6 +45,8 @@ class Workspace:
     inputs: list = field(default_factory=list)              # (Input, SX)
     outputs: list = field(default_factory=list)             # (Output, expr)
     kinetic: list = field(default_factory=list)
+    bodies: list = field(default_factory=list)              # (pos, vel, m, I) rigid bodies
+    kinetic_other: list = field(default_factory=list)       # kinetic energy not of bodies
     potential: list = field(default_factory=list)
     flows: list = field(default_factory=list)               # (port, expr) explicit flows
     variables: list = field(default_factory=list)           # (name, expr, unit)
@@ -217,6 +219,17 @@ class PhysicsBuilder(_Base):
     def kinetic_energy(self, T) -> None:
         """Add kinetic energy [J], a function of port velocities and positions."""
         self._ws.kinetic.append(sx(T))
+        self._ws.kinetic_other.append(sx(T))
+
+    def rigid_body(self, frame: PhysicalPort, m, I) -> None:
+        """A planar rigid body of mass m [kg] and inertia I [kg.m²] about its centre of mass,
+        which is ``frame``'s origin: adds its kinetic energy ½m|v|² + ½Iω², and lets the
+        compiler use the O(N) articulated-body recursion for long chains."""
+        self._mine(frame)
+        n = self._ws.node_of[frame]
+        v = n.vel
+        self._ws.kinetic.append(sx(0.5 * m * (v[0] ** 2 + v[1] ** 2) + 0.5 * I * v[2] ** 2))
+        self._ws.bodies.append((n.pos, n.vel, sx(m), sx(I)))
 
     def potential_energy(self, V) -> None:
         """Add potential energy [J] (conservative forces: generalized force −∂V/∂q)."""

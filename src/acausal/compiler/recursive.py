@@ -1,0 +1,121 @@
+"""O(N) accelerations for planar trees: the articulated-body recursion on M q̈ = τ.
+
+For a mechanism whose joint graph is a tree, whose inertia is planar rigid bodies
+(PhysicsBuilder.rigid_body) plus 1-D inertias that each move with a single coordinate
+(armature), the mass matrix need not be formed and factorized (O(N³) as a symbolic solve):
+Featherstone's articulated-body algorithm, run with zero velocity and zero external force,
+applies M⁻¹ to a vector in O(N). The velocity-dependent, gravity and applied terms are
+already in τ (from the Lagrangian by AD, also O(N)).
+
+Spatial vectors are planar (ω, v_Ox, v_Oy): velocities of the body point at the world origin,
+and forces (moment about the origin, fx, fy), all in world coordinates, so no coordinate
+transforms appear. Each coordinate is a 1-dof joint with motion vector S_i = ∂V/∂q̇_i of the
+bodies it moves; its parent is the closest coordinate that moves all of them (a free body's
+x, y, phi are a chain of three such joints).
+
+Before it is used, the recursion is checked against the Lagrangian mass matrix at a random
+state; a model outside its assumptions falls back to the dense solve.
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+
+def spatial_velocity(pos: ca.SX, vel: ca.SX) -> ca.SX:
+    """(ω, v_O) of a planar frame with pose (x, y, φ) and rates (ẋ, ẏ, φ̇)."""
+    return ca.vertcat(vel[2], vel[0] + vel[2] * pos[1], vel[1] - vel[2] * pos[0])
+
+
+def spatial_inertia(pos: ca.SX, m, I) -> ca.SX:
+    """Inertia about the world origin of mass m [kg], inertia I [kg.m²] about the centre of
+    mass at (x, y) = pos[:2]."""
+    x, y = pos[0], pos[1]
+    return ca.blockcat([[I + m * (x * x + y * y), -m * y, m * x],
+                        [-m * y, m, ca.SX(0)],
+                        [m * x, ca.SX(0), m]])
+
+
+def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M: ca.SX,
+                      p: ca.SX, p_default: list):
+    """q̈ = M⁻¹ τ by the articulated-body recursion, or None when the model is outside its
+    assumptions (checked numerically against the Lagrangian mass matrix ``M``).
+
+    ``bodies``: (pos, vel, m, I) of each rigid body's centre of mass frame; ``T_other``: the
+    rest of the kinetic energy (1-D inertias), which must be Σ ½ J_i q̇_i² (armature).
+    """
+    n = q.numel()
+    if n < 2 or not bodies:
+        return None
+    V = [spatial_velocity(pos, vel) for pos, vel, _, _ in bodies]
+    deps = []
+    for v in V:
+        J = ca.jacobian(v, qd)
+        deps.append(frozenset(J.sparsity().get_triplet()[1]))
+    moved = [frozenset(b for b, d in enumerate(deps) if i in d) for i in range(n)]
+    if any(not s for s in moved):
+        return None                                  # a coordinate moves no body
+    parent = []
+    for i in range(n):
+        anc = [j for j in range(n) if j != i and moved[j] >= moved[i]
+               and (moved[j] != moved[i] or j < i)]
+        parent.append(min(anc, key=lambda j: (len(moved[j]), -j)) if anc else None)
+    S = [ca.jacobian(V[min(moved[i])], qd[i]) for i in range(n)]
+    own = [[] for _ in range(n)]                     # bodies whose deepest coordinate is i
+    for b, d in enumerate(deps):
+        if d:
+            own[max(d, key=lambda j: (-len(moved[j]), j))].append(b)
+    order = _topological(parent)
+    tau_value, tau = tau, ca.SX.sym("tau", n)
+    Ib = [spatial_inertia(pos, m, I) for pos, _, m, I in bodies]  # about the world origin
+    IA = [sum((Ib[b] for b in own[i]), ca.SX.zeros(3, 3)) for i in range(n)]
+    H = ca.hessian(T_other, qd)[0] if T_other is not None else ca.SX(n, n)
+    r, c = H.sparsity().get_triplet()
+    if any(i != j for i, j in zip(r, c)) or ca.depends_on(H, ca.vertcat(q, qd)):
+        return None                       # 1-D inertia coupling coordinates: not armature
+    armature = [H[i, i] for i in range(n)]
+    pA = [ca.SX.zeros(3) for _ in range(n)]
+    U, D, u = [None] * n, [None] * n, [None] * n
+    for i in reversed(order):                       # leaves to root
+        U[i] = ca.mtimes(IA[i], S[i])
+        D[i] = ca.mtimes(S[i].T, U[i]) + armature[i]
+        u[i] = tau[i] - ca.mtimes(S[i].T, pA[i])
+        j = parent[i]
+        if j is not None:
+            IA[j] = IA[j] + IA[i] - ca.mtimes(U[i], U[i].T) / D[i]
+            pA[j] = pA[j] + pA[i] + U[i] * (u[i] / D[i])
+    a = [None] * n
+    qdd = [None] * n
+    for i in order:                                 # root to leaves
+        ap = a[parent[i]] if parent[i] is not None else ca.SX.zeros(3)
+        qdd[i] = (u[i] - ca.mtimes(U[i].T, ap)) / D[i]
+        a[i] = ap + S[i] * qdd[i]
+    qdd = ca.vertcat(*qdd)
+    if not _agrees(q, tau, qdd, M, p, p_default):
+        return None
+    return ca.substitute(qdd, tau, tau_value)
+
+
+def _topological(parent: list) -> list[int]:
+    """Coordinates ordered so that every parent comes before its children."""
+    depth = {}
+
+    def d(i):
+        if i not in depth:
+            depth[i] = 0 if parent[i] is None else d(parent[i]) + 1
+        return depth[i]
+    return sorted(range(len(parent)), key=lambda i: (d(i), i))
+
+
+def _agrees(q, tau, qdd, M, p, p_default) -> bool:
+    """ABA(M x) == x at a random state: the recursion matches the Lagrangian inertia."""
+    rng = np.random.default_rng(1)
+    x = rng.standard_normal(q.numel())
+    Mf = ca.Function("M", [q, p], [M], {"allow_free": True})
+    f = ca.Function("aba", [q, tau, p], [qdd], {"allow_free": True})
+    if Mf.has_free() or f.has_free():
+        return False
+    qn = rng.uniform(-1, 1, q.numel())
+    Mn = np.array(Mf(qn, p_default))
+    got = np.array(f(qn, Mn @ x, p_default)).ravel()
+    return bool(np.allclose(got, x, rtol=1e-8, atol=1e-10 * np.abs(x).max()))
