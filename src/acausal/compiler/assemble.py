@@ -18,6 +18,7 @@ import gc
 import casadi as ca
 
 from ..core.component import Model
+from ..core.parameter import Parameter
 from ..core.errors import SingularModelError, StructureError
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
@@ -29,6 +30,8 @@ from .recursive import articulated_solve
 from .symbolic import UnknownDerivative, der_with, substitute_all
 
 _vc = ca.vertcat
+_ACTIVE = Parameter(1.0, "1", "1: this loop constraint row is enforced; simulate() sets 0 for "
+                              "rows redundant at the assembled configuration", nonnegative=True)
 
 
 def compile(model: Model) -> CompiledModel:
@@ -127,7 +130,7 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
         raise StructureError("a measured cut force/torque (force or torque sensor) feeds back "
                              "into the forces of the model; this implicit loop is not supported "
                              "yet: measure the force elsewhere (e.g. a spring's f)")
-    keep, mobility = analyse_loops(tree, phi, ws)
+    keep, row_names = analyse_loops(tree, phi, ws)
     bodies, T_other = [], None
     if ws.bodies:                  # planar rigid bodies, for the articulated-body recursion
         flat_b = resolve([_vc(*[_vc(pos, vel, m, I) for pos, vel, m, I in ws.bodies])])[0]
@@ -165,6 +168,8 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
         return names, exprs, units
 
     # ---- states, algebraic variables ----------------------------------------------------
+    for k, s in enumerate(ca.vertsplit(eq.active)):      # switches of the loop rows
+        params.append((s, 1.0, _ACTIVE, None))
     z_states = _vc(*[i.sym for i in ws.states]) if ws.states else ca.SX(0, 1)
     z_alg = _vc(*[a.sym for a in ws.algebraics]) if ws.algebraics else ca.SX(0, 1)
     u = _vc(*[s for _, s in ws.inputs]) if ws.inputs else ca.SX(0, 1)
@@ -194,8 +199,9 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
         inputs=[(c.path, c.start, c.unit, c.description) for c, _ in ws.inputs],
         outputs=[(c.path, c.unit, c.description) for c, _ in ws.outputs], y=y_out,
         recorder=recorded, events=_events(ws.events, p),
-        mobility=mobility,
-        lagrange=Lagrange.split(tree, R_T[:nq], R_V[:nq], R_Q[:nq], phi[keep], t, p, u,
+        loop_rows=[row_names[i] for i in keep],
+        loop_rows_dropped=[row_names[i] for i in range(phi.numel()) if i not in keep],
+        lagrange=Lagrange(tree, R_T[:nq], R_V[:nq], R_Q[:nq], phi[keep], t, p, u,
                                 [c.path for c, _ in ws.inputs], z_states),
         coordinates=tree.q_names,
     )
@@ -270,25 +276,32 @@ class _Motion:
 def _solve_motion(tree, R_q, phi, t, ws, bodies) -> _Motion:
     nq = tree.q.numel()
     q, qd, qdd = tree.q, tree.qd, tree.qdd
-    A = ca.jacobian(R_q, qdd)
     R0 = ca.substitute(R_q, qdd, ca.SX.zeros(nq))
     out = _Motion()
-    out.M, out.R0 = A, R0
+    out.R0 = R0
     out.method = "diagonal mass matrix"
     out.extra_from, out.extra_to = [], []
-    sp = A.sparsity()
+    sp = ca.jacobian_sparsity(R_q, qdd)           # the mass matrix's pattern, without it
     row_nnz = [0] * nq
     for r in sp.get_triplet()[0]:
         row_nnz[r] += 1
     massive = [k for k in range(nq) if row_nnz[k] > 0]
     massless = [k for k in range(nq) if row_nnz[k] == 0]
     nc = phi.numel()
-    if ca.depends_on(A, qdd):
+    probe = ca.SX.sym("probe", nq)
+    M_times = ca.jtimes(R_q, qdd, probe)           # M·probe in O(N)
+    if ca.depends_on(M_times, qdd):
         raise SingularModelError("the equations of motion are not linear in the accelerations "
                                  "(a force depends nonlinearly on an acceleration)")
     idx = lambda v, ks: v[ks] if ks else ca.SX(0, 1)
     qdM = idx(qd, massive)
-    A_MM = A[massive, massive] if massive else ca.SX(0, 0)
+    diagonal = all(i == j for i, j in zip(*sp.get_triplet()))
+    qdd_M = None
+    if not nc and not massless and not diagonal and nq > 2:
+        # a planar tree: the O(N) articulated-body recursion, if the model fits it
+        qdd_M = articulated_solve(q, qd, *bodies, -R0, M_times, probe, ws.p, ws.p_default)
+    A = None if qdd_M is not None else ca.jacobian(R_q, qdd)
+    A_MM = A[massive, massive] if A is not None and massive else ca.SX(0, 0)
     if nc:
         if massless:
             raise StructureError(
@@ -301,26 +314,31 @@ def _solve_motion(tree, R_q, phi, t, ws, bodies) -> _Motion:
         # Leimkuhler: q̇ = q̇_state + Φ_qᵀμ, v̇ = q̈ + Φ_qᵀν, 0 = Φ, 0 = Φ̇, with μ = ν = 0 on the
         # exact solution. Unlike Baumgarte's method this leaves no drift to tune away, and
         # unlike coordinate partitioning it needs no choice of independent coordinates.
+        # Rows found redundant at the assembled initial configuration are switched off by
+        # their entry of ``active`` (0): then λ, μ, ν of that row are 0 and its equation drops.
         phi_q = ca.jacobian(phi, q)
         phid = der_with(phi, ws.der_table)
         gamma = ca.substitute(der_with(phid, ws.der_table), qdd, ca.SX.zeros(nq))
-        KKT = ca.blockcat([[A_MM, phi_q.T], [phi_q, ca.SX(nc, nc)]])
-        sol = ca.solve(KKT, _vc(-R0, -gamma))
+        act = ca.SX.sym("loops.active", nc)
+        on, off = ca.diag(act), ca.diag(1 - act)
+        KKT = ca.blockcat([[A_MM, ca.mtimes(phi_q.T, on)], [ca.mtimes(on, phi_q), off]])
+        sol = ca.solve(KKT, _vc(-R0, -act * gamma))
         qdd_sol, out.lam = sol[:nq], sol[nq:]
         mu, nu = ca.SX.sym("loops.mu", nc), ca.SX.sym("loops.nu", nc)
-        out.ggl = (mu, nu, ca.mtimes(phi_q.T, mu), ca.mtimes(phi_q.T, nu), phi, phid)
+        out.ggl = (mu, nu, ca.mtimes(phi_q.T, act * mu), ca.mtimes(phi_q.T, act * nu),
+                   act * phi + (1 - act) * mu, act * phid + (1 - act) * nu)
+        out.active = act
     else:
         out.lam = ca.SX(0, 1)
+        out.active = ca.SX(0, 1)
         R0M = idx(R0, massive)
-        if A_MM.sparsity().is_diag() or (A_MM.nnz() == len(massive) and _is_diag(A_MM)):
+        if qdd_M is not None:
+            out.method = "articulated-body recursion"
+        elif diagonal:
             qdd_M = -R0M / ca.diag(A_MM)
         else:
-            qdd_M = None
-            if not massless and nq > 2:      # a planar tree: the O(N) recursion if it fits
-                qdd_M = articulated_solve(q, qd, *bodies, -R0M, A_MM, ws.p, ws.p_default)
-            out.method = "articulated-body recursion" if qdd_M is not None else "dense solve"
-            if qdd_M is None:
-                qdd_M = ca.solve(A_MM, -R0M)
+            out.method = "dense solve"
+            qdd_M = ca.solve(A_MM, -R0M)
         qdd_sol = ca.SX.zeros(nq)
         qdd_sol[massive] = qdd_M
     # massless coordinates: algebraic velocity (a damper holds them) or position (springs only)
@@ -381,11 +399,6 @@ def _start_values(values: list, p: ca.SX) -> ca.Function:
         raise StructureError(f"start values may depend on parameters only; these depend on "
                              f"other symbols: {f.get_free()[:5]}")
     return f
-
-
-def _is_diag(A) -> bool:
-    r, c = A.sparsity().get_triplet()
-    return all(i == j for i, j in zip(r, c))
 
 
 def _port_flows(ws, tree, explicit, lam_tree, lam_loop):

@@ -20,7 +20,6 @@ import numpy as np
 from ..core.errors import ParameterError
 
 
-@dataclass
 class Lagrange:
     """Lagrange's equations of a compiled model, as CasADi expressions of the coordinates q,
     their rates q̇ (``qd``), the inputs u, time t, parameters p (and internal states z):
@@ -35,46 +34,68 @@ class Lagrange:
     - ``B`` = ∂Q/∂u, the input matrix of the model's Inputs (``u_names``);
     - ``phi`` the loop constraints Φ(q, t) = 0 and ``phi_q`` their Jacobian.
     ``R0`` = −(gravity + coriolis + Q) is everything but the inertia term: M q̈ + R0 = 0.
+    Each piece is derived (by AD) on first access.
     """
-    q: ca.SX
-    qd: ca.SX
-    qdd: ca.SX
-    q_names: list
-    qd_names: list
-    M: ca.SX
-    C: ca.SX | None
-    K: ca.SX | None
-    gravity: ca.SX
-    coriolis: ca.SX
-    B: ca.SX
-    Q_rest: ca.SX
-    phi: ca.SX
-    phi_q: ca.SX
-    R0: ca.SX
-    t: ca.SX
-    p: ca.SX
-    u: ca.SX
-    u_names: list
-    z: ca.SX
 
-    @classmethod
-    def split(cls, tree, R_T, R_V, R_Q, phi, t, p, u, u_names, z) -> "Lagrange":
-        q, qd, qdd = tree.q, tree.qd, tree.qdd
-        zero = ca.SX.zeros(qdd.numel())
-        M = ca.jacobian(R_T, qdd)
-        coriolis = -ca.substitute(R_T, qdd, zero)
-        Q = -R_Q
-        B = ca.jacobian(Q, u)
-        Qnu = ca.substitute(Q, u, ca.SX.zeros(u.numel()))
-        K, C = -ca.jacobian(Qnu, q), -ca.jacobian(Qnu, qd)
-        if ca.depends_on(ca.vertcat(ca.vec(K), ca.vec(C)), ca.vertcat(q, qd, qdd)):
-            K = C = None
-            rest = Qnu
-        else:
-            rest = ca.simplify(Qnu + ca.mtimes(K, q) + ca.mtimes(C, qd))
-        R0 = ca.substitute(R_T + R_V + R_Q, qdd, zero)
-        return cls(q, qd, qdd, tree.q_names, tree.qd_names, M, C, K, -R_V, coriolis, B, rest,
-                   phi, ca.jacobian(phi, q), R0, t, p, u, list(u_names), z)
+    def __init__(self, tree, R_T, R_V, R_Q, phi, t, p, u, u_names, z):
+        self.q, self.qd, self.qdd = tree.q, tree.qd, tree.qdd
+        self.q_names, self.qd_names = tree.q_names, tree.qd_names
+        self.phi, self.t, self.p, self.u, self.u_names, self.z = phi, t, p, u, list(u_names), z
+        self._R = (R_T, R_V, R_Q)
+        self._cache = {}
+
+    def _lazy(self, key, make):
+        if key not in self._cache:
+            self._cache[key] = make()
+        return self._cache[key]
+
+    @property
+    def M(self) -> ca.SX:
+        return self._lazy("M", lambda: ca.jacobian(self._R[0], self.qdd))
+
+    @property
+    def coriolis(self) -> ca.SX:
+        return self._lazy("cor", lambda: -ca.substitute(self._R[0], self.qdd, self._zero()))
+
+    @property
+    def gravity(self) -> ca.SX:
+        return -self._R[1]
+
+    @property
+    def B(self) -> ca.SX:
+        return self._lazy("B", lambda: ca.jacobian(-self._R[2], self.u))
+
+    def _split_Q(self):
+        Q = -self._R[2]
+        Qnu = ca.substitute(Q, self.u, ca.SX.zeros(self.u.numel()))
+        K, C = -ca.jacobian(Qnu, self.q), -ca.jacobian(Qnu, self.qd)
+        if ca.depends_on(ca.vertcat(ca.vec(K), ca.vec(C)), ca.vertcat(self.q, self.qd, self.qdd)):
+            return None, None, Qnu
+        return K, C, ca.simplify(Qnu + ca.mtimes(K, self.q) + ca.mtimes(C, self.qd))
+
+    @property
+    def K(self) -> ca.SX | None:
+        return self._lazy("Q", self._split_Q)[0]
+
+    @property
+    def C(self) -> ca.SX | None:
+        return self._lazy("Q", self._split_Q)[1]
+
+    @property
+    def Q_rest(self) -> ca.SX:
+        return self._lazy("Q", self._split_Q)[2]
+
+    @property
+    def phi_q(self) -> ca.SX:
+        return self._lazy("phi_q", lambda: ca.jacobian(self.phi, self.q))
+
+    @property
+    def R0(self) -> ca.SX:
+        return self._lazy("R0", lambda: ca.substitute(sum(self._R, ca.SX(0)), self.qdd,
+                                                      self._zero()))
+
+    def _zero(self):
+        return ca.SX.zeros(self.qdd.numel())
 
     def function(self, *names: str) -> ca.Function:
         """A casadi Function (q, qd, u, t, p) -> the named pieces ('M', 'gravity', ...)."""
@@ -117,8 +138,9 @@ class CompiledModel:
     y: ca.SX
     recorder: object        # () -> (names, expressions, units) of every recorded variable
     lagrange: Lagrange
-    mobility: object        # loops.Mobility: Gruebler count, degrees of freedom, redundancy
     coordinates: list
+    loop_rows: list = field(default_factory=list)          # names of the rows of Φ
+    loop_rows_dropped: list = field(default_factory=list)  # constant, redundant rows removed
     _cache: dict = field(default_factory=dict, repr=False)
 
     # ---- names ----------------------------------------------------------------------------
@@ -240,6 +262,25 @@ class CompiledModel:
         except ValueError:
             raise KeyError(f"no variable '{name}' in model '{self.name}'"
                            f"{_suggest(name, self.recorded_names)}") from None
+
+    def mobility(self, params: dict | None = None, x0: dict | None = None,
+                 guess: dict | None = None, t0: float = 0.0):
+        """Degrees of freedom at the configuration assembled from x0 / guess (Gruebler count
+        vs the rank of Φ_q there) and the redundant constraint rows: a loops.Mobility."""
+        from ..simulation.initialization import initial_state
+        p = self.param_vector(params)
+        u0 = np.array([i[1] for i in self.inputs], dtype=float)
+        x, z = initial_state(self, dict(x0 or {}), p, u0, t0, guess)
+        return self.mobility_at(x, z, p, t0)[1]
+
+    def mobility_at(self, x, z, p, t=0.0):
+        """(enforced-row switches, Mobility) at the state x, z: see ``mobility``."""
+        from .loops import mobility
+        L = self.lagrange
+        J = ca.Function("J", [self.x, self.z, self.t, self.p], [L.phi_q],
+                        {"allow_free": True})
+        return mobility(np.array(J(x, z, t, p), dtype=float), self.loop_rows,
+                        self.loop_rows_dropped)
 
     def simulate(self, t_final: float, **kwargs):
         """Simulate; see acausal.simulation.simulate for the arguments."""

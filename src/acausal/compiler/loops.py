@@ -1,13 +1,13 @@
 """Closed loops: which constraint rows are consistent, redundant or independent, and the
 mobility of the mechanism (Gruebler's count against the rank of Φ_q).
 
-A loop row that no coordinate enters is checked at the parameters' defaults: non-zero is an
-inconsistent loop (an error naming the parts), zero a redundant one. The other rows are
-examined at an assembled configuration (Φ(q) = 0 solved by Gauss–Newton from the start
-values, defaults for the parameters): rows that add nothing to the rank of Φ_q are redundant.
-Redundant rows are dropped from the equations with a warning that names them: the motion is
-unaffected, and the reactions they would share are statically indeterminate (the remaining
-constraints carry them).
+A loop row that no coordinate enters is checked at compile time at the parameters' defaults:
+non-zero is an inconsistent loop (an error naming the parts), zero a redundant one (dropped).
+The other rows are examined where the mechanism is assembled for a simulation (redundancy
+can depend on the configuration, e.g. a parallelogram with a fifth parallel link): rows that
+add nothing to the rank of Φ_q there are switched off (the model's ``loops.active``
+parameters) with a warning that names them: the motion is unaffected, and the reactions they
+would share are statically indeterminate (the remaining constraints carry them).
 """
 from __future__ import annotations
 
@@ -39,43 +39,45 @@ class Mobility:
                 f"count {self.gruebler}, degrees of freedom {dof}{red}")
 
 
-def analyse_loops(tree, phi: ca.SX, ws) -> tuple[list[int], Mobility]:
-    """The rows of Φ to keep, and the mobility. Raises for inconsistent loops."""
-    q = tree.q
-    nq, nc = q.numel(), phi.numel()
-    names = tree.loop_rows
-    J = ca.jacobian(phi, q)
+def analyse_loops(tree, phi: ca.SX, ws) -> tuple[list[int], list[str]]:
+    """The rows of Φ to keep (rows no coordinate enters are checked here: inconsistent is an
+    error, consistent ones are redundant and dropped), and the names of all rows."""
+    J = ca.jacobian(phi, tree.q)
     with_q = set(J.sparsity().get_triplet()[0])
-    redundant = []
-    for i in range(nc):
-        if i not in with_q:
+    keep = []
+    for i in range(phi.numel()):
+        if i in with_q:
+            keep.append(i)
+        else:
             _constant_row(tree, phi, i, ws)
-            redundant.append(i)
-    moving = [i for i in range(nc) if i in with_q]
-    dof = None
-    qa = _assemble(phi, J, q, ws)
-    if qa is not None and moving:
-        Jn = np.array(ca.Function("J", [q, ws.p], [J], {"allow_free": True})(qa, ws.p_default))
-        kept, basis = [], np.zeros((0, nq))
-        for i in moving:
-            row = Jn[i]
-            trial = np.vstack([basis, row])
-            if np.linalg.matrix_rank(trial, tol=1e-9 * max(1.0, np.abs(Jn).max())) > len(kept):
-                kept.append(i)
-                basis = trial
-            else:
-                redundant.append(i)
-        dof = nq - len(kept)
-    elif qa is not None:
-        dof = nq
-    redundant.sort()
+    if len(keep) < phi.numel():
+        warnings.warn("redundant loop constraints dropped (they join parts that are fixed "
+                      "already; their reactions are statically indeterminate): "
+                      + ", ".join(tree.loop_rows[i] for i in range(phi.numel()) if i not in keep),
+                      stacklevel=4)
+    return keep, tree.loop_rows
+
+
+def mobility(J: np.ndarray, names: list[str], dropped: list[str]) -> tuple[np.ndarray, Mobility]:
+    """At an assembled configuration with constraint Jacobian ``J`` (rows named ``names``):
+    which rows to enforce (1) and which are redundant (0), and the mobility. ``dropped``:
+    rows removed already at compile time (constant and redundant)."""
+    nc, nq = J.shape
+    tol = 1e-9 * max(1.0, np.abs(J).max(initial=0.0))
+    active, basis = np.zeros(nc), np.zeros((0, nq))
+    for i in range(nc):
+        trial = np.vstack([basis, J[i]])
+        if np.linalg.matrix_rank(trial, tol=tol) > basis.shape[0]:
+            active[i], basis = 1.0, trial
+    redundant = list(dropped) + [names[i] for i in range(nc) if not active[i]]
+    total = nc + len(dropped)
+    mob = Mobility(nq, total, nq - total, nq - int(active.sum()), redundant)
     if redundant:
         warnings.warn(
-            "redundant loop constraints dropped (the motion is unaffected; the reactions they "
-            "would share are statically indeterminate and carried by the other constraints): "
-            + ", ".join(names[i] for i in redundant), stacklevel=4)
-    keep = [i for i in range(nc) if i not in redundant]
-    return keep, Mobility(nq, nc, nq - nc, dof, [names[i] for i in redundant])
+            "redundant loop constraints (not enforced: the motion is unaffected; the reactions "
+            "they would share are statically indeterminate and carried by the other "
+            "constraints): " + ", ".join(redundant), stacklevel=4)
+    return active, mob
 
 
 def _constant_row(tree, phi, i, ws) -> None:
@@ -99,26 +101,3 @@ def _relation_of_row(tree, i):
             return r, i - k
         k += dim
     raise IndexError(i)
-
-
-def _assemble(phi, J, q, ws):
-    """A configuration with Φ(q) = 0 near the start values (zeros), or None."""
-    f = ca.Function("phiJ", [q, ws.p, ws.t], [phi, J], {"allow_free": True})
-    if f.has_free():             # prescribed motion: depends on states, cannot assemble here
-        return None
-    rng = np.random.default_rng(0)
-    starts = [np.zeros(q.numel())] + [rng.uniform(-1.0, 1.0, q.numel()) for _ in range(4)]
-    for x in starts:                # Levenberg–Marquardt from the start values, then others
-        lam = 1e-3
-        for _ in range(100):
-            r, Jn = (np.array(v, dtype=float) for v in f(x, ws.p_default, 0.0))
-            r = r.ravel()
-            if np.max(np.abs(r), initial=0.0) < 1e-12:
-                return x
-            step = np.linalg.solve(Jn.T @ Jn + lam * np.eye(x.size), -Jn.T @ r)
-            r_new = np.array(f(x + step, ws.p_default, 0.0)[0], dtype=float).ravel()
-            if r_new @ r_new < r @ r:
-                x, lam = x + step, lam / 3
-            else:
-                lam *= 10
-    return None

@@ -36,10 +36,11 @@ def spatial_inertia(pos: ca.SX, m, I) -> ca.SX:
                         [m * x, ca.SX(0), m]])
 
 
-def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M: ca.SX,
-                      p: ca.SX, p_default: list):
+def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_times: ca.SX,
+                      probe: ca.SX, p: ca.SX, p_default: list):
     """q̈ = M⁻¹ τ by the articulated-body recursion, or None when the model is outside its
-    assumptions (checked numerically against the Lagrangian mass matrix ``M``).
+    assumptions (checked numerically against ``M_times`` = M·probe, the Lagrangian mass
+    matrix applied to the symbol ``probe``).
 
     ``bodies``: (pos, vel, m, I) of each rigid body's centre of mass frame; ``T_other``: the
     rest of the kinetic energy (1-D inertias), which must be Σ ½ J_i q̇_i² (armature).
@@ -47,11 +48,13 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M:
     n = q.numel()
     if n < 2 or not bodies:
         return None
-    V = [spatial_velocity(pos, vel) for pos, vel, _, _ in bodies]
-    deps = []
-    for v in V:
-        J = ca.jacobian(v, qd)
-        deps.append(frozenset(J.sparsity().get_triplet()[1]))
+    V = ca.vertcat(*[spatial_velocity(pos, vel) for pos, vel, _, _ in bodies])
+    Jall = ca.jacobian(V, qd)                       # one sweep: 3 rows per body
+    rows, cols = Jall.sparsity().get_triplet()
+    deps = [set() for _ in bodies]
+    for r, c in zip(rows, cols):
+        deps[r // 3].add(c)
+    deps = [frozenset(d) for d in deps]
     moved = [frozenset(b for b, d in enumerate(deps) if i in d) for i in range(n)]
     if any(not s for s in moved):
         return None                                  # a coordinate moves no body
@@ -60,7 +63,7 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M:
         anc = [j for j in range(n) if j != i and moved[j] >= moved[i]
                and (moved[j] != moved[i] or j < i)]
         parent.append(min(anc, key=lambda j: (len(moved[j]), -j)) if anc else None)
-    S = [ca.jacobian(V[min(moved[i])], qd[i]) for i in range(n)]
+    S = [Jall[3 * min(moved[i]):3 * min(moved[i]) + 3, i] for i in range(n)]
     own = [[] for _ in range(n)]                     # bodies whose deepest coordinate is i
     for b, d in enumerate(deps):
         if d:
@@ -91,7 +94,7 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M:
         qdd[i] = (u[i] - ca.mtimes(U[i].T, ap)) / D[i]
         a[i] = ap + S[i] * qdd[i]
     qdd = ca.vertcat(*qdd)
-    if not _agrees(q, tau, qdd, M, p, p_default):
+    if not _agrees(q, tau, qdd, M_times, probe, p, p_default):
         return None
     return ca.substitute(qdd, tau, tau_value)
 
@@ -107,15 +110,14 @@ def _topological(parent: list) -> list[int]:
     return sorted(range(len(parent)), key=lambda i: (d(i), i))
 
 
-def _agrees(q, tau, qdd, M, p, p_default) -> bool:
+def _agrees(q, tau, qdd, M_times, probe, p, p_default) -> bool:
     """ABA(M x) == x at a random state: the recursion matches the Lagrangian inertia."""
     rng = np.random.default_rng(1)
     x = rng.standard_normal(q.numel())
-    Mf = ca.Function("M", [q, p], [M], {"allow_free": True})
+    Mx = ca.Function("Mx", [q, probe, p], [M_times], {"allow_free": True})
     f = ca.Function("aba", [q, tau, p], [qdd], {"allow_free": True})
-    if Mf.has_free() or f.has_free():
+    if Mx.has_free() or f.has_free():
         return False
     qn = rng.uniform(-1, 1, q.numel())
-    Mn = np.array(Mf(qn, p_default))
-    got = np.array(f(qn, Mn @ x, p_default)).ravel()
+    got = np.array(f(qn, Mx(qn, x, p_default), p_default)).ravel()
     return bool(np.allclose(got, x, rtol=1e-8, atol=1e-10 * np.abs(x).max()))

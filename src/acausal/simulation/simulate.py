@@ -85,6 +85,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     u_expr = ca.vertcat(*u_ex) if u_ex else ca.SX(0, 1)
     u0 = np.array(ca.evalf(ca.substitute(u_expr, model.t, grid[0]))).ravel()
     xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess)
+    mobility = None
+    if model.lagrange.phi.numel():       # enforce the loop rows independent at this assembly
+        active, mobility = model.mobility_at(xs, zs, p, grid[0])
+        switches = [i for i, n in enumerate(model.param_names) if n.startswith("loops.active")]
+        p[switches] = active
 
     has_alg = model.z.numel() > 0
     solver = solver or ("idas" if has_alg else "cvodes")
@@ -150,8 +155,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         V = model.recorded_function.map(grid.size)(grid.reshape(1, -1), X, Z, P, U)
         return np.asarray(V.full(), dtype=float)
 
-    return Result(grid, model.recorded_names, model.recorded_layout, model.recorded_units,
-                  {"x": X, "r": evaluate}, model.name)
+    res = Result(grid, model.recorded_names, model.recorded_layout, model.recorded_units,
+                 {"x": X, "r": evaluate}, model.name)
+    res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
+    return res
 
 
 def _segments(grid: np.ndarray, events: list[float]):
