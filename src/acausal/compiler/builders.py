@@ -144,6 +144,13 @@ class StructureBuilder(_Base):
             self._mine(p)
         self._ws.relations.append(PrismaticJoint(self._owner, frame_a, frame_b, s, e, name))
 
+    def states(self, port: PhysicalPort, positions: tuple, velocities: tuple) -> None:
+        """Name the coordinates a port gets if its connection group needs free coordinates
+        (a Body not connected to the ground: ``r[1], r[2], phi`` and ``v[1], v[2], w``); such
+        ports are preferred when choosing free coordinates."""
+        self._mine(port)
+        port.state_names = (tuple(positions), tuple(velocities))
+
     def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
              preferred: bool = True) -> InternalNode:
         """An internal point (e.g. a centre of mass) named ``name``; its velocity and

@@ -53,7 +53,8 @@ class Node:
 
     @property
     def preferred(self) -> bool:
-        return any(getattr(p, "preferred", False) for p in self.ports)
+        return any(getattr(p, "preferred", False) or getattr(p, "state_names", None)
+                   for p in self.ports)
 
 
 class Atoms:
@@ -212,15 +213,18 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
             if new is not None:
                 grounded.append(new)
     propagate(grounded)
-    order = [n for n in nodes if n.preferred] + [n for n in nodes if not n.preferred]
+    # free coordinates: joints' and masses' own (internal nodes) first, then ports that name
+    # their coordinates (a free Body), then anything
+    rank = lambda n: (0 if any(isinstance(p, InternalNode) and p.preferred for p in n.ports)  # noqa: E731
+                      else 1 if n.preferred else 2)
+    order = sorted(nodes, key=rank)
     for n in order:
         if known(n):
             continue
         dim = n.domain.dim
         syms = []
         for pot in n.domain.potentials:
-            qname = n.name if _is_named_state(n) and dim == 1 else f"{n.name}.{pot}"
-            vname = _velocity_name(n, qname)
+            qname, vname = _state_names(n, len(syms), pot)
             s, v, a = ca.SX.sym(qname), ca.SX.sym(vname), ca.SX.sym(f"der({vname})")
             der_table[s.name()], der_table[v.name()], der_table[a.name()] = v, a, None
             q.append(s); qd.append(v); qdd.append(a)
@@ -257,12 +261,18 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
                 names)
 
 
-def _is_named_state(n: Node) -> bool:
-    return any(isinstance(p, InternalNode) for p in n.ports)
-
-
-def _velocity_name(n: Node, qname: str) -> str:
+def _state_names(n: Node, k: int, potential: str) -> tuple[str, str]:
+    """Names of the k-th coordinate of a free node and of its rate: those a component gave
+    (StructureBuilder.states, a Mass's centre ``mass.s``/``mass.v``), else the first port's
+    ``<port>.<potential>`` and ``der(...)``."""
     for p in n.ports:
-        if isinstance(p, InternalNode) and p.velocity:
-            return f"{p.owner.path}.{p.velocity}" if p.owner.path else p.velocity
-    return f"der({qname})"
+        names = getattr(p, "state_names", None)
+        if names:
+            base = f"{p.owner.path}." if p.owner.path else ""
+            return base + names[0][k], base + names[1][k]
+    for p in n.ports:
+        if isinstance(p, InternalNode) and n.domain.dim == 1:
+            base = f"{p.owner.path}." if p.owner.path else ""
+            return p.path, (base + p.velocity if p.velocity else f"der({p.path})")
+    qname = f"{n.name}.{potential}"
+    return qname, f"der({qname})"

@@ -225,11 +225,14 @@ class Body(Component):
                   nonnegative=True)
     frame_a = Frame("the frame at the centre of mass")
 
+    def structure(self, s):
+        s.states(self.frame_a, ("r[1]", "r[2]", "phi"), ("v[1]", "v[2]", "w"))
+
     def physics(self, e):
         world = e.outer(World)
         r, v, a = e.pos(self.frame_a), e.vel(self.frame_a), e.acc(self.frame_a)
         gx, gy = world.g * world.n[0], world.g * world.n[1]
-        e.kinetic_energy(0.5 * self.m * (v[0] ** 2 + v[1] ** 2) + 0.5 * self.I * v[2] ** 2)
+        e.rigid_body(self.frame_a, self.m, self.I)
         e.potential_energy(-self.m * (gx * r[0] + gy * r[1]))
         for k, name in enumerate(("r[1]", "r[2]", "phi")):
             e.variable(name, r[k], "rad" if k == 2 else "m")

@@ -137,7 +137,7 @@ class Component:
         object.__setattr__(self, key, value)
 
     def __repr__(self):
-        vals = ", ".join(f"{k}={v:g}" for k, v in self._values.items())
+        vals = ", ".join(f"{k}={v}" for k, v in self._values.items())
         return f"{type(self).__name__}({vals}) at '{self.path or self._name}'"
 
     # ---- the two phases (defaults: nothing) ----------------------------------------------
