@@ -97,6 +97,22 @@ class Lagrange:
     def _zero(self):
         return ca.SX.zeros(self.qdd.numel())
 
+    def with_values(self, values: dict, keep: tuple = ()) -> "Lagrange":
+        """The same equations with the parameters in ``values`` (dotted name -> number, e.g.
+        ``compiled.param_defaults``) replaced by numbers, except those named in ``keep``:
+        printing then reads like a hand derivation (``M = [[m1+m2, ...``)."""
+        names = [s.name() for s in ca.vertsplit(self.p)]
+        subs = [(s, v) for s, n in zip(ca.vertsplit(self.p), names)
+                if n in values and n not in keep for v in [values[n]]]
+        if not subs:
+            return self
+        sym, val = ca.vertcat(*[a for a, _ in subs]), ca.vertcat(*[b for _, b in subs])
+        R = ca.substitute(list(self._R) + [self.phi], [sym], [val])
+        out = Lagrange.__new__(Lagrange)
+        out.__dict__.update(self.__dict__)
+        out._R, out.phi, out._cache = tuple(ca.simplify(r) for r in R[:3]), R[3], {}
+        return out
+
     def function(self, *names: str) -> ca.Function:
         """A casadi Function (q, qd, u, t, p) -> the named pieces ('M', 'gravity', ...)."""
         outs = [getattr(self, n) for n in names]
