@@ -62,20 +62,27 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     H = ca.vertcat(*[ca.vec(e) for e in eqs])
     f = ca.Function("init", [w, model.t, model.p, model.u], [H, ca.jacobian(H, w)])
     wk = start.copy()
+    for name, value in x0.items():          # linearize where the fixed values put the states
+        if name in names:
+            wk[names.index(name)] = float(value)
     scale = 1 + max(abs(v) for v in targets) if targets else 1.0
     # states keep their start values where they can; algebraic variables are (nearly) free
     D = np.ones(w.numel())
     D[nx:] = 1e8
-    for _ in range(50):
+    for _ in range(200):
         h, J = _eval(f, wk, t0, p, u0)
         # closest point to the start values (metric D⁻¹) on the linearized equations:
-        #   w = start + D Jᵀ (J D Jᵀ)⁺ (J (wk − start) − h)    (J is k × n with k small)
+        #   w = start + D Jᵀ (J D Jᵀ)⁺ (J (wk − start) − h)    (J is k × n with k small);
+        # far from the solution the step is limited (0.3 per state), so that a guess keeps
+        # the assembly on its branch instead of winding joints by whole turns
         JD = J * D
         lam = np.linalg.lstsq(JD @ J.T, J @ (wk - start) - h, rcond=1e-14)[0]
-        new = start + JD.T @ lam
-        done = np.linalg.norm(new - wk) < 1e-13 * (1 + np.linalg.norm(wk))
-        wk = new
-        if done:
+        step = start + JD.T @ lam - wk
+        big = np.max(np.abs(step[:nx]), initial=0.0)
+        if big > 0.3:
+            step *= 0.3 / big
+        wk = wk + step
+        if np.linalg.norm(step) < 1e-13 * (1 + np.linalg.norm(wk)):
             break
     h, J = _eval(f, wk, t0, p, u0)
     if np.max(np.abs(h)) > 1e-8 * scale:
