@@ -204,6 +204,7 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
         lagrange=Lagrange(tree, R_T[:nq], R_V[:nq], R_Q[:nq], phi[keep], t, p, u,
                                 [c.path for c, _ in ws.inputs], z_states),
         coordinates=tree.q_names,
+        method=eq.method,
     )
 
 
@@ -328,6 +329,7 @@ def _solve_motion(tree, R_q, phi, t, ws, bodies) -> _Motion:
         out.ggl = (mu, nu, ca.mtimes(phi_q.T, act * mu), ca.mtimes(phi_q.T, act * nu),
                    act * phi + (1 - act) * mu, act * phid + (1 - act) * nu)
         out.active = act
+        out.method = "constrained (KKT) solve"
     else:
         out.lam = ca.SX(0, 1)
         out.active = ca.SX(0, 1)

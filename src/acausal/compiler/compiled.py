@@ -155,6 +155,7 @@ class CompiledModel:
     recorder: object        # () -> (names, expressions, units) of every recorded variable
     lagrange: Lagrange
     coordinates: list
+    method: str = ""        # how accelerations are solved: diagonal / recursion / dense / KKT
     loop_rows: list = field(default_factory=list)          # names of the rows of Φ
     loop_rows_dropped: list = field(default_factory=list)  # constant, redundant rows removed
     _cache: dict = field(default_factory=dict, repr=False)

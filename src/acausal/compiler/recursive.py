@@ -31,9 +31,8 @@ def spatial_inertia(pos: ca.SX, m, I) -> ca.SX:
     """Inertia about the world origin of mass m [kg], inertia I [kg.m²] about the centre of
     mass at (x, y) = pos[:2]."""
     x, y = pos[0], pos[1]
-    return ca.blockcat([[I + m * (x * x + y * y), -m * y, m * x],
-                        [-m * y, m, ca.SX(0)],
-                        [m * x, ca.SX(0), m]])
+    mx, my = m * x, m * y
+    return ca.reshape(ca.vertcat(I + mx * x + my * y, -my, mx, -my, m, 0, mx, 0, m), 3, 3)
 
 
 def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_times: ca.SX,
@@ -81,17 +80,18 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_
     U, D, u = [None] * n, [None] * n, [None] * n
     for i in reversed(order):                       # leaves to root
         U[i] = ca.mtimes(IA[i], S[i])
-        D[i] = ca.mtimes(S[i].T, U[i]) + armature[i]
+        D[i] = 1 / (ca.mtimes(S[i].T, U[i]) + armature[i])          # kept as its inverse
         u[i] = tau[i] - ca.mtimes(S[i].T, pA[i])
         j = parent[i]
         if j is not None:
-            IA[j] = IA[j] + IA[i] - ca.mtimes(U[i], U[i].T) / D[i]
-            pA[j] = pA[j] + pA[i] + U[i] * (u[i] / D[i])
+            UD = U[i] * D[i]
+            IA[j] = IA[j] + IA[i] - ca.mtimes(UD, U[i].T)
+            pA[j] = pA[j] + pA[i] + UD * u[i]
     a = [None] * n
     qdd = [None] * n
     for i in order:                                 # root to leaves
         ap = a[parent[i]] if parent[i] is not None else ca.SX.zeros(3)
-        qdd[i] = (u[i] - ca.mtimes(U[i].T, ap)) / D[i]
+        qdd[i] = (u[i] - ca.mtimes(U[i].T, ap)) * D[i]
         a[i] = ap + S[i] * qdd[i]
     qdd = ca.vertcat(*qdd)
     if not _agrees(q, tau, qdd, M_times, probe, p, p_default):

@@ -10,7 +10,7 @@ from ..core.errors import SimulationError
 from .initialization import initial_state
 from .result import Result
 
-SOLVERS = ("cvodes", "idas", "rk", "collocation")
+SOLVERS = ("cvodes", "adams", "idas", "rk", "collocation")
 
 
 def input_expression(name: str, value, t: ca.SX, grid: np.ndarray) -> ca.SX:
@@ -65,8 +65,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              held exactly;
     guess    start values by state name, used where x0 and the constraints leave freedom
              (closed loops: fix the driver in x0, guess the other joints);
-    solver   'cvodes' (ODE default), 'idas' (DAE default), or CasADi's fixed-step 'rk' /
-             'collocation' (set ``options={'number_of_finite_elements': n}``);
+    solver   'cvodes' (ODE default: BDF, for stiff mechanics), 'adams' (cvodes' Adams method
+             with functional iteration: no Jacobians, faster for non-stiff models such as
+             pendulums and linkages without stiff springs), 'idas' (DAE default), or
+             CasADi's fixed-step 'rk' / 'collocation' (``options={'number_of_finite_elements': n}``);
     rtol, atol, max_step: integrator tolerances and step limit.
     """
     grid = np.linspace(0.0, float(t_final), 501) if t is None else np.asarray(t, dtype=float)
@@ -95,7 +97,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     solver = solver or ("idas" if has_alg else "cvodes")
     if solver not in SOLVERS:
         raise SimulationError(f"unknown solver '{solver}'; choose one of {SOLVERS}")
-    if solver == "cvodes" and has_alg:
+    plugin = "cvodes" if solver == "adams" else solver
+    if plugin == "cvodes" and has_alg:
         raise SimulationError(f"model '{model.name}' has algebraic variables "
                               f"{model.z_names[:3]}...; use solver='idas'")
     # inputs become expressions of time, parameters their values: the integrator sees the
@@ -106,7 +109,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     if has_alg:
         dae.update(z=model.z, alg=alg)
     opts = {}
-    if solver in ("cvodes", "idas"):
+    if solver == "adams":        # non-stiff models: no Jacobians, no Newton iterations
+        opts.update(linear_multistep_method="adams", nonlinear_solver_iteration="functional")
+    if plugin in ("cvodes", "idas"):
         opts.update(abstol=atol, reltol=rtol, max_num_steps=100000)
         if max_step is not None:
             opts["max_step_size"] = max_step
@@ -136,7 +141,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
             opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
         try:
-            F = ca.integrator("sim", solver, dae, float(a), tout, opts)
+            F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
             sol = F(x0=x, z0=z)
         except RuntimeError as e:
             raise SimulationError(f"simulation of '{model.name}' failed between t = {a:g} and "
