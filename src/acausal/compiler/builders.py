@@ -235,7 +235,7 @@ class PhysicsBuilder(_Base):
         self._mine(frame)
         n = self._ws.node_of[frame]
         v = n.vel
-        self._ws.kinetic.append(sx(0.5 * m * (v[0] ** 2 + v[1] ** 2) + 0.5 * I * v[2] ** 2))
+        self._ws.kinetic.append(sx(0.5 * m * ca.sumsqr(v[:2]) + 0.5 * I * v[2] ** 2))
         self._ws.bodies.append((n.pos, n.vel, sx(m), sx(I)))
 
     def potential_energy(self, V) -> None:

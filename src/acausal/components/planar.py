@@ -230,8 +230,11 @@ class Body(Component):
 
     def physics(self, e):
         world = e.outer(World)
-        r, v, a = e.pos(self.frame_a), e.vel(self.frame_a), e.acc(self.frame_a)
-        gx, gy = world.g * world.n[0], world.g * world.n[1]
+        # split once: indexing an SX from Python costs as much as an operation
+        r, v, a = (ca.vertsplit(x) for x in (e.pos(self.frame_a), e.vel(self.frame_a),
+                                             e.acc(self.frame_a)))
+        n = ca.vertsplit(world.n)
+        gx, gy = world.g * n[0], world.g * n[1]
         e.rigid_body(self.frame_a, self.m, self.I)
         e.potential_energy(-self.m * (gx * r[0] + gy * r[1]))
         for k, name in enumerate(("r[1]", "r[2]", "phi")):
