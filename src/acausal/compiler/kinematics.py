@@ -163,10 +163,11 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
     def relax(dim: int):
         k = len(fired)
         e, ed, edd = (ca.SX.sym(f"eps{k}", dim), ca.SX.sym(f"epsd{k}", dim),
-                      ca.SX.sym(f"epsdd{k}", dim))
-        for i in range(dim):
-            der_table[e[i].name()], der_table[ed[i].name()] = ed[i], edd[i]
-            der_table[edd[i].name()] = None
+                      ca.SX.sym(f"epsdd{k}", dim)) if dim > 1 else (
+            ca.SX.sym(f"eps{k}"), ca.SX.sym(f"epsd{k}"), ca.SX.sym(f"epsdd{k}"))
+        trios = zip(*(ca.vertsplit(x) for x in (e, ed, edd))) if dim > 1 else [(e, ed, edd)]
+        for a, b, c in trios:
+            der_table[a.name()], der_table[b.name()], der_table[c.name()] = b, c, None
         return e, ed, edd
 
     def visit(r):
