@@ -34,6 +34,7 @@ import scipy.sparse as sps
 from scipy.integrate import solve_ivp
 
 import acausal
+from timing import best_of, fit_exponent, print_table
 from acausal.components.translational import Fixed, Force, Mass, Spring
 
 MASS, STIFF, T_FINAL, RTOL, ATOL = 1.0, 100.0, 10.0, 1e-8, 1e-10
@@ -138,16 +139,6 @@ def run_scipy(n, method, rtol=RTOL, atol=ATOL):
     return dt, sol.y[:, -1]
 
 
-def best(fn, repeat):
-    out = None
-    for _ in range(repeat):
-        gc.collect()
-        t0 = time.perf_counter()
-        r = fn()
-        dt = time.perf_counter() - t0
-        if out is None or dt < out[0]:
-            out = (dt, r)
-    return out
 
 
 def _simulate_and_read(compiled, n):
@@ -166,17 +157,17 @@ def bench(n: int, repeat: int, explicit: bool) -> dict:
     r["ac_compile"] = time.perf_counter() - t0
     # simulate() and reading the trajectories of every mass (Result evaluates its recorded
     # variables on first access, so the read is part of the cost)
-    r["ac_sim"], (res, x_ac) = best(lambda: _simulate_and_read(compiled, n), repeat)
+    r["ac_sim"], (res, x_ac) = best_of(lambda: _simulate_and_read(compiled, n), repeat)
     create, run = zip(*[acausal_integrator_only(compiled) for _ in range(repeat)])
     r["ac_int_create"], r["ac_int_run"] = min(create), min(run)
 
     t0 = time.perf_counter()
     F, _ = build_casadi(n)
     r["ca_build"] = time.perf_counter() - t0
-    r["ca_sim"], sol = best(lambda: F(x0=np.zeros(2 * n)), repeat)
+    r["ca_sim"], sol = best_of(lambda: F(x0=np.zeros(2 * n)), repeat)
     x_ca = sol["xf"].full()[:, -1]
     Fp, p_val = build_casadi(n, symbolic=True)
-    r["cap_sim"], sol = best(lambda: Fp(x0=np.zeros(2 * n), p=p_val), repeat)
+    r["cap_sim"], sol = best_of(lambda: Fp(x0=np.zeros(2 * n), p=p_val), repeat)
     r["ac_vs_cap"] = np.max(np.abs(sol["xf"].full()[:, -1] - x_ca))
 
     r["bdf"], x_bdf = min((run_scipy(n, "BDF") for _ in range(repeat)), key=lambda a: a[0])
@@ -197,17 +188,8 @@ def bench(n: int, repeat: int, explicit: bool) -> dict:
     return r
 
 
-def _table(head, rows, fmt):
-    print(" | ".join(f"{h:>10s}" for h in head))
-    for row in rows:
-        print(" | ".join([f"{row[0]:>10d}"] + [fmt.format(v) for v in row[1:]]))
 
 
-def fit_exponent(ns, ts):
-    """Slope of log t vs log N (least squares)."""
-    if len(ns) < 2:
-        return float("nan")
-    return float(np.polyfit(np.log(ns), np.log(ts), 1)[0])
 
 
 def main(argv=None):
@@ -230,7 +212,7 @@ def main(argv=None):
 
     print(f"\nchain of N masses and springs, {T_FINAL:g} s, rtol {RTOL:g}, atol {ATOL:g}, "
           f"{len(GRID)}-point grid; wall-clock times [s] (simulations: best of {args.repeat})")
-    _table(["N", "build", "compile", "simulate()", "int.create", "int.run", "CasADi bld",
+    print_table(["N", "build", "compile", "simulate()", "int.create", "int.run", "CasADi bld",
             "CasADi run", "sim ratio", "run ratio", "CasADi(p)", "run/(p)"],
            [[r["N"], r["ac_build"], r["ac_compile"], r["ac_sim"], r["ac_int_create"],
              r["ac_int_run"], r["ca_build"], r["ca_sim"],
@@ -247,7 +229,7 @@ def main(argv=None):
     head = ["N", "scipy BDF", "BDF/CasADi"]
     if explicit:
         head += ["DOP853", "DOP/CasADi", "RK45", "RK45/CasADi"]
-    _table(head, [[r["N"], r["bdf"], r["bdf"] / r["ca_sim"]]
+    print_table(head, [[r["N"], r["bdf"], r["bdf"] / r["ca_sim"]]
                   + ([r["dop853"], r["dop853"] / r["ca_sim"], r["rk45"], r["rk45"] / r["ca_sim"]]
                      if explicit else []) for r in rows], "{:10.4g}")
     print("  numpy + scipy solve_ivp (BDF with the sparse Jacobian); ratios against the CasADi run")
@@ -256,7 +238,7 @@ def main(argv=None):
     head = ["N", "max|x_ref|", "acausal", "CasADi", "ac-CasADi", "CasADi(p)-", "scipy BDF"]
     if explicit:
         head += ["DOP853", "RK45"]
-    _table(head, [[r["N"], r["scale"], r["err_ac"], r["err_ca"], r["ac_vs_ca"], r["ac_vs_cap"],
+    print_table(head, [[r["N"], r["scale"], r["err_ac"], r["err_ca"], r["ac_vs_ca"], r["ac_vs_cap"],
                    r["err_bdf"]]
                   + ([r["err_dop853"], r["err_rk45"]] if explicit else []) for r in rows],
            "{:10.3e}")

@@ -59,6 +59,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 import acausal
+from timing import best_of, fit_exponent, print_table
 from acausal.components.planar import Body, Fixed, FixedTranslation, Revolute, World
 
 L, MASS, INERTIA, G = 0.5, 1.0, 0.01, 9.81
@@ -190,20 +191,6 @@ def mapped_per_eval(f: ca.Function, args: list, target=0.05) -> float:
     return per_call(lambda: F(*big), min_time=target, repeat=3) / K
 
 
-def best_of(fn, repeat, budget=2.0):
-    """(best wall time, result) of ``repeat`` runs of fn(); no repeat once a run takes more
-    than ``budget`` seconds (a long run is timed well enough once)."""
-    out = None
-    for _ in range(repeat):
-        gc.collect()
-        t0 = time.perf_counter()
-        r = fn()
-        dt = time.perf_counter() - t0
-        if out is None or dt < out[0]:
-            out = (dt, r)
-        if dt > budget:
-            break
-    return out
 
 
 # ---- one N ----------------------------------------------------------------------------------
@@ -225,7 +212,7 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     rhs = compiled.rhs
     r["ac_rhs_fn"] = time.perf_counter() - t0
     r["ac_instr"] = rhs.n_instructions()
-    r["pin_build"], (pmodel, pdata) = best_of(lambda: build_pinocchio(n), repeat)
+    r["pin_build"], (pmodel, pdata) = best_of(lambda: build_pinocchio(n), repeat, budget=2.0)
 
     # (2) one right-hand side
     perm = acausal_state_order(compiled, n)
@@ -310,13 +297,13 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     r["scale"] = np.max(np.abs(y_ref))
     err = lambda y_: float(np.max(np.abs(y_ - y_ref)))
 
-    r["pin_sim"], sol = best_of(run_pin, repeat)
+    r["pin_sim"], sol = best_of(run_pin, repeat, budget=2.0)
     r["err_pin"], r["pin_nfev"] = err(sol.y[:, -1]), sol.nfev
 
     for key, opts in (("bdf", None), ("adams", ADAMS)):
         # at the same tolerances, then tightened until as accurate as DOP853
         for k, rtol in enumerate(MATCH_RTOLS):
-            dt, y_ = best_of(lambda: run_acausal(opts, rtol, rtol / 100), repeat)
+            dt, y_ = best_of(lambda: run_acausal(opts, rtol, rtol / 100), repeat, budget=2.0)
             e = err(y_)
             if k == 0:
                 r[f"ac_{key}"], r[f"err_{key}"] = dt, e
@@ -358,25 +345,8 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
 
 
 # ---- report ---------------------------------------------------------------------------------
-def _table(head, rows, fmts):
-    print(" | ".join(f"{h:>10s}" for h in head))
-    for row in rows:
-        cells = []
-        for v, f in zip(row, fmts):
-            if isinstance(v, float) and np.isnan(v):
-                cells.append(f"{'-':>10s}")
-            else:
-                cells.append(f.format(v))
-        print(" | ".join(cells))
 
 
-def fit_exponent(ns, ts):
-    """Slope of log t vs log N (least squares)."""
-    pts = [(a, b) for a, b in zip(ns, ts) if b > 0 and np.isfinite(b)]
-    if len(pts) < 2:
-        return float("nan")
-    a, b = zip(*pts)
-    return float(np.polyfit(np.log(a), np.log(b), 1)[0])
 
 
 def profile_compile(n: int, top: int = 20):
@@ -431,7 +401,7 @@ def main(argv=None):
     print(f"\nN-link planar pendulum (L = {L} m, m = {MASS} kg, I = {INERTIA} kg.m2), "
           f"wall-clock, best of {args.repeat}")
     print("\n(1) build / compile [s]")
-    _table(["N", "ac model", "ac compile", "ac rhs fn", "pin build", "sympy", "compile/pin"],
+    print_table(["N", "ac model", "ac compile", "ac rhs fn", "pin build", "sympy", "compile/pin"],
            [[r["N"], r["ac_model"], r["ac_compile"], r["ac_rhs_fn"], r["pin_build"],
              r["sy_build"], r["ac_compile"] / r["pin_build"]] for r in rows],
            ["{:10d}"] + ["{:10.4g}"] * 6)
@@ -444,7 +414,7 @@ def main(argv=None):
             print(f"  sympy N={r['N']}: {r['sy_note']}")
 
     print("\n(2) one right-hand side [us]")
-    _table(["N", "ac python", "ac native", "ac folded", "pin.aba", "sympy", "native/pin",
+    print_table(["N", "ac python", "ac native", "ac folded", "pin.aba", "sympy", "native/pin",
             "python/pin", "instr", "dev ac", "dev sympy"],
            [[r["N"], r["ac_rhs_py"] * 1e6, r["ac_rhs_native"] * 1e6, r["ac_rhs_folded"] * 1e6,
              r["pin_aba"] * 1e6, r["sy_rhs"] * 1e6, r["ac_rhs_native"] / r["pin_aba"],
@@ -452,7 +422,7 @@ def main(argv=None):
             for r in rows],
            ["{:10d}"] + ["{:10.4g}"] * 7 + ["{:10d}", "{:10.1e}", "{:10.1e}"])
     if any(np.isfinite(r["ac_rhs_jit"]) for r in rows):
-        _table(["N", "ac jit", "jit/pin", "gcc time"],
+        print_table(["N", "ac jit", "jit/pin", "gcc time"],
                [[r["N"], r["ac_rhs_jit"] * 1e6, r["ac_rhs_jit"] / r["pin_aba"],
                  r.get("ac_jit_build", float("nan"))] for r in rows],
                ["{:10d}"] + ["{:10.4g}"] * 3)
@@ -470,7 +440,7 @@ def main(argv=None):
 
     print(f"\n(3) simulation of {T_FINAL:g} s, the straight chain released {Q0} rad from hanging, "
           f"rtol {RTOL:g}, atol {ATOL:g},\n    {len(GRID)}-point grid [s]")
-    _table(["N", "DOP853+ABA", "sim BDF", "sim Adams", "BDF/DOP", "Adams/DOP", "int.create",
+    print_table(["N", "DOP853+ABA", "sim BDF", "sim Adams", "BDF/DOP", "Adams/DOP", "int.create",
             "int.run", "t in rhs", "t in jac", "cv steps", "cv jacs", "DOP f-evals"],
            [[r["N"], r["pin_sim"], r["ac_bdf"], r["ac_adams"], r["ac_bdf"] / r["pin_sim"],
              r["ac_adams"] / r["pin_sim"], r["ac_int_create"], r["ac_int_run"], r["ac_t_rhs"],
@@ -484,13 +454,13 @@ def main(argv=None):
           "jac: cvodes' own wall time in the rhs and in its Jacobian during int.run")
     print(f"\n    max |final state - reference| (angles [rad], rates [rad/s]); reference: "
           f"DOP853+ABA at rtol {REF_RTOL:g}, atol {REF_ATOL:g}")
-    _table(["N", "max|x_ref|", "ref check", "DOP853+ABA", "sim BDF", "sim Adams", "cvodes dae"],
+    print_table(["N", "max|x_ref|", "ref check", "DOP853+ABA", "sim BDF", "sim Adams", "cvodes dae"],
            [[r["N"], r["scale"], r["ref_check"], r["err_pin"], r["err_bdf"], r["err_adams"],
              r["err_int"]] for r in rows], ["{:10d}"] + ["{:10.3e}"] * 6)
     print(f"  ref check: |reference - the same at rtol {REF_RTOL / 10:g}|")
     print("\n    at equal accuracy: acausal's rtol tightened (atol = rtol/100) until its error <= "
           "DOP853's at rtol 1e-8")
-    _table(["N", "DOP853+ABA", "BDF rtol", "BDF time", "BDF error", "BDF/DOP", "Adams rtol",
+    print_table(["N", "DOP853+ABA", "BDF rtol", "BDF time", "BDF error", "BDF/DOP", "Adams rtol",
             "Adams time", "Adams err", "Adams/DOP", "Ad. f-evals", "Ad. t rhs"],
            [[r["N"], r["pin_sim"], r["rtol_bdf_eq"], r["ac_bdf_eq"], r["err_bdf_eq"],
              r["ac_bdf_eq"] / r["pin_sim"], r["rtol_adams_eq"], r["ac_adams_eq"],

@@ -19,18 +19,16 @@ $ACAUSAL_OUT, default the current directory).
 from __future__ import annotations
 
 import os
-import time
-import warnings
 
 import numpy as np
 
 import acausal
-from acausal.components.planar import Body, Fixed, FixedTranslation, Prismatic, Revolute, World
+from acausal.components.planar import Body, Fixed, Prismatic, Revolute, World
+from four_bar import add_link, energy, simulate_assembled      # the shared linkage pieces
 
 R, L, H = 0.2, 0.6, 0.05                     # m: crank, rod, offset of the slider's track
 M_CRANK, M_ROD, M_SLIDER = 0.4, 0.6, 1.0     # kg
 I_SLIDER = 0.01                              # kg.m² (the slider does not turn)
-G = 9.81                                     # m/s², the World's default
 
 
 class SliderCrank(acausal.Model):
@@ -44,63 +42,28 @@ class SliderCrank(acausal.Model):
         self.prismatic = Prismatic(r=(1.0, 0.0))
         self.slider = Body(m=M_SLIDER, I=I_SLIDER)
         self.connect(self.O.frame, self.rev1.frame_a)
-        A = self._link("crank", R, M_CRANK, self.rev1.frame_b)
+        A = add_link(self, "crank", R, M_CRANK, self.rev1.frame_b)
         self.connect(A, self.rev2.frame_a)
-        B = self._link("rod", L, M_ROD, self.rev2.frame_b)
+        B = add_link(self, "rod", L, M_ROD, self.rev2.frame_b)
         self.connect(B, self.rev3.frame_a)
         self.connect(self.track.frame, self.prismatic.frame_a)
         self.connect(self.prismatic.frame_b, self.slider.frame_a)
         self.connect(self.rev3.frame_b, self.slider.frame_a)
-
-    def _link(self, name, length, m, frame):
-        """A bar of the given length [m] along ``frame``'s x axis with a Body of mass m [kg]
-        at its middle; returns the frame at its far end."""
-        half_a = FixedTranslation(r=(length / 2, 0.0))
-        half_b = FixedTranslation(r=(length / 2, 0.0))
-        body = Body(m=m, I=m * length ** 2 / 12)
-        setattr(self, f"{name}_a", half_a)
-        setattr(self, name, body)
-        setattr(self, f"{name}_b", half_b)
-        self.connect(frame, half_a.frame_a)
-        self.connect(half_a.frame_b, body.frame_a)
-        self.connect(body.frame_a, half_b.frame_a)
-        return half_b.frame_b
 
 
 BODIES = {"crank": (M_CRANK, M_CRANK * R ** 2 / 12), "rod": (M_ROD, M_ROD * L ** 2 / 12),
           "slider": (M_SLIDER, I_SLIDER)}
 
 
-def energy(res):
-    """Kinetic and potential energy [J] from the recorded motion of the bodies."""
-    T = sum(0.5 * m * (res[f"{b}.v[1]"] ** 2 + res[f"{b}.v[2]"] ** 2) + 0.5 * I * res[f"{b}.w"] ** 2
-            for b, (m, I) in BODIES.items())
-    V = sum(m * G * res[f"{b}.r[2]"] for b, (m, _) in BODIES.items())
-    return T, V
-
-
 def main():
-    t0 = time.perf_counter()
-    model = acausal.compile(SliderCrank())
-    t1 = time.perf_counter()
-    print(model)
-    print(f"coordinates {model.coordinates}; compiled in {t1 - t0:.3f} s")
-
-    grid = np.linspace(0.0, 10.0, 1001)
-    with warnings.catch_warnings(record=True) as notes:
-        warnings.simplefilter("always")
-        res = model.simulate(10.0, t=grid, x0={"rev1.phi": 0.5, "rev1.w": 3.0},
-                             rtol=1e-12, atol=1e-14)
-    t2 = time.perf_counter()
-    for w in notes:
-        print(f"assembly: {w.message}")
+    res, seconds = simulate_assembled(SliderCrank(), {"rev1.phi": 0.5, "rev1.w": 3.0})
     gap = np.hypot(res["rev3.frame_a.x"] - res["rev3.frame_b.x"],
                    res["rev3.frame_a.y"] - res["rev3.frame_b.y"])
     off_track = np.abs(res["slider.r[2]"] + H)          # the prismatic's rows: off the track,
     turned = np.abs(res["slider.phi"])                  # and turned
-    T, V = energy(res)
+    T, V = energy(res, BODIES)
     E = T + V
-    print(f"simulated 10 s in {t2 - t1:.3f} s; mobility at t = 0: {res.mobility}")
+    print(f"simulated 10 s in {seconds:.3f} s; mobility at t = 0: {res.mobility}")
     print(f"crank: {res['rev1.phi'][0]:.3f} rad -> {res['rev1.phi'][-1]:.3f} rad; slider "
           f"stroke {res['prismatic.s'].min():.3f}..{res['prismatic.s'].max():.3f} m")
     print(f"constraints: max |B_rod - B_slider| {gap.max():.1e} m, slider off its track "

@@ -1,7 +1,7 @@
 """Flatten a model: every component and port by dotted name, connection groups, signal wiring."""
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from ..core.component import Component, Model
 from ..core.errors import PortConnectionError, StructureError
@@ -15,7 +15,6 @@ class Flat:
     components: list[Component]
     groups: list[list[PhysicalPort]]           # physical ports joined by connections
     signal_source: dict[RealInput, RealOutput]  # where each input gets its value
-    group_of: dict[PhysicalPort, int] = field(default_factory=dict)
 
 
 class _UnionFind:
@@ -71,14 +70,12 @@ def flatten(root: Model) -> Flat:
     # physical groups, in port declaration order
     index: dict[int, int] = {}
     groups: list[list[PhysicalPort]] = []
-    group_of = {}
     for p in phys:
         r = id(uf.find(p))
         if r not in index:
             index[r] = len(groups)
             groups.append([])
         groups[index[r]].append(p)
-        group_of[p] = index[r]
     for p in phys:
         if p.required and p not in connected:
             raise StructureError(
@@ -106,7 +103,7 @@ def flatten(root: Model) -> Flat:
                         f"Input of the model")
                 continue
             source[p] = outs[0]
-    return Flat(root, comps, groups, source, group_of)
+    return Flat(root, comps, groups, source)
 
 
 def _drives(p: Port) -> bool:
