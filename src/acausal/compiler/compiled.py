@@ -240,6 +240,27 @@ class CompiledModel:
         return self._cache["rhs"]
 
     @property
+    def f(self) -> ca.Function:
+        """The model as a CasADi Function f(x, u, p, z, t) -> (xdot, alg): state derivatives
+        and the algebraic residual (empty for ODE models). Call it with keywords, e.g.
+        ``f(x=x, u=u, p=p)["xdot"]``; omitted arguments are 0 (time-invariant ODE models need
+        only x, u, p). Symbols: ``x, u, p, z, t``; names: ``x_names``, ``input_names``,
+        ``param_names``, ``z_names``."""
+        if "f" not in self._cache:
+            self._cache["f"] = ca.Function("f", [self.x, self.u, self.p, self.z, self.t],
+                                           [self.ode, self.alg], ["x", "u", "p", "z", "t"],
+                                           ["xdot", "alg"])
+        return self._cache["f"]
+
+    @property
+    def output_function(self) -> ca.Function:
+        """Function (x, u, p, z, t) -> y, the model's Outputs (``output_names``)."""
+        if "y" not in self._cache:
+            self._cache["y"] = ca.Function("outputs", [self.x, self.u, self.p, self.z, self.t],
+                                           [self.y], ["x", "u", "p", "z", "t"], ["y"])
+        return self._cache["y"]
+
+    @property
     def recorded_layout(self) -> list[tuple[str, int]]:
         """Where each recorded name's values come from: ("x", i) for a name that is state i,
         ("r", j) for row j of ``recorded_function``'s output (names that are one expression,
@@ -303,6 +324,11 @@ class CompiledModel:
         """Simulate; see acausal.simulation.simulate for the arguments."""
         from ..simulation import simulate
         return simulate(self, t_final, **kwargs)
+
+    def export_fmu(self, path, **kwargs):
+        """Export as an FMU; see acausal.fmu.export_fmu for the arguments."""
+        from ..fmu import export_fmu
+        return export_fmu(self, path, **kwargs)
 
     def __repr__(self):
         return (f"<CompiledModel '{self.name}': {len(self.x_names)} states, "
