@@ -22,17 +22,40 @@ import casadi as ca
 import numpy as np
 
 
-def spatial_velocity(pos: ca.SX, vel: ca.SX) -> ca.SX:
-    """(ω, v_O) of a planar frame with pose (x, y, φ) and rates (ẋ, ẏ, φ̇)."""
-    return ca.vertcat(vel[2], vel[0] + vel[2] * pos[1], vel[1] - vel[2] * pos[0])
-
-
-def spatial_inertia(pos: ca.SX, m, I) -> ca.SX:
-    """Inertia about the world origin of mass m [kg], inertia I [kg.m²] about the centre of
-    mass at (x, y) = pos[:2]."""
+def _spatial() -> ca.Function:
+    """(pose, rates, m, I) of a body's centre of mass -> its spatial velocity (ω, v_O) and its
+    spatial inertia about the world origin (m [kg], I [kg.m²] about the centre of mass)."""
+    pos, vel, m, I = ca.SX.sym("pos", 3), ca.SX.sym("vel", 3), ca.SX.sym("m"), ca.SX.sym("I")
     x, y = pos[0], pos[1]
+    V = ca.vertcat(vel[2], vel[0] + vel[2] * y, vel[1] - vel[2] * x)
     mx, my = m * x, m * y
-    return ca.reshape(ca.vertcat(I + mx * x + my * y, -my, mx, -my, m, 0, mx, 0, m), 3, 3)
+    Ib = ca.reshape(ca.vertcat(I + mx * x + my * y, -my, mx, -my, m, 0, mx, 0, m), 3, 3)
+    return ca.Function("spatial", [pos, vel, m, I], [V, Ib])
+
+
+def _backward() -> ca.Function:
+    """One leaves-to-root step of the recursion for coordinate i: from its articulated
+    inertia IA, motion vector S, force τ, bias pA and armature J to U = IA S, D = 1/(Sᵀ U + J),
+    u = τ − Sᵀ pA and what it passes to its parent: IA − U D Uᵀ, pA + U D u."""
+    IA, S, tau = ca.SX.sym("IA", 3, 3), ca.SX.sym("S", 3), ca.SX.sym("tau")
+    pA, J = ca.SX.sym("pA", 3), ca.SX.sym("J")
+    U = ca.mtimes(IA, S)
+    D = 1 / (ca.dot(S, U) + J)
+    u = tau - ca.dot(S, pA)
+    UD = U * D
+    return ca.Function("aba_back", [IA, S, tau, pA, J],
+                       [U, D, u, IA - ca.mtimes(UD, U.T), pA + UD * u])
+
+
+def _forward() -> ca.Function:
+    """One root-to-leaves step: q̈_i = D (u − Uᵀ a_parent), a_i = a_parent + S q̈_i."""
+    U, S, ap = ca.SX.sym("U", 3), ca.SX.sym("S", 3), ca.SX.sym("ap", 3)
+    D, u = ca.SX.sym("D"), ca.SX.sym("u")
+    qdd = (u - ca.dot(U, ap)) * D
+    return ca.Function("aba_fwd", [U, D, u, S, ap], [qdd, ap + S * qdd])
+
+
+SPATIAL, BACKWARD, FORWARD = _spatial(), _backward(), _forward()
 
 
 def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_times: ca.SX,
@@ -47,7 +70,8 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_
     n = q.numel()
     if n < 2 or not bodies:
         return None
-    V = ca.vertcat(*[spatial_velocity(pos, vel) for pos, vel, _, _ in bodies])
+    spatial = [SPATIAL(pos, vel, m, I) for pos, vel, m, I in bodies]
+    V = ca.vertcat(*[v for v, _ in spatial])
     Jall = ca.jacobian(V, qd)                       # one sweep: 3 rows per body
     rows, cols = Jall.sparsity().get_triplet()
     deps = [set() for _ in bodies]
@@ -69,30 +93,25 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_
             own[max(d, key=lambda j: (-len(moved[j]), j))].append(b)
     order = _topological(parent)
     tau_value, tau = tau, ca.SX.sym("tau", n)
-    Ib = [spatial_inertia(pos, m, I) for pos, _, m, I in bodies]  # about the world origin
+    Ib = [ib for _, ib in spatial]                    # about the world origin
     IA = [sum((Ib[b] for b in own[i]), ca.SX.zeros(3, 3)) for i in range(n)]
     H = ca.hessian(T_other, qd)[0] if T_other is not None else ca.SX(n, n)
     r, c = H.sparsity().get_triplet()
     if any(i != j for i, j in zip(r, c)) or ca.depends_on(H, ca.vertcat(q, qd)):
         return None                       # 1-D inertia coupling coordinates: not armature
-    armature = [H[i, i] for i in range(n)]
     pA = [ca.SX.zeros(3) for _ in range(n)]
     U, D, u = [None] * n, [None] * n, [None] * n
     for i in reversed(order):                       # leaves to root
-        U[i] = ca.mtimes(IA[i], S[i])
-        D[i] = 1 / (ca.mtimes(S[i].T, U[i]) + armature[i])          # kept as its inverse
-        u[i] = tau[i] - ca.mtimes(S[i].T, pA[i])
+        IA_i = ca.tril2symm(ca.tril(IA[i]))        # sums: the lower triangle suffices
+        U[i], D[i], u[i], IA_up, pA_up = BACKWARD(IA_i, S[i], tau[i], pA[i], H[i, i])
         j = parent[i]
         if j is not None:
-            UD = U[i] * D[i]
-            IA[j] = IA[j] + IA[i] - ca.mtimes(UD, U[i].T)
-            pA[j] = pA[j] + pA[i] + UD * u[i]
+            IA[j], pA[j] = IA[j] + IA_up, pA[j] + pA_up
     a = [None] * n
     qdd = [None] * n
     for i in order:                                 # root to leaves
         ap = a[parent[i]] if parent[i] is not None else ca.SX.zeros(3)
-        qdd[i] = (u[i] - ca.mtimes(U[i].T, ap)) * D[i]
-        a[i] = ap + S[i] * qdd[i]
+        qdd[i], a[i] = FORWARD(U[i], D[i], u[i], S[i], ap)
     qdd = ca.vertcat(*qdd)
     if not _agrees(q, tau, qdd, M_times, probe, p, p_default):
         return None
