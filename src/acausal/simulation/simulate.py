@@ -65,10 +65,14 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              held exactly;
     guess    start values by state name, used where x0 and the constraints leave freedom
              (closed loops: fix the driver in x0, guess the other joints);
-    solver   'cvodes' (ODE default: BDF, for stiff mechanics), 'adams' (cvodes' Adams method
-             with functional iteration: no Jacobians, faster for non-stiff models such as
-             pendulums and linkages without stiff springs), 'idas' (DAE default), or
-             CasADi's fixed-step 'rk' / 'collocation' (``options={'number_of_finite_elements': n}``);
+    solver   'cvodes' (BDF with Newton iterations, for stiff mechanics), 'adams' (cvodes'
+             Adams method with functional iteration: no Jacobians, faster for non-stiff models
+             such as pendulums and linkages without stiff springs), 'idas' (DAEs: closed loops,
+             massless nodes), or CasADi's fixed-step 'rk' / 'collocation'
+             (``options={'number_of_finite_elements': n}``). Default: 'idas' for DAEs; for
+             ODEs 'adams' when the linearization at the initial state is not stiff (see
+             ``is_stiff``), else 'cvodes' — and 'cvodes' again should Adams fail.
+             ``Result.solver`` says which ran;
     rtol, atol, max_step: integrator tolerances and step limit.
     """
     grid = np.linspace(0.0, float(t_final), 501) if t is None else np.asarray(t, dtype=float)
@@ -94,17 +98,20 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         p[switches] = active
 
     has_alg = model.z.numel() > 0
-    solver = solver or ("idas" if has_alg else "cvodes")
+    # inputs become expressions of time, parameters their values: the integrator sees the
+    # same folded arithmetic as a hand-written model with numbers (changing a parameter
+    # rebuilds only the integrator, never the model)
+    ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, ca.SX(p)])
+    auto = solver is None
+    if auto:
+        solver = "idas" if has_alg else (
+            "cvodes" if is_stiff(model.x, model.t, ode, xs, grid[0], grid[-1]) else "adams")
     if solver not in SOLVERS:
         raise SimulationError(f"unknown solver '{solver}'; choose one of {SOLVERS}")
     plugin = "cvodes" if solver == "adams" else solver
     if plugin == "cvodes" and has_alg:
         raise SimulationError(f"model '{model.name}' has algebraic variables "
                               f"{model.z_names[:3]}...; use solver='idas'")
-    # inputs become expressions of time, parameters their values: the integrator sees the
-    # same folded arithmetic as a hand-written model with numbers (changing a parameter
-    # rebuilds only the integrator, never the model)
-    ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, ca.SX(p)])
     dae = {"x": model.x, "t": model.t, "ode": ode}
     if has_alg:
         dae.update(z=model.z, alg=alg)
@@ -127,31 +134,46 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         opts["calc_ic"] = False
         xdot = ca.Function("xdot", [model.x, model.z, model.t], [dae["ode"]])
     opts.update(options or {})
-    X, Z = [np.asarray(xs, dtype=float).reshape(-1, 1)], [np.asarray(zs, dtype=float).reshape(-1, 1)]
-    x, z = X[0][:, 0], Z[0][:, 0]
-    for a, b, pts in _segments(grid, model.event_times(p, grid[0], grid[-1])):
-        # integrate up to just before an event, restart at it (the jump is never stepped over)
-        if a != grid[0] and a in grid:           # an output time exactly at the event
-            X.append(x.reshape(-1, 1))
-            Z.append(z.reshape(-1, 1))
-        end = b if b == grid[-1] else b - 1e-12 * max(1.0, abs(b))
-        tout = list(pts) + ([] if pts and pts[-1] == b else [end])
-        tout = [min(tt, end) for tt in tout]
-        if loops:
-            opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
-            opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
-        try:
-            F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
-            sol = F(x0=x, z0=z)
-        except RuntimeError as e:
-            raise SimulationError(f"simulation of '{model.name}' failed between t = {a:g} and "
-                                  f"{b:g} s: {_short(e)}; check the parameters and initial "
-                                  f"values, or try a smaller rtol/atol or another solver") from None
-        xf, zf = np.array(sol["xf"]), np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
-        X.append(xf[:, :len(pts)])
-        Z.append(zf[:, :len(pts)])
-        x, z = xf[:, -1], (zf[:, -1] if has_alg else z)
-    X, Z = np.hstack(X), np.hstack(Z)
+
+    def integrate(plugin, opts):
+        X = [np.asarray(xs, dtype=float).reshape(-1, 1)]
+        Z = [np.asarray(zs, dtype=float).reshape(-1, 1)]
+        x, z = X[0][:, 0], Z[0][:, 0]
+        for a, b, pts in _segments(grid, model.event_times(p, grid[0], grid[-1])):
+            # integrate up to just before an event, restart at it (never step over a jump)
+            if a != grid[0] and a in grid:           # an output time exactly at the event
+                X.append(x.reshape(-1, 1))
+                Z.append(z.reshape(-1, 1))
+            end = b if b == grid[-1] else b - 1e-12 * max(1.0, abs(b))
+            tout = list(pts) + ([] if pts and pts[-1] == b else [end])
+            tout = [min(tt, end) for tt in tout]
+            if loops:
+                opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
+                opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
+            try:
+                F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
+                sol = F(x0=x, z0=z)
+            except RuntimeError as e:
+                raise SimulationError(
+                    f"simulation of '{model.name}' failed between t = {a:g} and {b:g} s: "
+                    f"{_short(e)}; check the parameters and initial values, or try a smaller "
+                    f"rtol/atol or another solver") from None
+            xf = np.array(sol["xf"])
+            zf = np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
+            X.append(xf[:, :len(pts)])
+            Z.append(zf[:, :len(pts)])
+            x, z = xf[:, -1], (zf[:, -1] if has_alg else z)
+        return np.hstack(X), np.hstack(Z)
+
+    try:
+        X, Z = integrate(plugin, opts)
+    except SimulationError:
+        if not (auto and solver == "adams"):
+            raise
+        solver = "cvodes"                # misjudged as non-stiff: BDF with Newton iterations
+        for k in ("linear_multistep_method", "nonlinear_solver_iteration"):
+            opts.pop(k)
+        X, Z = integrate("cvodes", opts)
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
     P = np.tile(p.reshape(-1, 1), (1, grid.size))
@@ -163,7 +185,30 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     res = Result(grid, model.recorded_names, model.recorded_layout, model.recorded_units,
                  {"x": X, "r": evaluate}, model.name)
     res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
+    res.solver = solver
     return res
+
+
+def is_stiff(x: ca.SX, t: ca.SX, ode: ca.SX, x0, t0: float, t1: float,
+             max_states: int = 400) -> bool:
+    """Whether the ODE ẋ = ode(x, t) is stiff at (x0, t0), judged on the eigenvalues λ of its
+    Jacobian (finite differences, one mapped evaluation): stiff when some mode decays more
+    than ten times faster than both the fastest oscillation and 1/(t1 − t0) — an explicit
+    method would be held to steps far shorter than accuracy needs. Models with more than
+    ``max_states`` states are taken as stiff (BDF is the safe choice, the test too costly)."""
+    n = x.numel()
+    if n == 0 or n > max_states:
+        return n > 0
+    f = ca.Function("f", [x, t], [ode])
+    x0 = np.asarray(x0, dtype=float).ravel()
+    h = 1e-7 * np.maximum(1.0, np.abs(x0))
+    X = np.hstack([x0.reshape(-1, 1), x0.reshape(-1, 1) + np.diag(h)])
+    F = np.asarray(f.map(n + 1)(X, t0), dtype=float)
+    lam = np.linalg.eigvals((F[:, 1:] - F[:, :1]) / h)
+    if not np.all(np.isfinite(lam)):
+        return True
+    decay = max(0.0, float(np.max(-lam.real)))
+    return decay > 10.0 * max(float(np.max(np.abs(lam.imag))), 1.0 / max(t1 - t0, 1e-12))
 
 
 def _segments(grid: np.ndarray, events: list[float]):
