@@ -137,7 +137,7 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
         bodies = [(b[0:3], b[3:6], b[6], b[7]) for b in ca.vertsplit(flat_b, 8)]
         T_other = resolve([ca.sum1(_vc(*ws.kinetic_other)) if ws.kinetic_other
                            else ca.SX(0)])[0]
-    eq = _solve_motion(tree, R_q, phi[keep], t, ws, (bodies, T_other))
+    eq = _solve_motion(tree, R_q, phi[keep], t, ws, (bodies, T_other), resolve)
     lam = ca.SX.zeros(phi.numel())               # dropped (redundant) rows carry nothing
     lam[keep] = eq.lam
     lam_tree = -(R_eps + ca.mtimes(phi_eps.T, lam)) if eps.numel() else ca.SX(0, 1)
@@ -175,10 +175,11 @@ def _assemble(model, flat, ws: Workspace, tree, params) -> CompiledModel:
     u = _vc(*[s for _, s in ws.inputs]) if ws.inputs else ca.SX(0, 1)
     p = _vc(*[s for s, *_ in params]) if params else ca.SX(0, 1)
     x = _vc(eq.q_diff, eq.qd_diff, z_states)
-    if x.numel() == 0:
+    if x.numel() == 0 and not ca.depends_on(recorded()[1], _vc(t, u)):
         raise StructureError(f"model '{model.name or type(model).__name__}' has no dynamics: no "
                              f"part can move (every node is fixed or prescribed) and no component "
-                             f"has states; add a mass or inertia that is free to move")
+                             f"has states, and no motion is prescribed; add a mass or inertia "
+                             f"that is free to move")
     ode = _vc(eq.q_diff_dot, eq.qdd_diff, zdot)
     alg_vars = _vc(eq.alg_vars, z_alg)
     alg = _vc(eq.alg_res, g_alg)
@@ -274,7 +275,7 @@ class _Motion:
     """Accelerations solved: the differential/algebraic split of the mechanical states."""
 
 
-def _solve_motion(tree, R_q, phi, t, ws, bodies) -> _Motion:
+def _solve_motion(tree, R_q, phi, t, ws, bodies, resolve) -> _Motion:
     nq = tree.q.numel()
     q, qd, qdd = tree.q, tree.qd, tree.qdd
     R0 = ca.substitute(R_q, qdd, ca.SX.zeros(nq))
@@ -318,8 +319,10 @@ def _solve_motion(tree, R_q, phi, t, ws, bodies) -> _Motion:
         # Rows found redundant at the assembled initial configuration are switched off by
         # their entry of ``active`` (0): then λ, μ, ν of that row are 0 and its equation drops.
         phi_q = ca.jacobian(phi, q)
+        # (the rates of prescribed motion in Φ bring back signal placeholders: resolved)
         phid = der_with(phi, ws.der_table)
         gamma = ca.substitute(der_with(phid, ws.der_table), qdd, ca.SX.zeros(nq))
+        phid, gamma = resolve([phid, gamma])
         act = ca.SX.sym("loops.active", nc)
         on, off = ca.diag(act), ca.diag(1 - act)
         KKT = ca.blockcat([[A_MM, ca.mtimes(phi_q.T, on)], [ca.mtimes(on, phi_q), off]])

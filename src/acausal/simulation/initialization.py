@@ -45,9 +45,12 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     eqs = [h - v for h, v in zip(hard, targets)]
     phi = model.lagrange.phi
     if phi.numel():
-        eqs += [phi, ca.jtimes(phi, model.lagrange.q, model.lagrange.qd)
-                + ca.jacobian(phi, model.t)]
-        labels += [f"loop constraint {i}" for i in range(phi.numel())] * 2
+        # Φ̇ along the model's own motion (states other than q, e.g. a Speed source's angle,
+        # may enter Φ), with the stabilizing multipliers at their consistent value 0
+        xdot = ca.substitute(model.ode, model.z, ca.SX.zeros(model.z.numel()))
+        eqs += [phi, ca.jtimes(phi, model.x, xdot) + ca.jacobian(phi, model.t)]
+        labels += [f"loop constraint {n}" for n in model.loop_rows]
+        labels += [f"loop velocity constraint {n}" for n in model.loop_rows]
     if model.z.numel():
         eqs.append(model.alg)
         labels += [f"algebraic equation for {n}" for n in model.z_names]

@@ -138,6 +138,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     def integrate(plugin, opts):
         X = [np.asarray(xs, dtype=float).reshape(-1, 1)]
         Z = [np.asarray(zs, dtype=float).reshape(-1, 1)]
+        if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
+            return np.zeros((0, grid.size)), np.zeros((0, grid.size))
         x, z = X[0][:, 0], Z[0][:, 0]
         for a, b, pts in _segments(grid, model.event_times(p, grid[0], grid[-1])):
             # integrate up to just before an event, restart at it (never step over a jump)
