@@ -11,13 +11,12 @@ right-hand side and the recorded variables, and the pieces of Lagrange's equatio
 """
 from __future__ import annotations
 
-import difflib
 from dataclasses import dataclass, field
 
 import casadi as ca
 import numpy as np
 
-from ..core.errors import ParameterError
+from ..core.errors import ParameterError, did_you_mean
 
 
 class Lagrange:
@@ -183,7 +182,7 @@ class CompiledModel:
         for name, v in (overrides or {}).items():
             if name not in values:
                 raise ParameterError(f"model '{self.name}' has no parameter '{name}'"
-                                     f"{_suggest(name, values)}")
+                                     f"{did_you_mean(name, values)}")
             par = self.params[self.param_names.index(name)][4]
             values[name] = par.check_scalar(v, name.rsplit(".", 1)[0])
         return np.array([values[n] for n in self.param_names], dtype=float)
@@ -299,7 +298,7 @@ class CompiledModel:
             return self.recorded[self.recorded_names.index(name)]
         except ValueError:
             raise KeyError(f"no variable '{name}' in model '{self.name}'"
-                           f"{_suggest(name, self.recorded_names)}") from None
+                           f"{did_you_mean(name, self.recorded_names)}") from None
 
     def mobility(self, params: dict | None = None, x0: dict | None = None,
                  guess: dict | None = None, t0: float = 0.0):
@@ -334,8 +333,3 @@ class CompiledModel:
         return (f"<CompiledModel '{self.name}': {len(self.x_names)} states, "
                 f"{len(self.z_names)} algebraic, {len(self.params)} parameters, "
                 f"{len(self.inputs)} inputs, {len(self.outputs)} outputs>")
-
-
-def _suggest(name: str, options) -> str:
-    close = difflib.get_close_matches(name, list(options), n=3)
-    return f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""

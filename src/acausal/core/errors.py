@@ -1,4 +1,11 @@
 """The exceptions of acausal: every user mistake is one of these, naming the part at fault."""
+import difflib
+
+
+def did_you_mean(name: str, options) -> str:
+    """'; did you mean 'a', 'b'?' for the options closest to a mistyped ``name`` (or '')."""
+    close = difflib.get_close_matches(name, list(options), n=3)
+    return f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
 
 
 class AcausalError(Exception):

@@ -1,9 +1,9 @@
 """Result: the simulated trajectories of every variable, by dotted name."""
 from __future__ import annotations
 
-import difflib
-
 import numpy as np
+
+from ..core.errors import did_you_mean
 
 
 class Result:
@@ -32,10 +32,8 @@ class Result:
         try:
             return self._row(self._index[name])
         except KeyError:
-            close = difflib.get_close_matches(name, self.names, n=3)
-            hint = f"; did you mean {', '.join(map(repr, close))}?" if close else ""
-            raise KeyError(f"no variable '{name}' in the result of '{self.model_name}'{hint}") \
-                from None
+            raise KeyError(f"no variable '{name}' in the result of '{self.model_name}'"
+                           f"{did_you_mean(name, self.names)}") from None
 
     def __contains__(self, name: str) -> bool:
         return name in self._index

@@ -1,0 +1,104 @@
+"""Static equilibrium: q̇ = q̈ = 0 (and every other state at rest) for given inputs and
+parameters.
+
+The unknowns are all states x and algebraic variables z; the equations are the model's own,
+ẋ = f(x, z, u, p, t) = 0 and 0 = g(x, z, u, p, t): for a mechanism, v = 0, the net
+generalized forces vanish and, with closed loops, Φ(q) = 0 (their GGL multipliers μ, ν then
+vanish too). They are solved by Gauss–Newton from the start values (``guess`` by state name),
+the loops assembled first, with steps limited so the solution stays on the branch of the
+guess; a singular Jacobian (a free rigid-body motion, a neutral direction) gives the
+equilibrium closest to the guess. The loop multipliers λ [N or N.m, per constraint row] come
+from Φ_qᵀ λ = −R0(q, 0) (R0: everything but inertia in M q̈ + R0 + Φ_qᵀ λ = 0); the joint
+reactions are the recorded port flows, e.g. ``eq["rev4.frame_a.fx"]``.
+"""
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+
+import casadi as ca
+import numpy as np
+
+from .errors import AnalysisError
+from .point import OperatingPoint, model_function, operating_point
+
+
+@dataclass
+class Equilibrium(OperatingPoint):
+    """An equilibrium point (an OperatingPoint: ``eq["name"]`` is any variable there);
+    ``multipliers``: the loop constraints' λ by row name; ``residual``: max |ẋ|, |g| there."""
+    multipliers: dict = field(default_factory=dict)
+    residual: float = 0.0
+
+
+def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: float = 0.0,
+                guess: dict | None = None, tol: float = 1e-10,
+                max_iter: int = 100) -> Equilibrium:
+    """The equilibrium of ``model`` at time t [s] with inputs ``u`` and parameters ``params``
+    (by name), nearest to ``guess`` (state names -> values; default the start values).
+    Raises AnalysisError naming the equations that do not vanish when none is found."""
+    with warnings.catch_warnings():          # the guess is moved onto the loops: expected
+        warnings.filterwarnings("ignore", message="initial values changed")
+        start = operating_point(model, {}, u=u, params=params, t=t, guess=guess)
+    p, uv = start.p, start.u
+    w_sym = ca.vertcat(model.x, model.z)
+    H = ca.vertcat(model.ode, model.alg)
+    F = ca.Function("equilibrium", [w_sym, model.t, model.p, model.u],
+                    [H, ca.jacobian(H, w_sym)])
+    nx = len(model.x_names)
+    w = np.concatenate([start.x, start.z])
+    for _ in range(max_iter):
+        h, J = _eval(F, w, t, p, uv)
+        if np.max(np.abs(h), initial=0.0) <= tol:
+            break
+        step = -np.linalg.lstsq(J, h, rcond=1e-13)[0]
+        big = np.max(np.abs(step[:nx]), initial=0.0)
+        if big > 0.5:                      # stay on the guess's branch
+            step *= 0.5 / big
+        norm0 = np.linalg.norm(h)
+        for _ in range(30):                # backtrack while the residual grows
+            h_new = _eval(F, w + step, t, p, uv)[0]
+            if np.linalg.norm(h_new) < norm0 or np.linalg.norm(step) < 1e-14:
+                break
+            step = step / 2
+        w = w + step
+        h = h_new
+        if np.linalg.norm(step) < 1e-15 * (1 + np.linalg.norm(w)):
+            break
+    res = float(np.max(np.abs(h), initial=0.0))
+    if res > tol:
+        given = dict(zip(model.input_names, map(float, uv)))
+        raise AnalysisError(f"no equilibrium of '{model.name}' found near the guess (inputs "
+                            f"{given}): these do not vanish: {_name_residuals(model, h, tol)}; "
+                            f"change the inputs, parameters or guess")
+    x, z = w[:nx], w[nx:]
+    return Equilibrium(model, float(t), x, z, p, uv, _multipliers(model, x, z, p, uv, t), res)
+
+
+def _eval(F, w, t, p, u):
+    h, J = F(w, t, p, u)
+    return np.array(h, dtype=float).ravel(), np.array(J, dtype=float)
+
+
+def _name_residuals(model, h, tol) -> str:
+    rows = model.loop_rows
+    names = [f"d({n})/dt" for n in model.x_names]
+    for n in model.z_names:
+        if n.startswith("loops.mu_"):
+            names.append(f"loop constraint {rows[int(n.rsplit('_', 1)[1])]}")
+        elif n.startswith("loops.nu_"):
+            names.append(f"rate of loop constraint {rows[int(n.rsplit('_', 1)[1])]}")
+        else:
+            names.append(f"algebraic equation of {n}")
+    order = np.argsort(-np.abs(h))
+    return ", ".join(f"{names[k]} = {h[k]:.3g}" for k in order if abs(h[k]) > tol)
+
+
+def _multipliers(model, x, z, p, u, t) -> dict:
+    L = model.lagrange
+    if not L.phi.numel():
+        return {}
+    f = model_function(model, [L.R0, L.phi_q], "loops")
+    R0, Pq = (np.array(v, dtype=float) for v in f(t, x, z, p, u))
+    lam = np.linalg.lstsq(Pq.T, -R0.ravel(), rcond=None)[0]
+    return dict(zip(model.loop_rows, map(float, lam)))

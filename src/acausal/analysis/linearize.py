@@ -1,0 +1,135 @@
+"""Linearization of a compiled model about an operating point: A, B, C, D by name.
+
+ODE models: A = ∂f/∂x, B = ∂f/∂u, C = ∂y/∂x, D = ∂y/∂u by algorithmic differentiation.
+Algebraic variables that are not loop multipliers (massless nodes, components' algebraic
+variables) are eliminated by the implicit function theorem: δz = −g_z⁻¹ (g_x δx + g_u δu).
+
+Closed loops (reduction to independent coordinates): the compiled model's states hold all
+coordinates q and rates v, tied by Φ(q, t) = 0 and Φ̇ = Φ_q v + Φ_t = 0 (its GGL multipliers
+μ, ν vanish on these). At the point, the rank-revealing QR factorization (column pivoting)
+of Φ_q picks r = rank Φ_q dependent coordinates q_D (the best-conditioned block Φ_D; or the
+complement of ``independent``, if given); the others q_I are independent. A change of the
+independent states δx_I = (δq_I, δv_I, δ other) fixes the dependent ones through the
+linearized constraints:
+
+    δq_D = −Φ_D⁺ (Φ_I δq_I + Φ_o δo),  δv_D = −Φ_D⁺ (Φ_I δv_I + ∂Φ̇/∂q δq + ∂Φ̇/∂o δo),
+
+i.e. δq lies in the null space of Φ_q (velocities likewise, plus the curvature term that
+vanishes at rest). With δx_full = T δx_I: A = S (∂f/∂x) T, B = S ∂f/∂u, C = (∂y/∂x) T,
+D = ∂y/∂u, where S picks the independent rows: the reduced model is exact to first order on
+the constraint manifold and has no spurious (constraint) eigenvalues.
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+import scipy.linalg
+
+from .errors import AnalysisError
+from .linear import LinearModel
+from .point import index_of, model_function, operating_point
+
+
+def linearize(model, x=None, *, u: dict | None = None, params: dict | None = None,
+              t: float = 0.0, guess: dict | None = None, inputs: list[str] | None = None,
+              outputs: list[str] | None = None,
+              independent: list[str] | None = None) -> LinearModel:
+    """The linear model of ``model`` about the point x (an OperatingPoint, e.g. from
+    ``equilibrium``, or values by the name of any variable, assembled as simulate's x0),
+    with inputs u and parameters ``params`` by name at time t [s].
+
+    inputs      names of the model's Inputs to keep as columns of B, D (default: all);
+    outputs     names of any recorded variables (default: the model's Outputs);
+    independent coordinates to keep as states of a model with closed loops (default: chosen
+                by QR with column pivoting of Φ_q; see the module docstring).
+    """
+    pt = operating_point(model, x, u=u, params=params, t=t, guess=guess)
+    inputs = model.input_names if inputs is None else list(inputs)
+    outputs = model.output_names if outputs is None else list(outputs)
+    iu = index_of(model.input_names, inputs, "input", model.name)
+    Y = ca.vertcat(*[_expression(model, n) for n in outputs]) if outputs else ca.SX(0, 1)
+    f = model_function(model, [
+        ca.jacobian(e, v) for e in (model.ode, model.alg, Y) for v in (model.x, model.z, model.u)
+    ] + [Y], "jacobians")
+    J = [np.array(m, dtype=float).reshape(m.shape) for m in f(pt.t, pt.x, pt.z, pt.p, pt.u)]
+    (fx, fz, fu, gx, gz, gu, yx, yz, yu), y0 = J[:9], np.array(J[9]).ravel()
+    fu, gu, yu = fu[:, iu], gu[:, iu], yu[:, iu]
+    nx = len(model.x_names)
+
+    # algebraic variables other than the loops' μ, ν: implicit function theorem
+    zn = model.z_names
+    loop = [k for k, n in enumerate(zn) if n.startswith("loops.")]
+    other = [k for k in range(len(zn)) if k not in loop]
+    dz_x, dz_u = np.zeros((len(zn), nx)), np.zeros((len(zn), len(iu)))
+    if other:
+        G = gz[np.ix_(other, other)]
+        if np.linalg.matrix_rank(G) < len(other):
+            raise AnalysisError(f"linearize '{model.name}': the algebraic equations are "
+                                f"singular for {', '.join(zn[k] for k in other)} here")
+        dz_x[other] = -np.linalg.solve(G, gx[other])
+        dz_u[other] = -np.linalg.solve(G, gu[other])
+    Ax, Bx = fx + fz @ dz_x, fu + fz @ dz_u
+    Cx, Dx = yx + yz @ dz_x, yu + yz @ dz_u
+
+    T, keep = np.eye(nx), list(range(nx))
+    if loop:
+        T, keep = _loop_basis(model, gx[loop] + gz[loop] @ dz_x, gu[loop] + gz[loop] @ dz_u,
+                              independent)
+    states = [model.x_names[k] for k in keep]
+    full = T if not other else np.vstack([T, dz_x[other] @ T])
+    full_names = model.x_names + [zn[k] for k in other]
+    L = model.lagrange
+    coords = [n for n, r in zip(L.q_names, L.qd_names) if n in states and r in states]
+    rates = [L.qd_names[L.q_names.index(n)] for n in coords]
+    mass, V = None, None
+    if coords:
+        M = ca.Function("M", [model.t, model.x, model.z, model.p, model.u], [L.M],
+                        {"allow_free": True})
+        M = np.array(M(pt.t, pt.x, pt.z, pt.p, pt.u), dtype=float)
+        V = full[[full_names.index(n) for n in L.q_names]][:, [states.index(c) for c in coords]]
+        mass = V.T @ M @ V
+    return LinearModel(A=Ax[keep] @ T, B=Bx[keep], C=Cx @ T, D=Dx, states=states,
+                       inputs=inputs, outputs=outputs, x_op=pt.x[keep], u_op=pt.u[iu],
+                       y_op=y0, full_states=full_names, expansion=full, coordinates=coords,
+                       rates=rates, mass=mass, q_names=list(L.q_names), q_basis=V)
+
+
+def _expression(model, name):
+    try:
+        return model.expression(name)
+    except KeyError as e:
+        raise AnalysisError(f"linearize: {e.args[0]}") from None
+
+
+def _loop_basis(model, Cx: np.ndarray, Cu: np.ndarray, independent):
+    """(T, independent states): δx = T δx_I on the linearized constraints Cx δx = 0, the
+    dependent states being the coordinates picked from Φ_q (and their rates)."""
+    L, xn = model.lagrange, model.x_names
+    if np.abs(Cu).max(initial=0.0) > 1e-12 * max(1.0, np.abs(Cx).max(initial=0.0)):
+        raise AnalysisError(f"linearize '{model.name}': the loop constraints depend on the "
+                            f"inputs here; not supported")
+    zn = [n for n in model.z_names if n.startswith("loops.")]
+    pos_rows = [k for k, n in enumerate(zn) if n.startswith("loops.mu")]
+    iq = [xn.index(n) for n in L.q_names]
+    iv = [xn.index(n) for n in L.qd_names]
+    Pq = Cx[np.ix_(pos_rows, iq)]
+    tol = 1e-9 * max(1.0, np.abs(Pq).max(initial=0.0))
+    rank = np.linalg.matrix_rank(Pq, tol)
+    if independent is None:
+        piv = scipy.linalg.qr(Pq, pivoting=True, mode="r")[1]
+        dep = sorted(piv[:rank])
+    else:
+        ind = index_of(L.q_names, independent, "coordinate", model.name)
+        dep = [k for k in range(len(iq)) if k not in ind]
+        if len(dep) != rank or np.linalg.matrix_rank(Pq[:, dep], tol) < rank:
+            raise AnalysisError(
+                f"linearize '{model.name}': independent coordinates {independent} do not "
+                f"fix the others through the loop constraints (Φ_q has rank {rank} over "
+                f"{len(iq)} coordinates: choose {len(iq) - rank} coordinates whose "
+                f"complement's columns of Φ_q are independent)")
+    dep_x = [iq[k] for k in dep] + [iv[k] for k in dep]
+    keep = [k for k in range(len(xn)) if k not in dep_x]
+    T = np.zeros((len(xn), len(keep)))
+    T[keep, range(len(keep))] = 1.0
+    T[dep_x] = -np.linalg.lstsq(Cx[:, dep_x], Cx[:, keep], rcond=None)[0]
+    return T, keep

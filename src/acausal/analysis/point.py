@@ -1,0 +1,97 @@
+"""Operating points: a consistent (t, x, z, p, u) of a compiled model, by name.
+
+Every analysis works at such points. Inputs and parameters are given by dotted name (as to
+``simulate``); states by the dotted name of any variable (as ``x0``, held exactly; closed loops
+are assembled around them). Where closed loops have rows that are redundant at the point, the
+model's ``loops.active`` switches are set as ``simulate`` sets them.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from ..simulation.initialization import initial_state
+from ..core.errors import did_you_mean
+from .errors import AnalysisError
+
+
+@dataclass
+class OperatingPoint:
+    """A point of ``model``: time t [s], states x, algebraic variables z, parameters p and
+    inputs u, as vectors in the model's order (``x_names``, ``z_names``, ``param_names``,
+    ``input_names``). ``point["name"]`` is any recorded variable there."""
+    model: object
+    t: float
+    x: np.ndarray
+    z: np.ndarray
+    p: np.ndarray
+    u: np.ndarray
+
+    def __getitem__(self, name: str) -> float:
+        m = self.model
+        if name not in m.recorded_names:
+            raise KeyError(f"no variable '{name}' in model '{m.name}'"
+                           f"{did_you_mean(name, m.recorded_names)}")
+        kind, row = m.recorded_layout[m.recorded_names.index(name)]
+        if kind == "x":
+            return float(self.x[row])
+        return float(np.asarray(m.recorded_function(self.t, self.x, self.z, self.p,
+                                                    self.u)).ravel()[row])
+
+    @property
+    def state(self) -> dict[str, float]:
+        """States by name."""
+        return dict(zip(self.model.x_names, map(float, self.x)))
+
+
+def index_of(names: list[str], wanted, what: str, model_name: str) -> list[int]:
+    """Positions of ``wanted`` in ``names``; an AnalysisError names an unknown one."""
+    out = []
+    for w in wanted:
+        if w not in names:
+            raise AnalysisError(f"model '{model_name}' has no {what} '{w}'{did_you_mean(w, names)}"
+                                f" (its {what}s: {', '.join(names[:10]) or 'none'})")
+        out.append(names.index(w))
+    return out
+
+
+def input_vector(model, values: dict | None) -> np.ndarray:
+    """Input values [start values, with ``values`` by name]."""
+    u = np.array([i[1] for i in model.inputs], dtype=float)
+    for k, v in zip(index_of(model.input_names, list(values or {}), "input", model.name),
+                    (values or {}).values()):
+        u[k] = float(v)
+    return u
+
+
+def set_loop_switches(model, x, z, p, t) -> np.ndarray:
+    """p with the ``loops.active`` switches of the rows redundant at (x, z) set to 0."""
+    if model.lagrange.phi.numel():
+        active, _ = model.mobility_at(x, z, p, t)
+        p = p.copy()
+        p[[i for i, n in enumerate(model.param_names) if n.startswith("loops.active")]] = active
+    return p
+
+
+def operating_point(model, x=None, *, u: dict | None = None, params: dict | None = None,
+                    t: float = 0.0, guess: dict | None = None) -> OperatingPoint:
+    """The point of ``model`` at time t [s] with inputs ``u`` and parameters ``params`` (by
+    name; defaults otherwise) where the variables named in ``x`` have the given values
+    (closed loops assembled, ``guess`` as for simulate). ``x`` may also be an
+    OperatingPoint (returned as is; then u, params, t must not be given)."""
+    if isinstance(x, OperatingPoint):
+        if u is not None or params is not None or guess is not None:
+            raise AnalysisError("give either an OperatingPoint or u/params/guess, not both")
+        return x
+    p = model.param_vector(params)
+    uv = input_vector(model, u)
+    xs, zs = initial_state(model, dict(x or {}), p, uv, float(t), guess)
+    p = set_loop_switches(model, xs, zs, p, t)
+    return OperatingPoint(model, float(t), np.asarray(xs, float), np.asarray(zs, float), p, uv)
+
+
+def model_function(model, outs: list, name: str) -> ca.Function:
+    """A casadi Function (t, x, z, p, u) -> outs."""
+    return ca.Function(name, [model.t, model.x, model.z, model.p, model.u], outs)
