@@ -24,6 +24,7 @@ import numpy as np
 
 import acausal
 from acausal.components.planar import Body, Fixed, Prismatic, Revolute, World
+from acausal.components.rotational import Torque
 from four_bar import add_link, energy, simulate_assembled      # the shared linkage pieces
 
 R, L, H = 0.2, 0.6, 0.05                     # m: crank, rod, offset of the slider's track
@@ -32,13 +33,19 @@ I_SLIDER = 0.01                              # kg.m² (the slider does not turn)
 
 
 class SliderCrank(acausal.Model):
-    """Crank, connecting rod (slender rods, I = m L²/12) and a slider on a horizontal track."""
+    """Crank, connecting rod (slender rods, I = m L²/12) and a slider on a horizontal track;
+    ``driven``: a Torque source on the crank's flange from the model Input ``tau`` [N.m]."""
 
-    def __init__(self, name="slider_crank"):
+    def __init__(self, name="slider_crank", driven: bool = False):
         super().__init__(name)
         self.world = World()
         self.O, self.track = Fixed(), Fixed(r=(0.0, -H))
-        self.rev1, self.rev2, self.rev3 = Revolute(), Revolute(), Revolute()
+        self.rev1, self.rev2, self.rev3 = Revolute(useFlange=driven), Revolute(), Revolute()
+        if driven:
+            self.tau = acausal.Input(unit="N.m", description="torque driving the crank")
+            self.motor = Torque()
+            self.connect(self.tau.y, self.motor.tau)
+            self.connect(self.motor.flange, self.rev1.flange_a)
         self.prismatic = Prismatic(r=(1.0, 0.0))
         self.slider = Body(m=M_SLIDER, I=I_SLIDER)
         self.connect(self.O.frame, self.rev1.frame_a)

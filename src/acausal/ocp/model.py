@@ -1,0 +1,147 @@
+"""The compiled model as an optimal control problem sees it: names, kinds and symbols."""
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import ParameterError, did_you_mean
+from .errors import OCPError
+
+TIME = "time"
+
+
+class ModelView:
+    """Names of a compiled model sorted by kind, with their CasADi expressions.
+
+    Kinds: 'state' (``x_names``), 'control' (the model's Inputs, ``input_names``),
+    'parameter' (``param_names``), 'time', and 'variable' (any other recorded variable,
+    ``compiled.expression``). Parameter values are the defaults with ``params`` overrides;
+    those named in ``free`` become decision variables (their value is then the guess).
+    """
+
+    def __init__(self, compiled, params: dict | None = None, free=()):
+        self.compiled = compiled
+        self.p_values = compiled.param_vector(params)
+        self.free = list(free)
+        for name in self.free:
+            if name not in compiled.param_names:
+                raise ParameterError(f"model '{compiled.name}' has no parameter '{name}' to "
+                                     f"estimate{did_you_mean(name, compiled.param_names)}")
+        if len(set(self.free)) != len(self.free):
+            raise OCPError(f"free parameters listed twice: {self.free}")
+        self.free_index = [compiled.param_names.index(n) for n in self.free]
+        self._kinds = {TIME: "time"}
+        self._kinds.update({n: "variable" for n in compiled.recorded_names})
+        self._kinds.update({n: "parameter" for n in compiled.param_names})
+        self._kinds.update({n: "control" for n in compiled.input_names})
+        self._kinds.update({n: "state" for n in compiled.x_names})
+        # fixed parameters as numbers (folded into the arithmetic, as in simulate), free
+        # ones as the symbols they are
+        fold = [ca.SX(v) for v in self.p_values]
+        for i in self.free_index:
+            fold[i] = compiled.p[i]
+        self._fold = ca.vertcat(*fold) if fold else ca.SX(0, 1)
+        self.f = self.function([compiled.ode, compiled.alg], "f", ["xdot", "alg"])
+        start = np.asarray(compiled.start(self.p_values), dtype=float).ravel()
+        self.x_start, self.z_start = start[:self.nx], start[self.nx:]
+        self.u_start = np.array([i[1] for i in compiled.inputs], dtype=float)
+        self._split_algebraic()
+
+    # ---- sizes and names --------------------------------------------------------------------
+    @property
+    def nx(self) -> int:
+        return self.compiled.x.numel()
+
+    @property
+    def nz(self) -> int:
+        return self.compiled.z.numel()
+
+    @property
+    def nu(self) -> int:
+        return self.compiled.u.numel()
+
+    def kind(self, name: str) -> str:
+        """'state', 'control', 'parameter', 'time' or 'variable'; OCPError if unknown."""
+        try:
+            return self._kinds[name]
+        except (KeyError, TypeError):
+            raise OCPError(f"model '{self.compiled.name}' has no variable '{name}'"
+                           f"{did_you_mean(str(name), self._kinds)}") from None
+
+    def index(self, name: str) -> int:
+        """Row of a state, control or parameter in x, u or p."""
+        c, kind = self.compiled, self.kind(name)
+        names = {"state": c.x_names, "control": c.input_names, "parameter": c.param_names}[kind]
+        return names.index(name)
+
+    # ---- symbols ------------------------------------------------------------------------------
+    def sym(self, name: str) -> ca.SX:
+        """The SX expression of ``name`` in the model's symbols t, x, z, p, u."""
+        c, kind = self.compiled, self.kind(name)
+        if kind == "time":
+            return c.t
+        if kind == "state":
+            return c.x[self.index(name)]
+        if kind == "control":
+            return c.u[self.index(name)]
+        if kind == "parameter":
+            return c.p[self.index(name)]
+        return c.expression(name)
+
+    def expression(self, expr) -> ca.SX:
+        """A scalar SX in the model's symbols from an SX, a name, or a callable receiving
+        a mapping name -> SX (``lambda v: v["F"]**2``)."""
+        if isinstance(expr, str):
+            expr = self.sym(expr)
+        elif callable(expr):
+            expr = expr(Symbols(self))
+        if isinstance(expr, (int, float)):
+            expr = ca.SX(expr)
+        if not isinstance(expr, ca.SX) or expr.numel() != 1:
+            raise OCPError("an integrand must be a scalar CasADi SX expression of the model's "
+                           "symbols, a variable name, or a callable v -> v['name'] ... "
+                           f"(got {type(expr).__name__})")
+        return expr
+
+    def function(self, exprs: list, name: str = "g", outputs=("g",)) -> ca.Function:
+        """Function (x, u, p, z, t) -> ``exprs`` (stacked into one output unless ``outputs``
+        names each), the argument order of compiled.f; the fixed parameters' values are
+        folded in (only the free entries of p are read)."""
+        c = self.compiled
+        outs = [ca.vertcat(*exprs)] if len(outputs) == 1 else list(exprs)
+        outs = ca.substitute(outs, [c.p], [self._fold])
+        return ca.Function(name, [c.x, c.u, c.p, c.z, c.t], outs,
+                           ["x", "u", "p", "z", "t"], list(outputs))
+
+    # ---- algebraic structure ------------------------------------------------------------------
+    def _split_algebraic(self):
+        """Which algebraic variables the algebraic equations determine (``z_alg``: index 1,
+        e.g. massless nodes) and which rows hold on the states alone (``rows_x``: the
+        loops' Φ = 0, Φ̇ = 0 of the stabilized index-2 form, whose multipliers μ, ν enter
+        only the state equations and are 0 on the exact solution). Judged on the equations
+        with the fixed parameters' values (``loops.active`` switches rows to index 1)."""
+        c = self.compiled
+        alg = ca.substitute(c.alg, c.p, ca.DM(self.p_values))
+        J = ca.jacobian(alg, c.z).sparsity() if self.nz else ca.Sparsity(0, 0)
+        rows, cols = J.get_triplet()
+        self.z_alg = sorted(set(cols))
+        self.rows_z = sorted(set(rows))
+        self.rows_x = [r for r in range(c.alg.numel()) if r not in set(rows)]
+
+
+class Symbols(Mapping):
+    """Read-only mapping name -> SX of a model (what integrand callables receive)."""
+
+    def __init__(self, view: ModelView):
+        self._view = view
+
+    def __getitem__(self, name):
+        return self._view.sym(name)
+
+    def __iter__(self):
+        return iter(self._view._kinds)
+
+    def __len__(self):
+        return len(self._view._kinds)

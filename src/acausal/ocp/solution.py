@@ -1,0 +1,95 @@
+"""Solution: an OCP's optimum, with every variable of the model by name along it."""
+from __future__ import annotations
+
+import os
+
+import casadi as ca
+import numpy as np
+
+from ..simulation.result import Result
+from .errors import OCPError
+
+
+class Solution(Result):
+    """The optimum of an OCP on its mesh nodes ``t`` [s] (N + 1 times).
+
+    ``sol["cart.s"]``: any state, control or recorded variable at the nodes (a control's
+    value on [t_k, t_k+1) is given at t_k and held at t_N); ``sol.control(name)``: a control's
+    N interval values; ``sol.parameters``: the free parameters' values; ``sol.cost``,
+    ``sol.T`` [s], ``sol.status`` (IPOPT's return status), ``sol.iterations``, ``sol.stats``;
+    ``sol.value(expr)``: any MX expression of the problem's symbols (``ocp["x"]``,
+    ``ocp.integral(...)``, ``ocp.T``) at the optimum.
+    """
+
+    def __init__(self, ocp, nlp, w: np.ndarray, cost: float, stats: dict, resolve):
+        self._w, self._nlp_w, self._resolve = w, nlp.w, resolve
+        n, view, c = ocp.nodes, ocp.view, ocp.view.compiled
+        t, X, U, Z, P = (self.value(e) for e in (n.t, n.X, n.U_nodes, n.Z, n.P))
+        t, P = np.atleast_1d(t).ravel(), np.atleast_1d(P).reshape(-1, 1)
+        X, U, Z = (np.asarray(a, dtype=float).reshape(-1, t.size) for a in (X, U, Z))
+
+        def recorded():
+            V = c.recorded_function.map(t.size)(t.reshape(1, -1), X, Z, P, U)
+            return np.asarray(V.full(), dtype=float)
+
+        super().__init__(t, c.recorded_names, c.recorded_layout, c.recorded_units,
+                         {"x": X, "r": recorded}, c.name)
+        self._U, self._view = U[:, :-1], view
+        for name, _, unit, _ in c.inputs:          # the Inputs' declared units
+            self.units[name] = self.units.get(name) or unit
+        self.cost, self.T = cost, float(t[-1] - t[0])
+        self.stats, self.status = stats, stats["return_status"]
+        self.iterations = stats["iter_count"]
+        self.parameters = {name: float(P[i, 0]) for name, i in zip(view.free, view.free_index)}
+        self.method = ocp.method
+
+    def value(self, expr):
+        """The value of an MX expression of the problem's symbols at the optimum: a float
+        for a scalar, a 1-D array for a vector, else a 2-D array."""
+        try:
+            f = ca.Function("value", [self._nlp_w], [self._resolve(expr)])
+        except RuntimeError:
+            raise OCPError("the expression depends on symbols this solution does not know (of "
+                           "another OCP, or an integral made after the solve)") from None
+        v = np.array(f(self._w), dtype=float)
+        return float(v[0, 0]) if v.size == 1 else (v.ravel() if 1 in v.shape else v)
+
+    def control(self, name: str) -> np.ndarray:
+        """A control's N values, one per interval [t_k, t_k+1)."""
+        if self._view.kind(name) != "control":
+            raise KeyError(f"'{name}' is not a control; controls: "
+                           f"{self._view.compiled.input_names}")
+        return self._U[self._view.index(name)]
+
+    def plot(self, *names: str, path=None):
+        """One panel per name (default: every state and control), controls as steps; saved
+        to ``path`` if given (a directory: ``ocp_<model>.png`` in it). Returns the figure."""
+        import matplotlib
+        if path is not None:
+            matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        c = self._view.compiled
+        names = names or tuple(c.x_names) + tuple(c.input_names)
+        fig, axes = plt.subplots(len(names), 1, sharex=True, squeeze=False,
+                                 figsize=(7, 1.8 * len(names) + 1))
+        for ax, name in zip(axes[:, 0], names):
+            unit = self.units.get(name, "")
+            step = "post" if name in c.input_names else None
+            if step:
+                ax.step(self.t, self[name], where=step)
+            else:
+                ax.plot(self.t, self[name], ".-", ms=3)
+            ax.set_ylabel(f"{name} [{unit}]" if unit else name, fontsize=8)
+            ax.grid(True)
+        axes[-1, 0].set_xlabel("time [s]")
+        axes[0, 0].set_title(f"{c.name}: cost {self.cost:.6g}, T = {self.T:.4g} s "
+                             f"({self.status})", fontsize=9)
+        if path is not None:
+            if os.path.isdir(path):
+                path = os.path.join(path, f"ocp_{c.name}.png")
+            fig.savefig(path, dpi=120, bbox_inches="tight")
+        return fig
+
+    def __repr__(self):
+        return (f"<Solution of '{self.model_name}': cost {self.cost:.6g}, T = {self.T:g} s, "
+                f"{self.status} in {self.iterations} iterations>")

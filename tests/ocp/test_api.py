@@ -1,0 +1,138 @@
+"""acausal.ocp's user-facing checks: unknown names (with a suggestion), bad bounds, bad
+options and failed solves raise the package's errors naming the variable at fault; bounds and
+boundary values on recorded variables hold at the nodes; free final time and the plot.
+
+Physics where it applies: the cart-pole (examples/ocp_cartpole.py) with the tip kept below a
+height at the nodes, checked on the tip's position computed by hand from x and θ.
+"""
+import sys
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+import pytest
+
+import acausal
+from acausal.core.errors import AcausalError, ParameterError
+from acausal.ocp import OCP, FreeTime, OCPError, SolveError
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
+import ocp_cartpole as cartpole  # noqa: E402
+import ocp_parameter_estimation as oscillator  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def osc():
+    return acausal.compile(oscillator.Oscillator())
+
+
+@pytest.fixture(scope="module")
+def cp():
+    return acausal.compile(cartpole.CartPole())
+
+
+def test_unknown_names_suggest_the_right_one(osc):
+    ocp = OCP(osc, N=5, T=1.0)
+    with pytest.raises(OCPError, match=r"no variable 'mass.ss'.*did you mean 'mass.s'"):
+        ocp["mass.ss"]
+    with pytest.raises(OCPError, match=r"'spring.cc'.*did you mean 'spring.c'"):
+        ocp.bounds("spring.cc", 0, 1)
+    with pytest.raises(OCPError, match="did you mean 'mass.v'"):
+        ocp.initial({"mass.vv": 0.0})
+    with pytest.raises(OCPError, match="did you mean 'mass.s'"):
+        ocp.integral(lambda v: v["mass.sx"] ** 2)
+    with pytest.raises(ParameterError, match=r"no parameter 'spring.k'.*did you mean"):
+        OCP(osc, N=5, free=["spring.k"])
+    with pytest.raises(ParameterError, match="'damper.dd'"):
+        OCP(osc, N=5, params={"damper.dd": 1.0})
+    assert issubclass(OCPError, AcausalError)
+
+
+def test_bad_bounds_guesses_and_options(osc):
+    ocp = OCP(osc, N=5, T=1.0)
+    with pytest.raises(OCPError, match=r"bounds of 'mass.s': lower 1 > upper -1"):
+        ocp.bounds("mass.s", 1.0, -1.0)
+    with pytest.raises(OCPError, match=r"'spring.c' is a fixed parameter.*free="):
+        ocp.bounds("spring.c", 0.0, 1.0)
+    with pytest.raises(OCPError, match="lower bound of 'mass.s' is NaN"):
+        ocp.bounds("mass.s", float("nan"), 1.0)
+    with pytest.raises(OCPError, match="guess of 'mass.s'.*6 values"):
+        ocp.guess({"mass.s": [1.0, 2.0]})
+    with pytest.raises(OCPError, match="'spring.c' is not a decision variable"):
+        ocp.guess({"spring.c": 1.0})
+    with pytest.raises(OCPError, match="'spring.c' is a parameter"):
+        ocp.final({"spring.c": 1.0})
+    with pytest.raises(OCPError, match="Python cannot chain"):
+        ocp.subject_to(ocp["mass.s"] + 1.0)
+    with pytest.raises(OCPError, match="cost must be a scalar"):
+        ocp.minimize(ocp["mass.s"])
+    ocp.bounds("mass.s", -0.1, 0.1)
+    ocp.initial({"mass.s": 0.5})
+    with pytest.raises(OCPError, match=r"initial value 0.5 of 'mass.s' is outside its bounds"):
+        ocp.solve()
+    with pytest.raises(OCPError, match="method 'euler'"):
+        OCP(osc, N=5, method="euler")
+    with pytest.raises(OCPError, match="scheme 'gauss'"):
+        OCP(osc, N=5, scheme="gauss")
+    with pytest.raises(OCPError, match="N must be a positive integer"):
+        OCP(osc, N=0)
+    with pytest.raises(OCPError, match="horizon T must be a positive"):
+        OCP(osc, N=5, T=-1.0)
+    bad_time = OCP(osc, N=5, T=FreeTime(guess=5.0, lower=0.1, upper=1.0))
+    bad_time.minimize(bad_time.T)
+    with pytest.raises(OCPError, match="free final time"):
+        bad_time.solve()
+
+
+def test_dae_needs_a_dae_integrator():
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from test_index1_model import Maxwell
+    with pytest.raises(OCPError, match="integrator 'rk' does not solve DAEs.*'collocation'"):
+        OCP(acausal.compile(Maxwell()), N=5, method="shooting", integrator="rk")
+
+
+def test_infeasible_problem_reports_ipopt_status(cp):
+    ocp = cartpole.swing_up(cp, N=10)
+    ocp.bounds("F", -0.5, 0.5)                 # far too weak to swing the pole up in 2 s
+    with pytest.raises(SolveError) as err:
+        ocp.solve({"max_iter": 200})
+    assert err.value.status not in ("Solve_Succeeded", "Solved_To_Acceptable_Level")
+    assert err.value.status in str(err.value)
+    assert np.max(np.abs(err.value.solution.control("F"))) <= 0.5 + 1e-6
+
+
+def test_bounds_on_a_recorded_variable_hold_at_the_nodes(cp, tmp_path):
+    """A wall at x = 1.3 m for the pole tip (it reaches 1.52 m unconstrained): the tip's
+    position, computed by hand from the cart position and θ (x + l sin θ), respects it at every
+    node, the bound is active, and the constrained swing-up costs more effort."""
+    N, wall = 25, 1.3
+    ocp = cartpole.swing_up(cp, N=N)
+    ocp.bounds("tip.r[1]", None, wall)
+    sol = ocp.solve({"tol": 1e-9})
+    tip_x = sol["rail.s"] + cartpole.LENGTH * np.sin(sol["hinge.phi"])
+    np.testing.assert_allclose(sol["tip.r[1]"], tip_x, atol=1e-12)
+    assert np.max(tip_x) <= wall + 1e-7
+    assert np.max(tip_x) == pytest.approx(wall, abs=1e-6)
+    free = cartpole.swing_up(cp, N=N).solve({"tol": 1e-9})
+    assert np.max(free["tip.r[1]"]) > wall + 0.1
+    assert sol.cost > free.cost
+    assert sol.value(ocp["tip.r[2]"][-1]) == pytest.approx(cartpole.LENGTH, abs=1e-9)
+    fig = sol.plot(path=str(tmp_path))
+    assert (tmp_path / "ocp_cartpole.png").exists() and len(fig.axes) == 5
+
+
+def test_free_final_time_with_a_cost_on_time_and_effort(osc):
+    """The mass on a spring c = 1 N/m and a damper d = 0.1 N.s/m (params), released from
+    rest at 1 m, first passes s = 0 (minimize a free T with s(T) = 0) at the closed form
+    t = (π/2 + atan(ζ/√(1−ζ²))) / ω_d, ω_d = ω√(1−ζ²), ω = 1 rad/s, ζ = d / (2√(c m))."""
+    ocp = OCP(osc, N=40, T=FreeTime(guess=1.0, lower=0.1, upper=2.5),
+              params={"spring.c": 1.0, "damper.d": 0.1})
+    ocp.minimize(ocp.T)
+    ocp.initial({"mass.s": 1.0, "mass.v": 0.0})
+    ocp.final({"mass.s": 0.0})
+    sol = ocp.solve({"tol": 1e-12})
+    w, zeta = 1.0, 0.1 / 2.0
+    wd = w * np.sqrt(1 - zeta ** 2)
+    assert sol.T == pytest.approx((np.pi / 2 + np.arctan(zeta / np.sqrt(1 - zeta ** 2))) / wd,
+                                  rel=1e-8)
+    assert isinstance(ocp.T, ca.MX)
