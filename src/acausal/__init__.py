@@ -6,11 +6,11 @@ motion (``acausal.compile``), simulate (``compiled.simulate``).
 from .compiler import CompiledModel, compile
 from .core import (AcausalError, Component, InitializationError, Input, Model, Output,
                    Parameter, ParameterError, PortConnectionError, SimulationError,
-                   SingularModelError, StructureError, connect)
+                   SingularModelError, StructureError, VariableNameError, connect)
 from .simulation import Result, simulate
 
 __version__ = "0.1.0"
 __all__ = ["Model", "Component", "Parameter", "Input", "Output", "connect", "compile",
            "CompiledModel", "simulate", "Result", "AcausalError", "ParameterError",
            "PortConnectionError", "StructureError", "SingularModelError",
-           "InitializationError", "SimulationError"]
+           "InitializationError", "SimulationError", "VariableNameError"]

@@ -149,3 +149,24 @@ def test_force_pushing_against_spring():
     res = c.simulate(1.0, inputs={"F": -6.0}, x0={"mass.s": S01 + LEN / 2 - 6.0 / C1})
     np.testing.assert_allclose(res["wall.flange.f"], -6.0, atol=1e-8)
     np.testing.assert_allclose(res["mass.v"], 0.0, atol=1e-10)
+
+
+def test_input_units_follow_the_signal_and_unknown_names_are_named():
+    """A model Input's unit is recorded for the input, its port and the port it drives; an
+    unknown name raises acausal's VariableNameError (a KeyError) with a suggestion."""
+    m = acausal.Model("pushed")
+    m.wall, m.spring, m.mass = Fixed(), Spring(c=4.0), Mass(m=1.0)
+    m.push, m.F = Force(), acausal.Input(unit="N")
+    for a, b in [(m.wall.flange, m.spring.flange_a), (m.spring.flange_b, m.mass.flange_a),
+                 (m.push.flange, m.mass.flange_b), (m.F.y, m.push.f)]:
+        m.connect(a, b)
+    c = acausal.compile(m)
+    units = dict(zip(c.recorded_names, c.recorded_units))
+    assert units["F"] == units["F.y"] == units["push.f"] == "N"
+    with pytest.raises(acausal.VariableNameError, match=r"push\.f"):
+        c.expression("push.ff")
+    res = c.simulate(1.0, inputs={"F": 2.0})
+    assert res.units["push.f"] == "N"
+    np.testing.assert_allclose(res["push.f"], 2.0)
+    with pytest.raises(KeyError, match="mass.s"):
+        res["mass.ss"]

@@ -13,7 +13,7 @@ import casadi as ca
 import numpy as np
 
 from ..simulation.initialization import initial_state
-from ..core.errors import did_you_mean
+from ..core.errors import VariableNameError, did_you_mean
 from .errors import AnalysisError
 
 
@@ -32,7 +32,7 @@ class OperatingPoint:
     def __getitem__(self, name: str) -> float:
         m = self.model
         if name not in m.recorded_names:
-            raise KeyError(f"no variable '{name}' in model '{m.name}'"
+            raise VariableNameError(f"no variable '{name}' in model '{m.name}'"
                            f"{did_you_mean(name, m.recorded_names)}")
         kind, row = m.recorded_layout[m.recorded_names.index(name)]
         if kind == "x":

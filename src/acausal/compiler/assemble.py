@@ -487,14 +487,15 @@ def _recorded(flat, ws, tree):
         rec(a.sym.name(), a.sym, a.unit)
     for name, ex, unit, _ in ws.variables:
         rec(name, ex, unit)
+    for c, s in ws.inputs:
+        rec(c.path, s, c.unit)
+    for c, e in ws.outputs:
+        rec(c.path, e, c.unit)
+    unit_of = {id(c): c.unit for c, _ in ws.inputs}      # a model Input's signal: its unit
     for o, s in ws.signal_sym.items():
-        rec(o.path, s)
+        rec(o.path, s, unit_of.get(id(o.owner), ""))
     for i, o in ws.source.items():
         if o in ws.signal_sym:
-            rec(i.path, ws.signal_sym[o])
-    for c, s in ws.inputs:
-        rec(c.path, s)
-    for c, e in ws.outputs:
-        rec(c.path, e)
+            rec(i.path, ws.signal_sym[o], unit_of.get(id(o.owner), ""))
     return names, (_vc(*[e if e.size2() == 1 else ca.vec(e) for e in exprs]) if exprs
                    else ca.SX(0, 1)), units

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 import numpy as np
 
-from ..core.errors import ParameterError, did_you_mean
+from ..core.errors import ParameterError, VariableNameError, did_you_mean
 
 
 class Lagrange:
@@ -189,16 +189,8 @@ class CompiledModel:
 
     def event_times(self, p: np.ndarray, t0: float, t1: float) -> list[float]:
         """Times of the declared time events strictly inside (t0, t1), sorted."""
-        times, periods = (np.array(v, dtype=float).ravel() for v in self.events(p))
-        out = set()
-        for first, period in zip(times, periods):
-            if period > 0:
-                k0 = max(0, int(np.ceil((t0 - first) / period)))
-                ts = first + period * np.arange(k0, k0 + int((t1 - first) / period) + 2)
-            else:
-                ts = [first]
-            out.update(float(x) for x in ts if t0 < x < t1)
-        return sorted(out)
+        from ..simulation.kernels import event_times
+        return event_times(*self.events(p), t0, t1)
 
     # ---- recorded variables (built on first use) -------------------------------------------
     def _recorded(self):
@@ -297,7 +289,7 @@ class CompiledModel:
         try:
             return self.recorded[self.recorded_names.index(name)]
         except ValueError:
-            raise KeyError(f"no variable '{name}' in model '{self.name}'"
+            raise VariableNameError(f"no variable '{name}' in model '{self.name}'"
                            f"{did_you_mean(name, self.recorded_names)}") from None
 
     def mobility(self, params: dict | None = None, x0: dict | None = None,

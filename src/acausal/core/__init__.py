@@ -4,7 +4,7 @@ Nothing here knows the component library or the compiler.
 """
 from .component import Component, Model, connect
 from .errors import (AcausalError, InitializationError, ParameterError, PortConnectionError,
-                     SimulationError, SingularModelError, StructureError)
+                     SimulationError, SingularModelError, StructureError, VariableNameError)
 from .interface import Input, Output
 from .parameter import Parameter
 from .ports import (PLANAR, ROTATIONAL, TRANSLATIONAL, Domain, Frame, PhysicalPort, Port,
@@ -15,5 +15,5 @@ __all__ = [
     "Port", "PhysicalPort", "PortVector", "Domain", "TranslationalFlange", "RotationalFlange", "Frame",
     "RealInput", "RealOutput", "TRANSLATIONAL", "ROTATIONAL", "PLANAR",
     "AcausalError", "ParameterError", "PortConnectionError", "StructureError",
-    "SingularModelError", "InitializationError", "SimulationError",
+    "SingularModelError", "InitializationError", "SimulationError", "VariableNameError",
 ]

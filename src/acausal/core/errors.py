@@ -12,6 +12,13 @@ class AcausalError(Exception):
     """Base of every error acausal raises for a bad model or a bad request."""
 
 
+class VariableNameError(AcausalError, KeyError):
+    """A variable name the model (or a result) does not have."""
+
+    def __str__(self):                      # the message, not KeyError's quoted repr
+        return str(self.args[0]) if self.args else ""
+
+
 class ParameterError(AcausalError, ValueError):
     """A parameter name that does not exist, or a value out of its range."""
 

@@ -6,6 +6,7 @@ import os
 import casadi as ca
 import numpy as np
 
+from ..core.errors import VariableNameError
 from ..simulation.result import Result
 from .errors import OCPError
 
@@ -57,7 +58,7 @@ class Solution(Result):
     def control(self, name: str) -> np.ndarray:
         """A control's N values, one per interval [t_k, t_k+1)."""
         if self._view.kind(name) != "control":
-            raise KeyError(f"'{name}' is not a control; controls: "
+            raise VariableNameError(f"'{name}' is not a control; controls: "
                            f"{self._view.compiled.input_names}")
         return self._U[self._view.index(name)]
 

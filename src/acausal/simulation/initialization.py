@@ -14,6 +14,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.errors import InitializationError
+from .kernels import ProjectionError, moved_note, project
 
 
 def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
@@ -43,6 +44,43 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
         labels.append(name)
         targets.append(float(value))
     eqs = [h - v for h, v in zip(hard, targets)]
+    more, more_labels = model_equations(model)
+    eqs += more
+    labels += more_labels
+    start = np.array(model.start(p), dtype=float).ravel()
+    for name, value in (guess or {}).items():
+        if name not in direct:
+            raise InitializationError(f"guess: '{name}' is not a state of '{model.name}' (its "
+                                      f"states: {', '.join(names[:8])}...)")
+        start[names.index(name)] = float(value)
+    if not eqs:
+        return start[:nx], start[nx:]
+    H = ca.vertcat(*[ca.vec(e) for e in eqs])
+    f = ca.Function("init", [w, model.t, model.p, model.u], [H, ca.jacobian(H, w)])
+
+    def equations(wk):
+        h, J = f(wk, t0, p, u0)
+        return np.array(h, dtype=float).ravel(), np.array(J, dtype=float)
+
+    wk = start.copy()
+    for name, value in x0.items():          # linearize where the fixed values put the states
+        if name in names:
+            wk[names.index(name)] = float(value)
+    try:
+        wk = project(equations, start, wk, nx, labels, targets)
+    except ProjectionError as e:
+        raise InitializationError(str(e)) from None
+    note = moved_note(names[:nx], start, wk, held=x0) if model.lagrange.phi.numel() else None
+    if note:
+        warnings.warn(note, stacklevel=3)
+    return wk[:nx], wk[nx:]
+
+
+def model_equations(model):
+    """The equations every initial state satisfies besides the given values, as a list of SX
+    in (x, z, t, p, u), and a label per row: closed loops' Φ = 0 and Φ̇ = 0 ("loop constraint
+    <row>", "loop velocity constraint <row>"), then the algebraic equations."""
+    eqs, labels = [], []
     phi = model.lagrange.phi
     if phi.numel():
         # Φ̇ along the model's own motion (states other than q, e.g. a Speed source's angle,
@@ -54,67 +92,4 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     if model.z.numel():
         eqs.append(model.alg)
         labels += [f"algebraic equation for {n}" for n in model.z_names]
-    start = np.array(model.start(p), dtype=float).ravel()
-    for name, value in (guess or {}).items():
-        if name not in direct:
-            raise InitializationError(f"guess: '{name}' is not a state of '{model.name}' (its "
-                                      f"states: {', '.join(names[:8])}...)")
-        start[names.index(name)] = float(value)
-    if not eqs:
-        return start[:nx], start[nx:]
-    H = ca.vertcat(*[ca.vec(e) for e in eqs])
-    f = ca.Function("init", [w, model.t, model.p, model.u], [H, ca.jacobian(H, w)])
-    wk = start.copy()
-    for name, value in x0.items():          # linearize where the fixed values put the states
-        if name in names:
-            wk[names.index(name)] = float(value)
-    scale = 1 + max(abs(v) for v in targets) if targets else 1.0
-    # states keep their start values where they can; algebraic variables are (nearly) free
-    D = np.ones(w.numel())
-    D[nx:] = 1e8
-    for _ in range(200):
-        h, J = _eval(f, wk, t0, p, u0)
-        # closest point to the start values (metric D⁻¹) on the linearized equations:
-        #   w = start + D Jᵀ (J D Jᵀ)⁺ (J (wk − start) − h)    (J is k × n with k small);
-        # far from the solution the step is limited (0.3 per state), so that a guess keeps
-        # the assembly on its branch instead of winding joints by whole turns
-        JD = J * D
-        lam = np.linalg.lstsq(JD @ J.T, J @ (wk - start) - h, rcond=1e-14)[0]
-        step = start + JD.T @ lam - wk
-        big = np.max(np.abs(step[:nx]), initial=0.0)
-        if big > 0.3:
-            step *= 0.3 / big
-        wk = wk + step
-        if np.linalg.norm(step) < 1e-13 * (1 + np.linalg.norm(wk)):
-            break
-    h, J = _eval(f, wk, t0, p, u0)
-    if np.max(np.abs(h)) > 1e-8 * scale:
-        raise InitializationError(_conflict(J, labels, targets, len(hard), h))
-    if phi.numel():
-        moved = [f"{n}: {a:.6g} -> {b:.6g}" for n, a, b in zip(names[:nx], start, wk)
-                 if n not in x0 and abs(a - b) > 1e-9 * (1 + abs(a))]
-        if moved:
-            warnings.warn("initial values changed to close the kinematic loops: "
-                          + "; ".join(moved), stacklevel=3)
-    return wk[:nx], wk[nx:]
-
-
-def _eval(f, w, t0, p, u0):
-    h, J = f(w, t0, p, u0)
-    return np.array(h, dtype=float).ravel(), np.array(J, dtype=float)
-
-
-def _conflict(J, labels, targets, ngiven, h) -> str:
-    bad = [labels[i] for i in np.flatnonzero(np.abs(h) > 1e-8)]
-    given = list(range(ngiven))
-    for i in given:
-        for j in given:
-            if j <= i:
-                continue
-            sub = J[[i, j]]
-            if np.linalg.matrix_rank(sub, 1e-9) < 2:
-                return (f"x0 values conflict: '{labels[i]}' = {targets[i]} and '{labels[j]}' = "
-                        f"{targets[j]} cannot both hold (the parts are rigidly joined); give "
-                        f"only one of them")
-    return (f"cannot find initial values satisfying {', '.join(bad)}; check x0 against the "
-            f"model's constraints")
+    return eqs, labels

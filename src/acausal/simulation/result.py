@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.errors import did_you_mean
+from ..core.errors import VariableNameError, did_you_mean
 
 
 class Result:
@@ -32,7 +32,7 @@ class Result:
         try:
             return self._row(self._index[name])
         except KeyError:
-            raise KeyError(f"no variable '{name}' in the result of '{self.model_name}'"
+            raise VariableNameError(f"no variable '{name}' in the result of '{self.model_name}'"
                            f"{did_you_mean(name, self.names)}") from None
 
     def __contains__(self, name: str) -> bool:

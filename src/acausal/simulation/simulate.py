@@ -8,6 +8,7 @@ import numpy as np
 
 from ..core.errors import SimulationError
 from .initialization import initial_state
+from .kernels import just_before, short_error
 from .result import Result
 
 SOLVERS = ("cvodes", "adams", "idas", "rk", "collocation")
@@ -106,32 +107,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     if auto:
         solver = "idas" if has_alg else (
             "cvodes" if is_stiff(model.x, model.t, ode, xs, grid[0], grid[-1]) else "adams")
-    if solver not in SOLVERS:
-        raise SimulationError(f"unknown solver '{solver}'; choose one of {SOLVERS}")
-    plugin = "cvodes" if solver == "adams" else solver
-    if plugin == "cvodes" and has_alg:
-        raise SimulationError(f"model '{model.name}' has algebraic variables "
-                              f"{model.z_names[:3]}...; use solver='idas'")
+    plugin, opts, loops = integrator_settings(model, solver, rtol, atol, max_step)
     dae = {"x": model.x, "t": model.t, "ode": ode}
     if has_alg:
         dae.update(z=model.z, alg=alg)
-    opts = {}
-    if solver == "adams":        # non-stiff models: no Jacobians, no Newton iterations
-        opts.update(linear_multistep_method="adams", nonlinear_solver_iteration="functional")
-    if plugin in ("cvodes", "idas"):
-        opts.update(abstol=atol, reltol=rtol, max_num_steps=100000)
-        if max_step is not None:
-            opts["max_step_size"] = max_step
-    loops = solver == "idas" and model.lagrange.phi.numel() > 0
     if loops:
-        # the loops' index-2 multipliers (zero on the exact solution) take no part in the
-        # error test and get a loose tolerance in the Newton test; the initial values are
-        # consistent already, so IDAS's own initialization (whose Newton iteration is
-        # ill-conditioned for index 2 at tiny steps) is replaced by the known derivatives
-        opts["suppress_algebraic"] = True
-        opts["abstolv"] = [atol] * model.x.numel() + [
-            1.0 if n.startswith("loops.") else atol for n in model.z_names]
-        opts["calc_ic"] = False
         xdot = ca.Function("xdot", [model.x, model.z, model.t], [dae["ode"]])
     opts.update(options or {})
 
@@ -146,7 +126,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             if a != grid[0] and a in grid:           # an output time exactly at the event
                 X.append(x.reshape(-1, 1))
                 Z.append(z.reshape(-1, 1))
-            end = b if b == grid[-1] else b - 1e-12 * max(1.0, abs(b))
+            end = b if b == grid[-1] else just_before(b)
             tout = list(pts) + ([] if pts and pts[-1] == b else [end])
             tout = [min(tt, end) for tt in tout]
             if loops:
@@ -158,8 +138,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             except RuntimeError as e:
                 raise SimulationError(
                     f"simulation of '{model.name}' failed between t = {a:g} and {b:g} s: "
-                    f"{_short(e)}; check the parameters and initial values, or try a smaller "
-                    f"rtol/atol or another solver") from None
+                    f"{short_error(e)}; check the parameters and initial values, or try a "
+                    f"smaller rtol/atol or another solver") from None
             xf = np.array(sol["xf"])
             zf = np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
             X.append(xf[:, :len(pts)])
@@ -191,6 +171,39 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     return res
 
 
+def integrator_settings(model, solver: str, rtol: float, atol: float,
+                        max_step: float | None = None):
+    """(plugin, options, loops) of the CasADi integrator for ``model`` with ``solver`` (one of
+    SOLVERS): 'adams' is cvodes with Adams steps and functional iteration; cvodes and idas get
+    the tolerances, max_num_steps and max_step; ``loops`` is True for IDAS on closed loops,
+    whose options keep the index-2 multipliers out of the error test and skip IDAS's own
+    initial-value computation (the caller gives consistent values, step0 and init_xdot)."""
+    if solver not in SOLVERS:
+        raise SimulationError(f"unknown solver '{solver}'; choose one of {SOLVERS}")
+    plugin = "cvodes" if solver == "adams" else solver
+    if plugin == "cvodes" and model.z.numel():
+        raise SimulationError(f"model '{model.name}' has algebraic variables "
+                              f"{model.z_names[:3]}...; use solver='idas'")
+    opts = {}
+    if solver == "adams":        # non-stiff models: no Jacobians, no Newton iterations
+        opts.update(linear_multistep_method="adams", nonlinear_solver_iteration="functional")
+    if plugin in ("cvodes", "idas"):
+        opts.update(abstol=atol, reltol=rtol, max_num_steps=100000)
+        if max_step is not None:
+            opts["max_step_size"] = max_step
+    loops = solver == "idas" and model.lagrange.phi.numel() > 0
+    if loops:
+        # the loops' index-2 multipliers (zero on the exact solution) take no part in the
+        # error test and get a loose tolerance in the Newton test; the initial values are
+        # consistent already, so IDAS's own initialization (whose Newton iteration is
+        # ill-conditioned for index 2 at tiny steps) is replaced by the known derivatives
+        opts["suppress_algebraic"] = True
+        opts["abstolv"] = [atol] * model.x.numel() + [
+            1.0 if n.startswith("loops.") else atol for n in model.z_names]
+        opts["calc_ic"] = False
+    return plugin, opts, loops
+
+
 def is_stiff(x: ca.SX, t: ca.SX, ode: ca.SX, x0, t0: float, t1: float,
              max_states: int = 400) -> bool:
     """Whether the ODE ẋ = ode(x, t) is stiff at (x0, t0), judged on the eigenvalues λ of its
@@ -220,13 +233,3 @@ def _segments(grid: np.ndarray, events: list[float]):
         last = b == grid[-1]
         pts = [float(tt) for tt in grid[1:] if a < tt < b or (tt == b and last)]
         yield float(a), float(b), pts
-
-
-def _short(e: Exception) -> str:
-    """The informative line of a CasADi error (what the solver returned), not its call chain."""
-    lines = [ln.strip() for ln in str(e).splitlines() if ln.strip()]
-    for key in ("returned", "At t =", "failed", "Error"):
-        hits = [ln for ln in lines if key in ln]
-        if hits:
-            return hits[-1].split(": ", 1)[-1][:300]
-    return (lines[-1] if lines else str(e))[:300]
