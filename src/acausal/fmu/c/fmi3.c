@@ -1,0 +1,386 @@
+/* FMI 3.0 interface (model exchange and co-simulation) over runtime.c. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fmi3Functions.h"
+#include "runtime.h"
+
+typedef struct {
+    ac_inst m;
+    fmi3LogMessageCallback logger;
+    fmi3InstanceEnvironment env;
+} fmu3;
+
+#define M ((ac_inst *)instance)
+#define ST(x) ((fmi3Status)(x))
+
+static void fmi3_log(ac_inst *m, int status, const char *category, const char *message) {
+    fmu3 *f = (fmu3 *)m;
+    if (f->logger) f->logger(f->env, (fmi3Status)status, category, message);
+}
+
+static fmi3Status fail(fmi3Instance instance, int st) {
+    if (st >= AC_ERROR) M->d.mode = AC_FAILED;
+    return ST(st);
+}
+
+static fmi3Status unsupported(fmi3Instance instance, const char *what) {
+    ac_logf(M, AC_ERROR, "logStatusError", "%s is not supported by this FMU", what);
+    return fmi3Error;
+}
+
+const char *fmi3GetVersion(void) { return fmi3Version; }
+
+fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t n,
+                               const fmi3String categories[]) {
+    (void)n; (void)categories;
+    M->logging_on = loggingOn;
+    return fmi3OK;
+}
+
+static fmi3Instance instantiate(fmi3String name, fmi3String token, fmi3Boolean loggingOn,
+                                fmi3InstanceEnvironment env, fmi3LogMessageCallback logger,
+                                int cs) {
+    fmu3 *f;
+    if (!name) return NULL;
+    f = (fmu3 *)calloc(1, sizeof(fmu3));
+    if (!f) return NULL;
+    f->logger = logger;
+    f->env = env;
+    f->m.log = fmi3_log;
+    f->m.logging_on = loggingOn;
+    strncpy(f->m.name, name, sizeof(f->m.name) - 1);
+    if (!token || strcmp(token, ac_guid) != 0) {
+        ac_logf(&f->m, AC_ERROR, "logStatusError", "instantiation token %s does not match this FMU's %s",
+                token ? token : "(null)", ac_guid);
+        free(f);
+        return NULL;
+    }
+    f->m.is_cs = cs;
+    ac_defaults(&f->m);
+    return (fmi3Instance)f;
+}
+
+fmi3Instance fmi3InstantiateModelExchange(fmi3String instanceName, fmi3String instantiationToken,
+                                          fmi3String resourcePath, fmi3Boolean visible,
+                                          fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment,
+                                          fmi3LogMessageCallback logMessage) {
+    (void)resourcePath; (void)visible;
+    return instantiate(instanceName, instantiationToken, loggingOn, instanceEnvironment, logMessage, 0);
+}
+
+fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String instantiationToken,
+                                         fmi3String resourcePath, fmi3Boolean visible,
+                                         fmi3Boolean loggingOn, fmi3Boolean eventModeUsed,
+                                         fmi3Boolean earlyReturnAllowed,
+                                         const fmi3ValueReference requiredIntermediateVariables[],
+                                         size_t nRequiredIntermediateVariables,
+                                         fmi3InstanceEnvironment instanceEnvironment,
+                                         fmi3LogMessageCallback logMessage,
+                                         fmi3IntermediateUpdateCallback intermediateUpdate) {
+    (void)resourcePath; (void)visible; (void)eventModeUsed; (void)earlyReturnAllowed;
+    (void)requiredIntermediateVariables; (void)nRequiredIntermediateVariables; (void)intermediateUpdate;
+    return instantiate(instanceName, instantiationToken, loggingOn, instanceEnvironment, logMessage, 1);
+}
+
+fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String instantiationToken,
+                                               fmi3String resourcePath, fmi3Boolean visible,
+                                               fmi3Boolean loggingOn, fmi3InstanceEnvironment instanceEnvironment,
+                                               fmi3LogMessageCallback logMessage,
+                                               fmi3ClockUpdateCallback clockUpdate,
+                                               fmi3LockPreemptionCallback lockPreemption,
+                                               fmi3UnlockPreemptionCallback unlockPreemption) {
+    (void)instanceName; (void)instantiationToken; (void)resourcePath; (void)visible; (void)loggingOn;
+    (void)clockUpdate; (void)lockPreemption; (void)unlockPreemption;
+    if (logMessage) logMessage(instanceEnvironment, fmi3Error, "logStatusError",
+                               "scheduled execution is not supported by this FMU");
+    return NULL;
+}
+
+void fmi3FreeInstance(fmi3Instance instance) { free(instance); }
+
+fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean toleranceDefined,
+                                       fmi3Float64 tolerance, fmi3Float64 startTime,
+                                       fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
+    (void)stopTimeDefined; (void)stopTime;
+    ac_tolerance(M, toleranceDefined, tolerance);
+    ac_set_time(M, startTime);
+    M->d.mode = AC_INIT;
+    return fmi3OK;
+}
+
+fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
+    int st = ac_initialize(M);
+    if (st) return fail(instance, st);
+    M->d.mode = M->is_cs ? AC_STEP : AC_EVENT;
+    return fmi3OK;
+}
+
+fmi3Status fmi3EnterEventMode(fmi3Instance instance) { M->d.mode = AC_EVENT; return fmi3OK; }
+fmi3Status fmi3Terminate(fmi3Instance instance) { M->d.mode = AC_TERMINATED; return fmi3OK; }
+fmi3Status fmi3Reset(fmi3Instance instance) { ac_defaults(M); return fmi3OK; }
+
+/* ---- values ------------------------------------------------------------------------------ */
+fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                          fmi3Float64 values[], size_t nValues) {
+    size_t i;
+    if (nValues < nvr) return unsupported(instance, "arrays");
+    for (i = 0; i < nvr; i++) {
+        int st = ac_get_real(M, vr[i], &values[i]);
+        if (st) return fail(instance, st);
+    }
+    return fmi3OK;
+}
+
+fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                          const fmi3Float64 values[], size_t nValues) {
+    size_t i;
+    if (nValues < nvr) return unsupported(instance, "arrays");
+    for (i = 0; i < nvr; i++) {
+        int st = ac_set_real(M, vr[i], values[i]);
+        if (st) return ST(st);
+    }
+    return fmi3OK;
+}
+
+#define NO_VARS(NAME, CT, TYPE)                                                                  \
+    fmi3Status NAME(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,            \
+                    CT values[], size_t nValues) {                                               \
+        (void)vr; (void)values; (void)nValues;                                                   \
+        if (nvr == 0) return fmi3OK;                                                             \
+        return unsupported(instance, "variables of type " TYPE);                                 \
+    }
+NO_VARS(fmi3GetFloat32, fmi3Float32, "Float32")
+NO_VARS(fmi3GetInt8, fmi3Int8, "Int8")
+NO_VARS(fmi3GetUInt8, fmi3UInt8, "UInt8")
+NO_VARS(fmi3GetInt16, fmi3Int16, "Int16")
+NO_VARS(fmi3GetUInt16, fmi3UInt16, "UInt16")
+NO_VARS(fmi3GetInt32, fmi3Int32, "Int32")
+NO_VARS(fmi3GetUInt32, fmi3UInt32, "UInt32")
+NO_VARS(fmi3GetInt64, fmi3Int64, "Int64")
+NO_VARS(fmi3GetUInt64, fmi3UInt64, "UInt64")
+NO_VARS(fmi3GetBoolean, fmi3Boolean, "Boolean")
+NO_VARS(fmi3GetString, fmi3String, "String")
+NO_VARS(fmi3SetFloat32, const fmi3Float32, "Float32")
+NO_VARS(fmi3SetInt8, const fmi3Int8, "Int8")
+NO_VARS(fmi3SetUInt8, const fmi3UInt8, "UInt8")
+NO_VARS(fmi3SetInt16, const fmi3Int16, "Int16")
+NO_VARS(fmi3SetUInt16, const fmi3UInt16, "UInt16")
+NO_VARS(fmi3SetInt32, const fmi3Int32, "Int32")
+NO_VARS(fmi3SetUInt32, const fmi3UInt32, "UInt32")
+NO_VARS(fmi3SetInt64, const fmi3Int64, "Int64")
+NO_VARS(fmi3SetUInt64, const fmi3UInt64, "UInt64")
+NO_VARS(fmi3SetBoolean, const fmi3Boolean, "Boolean")
+NO_VARS(fmi3SetString, const fmi3String, "String")
+
+fmi3Status fmi3GetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                         size_t valueSizes[], fmi3Binary values[], size_t nValues) {
+    (void)vr; (void)valueSizes; (void)values; (void)nValues;
+    return nvr ? unsupported(instance, "Binary variables") : fmi3OK;
+}
+fmi3Status fmi3SetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                         const size_t valueSizes[], const fmi3Binary values[], size_t nValues) {
+    (void)vr; (void)valueSizes; (void)values; (void)nValues;
+    return nvr ? unsupported(instance, "Binary variables") : fmi3OK;
+}
+fmi3Status fmi3GetClock(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Clock values[]) {
+    (void)vr; (void)values;
+    return nvr ? unsupported(instance, "clocks") : fmi3OK;
+}
+fmi3Status fmi3SetClock(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Clock values[]) {
+    (void)vr; (void)values;
+    return nvr ? unsupported(instance, "clocks") : fmi3OK;
+}
+
+fmi3Status fmi3GetNumberOfVariableDependencies(fmi3Instance instance, fmi3ValueReference vr, size_t *n) {
+    (void)vr; (void)n;
+    return unsupported(instance, "fmi3GetNumberOfVariableDependencies (see ModelStructure)");
+}
+fmi3Status fmi3GetVariableDependencies(fmi3Instance instance, fmi3ValueReference dependent,
+                                       size_t elementIndicesOfDependent[], fmi3ValueReference independents[],
+                                       size_t elementIndicesOfIndependents[], fmi3DependencyKind dependencyKinds[],
+                                       size_t nDependencies) {
+    (void)dependent; (void)elementIndicesOfDependent; (void)independents;
+    (void)elementIndicesOfIndependents; (void)dependencyKinds; (void)nDependencies;
+    return unsupported(instance, "fmi3GetVariableDependencies (see ModelStructure)");
+}
+
+/* ---- FMU state ---------------------------------------------------------------------------- */
+fmi3Status fmi3GetFMUState(fmi3Instance instance, fmi3FMUState *state) {
+    return ST(ac_state_get(M, state));
+}
+
+fmi3Status fmi3SetFMUState(fmi3Instance instance, fmi3FMUState state) {
+    return ST(ac_state_set(M, state));
+}
+
+fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState *state) {
+    (void)instance;
+    ac_state_free(state);
+    return fmi3OK;
+}
+
+fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState state, size_t *size) {
+    (void)instance; (void)state;
+    *size = ac_state_size();
+    return fmi3OK;
+}
+
+fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState state, fmi3Byte bytes[], size_t size) {
+    return ST(ac_state_serialize(M, state, bytes, size));
+}
+
+fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte bytes[], size_t size, fmi3FMUState *state) {
+    return ST(ac_state_deserialize(M, bytes, size, state));
+}
+
+fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[],
+                                        size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
+                                        const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
+                                        size_t nSensitivity) {
+    if (nSeed != nKnowns || nSensitivity != nUnknowns) return unsupported(instance, "array variables");
+    return fail(instance, ac_directional(M, unknowns, nUnknowns, knowns, nKnowns, seed, sensitivity));
+}
+
+fmi3Status fmi3GetAdjointDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[],
+                                    size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
+                                    const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
+                                    size_t nSensitivity) {
+    (void)unknowns; (void)nUnknowns; (void)knowns; (void)nKnowns; (void)seed; (void)nSeed;
+    (void)sensitivity; (void)nSensitivity;
+    return unsupported(instance, "fmi3GetAdjointDerivative (providesAdjointDerivatives=false)");
+}
+
+fmi3Status fmi3EnterConfigurationMode(fmi3Instance instance) { return unsupported(instance, "configuration mode"); }
+fmi3Status fmi3ExitConfigurationMode(fmi3Instance instance) { return unsupported(instance, "configuration mode"); }
+
+fmi3Status fmi3GetIntervalDecimal(fmi3Instance instance, const fmi3ValueReference vr[], size_t n,
+                                  fmi3Float64 intervals[], fmi3IntervalQualifier qualifiers[]) {
+    (void)vr; (void)n; (void)intervals; (void)qualifiers; return unsupported(instance, "clocks");
+}
+fmi3Status fmi3GetIntervalFraction(fmi3Instance instance, const fmi3ValueReference vr[], size_t n,
+                                   fmi3UInt64 counters[], fmi3UInt64 resolutions[], fmi3IntervalQualifier qualifiers[]) {
+    (void)vr; (void)n; (void)counters; (void)resolutions; (void)qualifiers; return unsupported(instance, "clocks");
+}
+fmi3Status fmi3GetShiftDecimal(fmi3Instance instance, const fmi3ValueReference vr[], size_t n, fmi3Float64 shifts[]) {
+    (void)vr; (void)n; (void)shifts; return unsupported(instance, "clocks");
+}
+fmi3Status fmi3GetShiftFraction(fmi3Instance instance, const fmi3ValueReference vr[], size_t n,
+                                fmi3UInt64 counters[], fmi3UInt64 resolutions[]) {
+    (void)vr; (void)n; (void)counters; (void)resolutions; return unsupported(instance, "clocks");
+}
+fmi3Status fmi3SetIntervalDecimal(fmi3Instance instance, const fmi3ValueReference vr[], size_t n,
+                                  const fmi3Float64 intervals[]) {
+    (void)vr; (void)n; (void)intervals; return unsupported(instance, "clocks");
+}
+fmi3Status fmi3SetIntervalFraction(fmi3Instance instance, const fmi3ValueReference vr[], size_t n,
+                                   const fmi3UInt64 counters[], const fmi3UInt64 resolutions[]) {
+    (void)vr; (void)n; (void)counters; (void)resolutions; return unsupported(instance, "clocks");
+}
+fmi3Status fmi3SetShiftDecimal(fmi3Instance instance, const fmi3ValueReference vr[], size_t n,
+                               const fmi3Float64 shifts[]) {
+    (void)vr; (void)n; (void)shifts; return unsupported(instance, "clocks");
+}
+fmi3Status fmi3SetShiftFraction(fmi3Instance instance, const fmi3ValueReference vr[], size_t n,
+                                const fmi3UInt64 counters[], const fmi3UInt64 resolutions[]) {
+    (void)vr; (void)n; (void)counters; (void)resolutions; return unsupported(instance, "clocks");
+}
+
+fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance instance) { (void)instance; return fmi3OK; }
+
+fmi3Status fmi3UpdateDiscreteStates(fmi3Instance instance, fmi3Boolean *discreteStatesNeedUpdate,
+                                    fmi3Boolean *terminateSimulation,
+                                    fmi3Boolean *nominalsOfContinuousStatesChanged,
+                                    fmi3Boolean *valuesOfContinuousStatesChanged,
+                                    fmi3Boolean *nextEventTimeDefined, fmi3Float64 *nextEventTime) {
+    int changed = 0, st = ac_event_update(M, &changed);
+    *discreteStatesNeedUpdate = fmi3False;
+    *terminateSimulation = st ? fmi3True : fmi3False;
+    *nominalsOfContinuousStatesChanged = fmi3False;
+    *valuesOfContinuousStatesChanged = changed ? fmi3True : fmi3False;
+    *nextEventTimeDefined = isfinite(M->d.next_event) ? fmi3True : fmi3False;
+    *nextEventTime = isfinite(M->d.next_event) ? M->d.next_event : 0.0;
+    return fail(instance, st);
+}
+
+/* ---- model exchange ------------------------------------------------------------------------ */
+fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance) { M->d.mode = AC_CONT; return fmi3OK; }
+
+fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                                       fmi3Boolean *enterEventMode, fmi3Boolean *terminateSimulation) {
+    int ex = 0;
+    (void)noSetFMUStatePriorToCurrentPoint;
+    ac_drift_exceeded(M, &ex);
+    *enterEventMode = ex ? fmi3True : fmi3False;
+    *terminateSimulation = fmi3False;
+    return fmi3OK;
+}
+
+fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64 time) { ac_set_time(M, time); return fmi3OK; }
+
+static fmi3Status check_n(fmi3Instance instance, size_t n) {
+    if (n == AC_NX) return fmi3OK;
+    ac_logf(M, AC_ERROR, "logStatusError", "expected %d continuous states, got %d", AC_NX, (int)n);
+    return fmi3Error;
+}
+
+fmi3Status fmi3SetContinuousStates(fmi3Instance instance, const fmi3Float64 x[], size_t n) {
+    if (check_n(instance, n)) return fmi3Error;
+    ac_set_states(M, x);
+    return fmi3OK;
+}
+
+fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance instance, fmi3Float64 dx[], size_t n) {
+    if (check_n(instance, n)) return fmi3Error;
+    return fail(instance, ac_derivatives(M, dx));
+}
+
+fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64 z[], size_t n) {
+    (void)z;
+    return n ? unsupported(instance, "event indicators") : fmi3OK;
+}
+
+fmi3Status fmi3GetContinuousStates(fmi3Instance instance, fmi3Float64 x[], size_t n) {
+    if (check_n(instance, n)) return fmi3Error;
+    memcpy(x, M->d.x, sizeof(double) * n);
+    return fmi3OK;
+}
+
+fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance, fmi3Float64 nominals[], size_t n) {
+    (void)instance;
+    ac_nominals(nominals, n);
+    return fmi3OK;
+}
+
+fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance, size_t *n) { (void)instance; *n = 0; return fmi3OK; }
+fmi3Status fmi3GetNumberOfContinuousStates(fmi3Instance instance, size_t *n) { (void)instance; *n = AC_NX; return fmi3OK; }
+
+/* ---- co-simulation -------------------------------------------------------------------------- */
+fmi3Status fmi3EnterStepMode(fmi3Instance instance) { M->d.mode = AC_STEP; return fmi3OK; }
+
+fmi3Status fmi3GetOutputDerivatives(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
+                                    const fmi3Int32 orders[], fmi3Float64 values[], size_t nValues) {
+    (void)vr; (void)orders; (void)values; (void)nValues;
+    return nvr ? unsupported(instance, "output derivatives (maxOutputDerivativeOrder=0)") : fmi3OK;
+}
+
+fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoint,
+                      fmi3Float64 communicationStepSize, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
+                      fmi3Boolean *eventHandlingNeeded, fmi3Boolean *terminateSimulation,
+                      fmi3Boolean *earlyReturn, fmi3Float64 *lastSuccessfulTime) {
+    int st;
+    (void)noSetFMUStatePriorToCurrentPoint;
+    st = ac_do_step(M, currentCommunicationPoint, communicationStepSize);
+    *eventHandlingNeeded = fmi3False;
+    *terminateSimulation = fmi3False;
+    *earlyReturn = fmi3False;
+    *lastSuccessfulTime = M->d.t;
+    return fail(instance, st);
+}
+
+fmi3Status fmi3ActivateModelPartition(fmi3Instance instance, fmi3ValueReference clockReference,
+                                      fmi3Float64 activationTime) {
+    (void)clockReference; (void)activationTime;
+    return unsupported(instance, "scheduled execution");
+}

@@ -1,0 +1,107 @@
+"""CasADi functions of a compiled model for the native FMU, generated as C.
+
+Every function takes the same five dense arguments (t, x, z, p, u):
+
+- ``x`` the FMU's continuous states (``compiled.x``);
+- ``z`` the algebraic variables the FMU solves by Newton's method (massless nodes and the
+  model's own algebraic variables: every entry of ``compiled.z`` but the loop multipliers);
+- the loop multipliers ``loops.mu_i``/``loops.nu_i`` of the stabilized (GGL) form are zero on
+  the exact solution: they are replaced by 0 everywhere, and their residual rows become the
+  constraint vector H = [Φ; Φ̇] that the C runtime keeps at zero by projection.
+
+Functions (outputs dense, column-major):
+
+    ac_ode  -> ẋ                      ac_out -> y           ac_rec -> recorded rows
+    ac_alg  -> (g, ∂g/∂z)             Newton for z (if any)
+    ac_jac  -> (∂F/∂w, ∂F/∂z, ∂g/∂w, ∂g/∂z),  F = [ẋ; y], w = [x; u; t]
+    ac_con  -> (H, ∂H/∂x)             loop constraints (if any)
+    ac_start(p) -> start values of [x; z];  ac_events(p) -> [first times; periods]
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_start", "ac_events")
+
+
+class ModelFunctions:
+    """The CasADi Functions above for ``compiled``, with their sizes and sparsity."""
+
+    def __init__(self, compiled):
+        c = self.compiled = compiled
+        t, x, p, u = c.t, c.x, c.p, c.u
+        zall = ca.vertsplit(c.z) if c.z.numel() else []
+        loop = [i for i, n in enumerate(c.z_names) if n.startswith("loops.")]
+        free = [i for i in range(len(zall)) if i not in loop]
+        self.z_names = [c.z_names[i] for i in free]
+        z = ca.vertcat(*[zall[i] for i in free]) if free else ca.SX(0, 1)
+        zl = ca.vertcat(*[zall[i] for i in loop]) if loop else ca.SX(0, 1)
+        alg = ca.vertsplit(c.alg) if c.alg.numel() else []
+
+        def nol(ex):           # loop multipliers are 0 on the exact solution
+            return ca.substitute(ex, zl, ca.SX.zeros(zl.numel())) if loop else ex
+
+        ode = nol(c.ode)
+        g = nol(ca.vertcat(*[alg[i] for i in free])) if free else ca.SX(0, 1)
+        H = nol(ca.vertcat(*[alg[i] for i in loop])) if loop else ca.SX(0, 1)
+        y = nol(c.y) if c.y.numel() else ca.SX(0, 1)
+        rf = c.recorded_function
+        rec = nol(rf(t, x, c.z, p, u)) if rf.size1_out(0) else ca.SX(0, 1)
+        self.nx, self.nz, self.np, self.nu = x.numel(), z.numel(), p.numel(), u.numel()
+        self.ny, self.nrec, self.nh = y.numel(), rec.numel(), H.numel()
+        ev_t, ev_p = c.events(p)
+        self.nev = ev_t.numel()
+
+        s0 = ca.vertsplit(c.start(p))          # start values of [x; z]: x and the free z
+        start = ca.vertcat(*(s0[:self.nx] + [s0[self.nx + i] for i in free]))
+        args, names = [t, x, z, p, u], ["t", "x", "z", "p", "u"]
+        d = ca.densify
+        w = ca.vertcat(x, u, t)
+        F = ca.vertcat(ode, y)
+        fs = {
+            "ac_ode": ca.Function("ac_ode", args, [d(ode)], names, ["xdot"]),
+            "ac_out": ca.Function("ac_out", args, [d(y)], names, ["y"]),
+            "ac_rec": ca.Function("ac_rec", args, [d(rec)], names, ["rec"]),
+            "ac_jac": ca.Function("ac_jac", args,
+                                  [d(ca.jacobian(F, w)), d(ca.jacobian(F, z)),
+                                   d(ca.jacobian(g, w)), d(ca.jacobian(g, z))],
+                                  names, ["F_w", "F_z", "g_w", "g_z"]),
+            "ac_alg": ca.Function("ac_alg", args, [d(g), d(ca.jacobian(g, z))], names,
+                                  ["g", "g_z"]),
+            "ac_con": ca.Function("ac_con", args, [d(H), d(ca.jacobian(H, x))], names,
+                                  ["H", "H_x"]),
+            "ac_start": ca.Function("ac_start", [p], [d(start)], ["p"], ["x0"]),
+            "ac_events": ca.Function("ac_events", [p], [d(ca.vertcat(ev_t, ev_p))], ["p"],
+                                     ["ev"]),
+        }
+        self.functions = fs
+        # structural dependencies of F = [ẋ; y] on w = [x; u; t] (through z too), and on p
+        Fw = np.array(ca.DM(ca.jacobian_sparsity(F, w), 1)) != 0 if F.numel() and w.numel() \
+            else np.zeros((F.numel(), w.numel()), bool)
+        Fp = np.array(ca.DM(ca.jacobian_sparsity(F, p), 1)) != 0 if F.numel() and p.numel() \
+            else np.zeros((F.numel(), p.numel()), bool)
+        if self.nz:
+            Fz = np.array(ca.DM(ca.jacobian_sparsity(F, z), 1)) != 0
+            gw = np.array(ca.DM(ca.jacobian_sparsity(g, w), 1)).any(axis=0) != 0
+            gp = np.array(ca.DM(ca.jacobian_sparsity(g, p), 1)).any(axis=0) != 0 \
+                if p.numel() else np.zeros(0, bool)
+            via = Fz.any(axis=1)
+            Fw = Fw | np.outer(via, gw)
+            Fp = Fp | np.outer(via, gp)
+        self.dep_w = Fw.reshape(F.numel(), w.numel())     # rows ẋ then y; cols x, u, t
+        self.dep_p = Fp.reshape(F.numel(), p.numel())
+
+    def sizes(self) -> dict:
+        """Work array sizes over all functions."""
+        fs = self.functions.values()
+        return {"arg": max(f.sz_arg() for f in fs), "res": max(f.sz_res() for f in fs),
+                "iw": max(f.sz_iw() for f in fs), "w": max(f.sz_w() for f in fs)}
+
+    def generate(self, directory, filename: str = "model_functions.c") -> list[str]:
+        """Write the C file (and its header) into ``directory``; returns their names."""
+        gen = ca.CodeGenerator(filename, {"with_header": True})
+        for f in self.functions.values():
+            gen.add(f)
+        gen.generate(str(directory) + "/")
+        return [filename, filename[:-2] + ".h"]

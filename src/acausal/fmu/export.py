@@ -1,0 +1,301 @@
+"""Native FMU export: CasADi C code generation + this package's FMI wrapper in C, compiled with
+the system C compiler. No Python is needed where the FMU runs.
+
+What the FMU contains
+---------------------
+- ``binaries/linux64/<id>.so`` (FMI 2.0) or ``binaries/x86_64-linux/<id>.so`` (FMI 3.0), built
+  from ``sources/``: the generated model functions (``model_functions.c``), the model's tables
+  (``model.h``, ``model_data.h``), the shared runtime (``runtime.c``: Newton for algebraic
+  variables, loop projection, the RODAS4 co-simulation solver, dense LU) and the FMI wrapper
+  (``fmi2.c`` or ``fmi3.c``). FMI 2 lists the sources in modelDescription.xml, FMI 3 in
+  ``sources/buildDescription.xml``; to rebuild elsewhere compile them with the standard FMI
+  headers on the include path and link with ``-lm``.
+- Variables: ``variables.fmu_variables`` (parameters tunable, inputs, outputs, states with
+  settable start values, derivatives, every recorded variable) plus ``solver.rtol`` and
+  ``solver.atol``, the co-simulation solver's tolerances (tunable parameters; they exist in
+  model exchange too but are used there only for the loop-drift threshold below).
+
+Model exchange
+--------------
+The FMU presents the ODE ẋ = f(t, x, z(x), p, u): algebraic variables z of massless nodes are
+solved inside by Newton's method (generated Jacobian, warm-started from the last solution).
+Closed loops (the compiler's stabilized GGL form, multipliers μ = ν = 0 on the exact solution)
+are presented with μ = ν = 0, i.e. the accelerations of the KKT solve; the constraints
+Φ = 0, Φ̇ = 0 are kept by projection: ``completedIntegratorStep`` asks for an event when
+max(|Φ|, |Φ̇|) exceeds 1e-3·``solver.rtol`` and the event update projects the states onto
+the constraints (closest point in the Euclidean norm of the states, Gauss–Newton, reporting
+``valuesOfContinuousStatesChanged``). Time events (steps, ramps, pulses) are reported as
+``nextEventTime``. There are no state events (no event indicators).
+
+Co-simulation
+-------------
+An embedded linearly implicit Rosenbrock solver, RODAS4 (Hairer & Wanner; stiffly accurate,
+L-stable, order 4 with an embedded order-3 error estimate), with the exact Jacobian from CasADi
+and step-size control: error ≤ ``solver.atol`` + ``solver.rtol``·|x| (RMS norm); the step size
+is carried over from one communication step to the next. Inputs are held constant over a
+communication step (``canInterpolateInputs=false``). The solver stops just before every time
+event and restarts at it. Loops: the states are projected onto Φ = 0, Φ̇ = 0 after every
+accepted step. An importer's tolerance (fmi2SetupExperiment / fmi3EnterInitializationMode)
+replaces the default ``solver.rtol`` (and sets ``solver.atol`` to 1/100 of it) unless they
+were set explicitly.
+
+What it cannot do: no state events (the models have none; a model with discontinuities in
+the states' values is not supported); the Jacobian is dense and re-evaluated every step and
+the linear algebra is dense LU, O(n³) per step (fine for tens to a few hundred states, slow
+for thousands); the Newton iteration for z has no globalization beyond the warm start (it
+fails with fmi2Error and a logged message if it does not converge in 50 iterations); the
+solver does not detect the loops' singular positions (a dead point of a linkage stops it
+with an error).
+
+Initialization
+--------------
+Start values of the states follow the parameters (``compiled.start(p)``) unless the importer
+set them. Closed loops are assembled in exitInitializationMode like ``simulate()`` does: the
+states the importer set are held, the others move the least (Gauss–Newton on Φ = 0, Φ̇ = 0,
+steps limited to 0.3 per state). The parameters ``loops.active[i]`` keep their values (1:
+every row enforced); ``simulate()`` switches redundant rows off itself, the FMU does not.
+
+Errors inside the FMU (a rejected parameter value — NaN, or violating the Parameter's
+positive / nonnegative / nonzero flag — a failed Newton or projection, a failed step) return
+fmi2Error / fmi3Error with a message through the logger callback.
+
+Directional derivatives (``providesDirectionalDerivative(s)``) of state derivatives and
+outputs w.r.t. states and inputs come from CasADi's AD (total derivatives through z).
+"""
+from __future__ import annotations
+
+import hashlib
+import os
+import platform
+import re
+import shutil
+import subprocess
+import tempfile
+import uuid
+import zipfile
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from ..core.errors import AcausalError
+from .codegen import ModelFunctions
+from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, fmi3_xml)
+from .variables import FmuVariable, fmu_variables
+
+KINDS = {"parameter": 0, "input": 1, "output": 2, "state": 3, "derivative": 4, "recorded": 5,
+         "solver": 6, "time": 7}
+RUNTIME_SOURCES = ("runtime.h", "runtime.c")
+
+
+class FmuExportError(AcausalError):
+    """The FMU could not be built (no C compiler, no FMI headers, a compiler error)."""
+
+
+# ---- the toolchain ---------------------------------------------------------------------
+def find_fmi_headers(version: str) -> Path:
+    """The directory holding fmi2Functions.h / fmi3Functions.h, from the installed fmpy."""
+    header = "fmi2Functions.h" if version == "2.0" else "fmi3Functions.h"
+    try:
+        import importlib.util
+        spec = importlib.util.find_spec("fmpy")
+    except (ImportError, ValueError):
+        spec = None
+    if spec is None or not spec.origin:
+        raise FmuExportError(f"the FMI {version} headers ({header}) are taken from the fmpy "
+                             f"package, which is not installed: pip install fmpy")
+    root = Path(spec.origin).parent
+    hits = sorted(root.rglob(header))
+    for h in hits:          # the directory with the complete set of headers
+        d = h.parent
+        need = (["fmi2TypesPlatform.h", "fmi2FunctionTypes.h"] if version == "2.0"
+                else ["fmi3PlatformTypes.h", "fmi3FunctionTypes.h"])
+        if all((d / n).is_file() for n in need):
+            return d
+    raise FmuExportError(f"no {header} (with its companion headers) under {root}; reinstall "
+                         f"fmpy (pip install --force-reinstall fmpy)")
+
+
+def find_compiler() -> str:
+    for cand in [os.environ.get("CC"), "cc", "gcc", "clang"]:
+        if cand and shutil.which(cand):
+            return shutil.which(cand)
+    raise FmuExportError("no C compiler found (tried $CC, cc, gcc, clang); install one, e.g. "
+                         "apt-get install gcc, or set CC")
+
+
+def platform_dirs() -> tuple[str, str, str]:
+    """(FMI 2 platform, FMI 3 platform tuple, shared library extension) of this machine."""
+    system, machine = platform.system(), platform.machine().lower()
+    arch = {"amd64": "x86_64", "x86_64": "x86_64", "arm64": "aarch64", "aarch64": "aarch64"}.get(
+        machine, machine)
+    if system == "Linux":
+        return ("linux64" if arch == "x86_64" else f"linux-{arch}"), f"{arch}-linux", ".so"
+    if system == "Darwin":
+        return "darwin64", f"{arch}-darwin", ".dylib"
+    raise FmuExportError(f"native FMU export supports Linux and macOS, not {system}; use "
+                         f"backend='pythonfmu'")
+
+
+def identifier(name: str) -> str:
+    ident = re.sub(r"\W", "_", name) or "model"
+    return ident if not ident[0].isdigit() else f"m_{ident}"
+
+
+# ---- tables ------------------------------------------------------------------------------
+def _c_str(s: str) -> str:
+    return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
+
+
+def _c_arr(ctype: str, name: str, values, fmt=repr) -> str:
+    vals = list(values) or ["" if fmt is _c_str else 0]
+    body = ", ".join(fmt(v) for v in vals)
+    return f"static const {ctype} {name}[{len(vals)}] = {{{body}}};\n"
+
+
+def solver_variables(first_vr: int) -> list[FmuVariable]:
+    return [FmuVariable(name, first_vr + i, "solver", i, "parameter", "tunable", "exact",
+                        float(start), unit, desc)
+            for i, (name, start, unit, desc) in enumerate(SOLVER_VARIABLES)]
+
+
+def vr_table(compiled, variables: list[FmuVariable]):
+    layout = compiled.recorded_layout
+    n = max(v.value_reference for v in variables) + 1
+    kind, index = [KINDS["time"]] + [8] * (n - 1), [0] * n
+    for v in variables:
+        k, i = KINDS[v.kind], v.index
+        if v.kind == "recorded":
+            src, j = layout[v.index]
+            k, i = (KINDS["state"], j) if src == "x" else (KINDS["recorded"], j)
+        kind[v.value_reference], index[v.value_reference] = k, i
+    return kind, index
+
+
+def model_headers(compiled, mf: ModelFunctions, variables, guid: str,
+                  nominal: list[float]) -> dict[str, str]:
+    sz = mf.sizes()
+    model_h = ["/* generated by acausal: sizes of the model */\n#ifndef AC_MODEL_H\n"
+               "#define AC_MODEL_H\n"]
+    kind, index = vr_table(compiled, variables)
+    for k, v in [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
+                 ("NREC", mf.nrec), ("NH", mf.nh), ("NEV", mf.nev), ("NVR", len(kind)),
+                 ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
+                 ("SZ_W", sz["w"])]:
+        model_h.append(f"#define AC_{k} {v}\n")
+    model_h.append("#endif\n")
+    flags = [(1 if par.positive else 0) | (2 if par.nonnegative else 0)
+             | (4 if par.nonzero else 0) for *_, par in compiled.params]
+    data = ["/* generated by acausal: tables of the model (included by runtime.c only) */\n",
+            '#include "model_functions.h"\n',
+            f"const char *ac_model_name = {_c_str(compiled.name)};\n",
+            f"const char *ac_guid = {_c_str(guid)};\n",
+            _c_arr("int", "AC_VR_KIND", kind, str), _c_arr("int", "AC_VR_INDEX", index, str),
+            _c_arr("double", "AC_P_DEFAULT", compiled.param_vector(), lambda v: repr(float(v))),
+            _c_arr("unsigned char", "AC_P_FLAGS", flags, str),
+            _c_arr("char *", "AC_P_NAMES", compiled.param_names, _c_str),
+            _c_arr("double", "AC_U_START", [float(i[1]) for i in compiled.inputs]),
+            _c_arr("char *", "AC_X_NAMES", compiled.x_names, _c_str),
+            _c_arr("double", "AC_X_NOMINAL", nominal),
+            _c_arr("char *", "AC_Z_NAMES", mf.z_names, _c_str),
+            _c_arr("double", "AC_SOLVER_DEFAULT", [float(s[1]) for s in SOLVER_VARIABLES])]
+    return {"model.h": "".join(model_h), "model_data.h": "".join(data)}
+
+
+def dependencies(compiled, mf: ModelFunctions, variables: list[FmuVariable]) -> dict:
+    """ModelStructure: (value reference, [value references it depends on]) of the outputs,
+    derivatives and initial unknowns, from the sparsity of the Jacobians."""
+    by_kind = {}
+    for v in variables:
+        by_kind.setdefault(v.kind, {})[v.index] = v.value_reference
+    xs, us, ps = by_kind.get("state", {}), by_kind.get("input", {}), by_kind.get("parameter", {})
+    nx, nu = mf.nx, mf.nu
+
+    def deps(row, with_params):
+        cols = np.flatnonzero(mf.dep_w[row])
+        out = [xs[c] for c in cols if c < nx] + [us[c - nx] for c in cols if nx <= c < nx + nu]
+        if with_params:
+            out += [ps[c] for c in np.flatnonzero(mf.dep_p[row])]
+        return sorted(out)
+
+    ders = [(by_kind["derivative"][i], deps(i, False)) for i in range(nx)]
+    outs = [(by_kind["output"][i], deps(nx + i, False)) for i in range(mf.ny)]
+    init = ([(by_kind["output"][i], deps(nx + i, True)) for i in range(mf.ny)]
+            + [(by_kind["derivative"][i], deps(i, True)) for i in range(nx)])
+    return {"outputs": outs, "derivatives": ders, "initial": init}
+
+
+# ---- build -----------------------------------------------------------------------------------
+def _compile(cc: str, sources: list[Path], include: list[Path], out: Path) -> None:
+    cmd = [cc, "-O2", "-shared", "-fPIC", "-fvisibility=hidden", "-std=c99", "-w"]
+    cmd += [f"-I{d}" for d in include] + [str(s) for s in sources] + ["-o", str(out), "-lm"]
+    r = subprocess.run(cmd, capture_output=True, text=True)
+    if r.returncode != 0:
+        tail = "\n".join((r.stderr or r.stdout).strip().splitlines()[-25:])
+        raise FmuExportError(f"compiling the FMU failed ({' '.join(cmd[:2])} ...):\n{tail}")
+
+
+def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "both",
+                  stop_time: float = 1.0, description: str | None = None,
+                  nominals: dict | None = None) -> Path:
+    """Write a native FMU of ``compiled`` to ``path`` (a directory gets ``<model>.fmu``).
+    ``nominals``: state name -> nominal magnitude (default 1): the scale of its absolute
+    tolerance, in the importer's solver (``nominal`` attribute) and in the FMU's own."""
+    if fmi_version not in ("2.0", "3.0"):
+        raise FmuExportError(f"fmi_version must be '2.0' or '3.0', got {fmi_version!r}")
+    if fmu_type not in ("me", "cs", "both"):
+        raise FmuExportError(f"fmu_type must be 'me', 'cs' or 'both', got {fmu_type!r}")
+    path = Path(path)
+    ident = identifier(compiled.name)
+    if path.is_dir():
+        path = path / f"{ident}.fmu"
+    headers = find_fmi_headers(fmi_version)
+    cc = find_compiler()
+    plat2, plat3, ext = platform_dirs()
+    nominals = dict(nominals or {})
+    bad = [n for n, v in nominals.items() if n not in compiled.x_names or not float(v) > 0]
+    if bad:
+        raise FmuExportError(f"nominals: {bad} are not states of '{compiled.name}' with a "
+                             f"positive value; its states: {compiled.x_names}")
+    nominal = [float(nominals.get(n, 1.0)) for n in compiled.x_names]
+    mf = ModelFunctions(compiled)
+    variables = fmu_variables(compiled)
+    variables += solver_variables(variables[-1].value_reference + 1 if variables else 1)
+    with tempfile.TemporaryDirectory(prefix="acausal_fmu_") as tmp:
+        tmp = Path(tmp)
+        src = tmp / "sources"
+        src.mkdir()
+        generated = mf.generate(src)
+        digest = hashlib.sha256((src / generated[0]).read_bytes())
+        digest.update(repr([(v.name, v.value_reference, v.start) for v in variables]
+                           + nominal).encode())
+        guid = "{" + str(uuid.UUID(digest.hexdigest()[:32])) + "}"
+        for name, text in model_headers(compiled, mf, variables, guid, nominal).items():
+            (src / name).write_text(text)
+        wrapper = "fmi2.c" if fmi_version == "2.0" else "fmi3.c"
+        pkg = resources.files("acausal.fmu") / "c"
+        for name in RUNTIME_SOURCES + (wrapper,):
+            (src / name).write_text((pkg / name).read_text())
+        c_files = [generated[0], "runtime.c", wrapper]
+        plat = plat2 if fmi_version == "2.0" else plat3
+        binary = tmp / "binaries" / plat / f"{ident}{ext}"
+        binary.parent.mkdir(parents=True)
+        _compile(cc, [src / f for f in c_files], [src, headers], binary)
+        info = {"model_name": compiled.name, "identifier": ident, "guid": guid,
+                "description": description or f"{compiled.name} (acausal, native)",
+                "variables": variables, "me": fmu_type in ("me", "both"),
+                "cs": fmu_type in ("cs", "both"), "sources": c_files,
+                "deps": dependencies(compiled, mf, variables),
+                "loops": mf.nh > 0, "stop_time": stop_time,
+                "nominal": {n: v for n, v in nominals.items()}}
+        if fmi_version == "2.0":
+            (tmp / "modelDescription.xml").write_text(fmi2_xml(info))
+        else:
+            (tmp / "modelDescription.xml").write_text(fmi3_xml(info))
+            (src / "buildDescription.xml").write_text(build_description(ident, c_files))
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as zf:
+            for f in sorted(tmp.rglob("*")):
+                if f.is_file():
+                    zf.write(f, f.relative_to(tmp).as_posix())
+    return path

@@ -1,0 +1,263 @@
+"""FMI 2.0 co-simulation FMUs through pythonfmu: the compiled model runs in Python on the
+importer's side, with a CasADi integrator.
+
+``export_pythonfmu(compiled, path)`` writes an FMU whose ``resources`` hold
+
+- the slave module (the template ``acausal/fmu/pythonfmu_slave.py``), the numerics it shares with
+  acausal (``acausal/simulation/kernels.py``, as the module ``<slave>_kernels``) and pythonfmu's
+  own Python files (pythonfmu's builder embeds them);
+- ``acausal_model/model.json``: the FMU variables of ``acausal.fmu.variables.fmu_variables``
+  (the same names, value references, causalities, units and start values as the native FMU),
+  the parameters' range checks, the recorded variables' layout and the solver settings;
+- ``acausal_model/*.casadi``: the model as serialized CasADi Functions — the integrator
+  (built here, once: the DAE in scaled time with parameters, inputs, step start and length as
+  its parameters), the start values, time events, right-hand side, outputs, recorded
+  variables and (closed loops / algebraic equations) the initialization equations;
+- ``requirements.txt``: what the importing Python needs (``pythonfmu deploy -f x.fmu`` installs it).
+
+What the importing machine needs
+--------------------------------
+- Linux x86-64 or Windows x86-64 (the platforms pythonfmu ships its FMI wrapper binary for);
+- a CPython 3 interpreter in the importing process: Python importers (fmpy, PyFMI, …) have it;
+  a non-Python importer must be able to resolve the Python C API (on Linux, start it with the
+  interpreter's ``libpython3.X.so`` preloaded, e.g. ``LD_PRELOAD=/usr/lib/x86_64-linux-gnu/
+  libpython3.11.so``; on Windows, ``python3X.dll`` on the PATH);
+- in that interpreter: ``numpy`` and ``casadi`` — the same casadi version as the exporter (it is
+  in ``requirements.txt`` and ``model.json``; the slave logs a warning on a mismatch: CasADi's
+  serialization format may change between releases). Not acausal, not pythonfmu.
+For an FMU that needs nothing on the importer's side use the native backend.
+
+The FMU: every parameter tunable (a change during the simulation takes effect from the next
+step), inputs held constant over each communication step, states settable before
+initialization (a value different from the declared start is held exactly; closed loops are
+assembled around it), outputs, state derivatives and every recorded variable readable;
+get/set/serialize FMU state. The tolerances (``rtol``, ``atol``) are fixed at export: pythonfmu
+does not pass the importer's tolerance to the slave. CasADi re-initializes its integrator at
+every call, so every communication step restarts the multistep method from the state reached:
+the defaults (1e-10, 1e-12) are tighter than acausal.simulate's so that a hundred restarts stay
+well inside 1e-6 of the in-process result.
+
+Errors: a failed solve, a failed initialization (e.g. a linkage that cannot be assembled) or an
+invalid parameter value makes fmi2DoStep return fmi2Discard (fmpy then ends the simulation at
+the last good time) with the reason logged at status error; pythonfmu maps a Python exception
+to fmi2Fatal and has no fmi2Error, so the slave never raises. Messages reach the importer's
+logger when logging is on (fmi2Instantiate's loggingOn; fmpy: ``debug_logging=True``).
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+import shutil
+import sys
+import tempfile
+import warnings
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+
+from ..core.errors import AcausalError, SimulationError
+from ..simulation import kernels
+from ..simulation.initialization import initial_state, model_equations
+from ..simulation.simulate import integrator_settings
+from .export import FmuExportError
+from .model_description import base_unit_attributes, naming_convention
+from .variables import fmu_variables
+
+TEMPLATE = Path(__file__).with_name("pythonfmu_slave.py")
+DATA = "acausal_model"
+SOLVERS = ("cvodes", "adams", "idas")
+
+
+def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "cs",
+                     rtol: float = 1e-10, atol: float = 1e-12, solver: str | None = None,
+                     **options) -> Path:
+    """Write ``compiled`` as an FMI 2.0 co-simulation FMU at ``path`` (a file name, or an
+    existing directory: then ``<model>.fmu`` inside it); returns the FMU's path.
+
+    rtol, atol  the integrator's tolerances (fixed in the FMU);
+    solver      'cvodes' (ODE default: BDF), 'adams' (non-stiff ODE models) or 'idas' (DAE
+                default), as in acausal.simulate.
+    """
+    if str(fmi_version) != "2.0":
+        raise FmuExportError(f"the pythonfmu backend makes FMI 2.0 FMUs only, not "
+                           f"fmi_version={fmi_version!r}; use backend='native' for FMI 3.0")
+    if fmu_type != "cs":
+        raise FmuExportError(f"the pythonfmu backend makes co-simulation FMUs only, not "
+                           f"fmu_type={fmu_type!r}: pass fmu_type='cs', or use "
+                           f"backend='native' for model exchange")
+    if options:
+        raise FmuExportError(f"unknown option(s) {sorted(options)} for the pythonfmu backend; "
+                           f"it takes rtol, atol and solver")
+    try:
+        from pythonfmu.builder import FmuBuilder
+    except ImportError:
+        raise FmuExportError("the pythonfmu backend needs the 'pythonfmu' package: "
+                           "pip install pythonfmu (or acausal[fmu])") from None
+    path = Path(path)
+    ident = _identifier(compiled.name)
+    if path.is_dir():
+        path = path / f"{ident}.fmu"
+    functions, meta = _contents(compiled, ident, rtol, atol, solver)
+    source = TEMPLATE.read_text(encoding="utf-8")
+    shared = Path(kernels.__file__).read_text(encoding="utf-8")
+    digest = hashlib.sha1((source + shared).encode()).hexdigest()[:10]
+    module = f"acausal_slave_{digest}"
+    with tempfile.TemporaryDirectory(prefix="acausal_fmu_") as tmp:
+        tmp = Path(tmp)
+        data = tmp / DATA
+        data.mkdir()
+        for name, f in functions.items():
+            f.save(str(data / f"{name}.casadi"))
+        (data / "model.json").write_text(json.dumps(meta, indent=1), encoding="utf-8")
+        requirements = tmp / "requirements.txt"
+        requirements.write_text(f"numpy\ncasadi=={ca.__version__}\n", encoding="utf-8")
+        script = tmp / "src" / f"{module}.py"
+        script.parent.mkdir()
+        script.write_text(source, encoding="utf-8")
+        shared_module = script.with_name(f"{module}_kernels.py")    # the slave imports it
+        shared_module.write_text(shared, encoding="utf-8")
+        built = tmp / f"{ident}.fmu"
+        try:
+            FmuBuilder.build_FMU(script, dest=built,
+                                 project_files=[data, requirements, shared_module],
+                                 canGetAndSetFMUstate=True, canSerializeFMUstate=True)
+        finally:    # the builder imports the script: leave no trace in this process
+            sys.modules.pop(module, None)
+            sys.modules.pop(f"{module}_kernels", None)
+            while str(script.parent) in sys.path:
+                sys.path.remove(str(script.parent))
+        path.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(built, path)
+    return path
+
+
+def _identifier(name: str) -> str:
+    ident = re.sub(r"\W", "_", name or "model")
+    return ident if re.match(r"[A-Za-z_]", ident) else f"m_{ident}"
+
+
+def _contents(compiled, ident, rtol, atol, solver):
+    """The serialized Functions and the JSON metadata of the FMU."""
+    import acausal
+    c = compiled
+    variables = fmu_variables(c)
+    has_alg = c.z.numel() > 0
+    loops = c.lagrange.phi.numel() > 0
+    integrator, deviation = _integrator(c, solver, rtol, atol)
+    rec = c.recorded_function
+    functions = {
+        "integrator": integrator,
+        "start": c.start,
+        "events": c.events,
+        "f": c.f,
+        "outputs": c.output_function,
+        "recorded": rec,
+    }
+    init_labels = []
+    if loops or has_alg:
+        functions["init"], init_labels = _init_function(c)
+    checks = []
+    for name, default, unit, desc, par in c.params:
+        checks.append({k: bool(getattr(par, k, False))
+                       for k in ("positive", "nonnegative", "nonzero")}
+                      | {"description": getattr(par, "description", "") or desc or ""})
+    layout = c.recorded_layout
+    meta = {
+        "identifier": ident,
+        "description": (f"acausal model '{c.name}': {len(c.x_names)} states, "
+                        f"{len(c.params)} parameters, {len(c.inputs)} inputs, "
+                        f"{len(c.outputs)} outputs (pythonfmu co-simulation)"),
+        "acausal_version": acausal.__version__,
+        "casadi_version": ca.__version__,
+        "functions": sorted(functions),
+        "x_names": list(c.x_names),
+        "z_names": list(c.z_names),
+        "param_names": list(c.param_names),
+        "parameter_checks": checks,
+        "variables": [_plain(v) for v in variables],
+        "units": [_unit(u) for u in sorted({v.unit for v in variables if v.unit})],
+        "naming_convention": naming_convention([v.name for v in variables]),
+        # recorded variables: the FMU variable's index is its position in recorded_names
+        "recorded_layout": [list(layout[i]) for i in range(len(layout))],
+        "deviation_form": deviation,
+        "init_labels": init_labels,
+        "active_rows": _active_rows(c) if loops else {},
+        "rtol": rtol, "atol": atol,
+    }
+    return functions, meta
+
+
+def _plain(v):
+    return {"name": v.name, "value_reference": v.value_reference, "kind": v.kind,
+            "index": v.index, "causality": v.causality, "variability": v.variability,
+            "initial": v.initial, "start": v.start, "unit": v.unit or "",
+            "description": v.description or "", "derivative_of": v.derivative_of}
+
+
+def _unit(name):
+    """A unit with its SI base-unit exponents (BaseUnit attributes), as the native FMU
+    declares it; base None when the unit string is not understood."""
+    return {"name": name, "base": base_unit_attributes(name)}
+
+
+def _integrator(c, solver, rtol, atol):
+    """The model's integrator over one step, in scaled time τ ∈ [0, 1] (t = t0 + h·τ), with
+    parameters P = [p; u; t0; h] (closed loops: also [x0; ẋ0], integrating the deviation
+    δ = x − x0 − h·τ·ẋ0, consistent at τ = 0 with ẋ(δ) = 0). Options as in acausal.simulate."""
+    has_alg = c.z.numel() > 0
+    solver = solver or ("idas" if has_alg else "cvodes")
+    if solver not in SOLVERS:
+        raise FmuExportError(f"unknown solver '{solver}' for the pythonfmu backend; choose "
+                             f"one of {SOLVERS}")
+    try:
+        plugin, opts, loops = integrator_settings(c, solver, rtol, atol)
+    except SimulationError as e:
+        raise FmuExportError(str(e)) from None
+    nx = c.x.numel()
+    tau = ca.SX.sym("tau")
+    t0, h = ca.SX.sym("t0"), ca.SX.sym("h")
+    P = [c.p, c.u, t0, h]
+    t = t0 + h * tau
+    if loops:
+        d, x0, f0 = ca.SX.sym("delta", nx), ca.SX.sym("x0", nx), ca.SX.sym("f0", nx)
+        P += [x0, f0]
+        ode, alg = c.rhs(t, x0 + h * tau * f0 + d, c.z, c.p, c.u)
+        dae = {"x": d, "ode": h * ode - h * f0}
+    else:
+        ode, alg = c.rhs(t, c.x, c.z, c.p, c.u)
+        dae = {"x": c.x, "ode": h * ode}
+    dae.update(t=tau, p=ca.vertcat(*P))
+    if has_alg:
+        dae.update(z=c.z, alg=alg)
+    if loops:      # the step in τ that acausal.simulate takes in t: 1e-6 of the segment
+        opts["step0"] = 1e-6
+    return ca.integrator("step", plugin, dae, 0.0, 1.0, opts), loops
+
+
+def _init_function(c):
+    """(w = [x; z], t, p, u) -> (H, ∂H/∂w): loop constraints Φ, Φ̇ and algebraic equations,
+    the equations acausal.simulation.initialization.initial_state holds; and their labels."""
+    w = ca.vertcat(c.x, c.z)
+    eqs, labels = model_equations(c)
+    H = ca.vertcat(*[ca.vec(e) for e in eqs])
+    f = ca.Function("init", [w, c.t, c.p, c.u], [H, ca.jacobian(H, w)],
+                    ["w", "t", "p", "u"], ["H", "J"])
+    return f, labels
+
+
+def _active_rows(c) -> dict:
+    """The enforced loop rows (``loops.active_*``) at the default parameters' assembly, as
+    acausal.simulate chooses them; all rows if that assembly fails."""
+    switches = [i for i, n in enumerate(c.param_names) if n.startswith("loops.active")]
+    try:
+        p = c.param_vector()
+        u0 = np.array([i[1] for i in c.inputs], dtype=float)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            xs, zs = initial_state(c, {}, p, u0, 0.0)
+            active, _ = c.mobility_at(xs, zs, p, 0.0)
+    except AcausalError:
+        return {}
+    return {str(i): float(a) for i, a in zip(switches, active)}

@@ -1,0 +1,344 @@
+"""The pythonfmu co-simulation slave of an acausal FMU (a template shipped inside every FMU).
+
+``export_pythonfmu`` copies this file into the FMU's ``resources`` folder (as a module whose
+name carries a hash of this file, so that FMUs of different acausal versions loaded into one
+process do not share a module) next to ``acausal_model/``: ``model.json`` (variables, value
+references, units, parameter checks, solver settings) and the model's serialized CasADi
+Functions (``*.casadi``); and next to it the module ``<this module>_kernels``, a copy of
+``acausal/simulation/kernels.py`` (the numerics acausal runs in-process: initial-value
+projection, time events, solver messages). The slave needs only Python, numpy and casadi — not
+acausal, and not pythonfmu either (the FMU carries pythonfmu's Python files).
+
+One step ``do_step(t, h)`` integrates from t to t + h with the inputs held at their current
+values (zero-order hold), splitting the step at the model's time events. The integrator is
+built once at export — the DAE in scaled time τ ∈ [0, 1], t = t0 + h·τ, so that one CasADi
+integrator serves every step size — and kept for the FMU's life; each call restarts it from
+the state reached (the state travels between steps, exactly as in acausal.simulate at its time
+events). Closed loops (index-2 stabilized DAE) integrate the deviation δ = x − x0 − τ·h·ẋ0, whose
+derivative at τ = 0 is zero, so IDAS starts every step from consistent values without its own
+(ill-conditioned for index 2) initial-value computation.
+
+Errors never raise into the FMI wrapper (pythonfmu turns a Python exception into fmi2Fatal and
+drops the instance): a failed solve makes ``do_step`` return False (fmi2Discard) with the reason
+logged at status error; an invalid parameter value is logged at status error when set and the
+slave refuses to step (fmi2Discard) until a valid value is set.
+"""
+from __future__ import annotations
+
+import importlib
+import json
+from pathlib import Path
+
+import casadi as ca
+import numpy as np
+from pythonfmu.enums import Fmi2Causality, Fmi2Initial, Fmi2Status, Fmi2Variability
+from pythonfmu.fmi2slave import Fmi2Slave
+from pythonfmu.variables import Real
+
+DATA = "acausal_model"          # folder in resources with model.json and the *.casadi files
+# acausal.simulation.kernels, shipped next to this module under this module's name (unique per
+# acausal version) + "_kernels"
+kernels = importlib.import_module(f"{__name__}_kernels")
+_CAUSALITY = {c.name: c for c in Fmi2Causality}
+_VARIABILITY = {v.name: v for v in Fmi2Variability}
+_INITIAL = {i.name: i for i in Fmi2Initial}
+
+
+class AcausalSlave(Fmi2Slave):
+    """An acausal CompiledModel as an FMI 2.0 co-simulation slave."""
+
+    def __init__(self, **kwargs):
+        super().__init__(**kwargs)
+        folder = Path(self.resources) / DATA
+        meta = json.loads((folder / "model.json").read_text(encoding="utf-8"))
+        self.meta = meta
+        self.modelName = meta["identifier"]
+        self.description = meta["description"]
+        self.version = meta["acausal_version"]
+        self.fn = {name: ca.Function.load(str(folder / f"{name}.casadi"))
+                   for name in meta["functions"]}
+        if ca.__version__ != meta["casadi_version"]:
+            self.log(f"this FMU was exported with casadi {meta['casadi_version']}; casadi "
+                     f"{ca.__version__} is installed (the serialized functions may not load or "
+                     f"behave the same: install casadi=={meta['casadi_version']})",
+                     Fmi2Status.warning)
+        self.nx, self.nz = len(meta["x_names"]), len(meta["z_names"])
+        self.vars_meta = meta["variables"]
+        kinds = {}
+        for v in self.vars_meta:
+            kinds.setdefault(v["kind"], []).append(v)
+        self.p = np.array([v["start"] for v in kinds.get("parameter", [])], dtype=float)
+        self.p_declared = self.p.copy()
+        self.u = np.array([v["start"] for v in kinds.get("input", [])], dtype=float)
+        self.x_declared = np.array([v["start"] for v in kinds.get("state", [])], dtype=float)
+        self.x_given = {}               # state index -> value set before initialization
+        self.bad = {}                   # parameter index -> message of an invalid value
+        self.error = None               # why the slave cannot step (failed init / solve)
+        self.t = 0.0
+        self.initialized = False
+        self.x, self.z = self._start()
+        self._cache = None
+        self.by_vr = {}
+        for v in self.vars_meta:
+            self._register(v)
+
+    # ---- variables ------------------------------------------------------------------------
+    def _register(self, v):
+        var = Real(v["name"], start=v["start"] if v["initial"] == "exact" or v["kind"] == "input"
+                   else None,
+                   causality=_CAUSALITY[v["causality"]],
+                   variability=_VARIABILITY[v["variability"]],
+                   initial=_INITIAL[v["initial"]] if v["initial"] else None,
+                   description=v["description"] or None,
+                   getter=lambda: 0.0, setter=lambda value: None)
+        var.value_reference = v["value_reference"]
+        self.vars[v["value_reference"]] = var
+        self.by_vr[v["value_reference"]] = v
+
+    def to_xml(self, model_options=dict()):
+        """pythonfmu's description plus units, derivative attributes and the complete model
+        structure (outputs, derivatives, initial unknowns), so that it validates."""
+        from xml.etree.ElementTree import Element, SubElement
+        root = super().to_xml(model_options)
+        elements = list(root.findall("ModelVariables/ScalarVariable"))
+        index = {}
+        for pos, (sv, v) in enumerate(zip(elements, self.vars_meta), start=1):
+            index[v["value_reference"]] = pos
+            real = sv.find("Real")
+            if v["unit"]:
+                real.set("unit", v["unit"])
+            if v["derivative_of"] is not None:
+                real.set("derivative", str(index[v["derivative_of"]]))
+            if v["start"] is not None and real.get("start") is not None:
+                real.set("start", repr(float(v["start"])))
+        root.set("variableNamingConvention", self.meta["naming_convention"])
+        if self.meta["units"]:
+            defs = Element("UnitDefinitions")
+            for u in self.meta["units"]:
+                unit = SubElement(defs, "Unit", name=u["name"])
+                if u["base"] is not None:
+                    SubElement(unit, "BaseUnit", u["base"])
+            root.insert(list(root).index(root.find("CoSimulation")) + 1, defs)
+        root.remove(root.find("ModelStructure"))
+        structure = SubElement(root, "ModelStructure")
+        outputs = [index[v["value_reference"]] for v in self.vars_meta if v["kind"] == "output"]
+        derivatives = [index[v["value_reference"]] for v in self.vars_meta
+                       if v["kind"] == "derivative"]
+        for tag, rows in (("Outputs", outputs), ("Derivatives", derivatives),
+                          ("InitialUnknowns", sorted(outputs + derivatives))):
+            if rows:
+                node = SubElement(structure, tag)
+                for i in rows:
+                    SubElement(node, "Unknown", index=str(i))
+        return root
+
+    def get_real(self, vrs):
+        try:
+            return [self._value(self.by_vr[vr]) for vr in vrs]
+        except Exception as e:                       # never raise into the FMI wrapper
+            self.log(f"getReal failed: {e}", Fmi2Status.error)
+            return [float("nan")] * len(vrs)
+
+    def set_real(self, vrs, values):
+        for vr, value in zip(vrs, values):
+            try:
+                self._set(self.by_vr[vr], float(value))
+            except Exception as e:
+                self.log(f"setReal of value reference {vr} failed: {e}", Fmi2Status.error)
+
+    def _set(self, v, value):
+        kind, i = v["kind"], v["index"]
+        if kind == "parameter":
+            self.p[i] = value
+            problem = self._check_parameter(i, value)
+            if problem:
+                self.bad[i] = problem
+                self.log(problem, Fmi2Status.error)
+            else:
+                self.bad.pop(i, None)
+        elif kind == "input":
+            self.u[i] = value
+        elif kind == "state" and not self.initialized:
+            self.x_given[i] = value
+            self.x[i] = value
+        else:
+            when = " after initialization" if kind == "state" else ""
+            self.log(f"'{v['name']}' ({v['causality']} {kind}) cannot be set{when}; the value "
+                     f"{value} is ignored", Fmi2Status.error)
+            return
+        self._cache = None
+
+    def _check_parameter(self, i, value):
+        """The checks of acausal's Parameter.check_scalar, as a message or None."""
+        rule = self.meta["parameter_checks"][i]
+        name = self.meta["param_names"][i]
+        what = rule.get("description") or name
+        if not np.isfinite(value):
+            return f"parameter '{name}' must be a finite number, got {value}"
+        if rule.get("positive") and not value > 0:
+            return f"parameter '{name}' must be > 0 ({what}), got {value}"
+        if rule.get("nonnegative") and not value >= 0:
+            return f"parameter '{name}' must be >= 0 ({what}), got {value}"
+        if rule.get("nonzero") and value == 0:
+            return f"parameter '{name}' must not be 0 ({what})"
+        return None
+
+    def _value(self, v):
+        kind, i = v["kind"], v["index"]
+        if kind == "parameter":
+            return float(self.p[i])
+        if kind == "input":
+            return float(self.u[i])
+        if kind == "state":
+            return float(self.x[i])
+        c = self._derived()
+        if kind == "derivative":
+            return float(c["xdot"][i])
+        if kind == "output":
+            return float(c["y"][i])
+        where, j = self.meta["recorded_layout"][i]
+        return float(self.x[j] if where == "x" else c["r"][j])
+
+    def _derived(self):
+        """Outputs, state derivatives and recorded variables at the current point (cached)."""
+        if self._cache is None:
+            args = (self.x, self.u, self.p, self.z, self.t)
+            xdot = self.fn["f"](*args)[0]
+            y = self.fn["outputs"](*args)
+            r = self.fn["recorded"](self.t, self.x, self.z, self.p, self.u)
+            self._cache = {k: np.asarray(ca.DM(val).full(), dtype=float).ravel()
+                           for k, val in (("xdot", xdot), ("y", y), ("r", r))}
+        return self._cache
+
+    # ---- initialization -------------------------------------------------------------------
+    def _start(self):
+        w = np.asarray(self.fn["start"](self.p).full(), dtype=float).ravel()
+        x, z = w[:self.nx].copy(), w[self.nx:].copy()
+        for i, value in self.x_given.items():
+            x[i] = value
+        return x, z
+
+    def setup_experiment(self, start_time, stop_time=None, tolerance=None):
+        self.t = float(start_time)
+        self._cache = None
+
+    def exit_initialization_mode(self):
+        """States: set values that differ from the declared start are held exactly; the
+        others start at the model's start values for the current parameters. Closed loops and
+        algebraic equations are then made consistent (as acausal's initial_state does)."""
+        try:
+            self._initialize()
+        except Exception as e:
+            self.error = f"initialization failed: {e}"
+            self.log(self.error, Fmi2Status.error)
+        self.initialized = True
+        self._cache = None
+
+    def _initialize(self):
+        for k, value in self.meta["active_rows"].items():     # enforced loop rows (export)
+            k = int(k)
+            if self.p[k] == self.p_declared[k]:
+                self.p[k] = value
+        hard = {i: v for i, v in self.x_given.items() if v != self.x_declared[i]}
+        self.x_given = hard
+        self.x, self.z = self._start()
+        if "init" not in self.fn:
+            return
+        self.x, self.z = self._consistent(hard)
+
+    def _consistent(self, hard):
+        """Gauss-Newton projection of the start values onto the loop constraints Φ = 0,
+        Φ̇ = 0, the algebraic equations and the held states (acausal's initial_state)."""
+        rows = sorted(hard)
+        start = np.concatenate([self.x, self.z])      # the held states in place already
+        E = np.zeros((len(rows), start.size))
+        E[np.arange(len(rows)), rows] = 1.0
+        targets = [hard[i] for i in rows]
+
+        def equations(w):
+            h, J = self.fn["init"](w, self.t, self.p, self.u)
+            h = np.asarray(h.full(), dtype=float).ravel()
+            return np.concatenate([E @ w - targets, h]), np.vstack([E, np.asarray(J.full())])
+
+        names = self.meta["x_names"]
+        labels = [names[i] for i in rows] + self.meta["init_labels"]
+        w = kernels.project(equations, start, start, self.nx, labels, targets, given="start")
+        note = kernels.moved_note(names, start, w)
+        if note:
+            self.log(note, Fmi2Status.ok)
+        return w[:self.nx], w[self.nx:]
+
+    # ---- stepping -------------------------------------------------------------------------
+    def do_step(self, current_time, step_size):
+        if self.error is not None or self.bad:
+            self.log(self.error or "; ".join(self.bad.values()), Fmi2Status.error)
+            return False
+        t0, t1 = float(current_time), float(current_time) + float(step_size)
+        if step_size <= 0:
+            return True
+        try:
+            x, z, a = self.x, self.z, t0
+            for b, end in self._segments(t0, t1):
+                x, z = self._advance(x, z, a, end)
+                a = b
+        except Exception as e:
+            self.error = (f"the solver failed in the step from t = {t0:g} to {t1:g} s: "
+                          f"{kernels.short_error(e)}; check the parameters and inputs")
+            self.log(self.error, Fmi2Status.error)
+            return False
+        self.x, self.z, self.t = x, z, t1
+        self._cache = None
+        return True
+
+    def _segments(self, t0, t1):
+        """(restart time, end) of the pieces of [t0, t1] between time events: each piece ends
+        just before its event, as in acausal.simulate; an event at t1 ends the step just
+        before it too."""
+        tol = 1e-12 * max(1.0, abs(t1))
+        out = [(e, kernels.just_before(e)) for e in
+               kernels.event_times(*self.fn["events"](self.p), t0, t1 + tol)]
+        if not out or abs(out[-1][0] - t1) > tol:
+            out.append((t1, t1))
+        return out
+
+    def _advance(self, x, z, a, b):
+        h = b - a
+        if h <= 0:
+            return x, z
+        P = [self.p, self.u, [a, h]]
+        if self.meta["deviation_form"]:
+            f0 = np.asarray(self.fn["f"](x, self.u, self.p, z, a)[0].full(), dtype=float).ravel()
+            P += [x, f0]
+            sol = self.fn["integrator"](x0=np.zeros(self.nx), z0=z, p=np.concatenate(P))
+            d = np.asarray(sol["xf"].full(), dtype=float).ravel()
+            return x + h * f0 + d, np.asarray(sol["zf"].full(), dtype=float).ravel()
+        kw = {"x0": x, "p": np.concatenate(P)}
+        if self.nz:
+            kw["z0"] = z
+        sol = self.fn["integrator"](**kw)
+        xf = np.asarray(sol["xf"].full(), dtype=float).ravel()
+        zf = np.asarray(sol["zf"].full(), dtype=float).ravel() if self.nz else z
+        return xf, zf
+
+    # ---- FMU state, termination -----------------------------------------------------------
+    def _get_fmu_state(self):
+        return {"t": self.t, "x": self.x.tolist(), "z": self.z.tolist(), "p": self.p.tolist(),
+                "u": self.u.tolist(), "initialized": self.initialized, "error": self.error,
+                "bad": {str(k): v for k, v in self.bad.items()},
+                "x_given": {str(k): v for k, v in self.x_given.items()}}
+
+    def _set_fmu_state(self, state):
+        self.t = float(state["t"])
+        self.x, self.z = np.array(state["x"], dtype=float), np.array(state["z"], dtype=float)
+        self.p, self.u = np.array(state["p"], dtype=float), np.array(state["u"], dtype=float)
+        self.initialized, self.error = bool(state["initialized"]), state["error"]
+        self.bad = {int(k): v for k, v in state["bad"].items()}
+        self.x_given = {int(k): v for k, v in state["x_given"].items()}
+        self._cache = None
+
+    def terminate(self):
+        """Release the CasADi objects (integrator memory, functions) so that the importer can
+        unload the FMU and exit cleanly."""
+        self.fn = {}
+        self._cache = None
+
