@@ -52,8 +52,8 @@ Initialization
 Start values of the states follow the parameters (``compiled.start(p)``) unless the importer
 set them. Closed loops are assembled in exitInitializationMode like ``simulate()`` does: the
 states the importer set are held, the others move the least (Gauss–Newton on Φ = 0, Φ̇ = 0,
-steps limited to 0.3 per state). The parameters ``loops.active[i]`` keep their values (1:
-every row enforced); ``simulate()`` switches redundant rows off itself, the FMU does not.
+steps limited to 0.3 per state). The parameters ``loops.active[i]`` start as ``simulate()``
+sets them at the default configuration (redundant rows off; see ``variables.py``).
 
 Errors inside the FMU (a rejected parameter value — NaN, or violating the Parameter's
 positive / nonnegative / nonzero flag — a failed Newton or projection, a failed step) return
@@ -191,7 +191,8 @@ def model_headers(compiled, mf: ModelFunctions, variables, guid: str,
             f"const char *ac_model_name = {_c_str(compiled.name)};\n",
             f"const char *ac_guid = {_c_str(guid)};\n",
             _c_arr("int", "AC_VR_KIND", kind, str), _c_arr("int", "AC_VR_INDEX", index, str),
-            _c_arr("double", "AC_P_DEFAULT", compiled.param_vector(), lambda v: repr(float(v))),
+            _c_arr("double", "AC_P_DEFAULT", [v.start for v in variables if v.kind == "parameter"],
+                   lambda v: repr(float(v))),
             _c_arr("unsigned char", "AC_P_FLAGS", flags, str),
             _c_arr("char *", "AC_P_NAMES", compiled.param_names, _c_str),
             _c_arr("double", "AC_U_START", [float(i[1]) for i in compiled.inputs]),

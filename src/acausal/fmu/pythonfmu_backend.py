@@ -51,15 +51,14 @@ import re
 import shutil
 import sys
 import tempfile
-import warnings
 from pathlib import Path
 
 import casadi as ca
 import numpy as np
 
-from ..core.errors import AcausalError, SimulationError
+from ..core.errors import SimulationError
 from ..simulation import kernels
-from ..simulation.initialization import initial_state, model_equations
+from ..simulation.initialization import model_equations
 from ..simulation.simulate import integrator_settings
 from .export import FmuExportError
 from .model_description import base_unit_attributes, naming_convention
@@ -183,7 +182,6 @@ def _contents(compiled, ident, rtol, atol, solver):
         "recorded_layout": [list(layout[i]) for i in range(len(layout))],
         "deviation_form": deviation,
         "init_labels": init_labels,
-        "active_rows": _active_rows(c) if loops else {},
         "rtol": rtol, "atol": atol,
     }
     return functions, meta
@@ -245,19 +243,3 @@ def _init_function(c):
     f = ca.Function("init", [w, c.t, c.p, c.u], [H, ca.jacobian(H, w)],
                     ["w", "t", "p", "u"], ["H", "J"])
     return f, labels
-
-
-def _active_rows(c) -> dict:
-    """The enforced loop rows (``loops.active_*``) at the default parameters' assembly, as
-    acausal.simulate chooses them; all rows if that assembly fails."""
-    switches = [i for i, n in enumerate(c.param_names) if n.startswith("loops.active")]
-    try:
-        p = c.param_vector()
-        u0 = np.array([i[1] for i in c.inputs], dtype=float)
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            xs, zs = initial_state(c, {}, p, u0, 0.0)
-            active, _ = c.mobility_at(xs, zs, p, 0.0)
-    except AcausalError:
-        return {}
-    return {str(i): float(a) for i, a in zip(switches, active)}

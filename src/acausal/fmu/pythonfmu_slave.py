@@ -68,7 +68,6 @@ class AcausalSlave(Fmi2Slave):
         for v in self.vars_meta:
             kinds.setdefault(v["kind"], []).append(v)
         self.p = np.array([v["start"] for v in kinds.get("parameter", [])], dtype=float)
-        self.p_declared = self.p.copy()
         self.u = np.array([v["start"] for v in kinds.get("input", [])], dtype=float)
         self.x_declared = np.array([v["start"] for v in kinds.get("state", [])], dtype=float)
         self.x_given = {}               # state index -> value set before initialization
@@ -235,10 +234,6 @@ class AcausalSlave(Fmi2Slave):
         self._cache = None
 
     def _initialize(self):
-        for k, value in self.meta["active_rows"].items():     # enforced loop rows (export)
-            k = int(k)
-            if self.p[k] == self.p_declared[k]:
-                self.p[k] = value
         hard = {i: v for i, v in self.x_given.items() if v != self.x_declared[i]}
         self.x_given = hard
         self.x, self.z = self._start()
