@@ -24,32 +24,19 @@ import acausal
 from acausal.analysis import inverse_dynamics, mixed_dynamics
 from acausal.components import rotational as rot
 from acausal.components import signals as sig
-from acausal.components.planar import Fixed, Revolute, World
-from four_bar import L0, L1, L2, L3, M1, M2, M3, add_link
+from four_bar import FourBar
 
 T0, OMEGA = 2.0, 3.0                          # N.m, rad/s: the torque of the mixed problem
 GUESS = {"rev2.phi": -0.5, "rev3.phi": 1.6}   # rad: the assembly branch (rocker up)
 
 
-class DrivenFourBar(acausal.Model):
+class DrivenFourBar(FourBar):
     """The four-bar of four_bar.py with rev1 driven by ``drive``: "position" (exact Position
     source, phi_ref = 1 + 2t + 0.3 sin(πt) [rad]) or "torque" (Torque source, model Input T
     [N.m])."""
 
     def __init__(self, drive: str = "position", name: str = "driven_four_bar"):
-        super().__init__(name)
-        self.world = World()
-        self.A, self.D = Fixed(), Fixed(r=(L0, 0.0))
-        self.rev1 = Revolute(useFlange=True)
-        self.rev2, self.rev3, self.rev4 = Revolute(), Revolute(), Revolute()
-        self.connect(self.A.frame, self.rev1.frame_a)
-        B = add_link(self, "crank", L1, M1, self.rev1.frame_b)
-        self.connect(B, self.rev2.frame_a)
-        C = add_link(self, "coupler", L2, M2, self.rev2.frame_b)
-        self.connect(self.D.frame, self.rev3.frame_a)
-        C_rocker = add_link(self, "rocker", L3, M3, self.rev3.frame_b)
-        self.connect(C, self.rev4.frame_a)
-        self.connect(C_rocker, self.rev4.frame_b)
+        super().__init__(name, crank_flange=True)
         if drive == "position":
             self.drive = rot.Position(exact=True)
             self.ramp = sig.Ramp(height=2.0 * 100, duration=100.0, offset=1.0)

@@ -48,19 +48,24 @@ def add_link(model, name, L, m, frame):
 
 
 class FourBar(acausal.Model):
-    """Crank-rocker four-bar; bars are slender rods (I = m L²/12) with the mass at the middle."""
+    """Crank-rocker four-bar; bars are slender rods (I = m L²/12) with the mass at the middle.
+    ``lengths`` (ground, crank, coupler, rocker) [m], ``masses`` (crank, coupler, rocker)
+    [kg]; ``crank_flange``: rev1 with its 1-D flange, to be driven or loaded."""
 
-    def __init__(self, name="four_bar"):
+    def __init__(self, name="four_bar", lengths=(L0, L1, L2, L3), masses=(M1, M2, M3),
+                 crank_flange: bool = False):
         super().__init__(name)
+        (l0, l1, l2, l3), (m1, m2, m3) = lengths, masses
         self.world = World()
-        self.A, self.D = Fixed(), Fixed(r=(L0, 0.0))
-        self.rev1, self.rev2, self.rev3, self.rev4 = Revolute(), Revolute(), Revolute(), Revolute()
+        self.A, self.D = Fixed(), Fixed(r=(l0, 0.0))
+        self.rev1 = Revolute(useFlange=crank_flange)
+        self.rev2, self.rev3, self.rev4 = Revolute(), Revolute(), Revolute()
         self.connect(self.A.frame, self.rev1.frame_a)
-        B = add_link(self, "crank", L1, M1, self.rev1.frame_b)
+        B = add_link(self, "crank", l1, m1, self.rev1.frame_b)
         self.connect(B, self.rev2.frame_a)
-        C = add_link(self, "coupler", L2, M2, self.rev2.frame_b)
+        C = add_link(self, "coupler", l2, m2, self.rev2.frame_b)
         self.connect(self.D.frame, self.rev3.frame_a)
-        C_rocker = add_link(self, "rocker", L3, M3, self.rev3.frame_b)
+        C_rocker = add_link(self, "rocker", l3, m3, self.rev3.frame_b)
         self.connect(C, self.rev4.frame_a)               # the loop closes here
         self.connect(C_rocker, self.rev4.frame_b)
 

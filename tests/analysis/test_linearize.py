@@ -32,7 +32,7 @@ from acausal.components.planar import Body, Fixed, FixedTranslation, Revolute, W
 from acausal.simulation.initialization import initial_state
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from four_bar import FourBar, add_link  # noqa: E402
+from four_bar import FourBar  # noqa: E402
 
 G = 9.81
 
@@ -200,19 +200,7 @@ def test_four_bar_reduced_A_equals_finite_differences_on_the_loop():
 
 
 def parallelogram(m1=1.0, m2=2.0, m3=1.5, l1=0.5, l0=1.0):
-    md = ac.Model("parallelogram")
-    md.world = World()
-    md.A, md.D = Fixed(), Fixed(r=(l0, 0.0))
-    md.rev1, md.rev2, md.rev3, md.rev4 = Revolute(), Revolute(), Revolute(), Revolute()
-    md.connect(md.A.frame, md.rev1.frame_a)
-    B = add_link(md, "crank", l1, m1, md.rev1.frame_b)
-    md.connect(B, md.rev2.frame_a)
-    C = add_link(md, "coupler", l0, m2, md.rev2.frame_b)
-    md.connect(md.D.frame, md.rev3.frame_a)
-    C3 = add_link(md, "rocker", l1, m3, md.rev3.frame_b)
-    md.connect(C, md.rev4.frame_a)
-    md.connect(C3, md.rev4.frame_b)
-    return ac.compile(md)
+    return ac.compile(FourBar("parallelogram", lengths=(l0, l1, l0, l1), masses=(m1, m2, m3)))
 
 
 def test_parallelogram_hanging_frequency_closed_form():

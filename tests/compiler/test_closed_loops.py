@@ -70,19 +70,21 @@ def link(model, name, L, m, frame):
     return half_b.frame_b
 
 
-def four_bar(parallelogram=False, fifth_link=False):
+def four_bar(parallelogram=False, fifth_link=False, crank_flange=False):
     """Ground pivots A = (0, 0) and D = (L0, 0); crank A–B on rev1, coupler B–C on rev2,
     rocker D–C on rev3; rev4 joins the coupler's and the rocker's ends at C: it closes the
     loop. ``parallelogram``: the rocker as long as the crank, the coupler as long as the
     ground. ``fifth_link`` (a parallelogram too): a fifth link, as long as the crank, from
-    E = (L0/2, 0) (rev5) to the coupler's middle (rev6): a redundant second loop."""
+    E = (L0/2, 0) (rev5) to the coupler's middle (rev6): a redundant second loop.
+    ``crank_flange``: rev1 with its 1-D flange (to drive it)."""
     parallelogram = parallelogram or fifth_link
     L3_ = L1 if parallelogram else L3
     L2_ = L0 if parallelogram else L2
     m = ac.Model("four_bar")
     m.world = World()
     m.A, m.D = Fixed(), Fixed(r=(L0, 0.0))
-    m.rev1, m.rev2, m.rev3, m.rev4 = Revolute(), Revolute(), Revolute(), Revolute()
+    m.rev1, m.rev2 = Revolute(useFlange=crank_flange), Revolute()
+    m.rev3, m.rev4 = Revolute(), Revolute()
     m.connect(m.A.frame, m.rev1.frame_a)
     B = link(m, "crank", L1, M1, m.rev1.frame_b)
     m.connect(B, m.rev2.frame_a)
@@ -546,29 +548,7 @@ def test_four_bar_driven_at_constant_speed():
     1 + 2t, the loop stays closed, and the work of the drive torque equals the change of
     T + V (energy balance, computed here from the recorded motion)."""
     from acausal.components import rotational as rot, signals as sig
-    L0, L1, L2, L3, M = 1.0, 0.3, 1.0, 0.8, (0.5, 1.0, 0.8)
-    m = ac.Model("speed_four_bar")
-    m.world, m.A, m.D = World(), Fixed(), Fixed(r=(L0, 0.0))
-    m.rev1 = Revolute(useFlange=True)
-    m.rev2, m.rev3, m.rev4 = Revolute(), Revolute(), Revolute()
-    bodies = {}
-    frame = m.rev1.frame_b
-    m.connect(m.A.frame, m.rev1.frame_a)
-    for name, L, mass, start in [("crank", L1, M[0], None), ("coupler", L2, M[1], m.rev2),
-                                 ("rocker", L3, M[2], m.rev3)]:
-        bar, body = FixedTranslation(r=(L / 2, 0.0)), Body(m=mass, I=mass * L * L / 12)
-        end = FixedTranslation(r=(L / 2, 0.0))
-        setattr(m, f"{name}_a", bar), setattr(m, name, body), setattr(m, f"{name}_b", end)
-        if start is m.rev3:
-            m.connect(m.D.frame, m.rev3.frame_a)
-        base = m.rev1.frame_b if start is None else start.frame_b
-        m.connect(base, bar.frame_a)
-        m.connect(bar.frame_b, body.frame_a)
-        m.connect(body.frame_a, end.frame_a)
-        bodies[name] = (mass, mass * L * L / 12, end)
-    m.connect(m.crank_b.frame_b, m.rev2.frame_a)
-    m.connect(m.coupler_b.frame_b, m.rev4.frame_a)
-    m.connect(m.rocker_b.frame_b, m.rev4.frame_b)
+    m = four_bar(crank_flange=True)
     m.drive, m.ref = rot.Speed(exact=True), sig.Constant(k=2.0)
     m.connect(m.ref.y, m.drive.w_ref)
     m.connect(m.drive.flange, m.rev1.flange_a)
@@ -581,9 +561,7 @@ def test_four_bar_driven_at_constant_speed():
     for k in ("x", "y"):
         gap = res[f"rev4.frame_a.{k}"] - res[f"rev4.frame_b.{k}"]
         assert np.max(np.abs(gap)) < 1e-9
-    T = sum(0.5 * mass * (res[f"{b}.v[1]"] ** 2 + res[f"{b}.v[2]"] ** 2) + 0.5 * I * res[f"{b}.w"] ** 2
-            for b, (mass, I, _) in bodies.items())
-    V = sum(mass * 9.81 * res[f"{b}.r[2]"] for b, (mass, _, _) in bodies.items())
+    T, V = energy(res, FB_BODIES)
     power = res["rev1.flange_a.tau"] * 2.0              # torque into the joint's flange
     work = np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(t))])
     E = T + V
