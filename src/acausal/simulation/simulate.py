@@ -108,14 +108,25 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         solver = "idas" if has_alg else (
             "cvodes" if is_stiff(model.x, model.t, ode, xs, grid[0], grid[-1]) else "adams")
     plugin, opts, loops = integrator_settings(model, solver, rtol, atol, max_step)
-    dae = {"x": model.x, "t": model.t, "ode": ode}
-    if has_alg:
-        dae.update(z=model.z, alg=alg)
     if loops:
-        xdot = ca.Function("xdot", [model.x, model.z, model.t], [dae["ode"]])
+        xdot = ca.Function("xdot", [model.x, model.z, model.t], [ode])
     opts.update(options or {})
 
+    def problem(solver):
+        """The DAE for the integrator. Adams with functional iteration never evaluates a
+        Jacobian, so the ODE goes in as a call whose derivatives would be finite
+        differences: CasADi then builds no symbolic Jacobian (O(N²) for the recursion)."""
+        if solver == "adams":
+            f = ca.Function("ode", [model.x, model.t], [ode], _NO_AD)
+            x, t = ca.MX.sym("x", model.x.numel()), ca.MX.sym("t")
+            return {"x": x, "t": t, "ode": f(x, t)}
+        dae = {"x": model.x, "t": model.t, "ode": ode}
+        if has_alg:
+            dae.update(z=model.z, alg=alg)
+        return dae
+
     def integrate(plugin, opts):
+        dae = problem(solver)
         X = [np.asarray(xs, dtype=float).reshape(-1, 1)]
         Z = [np.asarray(zs, dtype=float).reshape(-1, 1)]
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
@@ -202,6 +213,10 @@ def integrator_settings(model, solver: str, rtol: float, atol: float,
             1.0 if n.startswith("loops.") else atol for n in model.z_names]
         opts["calc_ic"] = False
     return plugin, opts, loops
+
+
+_NO_AD = {"enable_fd": True, "enable_forward": False, "enable_reverse": False,
+          "enable_jacobian": False}
 
 
 def is_stiff(x: ca.SX, t: ca.SX, ode: ca.SX, x0, t0: float, t1: float,
