@@ -16,8 +16,8 @@ I = 0.01 kg.m² about its centre of mass) at the bar's end, where the next joint
 Measured in the same run, for each N:
 1. compile / build time: acausal.compile (Model construction separately), Pinocchio model
    build, sympy derivation + lambdify;
-2. one right-hand-side evaluation [µs]: acausal ``compiled.rhs`` (a casadi Function) called
-   from Python with numpy arrays, and natively (``rhs.map(K)`` on K copies of the state:
+2. one right-hand-side evaluation [µs]: acausal ``compiled.f`` (a casadi Function) called
+   from Python with numpy arrays, and natively (``f.map(K)`` on K copies of the state:
    the Python-call overhead removed); also the ODE with the parameter values folded in as
    simulate() hands it to the integrator (mapped; its instructions per link and its sin, cos
    and divisions per link are printed); with --jit that ODE compiled to C by CasADi's JIT;
@@ -209,7 +209,7 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     compiled = acausal.compile(model)
     r["ac_compile"] = time.perf_counter() - t0
     t0 = time.perf_counter()
-    rhs = compiled.rhs
+    rhs = compiled.f
     r["ac_rhs_fn"] = time.perf_counter() - t0
     r["ac_instr"] = rhs.n_instructions()
     r["pin_build"], (pmodel, pdata) = best_of(lambda: build_pinocchio(n), repeat, budget=2.0)
@@ -221,12 +221,12 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     x = y[inv]                                                           # acausal's order
     p = compiled.param_vector()
     t, z, u = 0.0, np.zeros(0), np.zeros(0)
-    qdd_ac = np.asarray(rhs(t, x, z, p, u)[0], dtype=float).ravel()[perm][n:]
+    qdd_ac = np.asarray(rhs(x, u, p, z, t)[0], dtype=float).ravel()[perm][n:]
     tau = np.zeros(n)
     qdd_pin = pin.aba(pmodel, pdata, y[:n], y[n:], tau)
     r["dev_ac"] = np.max(np.abs(qdd_ac - qdd_pin)) / max(1.0, np.max(np.abs(qdd_pin)))
-    r["ac_rhs_py"] = per_call(lambda: rhs(t, x, z, p, u))
-    r["ac_rhs_native"] = mapped_per_eval(rhs, [t, x, z, p, u])
+    r["ac_rhs_py"] = per_call(lambda: rhs(x, u, p, z, t))
+    r["ac_rhs_native"] = mapped_per_eval(rhs, [x, u, p, z, t])
     folded = ca.Function("folded", [compiled.x],
                          [ca.substitute(compiled.ode, compiled.p, ca.SX(p))])
     r["ac_folded_instr"] = folded.n_instructions()
@@ -408,7 +408,7 @@ def main(argv=None):
            ["{:10d}"] + ["{:10.4g}"] * 6)
     print("  ac model: building the acausal Model in Python; ac compile: acausal.compile; "
           "ac rhs fn:"
-          "\n  first access of compiled.rhs; pin build: the Pinocchio model; sympy: KanesMethod + "
+          "\n  first access of compiled.f; pin build: the Pinocchio model; sympy: KanesMethod + "
           "lambdify")
     for r in rows:
         if r["sy_note"]:
@@ -433,10 +433,10 @@ def main(argv=None):
         f"N={r['N']}: {r['ac_folded_instr'] / r['N']:.0f} instr, "
         + ", ".join(f"{v / r['N']:.1f} {k}" for k, v in r["ac_ops"].items()
                     if k in ("sin", "cos", "div")) for r in rows if r["N"] >= 8))
-    print("  ac python: compiled.rhs(t, x, z, p, u) called from Python on numpy arrays; ac native: "
-          "per\n  evaluation inside compiled.rhs.map(K) (no Python overhead); ac folded: the ODE "
+    print("  ac python: compiled.f(x, u, p, z, t) called from Python on numpy arrays; ac native: "
+          "per\n  evaluation inside compiled.f.map(K) (no Python overhead); ac folded: the ODE "
           "with the\n  parameter values substituted, as simulate() gives it to cvodes (mapped); "
-          "instr: SX\n  instructions of compiled.rhs; dev: max |q''(model) - q''(ABA)| / max(1, "
+          "instr: SX\n  instructions of compiled.f; dev: max |q''(model) - q''(ABA)| / max(1, "
           "|q''|) at a random state")
 
     print(f"\n(3) simulation of {T_FINAL:g} s, the straight chain released {Q0} rad from hanging, "

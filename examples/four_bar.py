@@ -50,10 +50,12 @@ def add_link(model, name, L, m, frame):
 class FourBar(acausal.Model):
     """Crank-rocker four-bar; bars are slender rods (I = m L²/12) with the mass at the middle.
     ``lengths`` (ground, crank, coupler, rocker) [m], ``masses`` (crank, coupler, rocker)
-    [kg]; ``crank_flange``: rev1 with its 1-D flange, to be driven or loaded."""
+    [kg]; ``crank_flange``: rev1 with its 1-D flange, to be driven or loaded; ``fifth_link``:
+    a link as long as the crank, with the rocker's mass, from (ground/2, 0) (rev5) to the
+    coupler's middle (rev6) — with parallelogram lengths, a redundant second loop."""
 
     def __init__(self, name="four_bar", lengths=(L0, L1, L2, L3), masses=(M1, M2, M3),
-                 crank_flange: bool = False):
+                 crank_flange: bool = False, fifth_link: bool = False):
         super().__init__(name)
         (l0, l1, l2, l3), (m1, m2, m3) = lengths, masses
         self.world = World()
@@ -68,6 +70,12 @@ class FourBar(acausal.Model):
         C_rocker = add_link(self, "rocker", l3, m3, self.rev3.frame_b)
         self.connect(C, self.rev4.frame_a)               # the loop closes here
         self.connect(C_rocker, self.rev4.frame_b)
+        if fifth_link:
+            self.E = Fixed(r=(l0 / 2, 0.0))
+            self.rev5, self.rev6 = Revolute(), Revolute()
+            self.connect(self.E.frame, self.rev5.frame_a)
+            self.connect(add_link(self, "link5", l1, m3, self.rev5.frame_b), self.rev6.frame_a)
+            self.connect(self.coupler.frame_a, self.rev6.frame_b)
 
 
 BODIES = {"crank": (M1, M1 * L1 ** 2 / 12), "coupler": (M2, M2 * L2 ** 2 / 12),

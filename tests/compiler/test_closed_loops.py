@@ -1,6 +1,6 @@
 """Closed kinematic loops (issue 3): a four-bar linkage and a slider-crank under gravity,
-undamped, built from planar components (World, Fixed, FixedTranslation, Body, Revolute,
-Prismatic).
+undamped: the linkages of examples/four_bar.py and examples/slider_crank.py, built from planar
+components (World, Fixed, FixedTranslation, Body, Revolute, Prismatic).
 
 What is checked, against references that do not come from the code under test:
 - loop closure: every joint relation evaluated here from the recorded frame poses (for the
@@ -21,6 +21,8 @@ What is checked, against references that do not come from the code under test:
 from __future__ import annotations
 
 import math
+import sys
+from pathlib import Path
 
 import casadi as ca
 import numpy as np
@@ -28,7 +30,9 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-from acausal.components.planar import Body, Fixed, FixedTranslation, Prismatic, Revolute, World
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
+from four_bar import FourBar  # noqa: E402
+from slider_crank import SliderCrank  # noqa: E402
 
 G = 9.81                                     # m/s², World default, along n = (0, -1)
 T_END = 10.0                                 # s
@@ -55,72 +59,23 @@ def inertia(m, L):
     return m * L ** 2 / 12
 
 
-# ---- the models under test ---------------------------------------------------------------
-def link(model, name, L, m, frame):
-    """A bar of length L from ``frame`` along its x axis, with a Body (m, I of a slender rod)
-    at its middle; returns the frame at the far end."""
-    half_a, half_b = FixedTranslation(r=(L / 2, 0.0)), FixedTranslation(r=(L / 2, 0.0))
-    body = Body(m=m, I=inertia(m, L))
-    setattr(model, f"{name}_a", half_a)
-    setattr(model, name, body)
-    setattr(model, f"{name}_b", half_b)
-    model.connect(frame, half_a.frame_a)
-    model.connect(half_a.frame_b, body.frame_a)
-    model.connect(body.frame_a, half_b.frame_a)
-    return half_b.frame_b
-
-
+# ---- the models under test: the examples' linkages ------------------------------------------
 def four_bar(parallelogram=False, fifth_link=False, crank_flange=False):
-    """Ground pivots A = (0, 0) and D = (L0, 0); crank A–B on rev1, coupler B–C on rev2,
-    rocker D–C on rev3; rev4 joins the coupler's and the rocker's ends at C: it closes the
-    loop. ``parallelogram``: the rocker as long as the crank, the coupler as long as the
-    ground. ``fifth_link`` (a parallelogram too): a fifth link, as long as the crank, from
+    """examples/four_bar.py's FourBar: ground pivots A = (0, 0) and D = (L0, 0), crank A–B on
+    rev1, coupler B–C on rev2, rocker D–C on rev3, rev4 closing the loop at C.
+    ``parallelogram``: the rocker as long as the crank, the coupler as long as the ground.
+    ``fifth_link`` (a parallelogram too): a fifth link, as long as the crank, from
     E = (L0/2, 0) (rev5) to the coupler's middle (rev6): a redundant second loop.
     ``crank_flange``: rev1 with its 1-D flange (to drive it)."""
     parallelogram = parallelogram or fifth_link
-    L3_ = L1 if parallelogram else L3
-    L2_ = L0 if parallelogram else L2
-    m = ac.Model("four_bar")
-    m.world = World()
-    m.A, m.D = Fixed(), Fixed(r=(L0, 0.0))
-    m.rev1, m.rev2 = Revolute(useFlange=crank_flange), Revolute()
-    m.rev3, m.rev4 = Revolute(), Revolute()
-    m.connect(m.A.frame, m.rev1.frame_a)
-    B = link(m, "crank", L1, M1, m.rev1.frame_b)
-    m.connect(B, m.rev2.frame_a)
-    C = link(m, "coupler", L2_, M2, m.rev2.frame_b)
-    m.connect(m.D.frame, m.rev3.frame_a)
-    C_rocker = link(m, "rocker", L3_, M3, m.rev3.frame_b)
-    m.connect(C, m.rev4.frame_a)
-    m.connect(C_rocker, m.rev4.frame_b)
-    if fifth_link:
-        m.E = Fixed(r=(L0 / 2, 0.0))
-        m.rev5, m.rev6 = Revolute(), Revolute()
-        m.connect(m.E.frame, m.rev5.frame_a)
-        F = link(m, "link5", L1, M3, m.rev5.frame_b)
-        m.connect(F, m.rev6.frame_a)
-        m.connect(m.coupler.frame_a, m.rev6.frame_b)
-    return m
+    lengths = (L0, L1, L0, L1) if parallelogram else (L0, L1, L2, L3)
+    return FourBar("four_bar", lengths, (M1, M2, M3), crank_flange, fifth_link)
 
 
 def slider_crank():
-    """Crank O–A on rev1 (O at the origin), connecting rod A–B on rev2, slider (a Body) on a
-    Prismatic along x from (0, −H); rev3 joins the rod's end to the slider."""
-    m = ac.Model("slider_crank")
-    m.world = World()
-    m.O, m.track = Fixed(), Fixed(r=(0.0, -H))
-    m.rev1, m.rev2, m.rev3 = Revolute(), Revolute(), Revolute()
-    m.prismatic = Prismatic(r=(1.0, 0.0))
-    m.slider = Body(m=MS, I=0.01)
-    m.connect(m.O.frame, m.rev1.frame_a)
-    A = link(m, "crank", R_C, MC, m.rev1.frame_b)
-    m.connect(A, m.rev2.frame_a)
-    B = link(m, "rod", L_R, MR, m.rev2.frame_b)
-    m.connect(B, m.rev3.frame_a)
-    m.connect(m.track.frame, m.prismatic.frame_a)
-    m.connect(m.prismatic.frame_b, m.slider.frame_a)
-    m.connect(m.rev3.frame_b, m.slider.frame_a)
-    return m
+    """examples/slider_crank.py's SliderCrank: crank O–A on rev1 (O at the origin), rod A–B
+    on rev2, slider (a Body) on a Prismatic along x from (0, −H), rev3 joining them."""
+    return SliderCrank()
 
 
 FB_BODIES = {"crank": (M1, inertia(M1, L1)), "coupler": (M2, inertia(M2, L2)),

@@ -171,7 +171,7 @@ def _compiled_acc(compiled, cmap, q, qd, u, t, p):
         x[compiled.x_names.index(n)] = qi
     for n, vi in zip(vel, qd):
         x[compiled.x_names.index(n)] = vi
-    ode = np.array(compiled.rhs(t=t, x=x, z=np.zeros(0), p=p, u=u)["ode"]).ravel()
+    ode = np.array(compiled.f(x=x, u=u, p=p, t=t)["xdot"]).ravel()
     return np.array([ode[compiled.x_names.index(n)] for n in vel])
 
 

@@ -166,34 +166,14 @@ def test_four_bar_loop_stays_closed(fmus, kind):
     assert res["rev1.w"][0] == pytest.approx(2.0, abs=1e-14)
 
 
-def double_parallelogram():
-    """A parallelogram four-bar (crank 0.3 m = rocker, coupler 1 m = ground) with a fifth,
-    parallel link from (0.5, 0) to the coupler's middle: its loop is redundant."""
-    from acausal.components.planar import Fixed, Revolute, World
-    from four_bar import add_link
-    m = acausal.Model("double_parallelogram")
-    m.world, m.A, m.D, m.E = World(), Fixed(), Fixed(r=(1.0, 0.0)), Fixed(r=(0.5, 0.0))
-    for k in range(1, 7):
-        setattr(m, f"rev{k}", Revolute())
-    m.connect(m.A.frame, m.rev1.frame_a)
-    m.connect(add_link(m, "crank", 0.3, 0.5, m.rev1.frame_b), m.rev2.frame_a)
-    C = add_link(m, "coupler", 1.0, 1.0, m.rev2.frame_b)
-    m.connect(m.D.frame, m.rev3.frame_a)
-    m.connect(C, m.rev4.frame_a)
-    m.connect(add_link(m, "rocker", 0.3, 0.8, m.rev3.frame_b), m.rev4.frame_b)
-    m.connect(m.E.frame, m.rev5.frame_a)
-    m.connect(add_link(m, "link5", 0.3, 0.8, m.rev5.frame_b), m.rev6.frame_a)
-    m.connect(m.coupler.frame_a, m.rev6.frame_b)
-    return m
-
-
 @pytest.mark.parametrize("kind", KINDS)
 def test_redundant_loop_rows_are_switched_off(fmu_dir, kind):
     """The FMU starts its loop-row switches as simulate() sets them (one redundant row off),
     so the constrained solve is regular and the motion equals the in-process one (started
     from the in-process assembly of crank angle 1 rad, rate 1 rad/s, for 0.25 s: before the
     crank falls to the collinear configuration at 0.33 s, where the rows left on lose rank)."""
-    compiled = acausal.compile(double_parallelogram())
+    compiled = acausal.compile(FourBar("double_parallelogram", lengths=(1.0, 0.3, 1.0, 0.3),
+                                       fifth_link=True))
     path = compiled.export_fmu(fmu_dir / f"double_parallelogram_{kind}.fmu", stop_time=0.25)
     assert validate_fmu(str(path)) == []
     grid = np.linspace(0.0, 0.25, 101)

@@ -222,15 +222,6 @@ class CompiledModel:
         return d
 
     @property
-    def rhs(self) -> ca.Function:
-        """Function (t, x, z, p, u) -> (ode, alg)."""
-        if "rhs" not in self._cache:
-            self._cache["rhs"] = ca.Function("rhs", [self.t, self.x, self.z, self.p, self.u],
-                                             [self.ode, self.alg], ["t", "x", "z", "p", "u"],
-                                             ["ode", "alg"])
-        return self._cache["rhs"]
-
-    @property
     def f(self) -> ca.Function:
         """The model as a CasADi Function f(x, u, p, z, t) -> (xdot, alg): state derivatives
         and the algebraic residual (empty for ODE models). Call it with keywords, e.g.

@@ -503,7 +503,22 @@ class Prismatic(_Joint):
 # =========================================================================================
 # Sources
 # =========================================================================================
-class WorldForce(_Resolving):
+class _ForceInput(_Resolving):
+    """Input signals force[1], force[2] [N] (x-, y-coordinates, resolved per
+    ``resolveInFrame``) and force[3] [N.m] (torque)."""
+
+    def _conditional_ports(self):
+        super()._conditional_ports()
+        _vector_ports(self, "force", RealInput, 3, "x-, y-coordinates of force [N] and "
+                                                   "torque [N.m]")
+
+    def _wrench(self, e) -> ca.SX:
+        """(fx, fy, t) in world coordinates."""
+        F = [e.input(p) for p in self.force]
+        return ca.vertcat(_rot(self._angle(e), ca.vertcat(F[0], F[1])), F[2])
+
+
+class WorldForce(_ForceInput):
     """External force and torque on frame_b: the input signals force[1], force[2] [N] are the
     x-, y-coordinates of the force, resolved in frame_b (default), the world or
     frame_resolve (``resolveInFrame``: ResolveInFrameB), force[3] [N.m] the torque:
@@ -513,15 +528,8 @@ class WorldForce(_Resolving):
     resolve_default = "frame_b"
     frame_b = Frame("frame the force and torque act on", required=True)
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, "force", RealInput, 3, "x-, y-coordinates of force [N] and "
-                                                   "torque [N.m]")
-
     def physics(self, e):
-        F = [e.input(p) for p in self.force]
-        f = _rot(self._angle(e), ca.vertcat(F[0], F[1]))
-        e.flow(self.frame_b, -ca.vertcat(f, F[2]))
+        e.flow(self.frame_b, -self._wrench(e))
 
 
 class WorldTorque(Component):
@@ -536,7 +544,7 @@ class WorldTorque(Component):
         e.flow(self.frame_b, ca.vertcat(0, 0, -tau))
 
 
-class RelativeForce(_Resolving):
+class RelativeForce(_ForceInput):
     """Force and torque between frame_a and frame_b: force[1], force[2] [N] act on frame_b,
     resolved in frame_a (default), frame_b, the world or frame_resolve (``resolveInFrame``:
     ResolveInFrameAB), force[3] [N.m] is the torque on frame_b; frame_a gets the opposite:
@@ -547,14 +555,8 @@ class RelativeForce(_Resolving):
     frame_a = Frame("frame the reaction acts on", required=True)
     frame_b = Frame("frame the force acts on", required=True)
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, "force", RealInput, 3, "x-, y-coordinates of force [N] and "
-                                                   "torque [N.m]")
-
     def physics(self, e):
-        F = [e.input(p) for p in self.force]
-        fb = ca.vertcat(_rot(self._angle(e), ca.vertcat(F[0], F[1])), F[2])
+        fb = self._wrench(e)
         e.flow(self.frame_b, -fb)
         e.flow(self.frame_a, fb)
 

@@ -380,35 +380,33 @@ class ConstantTorque(PartialTorque):
         return self.tau_constant
 
 
-class QuadraticSpeedDependentTorque(PartialTorque):
+class _SpeedDependentTorque(PartialTorque):
+    """tau = tau_nominal·law(w/w_nominal); ``TorqueDirection`` picks the law.
+    Required: tau_nominal [N.m], w_nominal [rad/s] > 0 (MSL gives no defaults)."""
+    options = {"TorqueDirection": True}
+    tau_nominal = Parameter(0.0, "N.m", "nominal torque (if negative, torque is acting as "
+                                        "load in positive direction of rotation)")
+    w_nominal = Parameter(1.0, "rad/s", "nominal speed", positive=True)
+    required = ("tau_nominal", "w_nominal")
+
+    def torque(self, e, phi, w):
+        return self.tau_nominal * self.law(w / self.w_nominal)
+
+
+class QuadraticSpeedDependentTorque(_SpeedDependentTorque):
     """tau = tau_nominal·(w/w_nominal)² (TorqueDirection=True: same direction both ways), or
-    tau_nominal·(w/w_nominal)·|w/w_nominal| (TorqueDirection=False).
+    tau_nominal·(w/w_nominal)·|w/w_nominal| (TorqueDirection=False)."""
 
-    Required: tau_nominal, w_nominal (MSL gives no defaults).
-    """
-    options = {"TorqueDirection": True}
-    tau_nominal = Parameter(0.0, "N.m", "nominal torque (if negative, torque is acting as "
-                                        "load in positive direction of rotation)")
-    w_nominal = Parameter(1.0, "rad/s", "nominal speed", positive=True)
-    required = ("tau_nominal", "w_nominal")
-
-    def torque(self, e, phi, w):
-        x = w / self.w_nominal
-        return self.tau_nominal * (x ** 2 if self.TorqueDirection else x * ca.fabs(x))
+    def law(self, x):
+        return x ** 2 if self.TorqueDirection else x * ca.fabs(x)
 
 
-class LinearSpeedDependentTorque(PartialTorque):
+class LinearSpeedDependentTorque(_SpeedDependentTorque):
     """tau = tau_nominal·|w/w_nominal| (TorqueDirection=True) or tau_nominal·w/w_nominal
-    (TorqueDirection=False). Required: tau_nominal, w_nominal (MSL gives no defaults)."""
-    options = {"TorqueDirection": True}
-    tau_nominal = Parameter(0.0, "N.m", "nominal torque (if negative, torque is acting as "
-                                        "load in positive direction of rotation)")
-    w_nominal = Parameter(1.0, "rad/s", "nominal speed", positive=True)
-    required = ("tau_nominal", "w_nominal")
+    (TorqueDirection=False)."""
 
-    def torque(self, e, phi, w):
-        x = w / self.w_nominal
-        return self.tau_nominal * (ca.fabs(x) if self.TorqueDirection else x)
+    def law(self, x):
+        return ca.fabs(x) if self.TorqueDirection else x
 
 
 class TorqueStep(PartialTorque):

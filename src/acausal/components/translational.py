@@ -319,34 +319,33 @@ class ForceStep(PartialForce):
         return -self.offsetForce - ca.if_else(e.time < self.startTime, 0.0, self.stepForce)
 
 
-class LinearSpeedDependentForce(PartialForce):
+class _SpeedDependentForce(PartialForce):
+    """f = −f_nominal·law(v/v_nominal), v = der(s) [m/s]; ``ForceDirection`` picks the law.
+    Required: f_nominal [N], v_nominal [m/s] > 0 (MSL gives no defaults)."""
+    options = {"ForceDirection": True}
+    f_nominal = Parameter(0.0, "N", "nominal force (if negative, force is acting as load in "
+                                    "positive direction of motion)")
+    v_nominal = Parameter(1.0, "m/s", "nominal speed", positive=True)
+    required = ("f_nominal", "v_nominal")
+
+    def flange_force(self, e):
+        return -self.f_nominal * self.law(self._speed(e) / self.v_nominal)
+
+
+class LinearSpeedDependentForce(_SpeedDependentForce):
     """f = −f_nominal·|v/v_nominal| (ForceDirection=True: same direction both ways) or
-    −f_nominal·v/v_nominal (ForceDirection=False); v = der(s) [m/s].
-    Required: f_nominal [N], v_nominal [m/s] > 0 (MSL gives no defaults)."""
-    options = {"ForceDirection": True}
-    f_nominal = Parameter(0.0, "N", "nominal force (if negative, force is acting as load in "
-                                    "positive direction of motion)")
-    v_nominal = Parameter(1.0, "m/s", "nominal speed", positive=True)
-    required = ("f_nominal", "v_nominal")
+    −f_nominal·v/v_nominal (ForceDirection=False)."""
 
-    def flange_force(self, e):
-        x = self._speed(e) / self.v_nominal
-        return -self.f_nominal * (ca.fabs(x) if self.ForceDirection else x)
+    def law(self, x):
+        return ca.fabs(x) if self.ForceDirection else x
 
 
-class QuadraticSpeedDependentForce(PartialForce):
+class QuadraticSpeedDependentForce(_SpeedDependentForce):
     """f = −f_nominal·(v/v_nominal)² (ForceDirection=True: same direction both ways) or
-    −f_nominal·(v/v_nominal)·|v/v_nominal| (ForceDirection=False); v = der(s) [m/s].
-    Required: f_nominal [N], v_nominal [m/s] > 0 (MSL gives no defaults)."""
-    options = {"ForceDirection": True}
-    f_nominal = Parameter(0.0, "N", "nominal force (if negative, force is acting as load in "
-                                    "positive direction of motion)")
-    v_nominal = Parameter(1.0, "m/s", "nominal speed", positive=True)
-    required = ("f_nominal", "v_nominal")
+    −f_nominal·(v/v_nominal)·|v/v_nominal| (ForceDirection=False)."""
 
-    def flange_force(self, e):
-        x = self._speed(e) / self.v_nominal
-        return -self.f_nominal * (x ** 2 if self.ForceDirection else x * ca.fabs(x))
+    def law(self, x):
+        return x ** 2 if self.ForceDirection else x * ca.fabs(x)
 
 
 class Position(PartialElementaryOneFlangeAndSupport2):

@@ -221,10 +221,10 @@ def _integrator(c, solver, rtol, atol):
     if loops:
         d, x0, f0 = ca.SX.sym("delta", nx), ca.SX.sym("x0", nx), ca.SX.sym("f0", nx)
         P += [x0, f0]
-        ode, alg = c.rhs(t, x0 + h * tau * f0 + d, c.z, c.p, c.u)
+        ode, alg = c.f(x0 + h * tau * f0 + d, c.u, c.p, c.z, t)
         dae = {"x": d, "ode": h * ode - h * f0}
     else:
-        ode, alg = c.rhs(t, c.x, c.z, c.p, c.u)
+        ode, alg = c.f(c.x, c.u, c.p, c.z, t)
         dae = {"x": c.x, "ode": h * ode}
     dae.update(t=tau, p=ca.vertcat(*P))
     if has_alg:
