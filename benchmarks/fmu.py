@@ -17,22 +17,29 @@ instantiation, initialization and fmpy's Python loop (every CVode right-hand sid
 ctypes calls; outputs are recorded in Python). The accuracy of each run against a tight in-process
 reference (rtol 1e-12) is printed next to the times, so the ratios compare like with like.
 Target: FMU within 2× of in-process. Run: ``python benchmarks/fmu.py [--repeat 3]``.
+
+Where model-exchange time goes: the number of right-hand sides fmpy's CVode asks for is counted,
+and the FMU's own cost of one (fmi2SetTime + fmi2SetContinuousStates + fmi2GetDerivatives) is
+timed in C by ``fmu_rhs.c``, built here with the system compiler; "FMU share" is their product
+over the ME time. The rest is the importer: its Python callbacks, loading and output recording.
 """
 from __future__ import annotations
 
 import argparse
+import subprocess
 import sys
 import tempfile
 import warnings
 from pathlib import Path
 
 import numpy as np
-from fmpy import extract, read_model_description, simulate_fmu
+from fmpy import extract, instantiate_fmu, read_model_description, simulate_fmu
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "examples"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import acausal                                          # noqa: E402
+from acausal.fmu.export import find_compiler, find_fmi_headers  # noqa: E402
 from drivetrain import Drivetrain                       # noqa: E402
 from four_bar import FourBar                            # noqa: E402
 from gantry_crane import GantryCrane                    # noqa: E402
@@ -45,12 +52,50 @@ CASES = {   # name: (model, horizon [s], start values, compared variable)
 }
 
 
+def build_rhs_timer(tmp: Path) -> Path:
+    """fmu_rhs.c compiled against fmpy's FMI 2 headers."""
+    exe = tmp / "fmu_rhs"
+    subprocess.run([find_compiler(), "-O2", f"-I{find_fmi_headers('2.0')}",
+                    str(Path(__file__).with_name("fmu_rhs.c")), "-o", str(exe), "-ldl"],
+                   check=True)
+    return exe
+
+
+def fmu_rhs_seconds(exe: Path, unzipped: Path, md, start: dict, calls: int = 200_000) -> float:
+    """The FMU's own time per right-hand side [s], measured in C from the start values."""
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    binary = Path(unzipped) / "binaries" / "linux64" / f"{md.modelExchange.modelIdentifier}.so"
+    out = subprocess.run([str(exe), str(binary), md.guid, (Path(unzipped) / "resources").as_uri(),
+                          str(md.numberOfContinuousStates), str(calls),
+                          *(f"{vr[k]}={v}" for k, v in start.items())],
+                         check=True, capture_output=True, text=True)
+    return float(out.stdout)
+
+
+def count_me_rhs(unzipped: Path, md, **kw) -> int:
+    """Right-hand sides fmpy's CVode asks for in one model-exchange run."""
+    fmu = instantiate_fmu(str(unzipped), md, "ModelExchange")
+    calls = 0
+    get_derivatives = fmu.getDerivatives
+
+    def counted(*args):
+        nonlocal calls
+        calls += 1
+        return get_derivatives(*args)
+
+    fmu.getDerivatives = counted
+    simulate_fmu(str(unzipped), model_description=md, fmu_instance=fmu, **kw)
+    fmu.freeInstance()
+    return calls
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     args = ap.parse_args()
-    rows = []
+    rows, shares = [], []
     with tempfile.TemporaryDirectory() as tmp:
+        rhs_timer = build_rhs_timer(Path(tmp))
         for name, (make, T, start, var) in CASES.items():
             compiled = acausal.compile(make())
             path = compiled.export_fmu(Path(tmp) / f"{name}.fmu", stop_time=T)
@@ -66,11 +111,12 @@ def main():
                     return compiled.simulate(T, t=grid, inputs=inputs, x0=x0, rtol=rtol,
                                              atol=atol)
 
+            settings = dict(validate=False, stop_time=T, output_interval=T / 200,
+                            start_values=dict(start), relative_tolerance=1e-8,
+                            record_events=False, output=[var])
+
             def fmu(kind):
-                return simulate_fmu(unzipped, model_description=md, validate=False,
-                                    stop_time=T, output_interval=T / 200,
-                                    fmi_type=kind, start_values=dict(start),
-                                    relative_tolerance=1e-8, record_events=False, output=[var])
+                return simulate_fmu(unzipped, model_description=md, fmi_type=kind, **settings)
 
             ref = in_process(1e-12, 1e-14)[var]
             scale = np.max(np.abs(ref))
@@ -80,9 +126,17 @@ def main():
             err = [np.max(np.abs(np.asarray(r[var]) - ref)) / scale for r in (r_in, r_me, r_cs)]
             rows.append([name, t_in * 1e3, t_me * 1e3, t_cs * 1e3, t_me / t_in, t_cs / t_in,
                          *err])
+            n_rhs = count_me_rhs(unzipped, md, **settings)
+            t_rhs = fmu_rhs_seconds(rhs_timer, unzipped, md, start)
+            shares.append([name, n_rhs, t_rhs * 1e6, (t_me - n_rhs * t_rhs) / n_rhs * 1e6,
+                           100 * n_rhs * t_rhs / t_me])
     print_table(["model", "in-proc ms", "FMU ME ms", "FMU CS ms", "ME/in", "CS/in",
                  "err in", "err ME", "err CS"], rows,
                 ["{:>10s}"] + ["{:>10.1f}"] * 3 + ["{:>10.2f}"] * 2 + ["{:>10.1e}"] * 3)
+    print("\nmodel exchange in fmpy: right-hand sides, the FMU's own time per rhs (C), fmpy's "
+          "time per rhs (the rest of the ME time over the rhs count), FMU share of ME time")
+    print_table(["model", "rhs calls", "FMU us/rhs", "fmpy us/rhs", "FMU share%"], shares,
+                ["{:>10s}", "{:>10d}", "{:>10.3f}", "{:>10.2f}", "{:>10.2f}"])
     worst = max(max(r[4], r[5]) for r in rows)
     print(f"worst FMU/in-process ratio: {worst:.2f} (target <= 2)")
 
