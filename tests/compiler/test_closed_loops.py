@@ -13,7 +13,8 @@ What is checked, against references that do not come from the code under test:
   power (CasADi only as a calculator) — integrated by scipy's DOP853 at tolerance 1e-12;
   the parallelograms against their one-line equation J θ̈ = −g cos θ Σ m·lever;
 - initial assembly: the crank where the user put it, the other joints moved from far-off
-  start values onto the loop (Φ = 0), velocities projected (Φ_q q̇ = 0);
+  start values onto the loop (Φ = 0), velocities projected (Φ_q q̇ = 0), also from the
+  singular start with every joint at 0;
 - mobility and redundant constraints: degrees of freedom by the Gruebler count and by rank;
   a parallelogram four-bar has none redundant, a double parallelogram (a fifth link) has one,
   reported by name, and both move as their hand-written models.
@@ -379,6 +380,24 @@ def test_four_bar_assembles_from_far_start_values(fb_compiled, theta0, w0):
     assert np.max(np.abs(v_c - v_r)) < 1e-10
     assert abs(res["coupler.w"][0] - qd[1]) < 1e-9
     assert abs(res["rocker.w"][0] - qd[2]) < 1e-9
+
+
+def test_four_bar_assembles_from_the_singular_all_zero_start(fb_compiled):
+    """Every joint at its start value 0 lays the links along x: the residual's gradient with
+    respect to the free joints vanishes there (a stationary point, not a solution), which
+    stalls a Gauss–Newton iteration. Assembly still closes the loop: with the crank held at 0
+    (x0), and with nothing given (the crank free to move too); the result lies on the
+    closed-form loop of its branch."""
+    for x0 in ({"rev1.phi": 0.0}, {}):
+        with pytest.warns(UserWarning, match="close the kinematic loops"):
+            res = fb_compiled.simulate(0.01, t=np.linspace(0, 0.01, 3), x0=x0, **SHORT)
+        theta = res["rev1.phi"][0]
+        if x0:
+            assert abs(theta) < 1e-12
+        assert joint_residual(res, FB_JOINTS)[0] < 1e-10
+        q, _ = four_bar_reference(four_bar_branch(res)).state(theta)
+        assert unwound(res["rev2.phi"][0], q[1] - theta)
+        assert unwound(res["rev3.phi"][0], q[2])
 
 
 def test_slider_crank_assembles_from_far_start_values(sc_compiled):

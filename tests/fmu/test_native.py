@@ -167,9 +167,28 @@ def test_four_bar_loop_stays_closed(fmus, kind):
 
 
 @pytest.mark.parametrize("kind", KINDS)
+@pytest.mark.parametrize("version", VERSIONS)
+def test_four_bar_assembles_from_its_default_start_values(fmus, version, kind):
+    """With no start values at all every joint is at 0, a singular configuration (the loop
+    residual's gradient vanishes): the FMU still assembles the loop, to the configuration
+    simulate() finds from the same start, and closes it to 1e-10 m."""
+    compiled, paths = fmus["four_bar"]
+    ref = reference(compiled, 0.01, np.linspace(0.0, 0.01, 2))
+    res = simulate_fmu(str(paths[version]), stop_time=0.01, output_interval=0.01,
+                       fmi_type=kind, relative_tolerance=1e-10,
+                       output=["rev1.phi", "rev2.phi", "rev3.phi", "rev4.frame_a.x",
+                               "rev4.frame_b.x", "rev4.frame_a.y", "rev4.frame_b.y"])
+    for n in ("rev1.phi", "rev2.phi", "rev3.phi"):
+        assert res[n][0] == pytest.approx(ref[n][0], abs=1e-9), n
+    assert abs(ref["rev1.phi"][0]) > 0.1          # the crank moved: a real assembly step
+    assert np.hypot(res["rev4.frame_a.x"][0] - res["rev4.frame_b.x"][0],
+                    res["rev4.frame_a.y"][0] - res["rev4.frame_b.y"][0]) < 1e-10
+
+
+@pytest.mark.parametrize("kind", KINDS)
 def test_redundant_loop_rows_are_switched_off(fmu_dir, kind):
-    """The FMU starts its loop-row switches as simulate() sets them (one redundant row off),
-    so the constrained solve is regular and the motion equals the in-process one (started
+    """The FMU sets its loop-row switches (calculated parameters) in initialization as
+    simulate() sets them (one redundant row off), so the constrained solve is regular and the motion equals the in-process one (started
     from the in-process assembly of crank angle 1 rad, rate 1 rad/s, for 0.25 s: before the
     crank falls to the collinear configuration at 0.33 s, where the rows left on lose rank)."""
     compiled = acausal.compile(FourBar("double_parallelogram", lengths=(1.0, 0.3, 1.0, 0.3),
@@ -181,8 +200,12 @@ def test_redundant_loop_rows_are_switched_off(fmu_dir, kind):
                     guess={"rev2.phi": -1.0, "rev3.phi": 1.0, "rev5.phi": 1.0})
     assert len(ref.mobility.redundant) == 1
     start = {n: float(ref[n][0]) for n in compiled.x_names}
+    switches = [f"loops.active_{i}" for i in range(len(compiled.loop_rows))]
     res = simulate_fmu(str(path), stop_time=0.25, output_interval=0.0025, fmi_type=kind,
                        start_values=start, relative_tolerance=1e-10,
-                       output=["rev1.phi", "rev5.phi"])
+                       output=["rev1.phi", "rev5.phi", *switches])
     for n in ("rev1.phi", "rev5.phi"):
         assert relerr(res[n], ref[n]) < RTOL, (n, relerr(res[n], ref[n]))
+    # the FMU switched off the row simulate() names redundant, and only that one
+    off = compiled.loop_rows.index(ref.mobility.redundant[0])
+    assert [res[n][0] for n in switches] == [float(i != off) for i in range(len(switches))]

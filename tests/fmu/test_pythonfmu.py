@@ -236,11 +236,14 @@ def test_errors_are_statuses_with_messages(fmus):
     res, logs = run_fmu(path, 0.1, 0.01, ["rail.s"], {"cart.m": -1.0})
     assert res["time"][-1] == 0.0
     assert any("parameter 'cart.m' must be > 0" in m for m in logs)
-    # an unassembled linkage: the in-process simulation raises InitializationError
-    res, logs = run_fmu(fmus["four_bar"][1], 0.1, 0.01, ["rev1.phi"])
+    # a linkage that cannot be assembled (coupler and rocker 0.1 m long cannot span the
+    # ≥ 0.7 m from the crank tip to the rocker pivot): the in-process simulation raises
+    # InitializationError
+    short = {f"{link}_{end}.r[1]": 0.05 for link in ("coupler", "rocker") for end in "ab"}
+    res, logs = run_fmu(fmus["four_bar"][1], 0.1, 0.01, ["rev1.phi"], short)
     assert res["time"][-1] == 0.0
     with pytest.raises(acausal.InitializationError) as err:
-        fmus["four_bar"][0].simulate(0.1)
+        fmus["four_bar"][0].simulate(0.1, params=short)
     message = str(err.value)            # the in-process message, naming the open loop rows
     assert message.startswith("cannot find initial values satisfying loop constraint rev4.")
     assert any(m == f"initialization failed: {message.replace('x0', 'start')}" for m in logs)
@@ -329,3 +332,24 @@ def test_through_export_fmu(fmus, tmp_path):
     res, _ = run_fmu(path, 1.0, 0.05, ["drum.w"])
     ref = run_in_process(compiled, 1.0, 20)
     assert_agree(res, ref, ["drum.w"])
+
+
+def test_redundant_loop_rows_are_switched_off(tmp_path):
+    """A double parallelogram (a redundant fifth link): the FMU sets its loop-row switches
+    (calculated parameters) in initialization as simulate() does, one redundant row off, and
+    moves as the in-process simulation from the same assembly (0.25 s, before the collinear
+    configuration where the rows left on lose rank)."""
+    compiled = acausal.compile(FourBar("double_parallelogram", lengths=(1.0, 0.3, 1.0, 0.3),
+                                       fifth_link=True))
+    path = export_pythonfmu(compiled, tmp_path / "double_parallelogram.fmu")
+    assert validate_fmu(str(path)) == []
+    ref = run_in_process(compiled, 0.25, 100, x0={"rev1.phi": 1.0, "rev1.w": 1.0},
+                         guess={"rev2.phi": -1.0, "rev3.phi": 1.0, "rev5.phi": 1.0})
+    assert len(ref.mobility.redundant) == 1
+    switches = [f"loops.active_{i}" for i in range(len(compiled.loop_rows))]
+    res, _ = run_fmu(path, 0.25, 0.0025, ["rev1.phi", "rev5.phi", *switches],
+                     {n: float(ref[n][0]) for n in compiled.x_names})
+    for n in ("rev1.phi", "rev5.phi"):
+        assert np.max(np.abs(res[n] - ref[n])) < RTOL * np.max(np.abs(ref[n])), n
+    off = compiled.loop_rows.index(ref.mobility.redundant[0])
+    assert [res[n][0] for n in switches] == [float(i != off) for i in range(len(switches))]

@@ -71,7 +71,7 @@ def set_loop_switches(model, x, z, p, t) -> np.ndarray:
     if model.lagrange.phi.numel():
         active, _ = model.mobility_at(x, z, p, t)
         p = p.copy()
-        p[[i for i, n in enumerate(model.param_names) if n.startswith("loops.active")]] = active
+        p[model.loop_switches] = active
     return p
 
 

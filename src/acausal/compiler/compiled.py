@@ -176,6 +176,13 @@ class CompiledModel:
     def output_names(self) -> list[str]:
         return [o[0] for o in self.outputs]
 
+    @property
+    def loop_switches(self) -> list[int]:
+        """Positions in p of the loop-row switches ``loops.active_i`` (row order): 1 enforces
+        row i of Φ, 0 drops it (redundant). simulate() and the FMUs set them at the assembled
+        initial configuration (``mobility_at``)."""
+        return [i for i, n in enumerate(self.param_names) if n.startswith("loops.active")]
+
     def param_vector(self, overrides: dict | None = None) -> np.ndarray:
         """Parameter values [defaults with ``overrides`` by dotted name], checked."""
         values = self.param_defaults

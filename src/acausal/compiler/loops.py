@@ -18,6 +18,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.errors import StructureError
+from ..simulation.kernels import independent_rows
 
 
 @dataclass
@@ -63,12 +64,7 @@ def mobility(J: np.ndarray, names: list[str], dropped: list[str]) -> tuple[np.nd
     which rows to enforce (1) and which are redundant (0), and the mobility. ``dropped``:
     rows removed already at compile time (constant and redundant)."""
     nc, nq = J.shape
-    tol = 1e-9 * max(1.0, np.abs(J).max(initial=0.0))
-    active, basis = np.zeros(nc), np.zeros((0, nq))
-    for i in range(nc):
-        trial = np.vstack([basis, J[i]])
-        if np.linalg.matrix_rank(trial, tol=tol) > basis.shape[0]:
-            active[i], basis = 1.0, trial
+    active = independent_rows(J)
     redundant = list(dropped) + [names[i] for i in range(nc) if not active[i]]
     total = nc + len(dropped)
     mob = Mobility(nq, total, nq - total, nq - int(active.sum()), redundant)

@@ -15,6 +15,8 @@ Functions (outputs dense, column-major):
     ac_alg  -> (g, ∂g/∂z)             Newton for z (if any)
     ac_jac  -> (∂F/∂w, ∂F/∂z, ∂g/∂w, ∂g/∂z),  F = [ẋ; y], w = [x; u; t]
     ac_con  -> (H, ∂H/∂x)             loop constraints (if any)
+    ac_phiq -> Φ_q                    their Jacobian in the coordinates, every row enforced:
+                                      the runtime picks the rows to enforce from it
     ac_start(p) -> start values of [x; z];  ac_events(p) -> [first times; periods]
 """
 from __future__ import annotations
@@ -22,7 +24,8 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_start", "ac_events")
+FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
+             "ac_events")
 
 
 class ModelFunctions:
@@ -50,6 +53,8 @@ class ModelFunctions:
         rec = nol(rf(t, x, c.z, p, u)) if rf.size1_out(0) else ca.SX(0, 1)
         self.nx, self.nz, self.np, self.nu = x.numel(), z.numel(), p.numel(), u.numel()
         self.ny, self.nrec, self.nh = y.numel(), rec.numel(), H.numel()
+        phi_q = nol(c.lagrange.phi_q) if loop else ca.SX(0, 1)
+        self.nphi, self.nq = phi_q.shape if loop else (0, 0)
         ev_t, ev_p = c.events(p)
         self.nev = ev_t.numel()
 
@@ -71,6 +76,7 @@ class ModelFunctions:
                                   ["g", "g_z"]),
             "ac_con": ca.Function("ac_con", args, [d(H), d(ca.jacobian(H, x))], names,
                                   ["H", "H_x"]),
+            "ac_phiq": ca.Function("ac_phiq", args, [d(phi_q)], names, ["phi_q"]),
             "ac_start": ca.Function("ac_start", [p], [d(start)], ["p"], ["x0"]),
             "ac_events": ca.Function("ac_events", [p], [d(ca.vertcat(ev_t, ev_p))], ["p"],
                                      ["ev"]),

@@ -52,8 +52,11 @@ Initialization
 Start values of the states follow the parameters (``compiled.start(p)``) unless the importer
 set them. Closed loops are assembled in exitInitializationMode like ``simulate()`` does: the
 states the importer set are held, the others move the least (Gauss–Newton on Φ = 0, Φ̇ = 0,
-steps limited to 0.3 per state). The parameters ``loops.active[i]`` start as ``simulate()``
-sets them at the default configuration (redundant rows off; see ``variables.py``).
+steps limited to 0.3 per state; a start at a singular configuration, such as a linkage with
+every joint at 0, is retried from a few deterministic perturbations, the same as simulate()'s,
+so both reach the same assembly). Then the loop-row switches ``loops.active_i``
+(calculatedParameters) are set at the assembled configuration as ``simulate()`` sets them:
+rows that add nothing to the rank of Φ_q there are off (a redundant link).
 
 Errors inside the FMU (a rejected parameter value — NaN, or violating the Parameter's
 positive / nonnegative / nonzero flag — a failed Newton or projection, a failed step) return
@@ -84,7 +87,7 @@ from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, f
 from .variables import FmuVariable, fmu_variables
 
 KINDS = {"parameter": 0, "input": 1, "output": 2, "state": 3, "derivative": 4, "recorded": 5,
-         "solver": 6, "time": 7}
+         "solver": 6, "time": 7, "switch": 9}       # runtime.h's AC_K_* (8: no variable)
 RUNTIME_SOURCES = ("runtime.h", "runtime.c")
 
 
@@ -179,7 +182,8 @@ def model_headers(compiled, mf: ModelFunctions, variables, guid: str,
                "#define AC_MODEL_H\n"]
     kind, index = vr_table(compiled, variables)
     for k, v in [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
-                 ("NREC", mf.nrec), ("NH", mf.nh), ("NEV", mf.nev), ("NVR", len(kind)),
+                 ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
+                 ("NEV", mf.nev), ("NVR", len(kind)),
                  ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
                  ("SZ_W", sz["w"])]:
         model_h.append(f"#define AC_{k} {v}\n")
@@ -191,8 +195,8 @@ def model_headers(compiled, mf: ModelFunctions, variables, guid: str,
             f"const char *ac_model_name = {_c_str(compiled.name)};\n",
             f"const char *ac_guid = {_c_str(guid)};\n",
             _c_arr("int", "AC_VR_KIND", kind, str), _c_arr("int", "AC_VR_INDEX", index, str),
-            _c_arr("double", "AC_P_DEFAULT", [v.start for v in variables if v.kind == "parameter"],
-                   lambda v: repr(float(v))),
+            _c_arr("double", "AC_P_DEFAULT", compiled.param_vector(), lambda v: repr(float(v))),
+            _c_arr("int", "AC_SWITCH", compiled.loop_switches, str),
             _c_arr("unsigned char", "AC_P_FLAGS", flags, str),
             _c_arr("char *", "AC_P_NAMES", compiled.param_names, _c_str),
             _c_arr("double", "AC_U_START", [float(i[1]) for i in compiled.inputs]),
@@ -204,8 +208,8 @@ def model_headers(compiled, mf: ModelFunctions, variables, guid: str,
 
 
 def dependencies(compiled, mf: ModelFunctions, variables: list[FmuVariable]) -> dict:
-    """ModelStructure: (value reference, [value references it depends on]) of the outputs,
-    derivatives and initial unknowns, from the sparsity of the Jacobians."""
+    """ModelStructure: (value reference, [value references it depends on] or None for all) of
+    the outputs, derivatives and initial unknowns, from the sparsity of the Jacobians."""
     by_kind = {}
     for v in variables:
         by_kind.setdefault(v.kind, {})[v.index] = v.value_reference
@@ -216,13 +220,16 @@ def dependencies(compiled, mf: ModelFunctions, variables: list[FmuVariable]) -> 
         cols = np.flatnonzero(mf.dep_w[row])
         out = [xs[c] for c in cols if c < nx] + [us[c - nx] for c in cols if nx <= c < nx + nu]
         if with_params:
-            out += [ps[c] for c in np.flatnonzero(mf.dep_p[row])]
+            out += [ps[c] for c in np.flatnonzero(mf.dep_p[row]) if c in ps]   # not switches
         return sorted(out)
 
     ders = [(by_kind["derivative"][i], deps(i, False)) for i in range(nx)]
     outs = [(by_kind["output"][i], deps(nx + i, False)) for i in range(mf.ny)]
     init = ([(by_kind["output"][i], deps(nx + i, True)) for i in range(mf.ny)]
-            + [(by_kind["derivative"][i], deps(i, True)) for i in range(nx)])
+            + [(by_kind["derivative"][i], deps(i, True)) for i in range(nx)]
+            # the loop-row switches follow from the assembly: from every start value (None:
+            # no dependencies attribute, i.e. on all knowns)
+            + [(vr, None) for vr in by_kind.get("switch", {}).values()])
     return {"outputs": outs, "derivatives": ders, "initial": init}
 
 

@@ -115,6 +115,11 @@ def _num(v: float) -> str:
     return repr(float(v))
 
 
+def _deps(d: str | None) -> str:
+    """The dependencies attribute; none for None (FMI: depends on all knowns)."""
+    return "" if d is None else f' dependencies="{d}"'
+
+
 def _a(name, value) -> str:
     return f" {name}={quoteattr(str(value))}" if value not in (None, "") else ""
 
@@ -170,8 +175,8 @@ def fmi2_xml(info: dict) -> str:
             return
         body.append(f"    <{tag}>\n")
         for vr, deps in items:
-            d = " ".join(str(index[r]) for r in deps)
-            body.append(f'      <Unknown index="{index[vr]}" dependencies="{d}"/>\n')
+            d = None if deps is None else " ".join(str(index[r]) for r in deps)
+            body.append(f'      <Unknown index="{index[vr]}"{_deps(d)}/>\n')
         body.append(f"    </{tag}>\n")
 
     unknowns("Outputs", info["deps"]["outputs"])
@@ -224,8 +229,8 @@ def fmi3_xml(info: dict) -> str:
     for tag, key in (("Output", "outputs"), ("ContinuousStateDerivative", "derivatives"),
                      ("InitialUnknown", "initial")):
         for vr, deps in info["deps"][key]:
-            d = " ".join(str(r) for r in deps)
-            body.append(f'    <{tag} valueReference="{vr}" dependencies="{d}"/>\n')
+            d = None if deps is None else " ".join(str(r) for r in deps)
+            body.append(f'    <{tag} valueReference="{vr}"{_deps(d)}/>\n')
     body.append("  </ModelStructure>\n</fmiModelDescription>\n")
     return "".join(head + body)
 

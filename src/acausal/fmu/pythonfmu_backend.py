@@ -157,6 +157,9 @@ def _contents(compiled, ident, rtol, atol, solver):
     init_labels = []
     if loops or has_alg:
         functions["init"], init_labels = _init_function(c)
+    if loops:
+        functions["phi_q"] = ca.Function("phi_q", [c.x, c.z, c.t, c.p, c.u],
+                                         [c.lagrange.phi_q])
     checks = []
     for name, default, unit, desc, par in c.params:
         checks.append({k: bool(getattr(par, k, False))
@@ -174,6 +177,8 @@ def _contents(compiled, ident, rtol, atol, solver):
         "x_names": list(c.x_names),
         "z_names": list(c.z_names),
         "param_names": list(c.param_names),
+        "param_defaults": [float(v) for v in c.param_vector()],
+        "loop_switches": c.loop_switches,
         "parameter_checks": checks,
         "variables": [_plain(v) for v in variables],
         "units": [_unit(u) for u in sorted({v.unit for v in variables if v.unit})],

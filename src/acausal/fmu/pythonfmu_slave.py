@@ -67,7 +67,7 @@ class AcausalSlave(Fmi2Slave):
         kinds = {}
         for v in self.vars_meta:
             kinds.setdefault(v["kind"], []).append(v)
-        self.p = np.array([v["start"] for v in kinds.get("parameter", [])], dtype=float)
+        self.p = np.array(meta["param_defaults"], dtype=float)
         self.u = np.array([v["start"] for v in kinds.get("input", [])], dtype=float)
         self.x_declared = np.array([v["start"] for v in kinds.get("state", [])], dtype=float)
         self.x_given = {}               # state index -> value set before initialization
@@ -123,8 +123,9 @@ class AcausalSlave(Fmi2Slave):
         outputs = [index[v["value_reference"]] for v in self.vars_meta if v["kind"] == "output"]
         derivatives = [index[v["value_reference"]] for v in self.vars_meta
                        if v["kind"] == "derivative"]
+        switches = [index[v["value_reference"]] for v in self.vars_meta if v["kind"] == "switch"]
         for tag, rows in (("Outputs", outputs), ("Derivatives", derivatives),
-                          ("InitialUnknowns", sorted(outputs + derivatives))):
+                          ("InitialUnknowns", sorted(outputs + derivatives + switches))):
             if rows:
                 node = SubElement(structure, tag)
                 for i in rows:
@@ -184,7 +185,7 @@ class AcausalSlave(Fmi2Slave):
 
     def _value(self, v):
         kind, i = v["kind"], v["index"]
-        if kind == "parameter":
+        if kind in ("parameter", "switch"):
             return float(self.p[i])
         if kind == "input":
             return float(self.u[i])
@@ -240,6 +241,9 @@ class AcausalSlave(Fmi2Slave):
         if "init" not in self.fn:
             return
         self.x, self.z = self._consistent(hard)
+        if "phi_q" in self.fn:          # enforce the loop rows independent here, as simulate()
+            J = self.fn["phi_q"](self.x, self.z, self.t, self.p, self.u)
+            self.p[self.meta["loop_switches"]] = kernels.independent_rows(J.full())
 
     def _consistent(self, hard):
         """Gauss-Newton projection of the start values onto the loop constraints Φ = 0,

@@ -3,9 +3,10 @@
 One list serves every backend (native FMI 2.0 / 3.0 and pythonfmu), so that a model's FMUs
 agree on names, causalities, units and start values:
 
-- parameters (causality ``parameter``, variability ``tunable``, start = default; the
-  switches ``loops.active[i]`` of closed-loop rows start as simulate() sets them: redundant
-  rows at the configuration assembled from the default start values are off);
+- parameters (causality ``parameter``, variability ``tunable``, start = default);
+- the switches ``loops.active_i`` of closed-loop rows (``calculatedParameter``, ``fixed``,
+  initial ``calculated``): the FMU sets them in initialization as simulate() does, at the
+  assembled configuration (rows that add nothing to the rank of Φ_q there are off);
 - inputs (``input``, ``continuous``, start = the Input's start);
 - outputs (``output``, ``continuous``);
 - continuous states (``local``, ``continuous``, initial ``exact``: settable start values);
@@ -15,24 +16,19 @@ agree on names, causalities, units and start values:
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass
 
-import numpy as np
-
 from ..compiler.compiled import CompiledModel
-from ..core.errors import AcausalError
-from ..simulation.initialization import initial_state
 
 
 @dataclass(frozen=True)
 class FmuVariable:
     name: str
     value_reference: int
-    kind: str            # parameter / input / output / state / derivative / recorded
-    index: int           # position in p, u, y, x, ẋ, or recorded_names
-    causality: str       # parameter / input / output / local
-    variability: str     # tunable / continuous
+    kind: str            # parameter / switch / input / output / state / derivative / recorded
+    index: int           # position in p (parameters, switches), u, y, x, ẋ, or recorded_names
+    causality: str       # parameter / calculatedParameter / input / output / local
+    variability: str     # tunable / fixed / continuous
     initial: str | None  # exact / calculated / None (inputs, as FMI requires)
     start: float | None
     unit: str
@@ -49,9 +45,13 @@ def fmu_variables(compiled: CompiledModel) -> list[FmuVariable]:
         out.append(FmuVariable(name, len(out) + 1, kind, index, causality, variability,
                                initial, start, unit or "", desc or "", der))
 
-    for i, ((name, _, unit, desc, _), start) in enumerate(zip(compiled.params,
-                                                               parameter_starts(compiled))):
-        add(name, "parameter", i, "parameter", "tunable", "exact", float(start), unit, desc)
+    switches = set(compiled.loop_switches)
+    for i, (name, start, unit, desc, _) in enumerate(compiled.params):
+        if i in switches:
+            add(name, "switch", i, "calculatedParameter", "fixed", "calculated", None, unit,
+                desc)
+        else:
+            add(name, "parameter", i, "parameter", "tunable", "exact", float(start), unit, desc)
     for i, (name, start, unit, desc) in enumerate(compiled.inputs):
         add(name, "input", i, "input", "continuous", None, float(start), unit, desc)
     for i, (name, unit, desc) in enumerate(compiled.outputs):
@@ -73,32 +73,3 @@ def fmu_variables(compiled: CompiledModel) -> list[FmuVariable]:
             add(name, "recorded", i, "local", "continuous", "calculated", None, units.get(name),
                 "")
     return out
-
-
-def parameter_starts(compiled: CompiledModel, tries: int = 4) -> np.ndarray:
-    """Parameter defaults, with the loop-row switches set as simulate() sets them, judged at
-    configurations assembled from randomly perturbed start values (a special configuration,
-    e.g. every link of a parallelogram on one line, would show more redundancy than the
-    motion has): the most rows found independent; all rows on if no assembly succeeds."""
-    p = compiled.param_vector()
-    if not compiled.loop_rows:
-        return p
-    u0 = np.array([i[1] for i in compiled.inputs], dtype=float)
-    start = np.asarray(compiled.start(p), dtype=float).ravel()
-    rng = np.random.default_rng(0)
-    switches = [i for i, n in enumerate(compiled.param_names) if n.startswith("loops.active")]
-    best = None
-    for _ in range(tries):
-        guess = {n: float(v) + rng.uniform(-0.5, 0.5) for n, v in zip(compiled.x_names, start)}
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                x, z = initial_state(compiled, {}, p, u0, 0.0, guess)
-                active = np.asarray(compiled.mobility_at(x, z, p, 0.0)[0], dtype=float)
-        except AcausalError:
-            continue
-        if best is None or active.sum() > best.sum():
-            best = active
-    if best is not None:
-        p[switches] = best
-    return p

@@ -9,8 +9,12 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["ProjectionError", "project", "moved_note", "event_times", "just_before",
-           "short_error"]
+__all__ = ["ProjectionError", "project", "independent_rows", "moved_note", "event_times",
+           "just_before", "short_error"]
+
+
+ASSEMBLY_RETRIES = 4     # restarts of a stalled projection from perturbed start values,
+ASSEMBLY_JITTER = 0.1    # moved by up to ±ASSEMBLY_JITTER/2 · (1 + |value|)
 
 
 class ProjectionError(ValueError):
@@ -29,11 +33,33 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
                in it ("x0", "start").
     Each iteration projects the start values onto the equations linearized at the current
     point (exact in one step when they are linear); far from the solution a step moves no
-    state by more than 0.3, so that a guess keeps a linkage on its branch. Raises
-    ProjectionError naming the equations that fail, or two given values that conflict.
+    state by more than 0.3, so that a guess keeps a linkage on its branch. A start at a
+    singular configuration (a linkage with every joint at 0: the residual's gradient vanishes)
+    stalls the iteration; it is then restarted from a few deterministic perturbations of the
+    states (up to ±ASSEMBLY_JITTER/2 · (1 + |w0|), the sequence of the native FMU's runtime, so
+    that both find the same assembly). Raises ProjectionError naming the equations
+    that fail, or two given values that conflict.
     """
     start = np.asarray(start, dtype=float)
-    wk = np.array(w0, dtype=float)
+    w0 = np.asarray(w0, dtype=float)
+    scale = 1 + max(abs(float(v)) for v in targets) if len(targets) else 1.0
+    seed = 12345
+    for attempt in range(ASSEMBLY_RETRIES + 1):
+        wk = w0.copy()
+        for k in range(nx if attempt else 0):
+            seed = (seed * 1103515245 + 12345) % 2**32         # C's unsigned arithmetic
+            wk[k] += ASSEMBLY_JITTER * (1 + abs(w0[k])) * (((seed >> 8) & 0xFFFF) / 65535 - 0.5)
+        wk = _iterate(equations, start, wk, nx)
+        h, J = equations(wk)
+        if np.max(np.abs(h), initial=0.0) <= 1e-8 * scale:
+            return wk
+        if attempt == 0:
+            h0, J0 = h, J
+    raise ProjectionError(_conflict(J0, h0, labels, targets, given))
+
+
+def _iterate(equations, start, wk, nx: int):
+    """The iteration of ``project`` from wk, until its step vanishes (≤ 200 iterations)."""
     D = np.ones(start.size)
     D[nx:] = 1e8
     for _ in range(200):
@@ -49,10 +75,6 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
         wk = wk + step
         if np.linalg.norm(step) < 1e-13 * (1 + np.linalg.norm(wk)):
             break
-    h, J = equations(wk)
-    scale = 1 + max(abs(float(v)) for v in targets) if len(targets) else 1.0
-    if np.max(np.abs(h), initial=0.0) > 1e-8 * scale:
-        raise ProjectionError(_conflict(J, h, labels, targets, given))
     return wk
 
 
@@ -66,6 +88,27 @@ def _conflict(J, h, labels, targets, given) -> str:
                         f"joined); give only one of them")
     return (f"cannot find initial values satisfying {', '.join(bad)}; check {given} values "
             f"against the model's constraints")
+
+
+def independent_rows(J) -> np.ndarray:
+    """1 for each row of the constraint Jacobian J that adds to the rank of the rows on before
+    it, 0 for the others: the loop rows to enforce at a configuration. In row order, a row is
+    on when its Gram–Schmidt residual against the rows on before it exceeds
+    1e-9 · max(1, max |J|); the native FMU's runtime applies the same rule
+    (``select_loop_rows`` in runtime.c)."""
+    J = np.asarray(J, dtype=float)
+    tol = 1e-9 * max(1.0, np.abs(J).max(initial=0.0))
+    active, basis = np.zeros(J.shape[0]), []
+    for i, row in enumerate(J):
+        r = row.copy()
+        for _ in range(2):                       # twice: orthogonal to rounding
+            for b in basis:
+                r -= (b @ r) * b
+        norm = np.linalg.norm(r)
+        if norm > tol:
+            active[i] = 1.0
+            basis.append(r / norm)
+    return active
 
 
 def moved_note(names, before, after, held=()) -> str | None:

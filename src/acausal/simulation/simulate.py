@@ -95,8 +95,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     mobility = None
     if model.lagrange.phi.numel():       # enforce the loop rows independent at this assembly
         active, mobility = model.mobility_at(xs, zs, p, grid[0])
-        switches = [i for i, n in enumerate(model.param_names) if n.startswith("loops.active")]
-        p[switches] = active
+        p[model.loop_switches] = active
 
     has_alg = model.z.numel() > 0
     # inputs become expressions of time, parameters their values: the integrator sees the

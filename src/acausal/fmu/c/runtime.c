@@ -14,6 +14,8 @@ typedef int (*ac_fn)(const double **arg, double **res, long long *iw, double *w,
 #define AC_DRIFT_FACTOR 1e-3      /* ME: project when |Φ|, |Φ̇| > 1e-3 · rtol */
 #define AC_NEWTON_MAX 50
 #define AC_PROJ_MAX 200
+#define AC_ASSEMBLY_RETRIES 4     /* assembly restarts from perturbed start values ... */
+#define AC_ASSEMBLY_JITTER 0.1    /* ... moved by up to ±0.05·(1 + |start|) */
 
 /* ---- logging ------------------------------------------------------------------------- */
 void ac_logf(ac_inst *m, int status, const char *category, const char *fmt, ...) {
@@ -307,7 +309,7 @@ int ac_vr_kind(unsigned vr, int *index) {
 int ac_get_real(ac_inst *m, unsigned vr, double *v) {
     int i, k = ac_vr_kind(vr, &i);
     switch (k) {
-    case AC_K_PARAM: *v = m->d.p[i]; return AC_OK;
+    case AC_K_PARAM: case AC_K_SWITCH: *v = m->d.p[i]; return AC_OK;
     case AC_K_INPUT: *v = m->d.u[i]; return AC_OK;
     case AC_K_STATE: *v = m->d.x[i]; return AC_OK;
     case AC_K_TIME: *v = m->d.t; return AC_OK;
@@ -382,13 +384,14 @@ static double con_norm(ac_inst *m, const double *x) {
 }
 
 /* The point closest to `target` (metric diag(D)) on H(x) = 0 by the iteration of
- * acausal.simulation.initialization: x <- target + D Hxᵀ (Hx D Hxᵀ)⁻¹ (Hx (x − target) − H),
- * steps limited to `maxstep` per state. D = 0 holds a state fixed. */
-static int project(ac_inst *m, double *x, const double *D, double maxstep, int maxit, double tol) {
+ * acausal.simulation.kernels.project, starting from x (updated in place):
+ * x <- target + D Hxᵀ (Hx D Hxᵀ)⁻¹ (Hx (x − target) − H), steps limited to `maxstep` per
+ * state. D = 0 holds a state fixed. Returns AC_ERROR, unlogged, when the iteration ends with
+ * max |H| above 1e3·tol (the caller says what failed); evaluation failures are logged. */
+static int project(ac_inst *m, double *x, const double *target, const double *D,
+                   double maxstep, int maxit, double tol) {
 #if AC_NH > 0
     int it, i, j, k;
-    double target[AC_NX];
-    memcpy(target, x, sizeof(target));
     for (it = 0; it < maxit; it++) {
         double *out[2] = {m->H, m->Hx}, big = 0.0, stepn = 0.0, xn = 0.0, reg = 0.0;
         if (eval(m, (ac_fn)ac_con, m->d.t, x, m->d.z, out, 2)) return ERR("evaluating the loop constraints failed");
@@ -423,13 +426,11 @@ static int project(ac_inst *m, double *x, const double *D, double maxstep, int m
         for (k = 0; k < AC_NX; k++) x[k] += m->xs[k];
         if (stepn <= 1e-14 * (1.0 + xn)) break;
     }
-    if (con_norm(m, x) > 1e3 * tol + 1e-10)
-        return ERR("cannot satisfy the loop constraints at t = %g (residual %g); check the "
-                   "start values of the joint coordinates", m->d.t, con_norm(m, x));
+    if (con_norm(m, x) > 1e3 * tol + 1e-10) return AC_ERROR;
     ac_invalidate(m);
     m->d.n_projections++;
 #else
-    (void)m; (void)x; (void)D; (void)maxstep; (void)maxit; (void)tol;
+    (void)m; (void)x; (void)target; (void)D; (void)maxstep; (void)maxit; (void)tol;
 #endif
     return AC_OK;
 }
@@ -446,12 +447,53 @@ int ac_drift_exceeded(ac_inst *m, int *exceeded) {
     return AC_OK;
 }
 
+/* The loop rows to enforce at the current configuration, as simulate() chooses them
+ * (acausal.simulation.kernels.independent_rows, the same rule): in row order, a row is on when
+ * its Gram–Schmidt residual against the rows on before it exceeds 1e-9·max(1, max |Φ_q|);
+ * the others are redundant there and switched off (loops.active_i = 0). */
+static int select_loop_rows(ac_inst *m) {
+#if AC_NPHI > 0
+    double J[AC_NPHI * AC_NQ], B[AC_NPHI * AC_NQ], r[AC_NQ], big = 0.0, tol;
+    double *out[1] = {J};
+    int i, j, k, pass, nb = 0;
+    if (eval(m, (ac_fn)ac_phiq, m->d.t, m->d.x, m->d.z, out, 1))
+        return ERR("evaluating the loop constraints' Jacobian failed");
+    for (k = 0; k < AC_NPHI * AC_NQ; k++) if (fabs(J[k]) > big) big = fabs(J[k]);
+    tol = 1e-9 * (big > 1.0 ? big : 1.0);
+    for (i = 0; i < AC_NPHI; i++) {
+        double norm = 0.0;
+        for (k = 0; k < AC_NQ; k++) r[k] = J[i + k * AC_NPHI];
+        for (pass = 0; pass < 2; pass++)          /* twice: orthogonal to rounding */
+            for (j = 0; j < nb; j++) {
+                double c = 0.0;
+                for (k = 0; k < AC_NQ; k++) c += B[j * AC_NQ + k] * r[k];
+                for (k = 0; k < AC_NQ; k++) r[k] -= c * B[j * AC_NQ + k];
+            }
+        for (k = 0; k < AC_NQ; k++) norm += r[k] * r[k];
+        norm = sqrt(norm);
+        m->d.p[AC_SWITCH[i]] = norm > tol ? 1.0 : 0.0;
+        if (norm > tol) {
+            for (k = 0; k < AC_NQ; k++) B[nb * AC_NQ + k] = r[k] / norm;
+            nb++;
+        }
+    }
+    ac_invalidate(m);
+#else
+    (void)m;
+#endif
+    return AC_OK;
+}
+
 static int project_state(ac_inst *m, double *x) {
 #if AC_NH > 0
-    double D[AC_NX];
+    double D[AC_NX], target[AC_NX];
     int k;
     for (k = 0; k < AC_NX; k++) D[k] = 1.0;
-    return project(m, x, D, 0.0, 20, 1e-3 * drift_tol(m));
+    memcpy(target, x, sizeof(target));
+    if (project(m, x, target, D, 0.0, 20, 1e-3 * drift_tol(m)))
+        return ERR("cannot satisfy the loop constraints at t = %g (residual %g): the "
+                   "mechanism has left its assembled configuration", m->d.t, con_norm(m, x));
+    return AC_OK;
 #else
     (void)m; (void)x;
     return AC_OK;
@@ -485,13 +527,28 @@ int ac_initialize(ac_inst *m) {
     if (ac_check_params(m)) return AC_ERROR;
     if (update_starts(m)) return AC_ERROR;
 #if AC_NH > 0
-    {   /* assemble the loops: states set by the importer are held, the others move least */
-        double D[AC_NX];
-        int k;
+    {   /* assemble the loops: states set by the importer are held, the others move least
+           from their start values. A start at a singular configuration (e.g. a linkage with
+           every joint at 0) can stall the iteration; it is retried from a few deterministic
+           perturbations of the free states, as acausal.simulation.kernels.project does. */
+        double D[AC_NX], start[AC_NX];
+        unsigned seed = 12345u;
+        int k, attempt;
         for (k = 0; k < AC_NX; k++) D[k] = m->d.x_set[k] ? 0.0 : 1.0;
-        if (project(m, m->d.x, D, 0.3, AC_PROJ_MAX, 1e-12))
-            return ERR("initialization: the kinematic loops cannot be closed from the start values");
+        memcpy(start, m->d.x, sizeof(start));
+        for (attempt = 0; project(m, m->d.x, start, D, 0.3, AC_PROJ_MAX, 1e-12); attempt++) {
+            if (attempt == AC_ASSEMBLY_RETRIES)
+                return ERR("initialization: the kinematic loops cannot be closed from the start "
+                           "values (residual %g); set the start values of the joint coordinates "
+                           "near an assembled configuration", con_norm(m, m->d.x));
+            for (k = 0; k < AC_NX; k++) {
+                seed = seed * 1103515245u + 12345u;
+                m->d.x[k] = start[k] + D[k] * AC_ASSEMBLY_JITTER * (1.0 + fabs(start[k]))
+                                       * ((double)((seed >> 8) & 0xffffu) / 65535.0 - 0.5);
+            }
+        }
     }
+    if (select_loop_rows(m)) return AC_ERROR;
 #endif
     ac_invalidate(m);
     if (ensure_z(m)) return AC_ERROR;

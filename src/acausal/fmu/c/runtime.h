@@ -15,7 +15,7 @@
 enum { AC_OK = 0, AC_WARNING = 1, AC_DISCARD = 2, AC_ERROR = 3, AC_FATAL = 4 };
 /* kinds of value references */
 enum { AC_K_PARAM = 0, AC_K_INPUT, AC_K_OUTPUT, AC_K_STATE, AC_K_DER, AC_K_REC, AC_K_SOLVER,
-       AC_K_TIME, AC_K_NONE };
+       AC_K_TIME, AC_K_NONE, AC_K_SWITCH };   /* AC_K_SWITCH: a loop-row switch (calculated) */
 /* life cycle */
 enum { AC_INSTANTIATED = 0, AC_INIT, AC_EVENT, AC_CONT, AC_STEP, AC_TERMINATED, AC_FAILED };
 
