@@ -39,7 +39,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "examples"))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 import acausal                                          # noqa: E402
-from acausal.fmu.export import find_compiler, find_fmi_headers  # noqa: E402
+from acausal.fmu.export import find_compiler, find_fmi_headers, platform_dirs  # noqa: E402
 from drivetrain import Drivetrain                       # noqa: E402
 from four_bar import FourBar                            # noqa: E402
 from gantry_crane import GantryCrane                    # noqa: E402
@@ -64,7 +64,8 @@ def build_rhs_timer(tmp: Path) -> Path:
 def fmu_rhs_seconds(exe: Path, unzipped: Path, md, start: dict, calls: int = 200_000) -> float:
     """The FMU's own time per right-hand side [s], measured in C from the start values."""
     vr = {v.name: v.valueReference for v in md.modelVariables}
-    binary = Path(unzipped) / "binaries" / "linux64" / f"{md.modelExchange.modelIdentifier}.so"
+    platform, _, ext = platform_dirs()
+    binary = Path(unzipped) / "binaries" / platform / f"{md.modelExchange.modelIdentifier}{ext}"
     out = subprocess.run([str(exe), str(binary), md.guid, (Path(unzipped) / "resources").as_uri(),
                           str(md.numberOfContinuousStates), str(calls),
                           *(f"{vr[k]}={v}" for k, v in start.items())],

@@ -300,13 +300,20 @@ class CompiledModel:
         x, z = initial_state(self, dict(x0 or {}), p, u0, t0, guess)
         return self.mobility_at(x, z, p, t0)[1]
 
+    @property
+    def phi_q_function(self) -> ca.Function:
+        """Φ_q, the loop constraints' Jacobian in the coordinates, as a Function (x, z, t, p)
+        (built on first use): where the loop rows to enforce are chosen."""
+        if "phi_q" not in self._cache:
+            self._cache["phi_q"] = ca.Function("phi_q", [self.x, self.z, self.t, self.p],
+                                               [self.lagrange.phi_q], ["x", "z", "t", "p"],
+                                               ["phi_q"], {"allow_free": True})
+        return self._cache["phi_q"]
+
     def mobility_at(self, x, z, p, t=0.0):
         """(enforced-row switches, Mobility) at the state x, z: see ``mobility``."""
         from .loops import mobility
-        L = self.lagrange
-        J = ca.Function("J", [self.x, self.z, self.t, self.p], [L.phi_q],
-                        {"allow_free": True})
-        return mobility(np.array(J(x, z, t, p), dtype=float), self.loop_rows,
+        return mobility(np.array(self.phi_q_function(x, z, t, p), dtype=float), self.loop_rows,
                         self.loop_rows_dropped)
 
     def simulate(self, t_final: float, **kwargs):

@@ -115,9 +115,10 @@ def _num(v: float) -> str:
     return repr(float(v))
 
 
-def _deps(d: str | None) -> str:
-    """The dependencies attribute; none for None (FMI: depends on all knowns)."""
-    return "" if d is None else f' dependencies="{d}"'
+def _deps(deps, label) -> str:
+    """The dependencies attribute of value references ``deps`` written as ``label(vr)``; none
+    for None (FMI: depends on all knowns)."""
+    return "" if deps is None else f' dependencies="{" ".join(label(r) for r in deps)}"'
 
 
 def _a(name, value) -> str:
@@ -175,8 +176,8 @@ def fmi2_xml(info: dict) -> str:
             return
         body.append(f"    <{tag}>\n")
         for vr, deps in items:
-            d = None if deps is None else " ".join(str(index[r]) for r in deps)
-            body.append(f'      <Unknown index="{index[vr]}"{_deps(d)}/>\n')
+            attr = _deps(deps, lambda r: str(index[r]))
+            body.append(f'      <Unknown index="{index[vr]}"{attr}/>\n')
         body.append(f"    </{tag}>\n")
 
     unknowns("Outputs", info["deps"]["outputs"])
@@ -229,8 +230,7 @@ def fmi3_xml(info: dict) -> str:
     for tag, key in (("Output", "outputs"), ("ContinuousStateDerivative", "derivatives"),
                      ("InitialUnknown", "initial")):
         for vr, deps in info["deps"][key]:
-            d = None if deps is None else " ".join(str(r) for r in deps)
-            body.append(f'    <{tag} valueReference="{vr}"{_deps(d)}/>\n')
+            body.append(f'    <{tag} valueReference="{vr}"{_deps(deps, str)}/>\n')
     body.append("  </ModelStructure>\n</fmiModelDescription>\n")
     return "".join(head + body)
 

@@ -158,8 +158,7 @@ def _contents(compiled, ident, rtol, atol, solver):
     if loops or has_alg:
         functions["init"], init_labels = _init_function(c)
     if loops:
-        functions["phi_q"] = ca.Function("phi_q", [c.x, c.z, c.t, c.p, c.u],
-                                         [c.lagrange.phi_q])
+        functions["phi_q"] = c.phi_q_function
     checks = []
     for name, default, unit, desc, par in c.params:
         checks.append({k: bool(getattr(par, k, False))

@@ -242,7 +242,7 @@ class AcausalSlave(Fmi2Slave):
             return
         self.x, self.z = self._consistent(hard)
         if "phi_q" in self.fn:          # enforce the loop rows independent here, as simulate()
-            J = self.fn["phi_q"](self.x, self.z, self.t, self.p, self.u)
+            J = self.fn["phi_q"](self.x, self.z, self.t, self.p)
             self.p[self.meta["loop_switches"]] = kernels.independent_rows(J.full())
 
     def _consistent(self, hard):
