@@ -4,13 +4,16 @@ Build models from components (``acausal.components``), compile them into CasADi 
 motion (``acausal.compile``), simulate (``compiled.simulate``).
 """
 from .compiler import CompiledModel, compile
-from .core import (AcausalError, Component, InitializationError, Input, Model, Output,
-                   Parameter, ParameterError, PortConnectionError, SimulationError,
-                   SingularModelError, StructureError, VariableNameError, connect)
+from .core import Component, Input, Model, Output, Parameter, connect
+from .errors import (AcausalError, AnalysisError, DisabledPortError, FmuExportError, FmuPathError,
+                     InitializationError, OCPError, ParameterError, PortConnectionError,
+                     SimulationError, SingularModelError, SolveError, StructureError,
+                     VariableNameError)
 from .simulation import Result, simulate
 
 __version__ = "0.1.0"
 __all__ = ["Model", "Component", "Parameter", "Input", "Output", "connect", "compile",
            "CompiledModel", "simulate", "Result", "AcausalError", "ParameterError",
            "PortConnectionError", "StructureError", "SingularModelError",
-           "InitializationError", "SimulationError", "VariableNameError"]
+           "InitializationError", "SimulationError", "VariableNameError", "DisabledPortError",
+           "AnalysisError", "OCPError", "SolveError", "FmuExportError", "FmuPathError"]

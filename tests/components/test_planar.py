@@ -18,7 +18,7 @@ from acausal.components import planar as P
 from acausal.components import rotational as Rot
 from acausal.components import signals as S
 from acausal.components import translational as Tr
-from acausal.core import ParameterError, PortConnectionError, StructureError
+from acausal.errors import ParameterError, PortConnectionError, StructureError
 
 G = 9.81
 TOL = 1e-6

@@ -8,8 +8,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import acausal
-from acausal.core import (Component, ParameterError, PortConnectionError, RealInput, RealOutput,
-                          RotationalFlange, StructureError)
+from acausal.core import Component, RealInput, RealOutput, RotationalFlange
+from acausal.errors import ParameterError, PortConnectionError, StructureError
 from acausal.components import translational as tr
 
 T_END = 1.0

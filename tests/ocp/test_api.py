@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import acausal
-from acausal.core.errors import AcausalError, ParameterError
+from acausal.errors import AcausalError, ParameterError
 from acausal.ocp import OCP, FreeTime, OCPError, SolveError
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))

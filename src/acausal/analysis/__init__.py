@@ -4,7 +4,7 @@ analysis, inverse and mixed dynamics — every question asked of the same equati
     M(q) q̈ + Φ_qᵀ λ = Q(q, q̇, u, t),   Φ(q, t) = 0.
 """
 from .equilibrium import Equilibrium, equilibrium
-from .errors import AnalysisError
+from ..errors import AnalysisError
 from .inverse import inverse_dynamics, mixed_dynamics
 from .kinematics import kinematic_analysis
 from .linear import LinearModel

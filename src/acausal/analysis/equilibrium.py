@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 import numpy as np
 
-from .errors import AnalysisError
+from ..errors import AnalysisError
 from .point import OperatingPoint, model_function, operating_point
 
 

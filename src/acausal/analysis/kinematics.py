@@ -25,10 +25,10 @@ import casadi as ca
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from ..core.errors import StructureError
+from ..errors import StructureError
 from ..simulation.result import Result
 from ..simulation.simulate import input_expression
-from .errors import AnalysisError
+from ..errors import AnalysisError
 from .point import index_of, set_loop_switches
 
 _vc = ca.vertcat

@@ -25,7 +25,7 @@ import casadi as ca
 import numpy as np
 import scipy.linalg
 
-from .errors import AnalysisError
+from ..errors import AnalysisError
 from .linear import LinearModel
 from .point import index_of, model_function, operating_point
 

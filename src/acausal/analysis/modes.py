@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
-from .errors import AnalysisError
+from ..errors import AnalysisError
 from .linear import LinearModel
 from .linearize import linearize
 

@@ -13,8 +13,8 @@ import casadi as ca
 import numpy as np
 
 from ..simulation.initialization import initial_state
-from ..core.errors import VariableNameError, did_you_mean
-from .errors import AnalysisError
+from ..errors import VariableNameError, did_you_mean
+from ..errors import AnalysisError
 
 
 @dataclass

@@ -19,7 +19,7 @@ import casadi as ca
 
 from ..core.component import Model
 from ..core.parameter import Parameter
-from ..core.errors import SingularModelError, StructureError
+from ..errors import SingularModelError, StructureError
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
 from .compiled import CompiledModel, Lagrange

@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 
 from ..core.component import Component
-from ..core.errors import StructureError
+from ..errors import StructureError
 from ..core.interface import Input, Output
 from ..core.ports import Domain, PhysicalPort, Port, RealInput, RealOutput
 from .kinematics import InternalNode

@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 import numpy as np
 
-from ..core.errors import ParameterError, VariableNameError, did_you_mean
+from ..errors import ParameterError, VariableNameError, did_you_mean
 
 
 class Lagrange:

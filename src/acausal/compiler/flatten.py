@@ -4,7 +4,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..core.component import Component, Model
-from ..core.errors import PortConnectionError, StructureError
+from ..errors import PortConnectionError, StructureError
 from ..core.ports import PhysicalPort, Port, RealInput, RealOutput
 
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 import numpy as np
 
-from ..core.errors import StructureError
+from ..errors import StructureError
 from ..simulation.kernels import independent_rows
 
 

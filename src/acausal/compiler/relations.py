@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import casadi as ca
 
-from ..core.errors import StructureError
+from ..errors import StructureError
 from ..core.ports import PhysicalPort
 from .symbolic import combine
 

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import casadi as ca
 
-from ..core.errors import StructureError
+from ..errors import StructureError
 
 
 class UnknownDerivative(StructureError):

@@ -45,8 +45,9 @@ from enum import Enum
 
 import casadi as ca
 
-from ..core import (Component, Frame, Parameter, ParameterError, PortVector, RealInput,
+from ..core import (Component, Frame, Parameter, PortVector, RealInput,
                     RealOutput, RotationalFlange, TranslationalFlange)
+from ..errors import ParameterError
 from ..core.ports import ROTATIONAL, TRANSLATIONAL
 
 __all__ = [

@@ -31,7 +31,8 @@ import math
 import casadi as ca
 import numpy as np
 
-from ..core import Component, Parameter, PortVector, ParameterError, RealInput, RealOutput
+from ..core import Component, Parameter, PortVector, RealInput, RealOutput
+from ..errors import ParameterError
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
 EPS = 1e-15

@@ -1,10 +1,9 @@
 """The modelling language: Parameter, ports, Component, Model, connect(), Input, Output.
 
-Nothing here knows the component library or the compiler.
+Nothing here knows the component library or the compiler; its errors are those of
+``acausal.errors``.
 """
 from .component import Component, Model, connect
-from .errors import (AcausalError, InitializationError, ParameterError, PortConnectionError,
-                     SimulationError, SingularModelError, StructureError, VariableNameError)
 from .interface import Input, Output
 from .parameter import Parameter
 from .ports import (PLANAR, ROTATIONAL, TRANSLATIONAL, Domain, Frame, PhysicalPort, Port,
@@ -14,6 +13,4 @@ __all__ = [
     "Component", "Model", "connect", "Input", "Output", "Parameter",
     "Port", "PhysicalPort", "PortVector", "Domain", "TranslationalFlange", "RotationalFlange", "Frame",
     "RealInput", "RealOutput", "TRANSLATIONAL", "ROTATIONAL", "PLANAR",
-    "AcausalError", "ParameterError", "PortConnectionError", "StructureError",
-    "SingularModelError", "InitializationError", "SimulationError", "VariableNameError",
 ]

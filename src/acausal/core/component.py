@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import copy
 
-from .errors import ParameterError, PortConnectionError
+from ..errors import ParameterError, PortConnectionError
 from .parameter import Parameter
 from .ports import PhysicalPort, Port, RealOutput
 

@@ -1,7 +1,7 @@
 """Parameter: a named, documented constant of a component, a CasADi symbol once compiled."""
 from __future__ import annotations
 
-from .errors import ParameterError
+from ..errors import ParameterError
 
 
 class Parameter:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from .export import FmuExportError
+from ..errors import FmuExportError
 
 
 def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None = None,

@@ -81,7 +81,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..core.errors import AcausalError
+from ..errors import FmuExportError, FmuPathError
 from .codegen import ModelFunctions
 from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, fmi3_xml)
 from .variables import FmuVariable, fmu_variables
@@ -89,10 +89,6 @@ from .variables import FmuVariable, fmu_variables
 KINDS = {"parameter": 0, "input": 1, "output": 2, "state": 3, "derivative": 4, "recorded": 5,
          "solver": 6, "time": 7, "switch": 9}       # runtime.h's AC_K_* (8: no variable)
 RUNTIME_SOURCES = ("runtime.h", "runtime.c")
-
-
-class FmuExportError(AcausalError):
-    """The FMU could not be built (no C compiler, no FMI headers, a compiler error)."""
 
 
 # ---- the toolchain ---------------------------------------------------------------------

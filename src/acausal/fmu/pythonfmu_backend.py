@@ -56,11 +56,10 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
-from ..core.errors import SimulationError
+from ..errors import FmuExportError, SimulationError
 from ..simulation import kernels
 from ..simulation.initialization import model_equations
 from ..simulation.simulate import integrator_settings
-from .export import FmuExportError
 from .model_description import base_unit_attributes, naming_convention
 from .variables import fmu_variables
 

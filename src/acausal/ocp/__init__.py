@@ -12,7 +12,7 @@ shooting, IPOPT), written with the model's names::
 Modules: problem (OCP, FreeTime), transcription (Collocation, MultipleShooting), solution
 (Solution), model (the names of a compiled model by kind), nlp (the NLP container), errors.
 """
-from .errors import OCPError, SolveError
+from ..errors import OCPError, SolveError
 from .problem import OCP, FreeTime
 from .solution import Solution
 

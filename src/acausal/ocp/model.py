@@ -6,8 +6,8 @@ from collections.abc import Mapping
 import casadi as ca
 import numpy as np
 
-from ..core.errors import ParameterError, did_you_mean
-from .errors import OCPError
+from ..errors import ParameterError, did_you_mean
+from ..errors import OCPError
 
 TIME = "time"
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-from .errors import OCPError
+from ..errors import OCPError
 
 DEFAULT_IPOPT = {"print_level": 0, "sb": "yes"}
 SUCCESS = ("Solve_Succeeded", "Solved_To_Acceptable_Level")

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from .errors import OCPError, SolveError
+from ..errors import OCPError, SolveError
 from .model import ModelView
 from .nlp import DEFAULT_IPOPT, NLP, SUCCESS, canonical
 from .solution import Solution

@@ -6,9 +6,9 @@ import os
 import casadi as ca
 import numpy as np
 
-from ..core.errors import VariableNameError
+from ..errors import VariableNameError
 from ..simulation.result import Result
-from .errors import OCPError
+from ..errors import OCPError
 
 
 class Solution(Result):

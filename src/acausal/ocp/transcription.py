@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from .errors import OCPError
+from ..errors import OCPError
 from .model import ModelView
 from .nlp import NLP
 

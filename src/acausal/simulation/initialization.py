@@ -13,7 +13,7 @@ import warnings
 import casadi as ca
 import numpy as np
 
-from ..core.errors import InitializationError
+from ..errors import InitializationError
 from .kernels import ProjectionError, moved_note, project
 
 

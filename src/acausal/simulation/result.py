@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..core.errors import VariableNameError, did_you_mean
+from ..errors import VariableNameError, did_you_mean
 
 
 class Result:

@@ -6,7 +6,7 @@ import warnings
 import casadi as ca
 import numpy as np
 
-from ..core.errors import SimulationError
+from ..errors import SimulationError
 from .initialization import initial_state
 from .kernels import just_before, short_error
 from .result import Result
