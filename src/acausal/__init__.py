@@ -3,12 +3,12 @@
 Build models from components (``acausal.components``), compile them into CasADi equations of
 motion (``acausal.compile``), simulate (``compiled.simulate``).
 """
-from .compiler import CompiledModel, compile
 from .core import Component, Input, Model, Output, Parameter, connect
 from .errors import (AcausalError, AnalysisError, DisabledPortError, FmuExportError, FmuPathError,
                      InitializationError, OCPError, ParameterError, PortConnectionError,
                      SimulationError, SingularModelError, SolveError, StructureError,
                      VariableNameError)
+from .facade import CompiledModel, compile
 from .simulation import Result, simulate
 
 __version__ = "0.1.0"

@@ -194,7 +194,7 @@ def test_four_bar_reduced_A_equals_finite_differences_on_the_loop():
     # the dependent coordinates follow the null space of Φ_q: Φ_q · q_basis = 0
     assert lin.q_names == ["rev1.phi", "rev2.phi", "rev3.phi"]
     q = x_op[[c.x_names.index(n) for n in lin.q_names]]
-    phi_q = np.array(c.lagrange.function("phi_q")(q, 0, u, 0.0, p), dtype=float)
+    phi_q = np.array(c.lagrange.function("phi_q")(0.0, q, 0, u, p), dtype=float)
     np.testing.assert_allclose(phi_q @ lin.q_basis, 0.0, atol=1e-12)
     assert lin.q_basis[0, 0] == 1.0
 

@@ -20,7 +20,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import AnalysisError
-from .point import OperatingPoint, model_function, operating_point
+from .point import OperatingPoint, operating_point
 
 
 @dataclass
@@ -43,12 +43,12 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
     p, uv = start.p, start.u
     w_sym = ca.vertcat(model.x, model.z)
     H = ca.vertcat(model.ode, model.alg)
-    F = ca.Function("equilibrium", [w_sym, model.t, model.p, model.u],
+    F = ca.Function("equilibrium", [model.t, w_sym, model.u, model.p],
                     [H, ca.jacobian(H, w_sym)])
     nx = len(model.x_names)
     w = np.concatenate([start.x, start.z])
     for _ in range(max_iter):
-        h, J = _eval(F, w, t, p, uv)
+        h, J = _eval(F, t, w, uv, p)
         if np.max(np.abs(h), initial=0.0) <= tol:
             break
         step = -np.linalg.lstsq(J, h, rcond=1e-13)[0]
@@ -57,7 +57,7 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
             step *= 0.5 / big
         norm0 = np.linalg.norm(h)
         for _ in range(30):                # backtrack while the residual grows
-            h_new = _eval(F, w + step, t, p, uv)[0]
+            h_new = _eval(F, t, w + step, uv, p)[0]
             if np.linalg.norm(h_new) < norm0 or np.linalg.norm(step) < 1e-14:
                 break
             step = step / 2
@@ -75,30 +75,28 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
     return Equilibrium(model, float(t), x, z, p, uv, _multipliers(model, x, z, p, uv, t), res)
 
 
-def _eval(F, w, t, p, u):
-    h, J = F(w, t, p, u)
+def _eval(F, t, w, u, p):
+    h, J = F(t, w, u, p)
     return np.array(h, dtype=float).ravel(), np.array(J, dtype=float)
 
 
 def _name_residuals(model, h, tol) -> str:
     rows = model.loop_rows
     names = [f"d({n})/dt" for n in model.x_names]
-    for n in model.z_names:
-        if n.startswith("loops.mu_"):
-            names.append(f"loop constraint {rows[int(n.rsplit('_', 1)[1])]}")
-        elif n.startswith("loops.nu_"):
-            names.append(f"rate of loop constraint {rows[int(n.rsplit('_', 1)[1])]}")
-        else:
-            names.append(f"algebraic equation of {n}")
+    names += [f"algebraic equation of {n}" for n in model.z_names]
+    for row, k in enumerate(model.loop_mu):
+        names[len(model.x_names) + k] = f"loop constraint {rows[row]}"
+    for row, k in enumerate(model.loop_nu):
+        names[len(model.x_names) + k] = f"rate of loop constraint {rows[row]}"
     order = np.argsort(-np.abs(h))
     return ", ".join(f"{names[k]} = {h[k]:.3g}" for k in order if abs(h[k]) > tol)
 
 
 def _multipliers(model, x, z, p, u, t) -> dict:
     L = model.lagrange
-    if not L.phi.numel():
+    if not model.has_loops:
         return {}
-    f = model_function(model, [L.R0, L.phi_q], "loops")
-    R0, Pq = (np.array(v, dtype=float) for v in f(t, x, z, p, u))
+    f = model.function("loops", [L.R0, L.phi_q])
+    R0, Pq = (np.array(v, dtype=float) for v in f(t, x, z, u, p))
     lam = np.linalg.lstsq(Pq.T, -R0.ravel(), rcond=None)[0]
     return dict(zip(model.loop_rows, map(float, lam)))

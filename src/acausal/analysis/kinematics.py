@@ -62,7 +62,8 @@ class MotionSolver:
         if missing:
             raise AnalysisError(f"model '{model.name}': coordinates without mass "
                                 f"({', '.join(missing)}) cannot be prescribed kinematically")
-        other_z = [n for n in model.z_names if not n.startswith("loops.")]
+        multipliers = set(model.loop_multipliers)
+        other_z = [n for k, n in enumerate(model.z_names) if k not in multipliers]
         if other_z:
             raise AnalysisError(f"model '{model.name}': algebraic variables "
                                 f"({', '.join(other_z)}) are not supported in kinematic "
@@ -95,14 +96,14 @@ class MotionSolver:
         od = ode[self.io] if self.io else ca.SX(0, 1)
         G_q = ca.jacobian(G, q)
         G_rate = ca.jacobian(G, model.t) + (ca.mtimes(ca.jacobian(G, o), od) if self.io else 0)
-        args = [model.t, q, o, model.p, u_sym, fv]
+        args = [model.t, q, o, u_sym, model.p, fv]
         self.f_pos = ca.Function("positions", args, [G, G_q])
         self.f_vel = ca.Function("velocities", args, [G_q, -G_rate])
         # accelerations of the prescribed variables, as functions of the unknown inputs
         Ydot = ca.jtimes(Y, q, v) + ca.jacobian(Y, model.t) + (
             ca.jtimes(Y, o, od) if self.io else 0)
         Yddot = ca.jtimes(Ydot, model.x, ode) + ca.jacobian(Ydot, model.t)
-        self.f_acc = ca.Function("accelerations", [model.t, model.x, model.p, u_sym],
+        self.f_acc = ca.Function("accelerations", [model.t, model.x, u_sym, model.p],
                                  [Yddot, ca.jacobian(Yddot, u_sym)])
         self.guess = guess or {}
         self.other_ode = od
@@ -111,7 +112,7 @@ class MotionSolver:
     def _inputs(self, known: dict) -> np.ndarray:
         m, grid = self.model, self.grid
         ex = [input_expression(n, known.get(n, start), m.t, _grid2(grid))
-              for n, start, *_ in m.inputs]
+              for n, start in zip(m.input_names, m.input_start)]
         self.u_expr = _vc(*ex) if ex else ca.SX(0, 1)
         if not ex:
             return np.zeros((0, grid.size))
@@ -175,7 +176,8 @@ class MotionSolver:
             v = self._velocities(q, tk, o, U[:, k], self.F[1, :, k])
             X[self.iq, k], X[self.iv, k] = q, v
             if k == 0:
-                self.p = set_loop_switches(m, X[:, 0], np.zeros(len(m.z_names)), self.p, tk)
+                self.p = set_loop_switches(m, tk, X[:, 0], np.zeros(len(m.z_names)), U[:, 0],
+                                           self.p)
             if self.iu:
                 U[self.iu, k] = self._unknown_inputs(tk, X[:, k], U[:, k], self.F[2, :, k])
             a = np.array(m.f(x=X[:, k], u=U[:, k], p=self.p, t=tk)["xdot"],
@@ -184,7 +186,7 @@ class MotionSolver:
         P = np.tile(self.p.reshape(-1, 1), (1, n))
 
         def evaluate():
-            V = m.recorded_function.map(n)(grid.reshape(1, -1), X, Z, P, U)
+            V = m.recorded_function.map(n)(grid.reshape(1, -1), X, Z, U, P)
             return np.asarray(V.full(), dtype=float)
         return Result(grid, m.recorded_names, m.recorded_layout, m.recorded_units,
                       {"x": X, "r": evaluate}, m.name)
@@ -194,7 +196,7 @@ class MotionSolver:
         if first and len(m.loop_rows) + len(f) < len(q):
             self._check_driven(np.eye(len(m.loop_rows) + len(f), len(q)))
         for _ in range(100 if first else 30):
-            G, J = (np.array(a, dtype=float) for a in self.f_pos(t, q, o, self.p, u, f))
+            G, J = (np.array(a, dtype=float) for a in self.f_pos(t, q, o, u, self.p, f))
             G = G.ravel()
             if np.max(np.abs(G), initial=0.0) <= self.tol:
                 if first:
@@ -223,7 +225,7 @@ class MotionSolver:
                 f"by name in mixed_dynamics) as degrees of freedom")
 
     def _velocities(self, q, t, o, u, fd):
-        J, rhs = (np.array(a, dtype=float) for a in self.f_vel(t, q, o, self.p, u, np.zeros(
+        J, rhs = (np.array(a, dtype=float) for a in self.f_vel(t, q, o, u, self.p, np.zeros(
             len(self.motion_names))))
         rhs = rhs.ravel()
         rhs[len(rhs) - len(fd):] += fd
@@ -232,7 +234,7 @@ class MotionSolver:
     def _unknown_inputs(self, t, x, u, fdd):
         u = u.copy()
         for _ in range(20):
-            r, Ju = (np.array(a, dtype=float) for a in self.f_acc(t, x, self.p, u))
+            r, Ju = (np.array(a, dtype=float) for a in self.f_acc(t, x, u, self.p))
             r = r.ravel() - fdd
             Ju = Ju[:, self.iu]
             if np.linalg.matrix_rank(Ju) < len(self.iu):

@@ -27,7 +27,7 @@ import scipy.linalg
 
 from ..errors import AnalysisError
 from .linear import LinearModel
-from .point import index_of, model_function, operating_point
+from .point import index_of, operating_point
 
 
 def linearize(model, x=None, *, u: dict | None = None, params: dict | None = None,
@@ -48,18 +48,18 @@ def linearize(model, x=None, *, u: dict | None = None, params: dict | None = Non
     outputs = model.output_names if outputs is None else list(outputs)
     iu = index_of(model.input_names, inputs, "input", model.name)
     Y = ca.vertcat(*[_expression(model, n) for n in outputs]) if outputs else ca.SX(0, 1)
-    f = model_function(model, [
+    f = model.function("jacobians", [
         ca.jacobian(e, v) for e in (model.ode, model.alg, Y) for v in (model.x, model.z, model.u)
-    ] + [Y], "jacobians")
-    J = [np.array(m, dtype=float).reshape(m.shape) for m in f(pt.t, pt.x, pt.z, pt.p, pt.u)]
+    ] + [Y])
+    J = [np.array(m, dtype=float).reshape(m.shape) for m in f(pt.t, pt.x, pt.z, pt.u, pt.p)]
     (fx, fz, fu, gx, gz, gu, yx, yz, yu), y0 = J[:9], np.array(J[9]).ravel()
     fu, gu, yu = fu[:, iu], gu[:, iu], yu[:, iu]
     nx = len(model.x_names)
 
     # algebraic variables other than the loops' μ, ν: implicit function theorem
     zn = model.z_names
-    loop = [k for k, n in enumerate(zn) if n.startswith("loops.")]
-    other = [k for k in range(len(zn)) if k not in loop]
+    loop = model.loop_multipliers                         # μ rows, then ν rows
+    other = [k for k in range(len(zn)) if k not in set(loop)]
     dz_x, dz_u = np.zeros((len(zn), nx)), np.zeros((len(zn), len(iu)))
     if other:
         G = gz[np.ix_(other, other)]
@@ -83,9 +83,7 @@ def linearize(model, x=None, *, u: dict | None = None, params: dict | None = Non
     rates = [L.qd_names[L.q_names.index(n)] for n in coords]
     mass, V = None, None
     if coords:
-        M = ca.Function("M", [model.t, model.x, model.z, model.p, model.u], [L.M],
-                        {"allow_free": True})
-        M = np.array(M(pt.t, pt.x, pt.z, pt.p, pt.u), dtype=float)
+        M = np.array(model.function("M", [L.M])(pt.t, pt.x, pt.z, pt.u, pt.p), dtype=float)
         V = full[[full_names.index(n) for n in L.q_names]][:, [states.index(c) for c in coords]]
         mass = V.T @ M @ V
     return LinearModel(A=Ax[keep] @ T, B=Bx[keep], C=Cx @ T, D=Dx, states=states,
@@ -108,8 +106,7 @@ def _loop_basis(model, Cx: np.ndarray, Cu: np.ndarray, independent):
     if np.abs(Cu).max(initial=0.0) > 1e-12 * max(1.0, np.abs(Cx).max(initial=0.0)):
         raise AnalysisError(f"linearize '{model.name}': the loop constraints depend on the "
                             f"inputs here; not supported")
-    zn = [n for n in model.z_names if n.startswith("loops.")]
-    pos_rows = [k for k, n in enumerate(zn) if n.startswith("loops.mu")]
+    pos_rows = list(range(len(model.loop_mu)))           # the μ rows: Φ = 0
     iq = [xn.index(n) for n in L.q_names]
     iv = [xn.index(n) for n in L.qd_names]
     Pq = Cx[np.ix_(pos_rows, iq)]

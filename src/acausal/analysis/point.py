@@ -3,7 +3,7 @@
 Every analysis works at such points. Inputs and parameters are given by dotted name (as to
 ``simulate``); states by the dotted name of any variable (as ``x0``, held exactly; closed loops
 are assembled around them). Where closed loops have rows that are redundant at the point, the
-model's ``loops.active`` switches are set as ``simulate`` sets them.
+model's loop-row switches (``loop_switches``) are set as ``simulate`` sets them.
 """
 from __future__ import annotations
 
@@ -12,9 +12,8 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
+from ..errors import AnalysisError, did_you_mean
 from ..simulation.initialization import initial_state
-from ..errors import VariableNameError, did_you_mean
-from ..errors import AnalysisError
 
 
 @dataclass
@@ -30,15 +29,8 @@ class OperatingPoint:
     u: np.ndarray
 
     def __getitem__(self, name: str) -> float:
-        m = self.model
-        if name not in m.recorded_names:
-            raise VariableNameError(f"no variable '{name}' in model '{m.name}'"
-                           f"{did_you_mean(name, m.recorded_names)}")
-        kind, row = m.recorded_layout[m.recorded_names.index(name)]
-        if kind == "x":
-            return float(self.x[row])
-        return float(np.asarray(m.recorded_function(self.t, self.x, self.z, self.p,
-                                                    self.u)).ravel()[row])
+        f = self.model.function("value", [self.model.expression(name)])
+        return float(f(self.t, self.x, self.z, self.u, self.p))
 
     @property
     def state(self) -> dict[str, float]:
@@ -59,17 +51,17 @@ def index_of(names: list[str], wanted, what: str, model_name: str) -> list[int]:
 
 def input_vector(model, values: dict | None) -> np.ndarray:
     """Input values [start values, with ``values`` by name]."""
-    u = np.array([i[1] for i in model.inputs], dtype=float)
+    u = model.input_start
     for k, v in zip(index_of(model.input_names, list(values or {}), "input", model.name),
                     (values or {}).values()):
         u[k] = float(v)
     return u
 
 
-def set_loop_switches(model, x, z, p, t) -> np.ndarray:
-    """p with the ``loops.active`` switches of the rows redundant at (x, z) set to 0."""
-    if model.lagrange.phi.numel():
-        active, _ = model.mobility_at(x, z, p, t)
+def set_loop_switches(model, t, x, z, u, p) -> np.ndarray:
+    """p with the switches of the loop rows redundant at (t, x, z, u) set to 0."""
+    if model.has_loops:
+        active, _ = model.mobility_at(t, x, z, u, p)
         p = p.copy()
         p[model.loop_switches] = active
     return p
@@ -88,10 +80,5 @@ def operating_point(model, x=None, *, u: dict | None = None, params: dict | None
     p = model.param_vector(params)
     uv = input_vector(model, u)
     xs, zs = initial_state(model, dict(x or {}), p, uv, float(t), guess)
-    p = set_loop_switches(model, xs, zs, p, t)
+    p = set_loop_switches(model, t, xs, zs, uv, p)
     return OperatingPoint(model, float(t), np.asarray(xs, float), np.asarray(zs, float), p, uv)
-
-
-def model_function(model, outs: list, name: str) -> ca.Function:
-    """A casadi Function (t, x, z, p, u) -> outs."""
-    return ca.Function(name, [model.t, model.x, model.z, model.p, model.u], outs)

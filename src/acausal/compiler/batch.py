@@ -103,18 +103,18 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
                 table[a[i].name()] = b[i] if b is not None else None
         slots[name] = trio
         inputs += trio
-    saved = rep.__dict__["_symbols"]
+    saved = ws.param_symbols[rep]
     pnames = list(saved)
     stand = {p: ca.SX.sym(p, saved[p].numel()) for p in pnames}
     table["t"] = 1
-    rep.__dict__["_symbols"] = stand
+    ws.param_symbols[rep] = stand
     try:
         tb = _TraceBuilder(ws, rep, slots, table)
         rep.physics(tb)
     except _NotBatchable:
         return False
     finally:
-        rep.__dict__["_symbols"] = saved
+        ws.param_symbols[rep] = saved
     if not tb.out:
         return True
     F = ca.Function("batch", inputs + [stand[p] for p in pnames] + [ws.t],
@@ -125,7 +125,7 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
         nodes = [ws.node_of[ports[name]] for ports in all_ports]
         args += [ca.horzcat(*[n.pos for n in nodes]), ca.horzcat(*[n.vel for n in nodes]),
                  ca.horzcat(*[n.acc for n in nodes])]
-    args += [ca.horzcat(*[c.__dict__["_symbols"][p] for c in members]) for p in pnames]
+    args += [ca.horzcat(*[ws.param_symbols[c][p] for c in members]) for p in pnames]
     args.append(ws.t)
     Y = F.map(len(members))(*args)
     row = 0

@@ -51,9 +51,11 @@ class Workspace:
     flows: list = field(default_factory=list)               # (port, expr) explicit flows
     variables: list = field(default_factory=list)           # (name, expr, unit)
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
+    state_names: dict = field(default_factory=dict)         # port -> its coordinates' names
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
     events: list = field(default_factory=list)              # (time, period) of time events
     components: list = field(default_factory=list)          # all of them, flattened
+    param_symbols: dict = field(default_factory=dict)       # component -> {name: SX}
     p: object = None                                        # parameter symbols, stacked
     p_default: list = field(default_factory=list)           # their default values
 
@@ -149,7 +151,7 @@ class StructureBuilder(_Base):
         (a Body not connected to the ground: ``r[1], r[2], phi`` and ``v[1], v[2], w``); such
         ports are preferred when choosing free coordinates."""
         self._mine(port)
-        port.state_names = (tuple(positions), tuple(velocities))
+        self._ws.state_names[port] = (tuple(positions), tuple(velocities))
 
     def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
              preferred: bool = True) -> InternalNode:

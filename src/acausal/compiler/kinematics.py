@@ -51,10 +51,10 @@ class Node:
     def name(self) -> str:
         return self.ports[0].path
 
-    @property
-    def preferred(self) -> bool:
-        return any(getattr(p, "preferred", False) or getattr(p, "state_names", None)
-                   for p in self.ports)
+    def preferred(self, state_names: dict) -> bool:
+        """Whether a component marked one of its ports (or internal points) as a natural
+        coordinate: a preferred internal node, or a port that names its coordinates."""
+        return any(getattr(p, "preferred", False) or p in state_names for p in self.ports)
 
 
 class Atoms:
@@ -115,6 +115,26 @@ def _forms_to_matrix(forms: list[dict], n_atoms: int):
     return ca.SX.triplet(rows, cols, ca.vertcat(*[ca.SX(v) for v in vals]), len(forms), n_atoms)
 
 
+@dataclass(frozen=True)
+class FiredRelation:
+    """A relation that determined a node: its relaxation ε (and ε̇, ε̈), whose conjugate
+    generalized force is the relation's reaction."""
+    relation: object
+    eps: ca.SX
+    epsd: ca.SX
+    epsdd: ca.SX
+
+
+@dataclass(frozen=True)
+class LoopBlock:
+    """Consecutive rows of Φ from one relation that closes a loop: ``flows(λ)`` gives the
+    flows at its ports for its multipliers, or is None for the extra rows of a relation that
+    also fired (their flows come with the fired relation's)."""
+    relation: object
+    rows: int
+    flows: object
+
+
 @dataclass
 class Tree:
     """Result of the coordinate choice."""
@@ -124,18 +144,19 @@ class Tree:
     qdd: ca.SX
     q_names: list[str]
     qd_names: list[str]
-    fired: list = field(default_factory=list)      # (relation, eps, epsd, epsdd)
-    loops: list = field(default_factory=list)      # (relation, dim, flows(λ) or None) per block;
-    #                                                None: extra rows of a fired relation
+    fired: list[FiredRelation] = field(default_factory=list)
+    loops: list[LoopBlock] = field(default_factory=list)
     loop_residual: ca.SX = None                    # Φ of the loops, stacked in that order
     loop_rows: list = field(default_factory=list)  # a name for each row of Φ
 
 
-def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
+def build_tree(nodes: list[Node], relations: list, der_table: dict,
+               state_names: dict) -> Tree:
     """Choose coordinates, give every node its position, velocity and acceleration.
 
     ``der_table`` maps symbol names to their time derivatives; it is extended with the
-    coordinates and relaxations created here.
+    coordinates and relaxations created here. ``state_names`` maps ports to the names of the
+    coordinates they get if they need free ones (StructureBuilder.states).
     """
     by_node: dict[int, list] = {n.index: [] for n in nodes}
     for r in relations:
@@ -194,7 +215,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
                 node.pos, node.vel, node.acc = pos + e, vel + ed, acc + edd
             if extra is not None:
                 nl_loops.append((r, extra, None))        # its flows: with the fired ones
-        fired.append((r, e, ed, edd))
+        fired.append(FiredRelation(r, e, ed, edd))
         return node
 
     def propagate(start: list[Node]):
@@ -217,7 +238,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
     # free coordinates: joints' and masses' own (internal nodes) first, then ports that name
     # their coordinates (a free Body), then anything
     rank = lambda n: (0 if any(isinstance(p, InternalNode) and p.preferred for p in n.ports)  # noqa: E731
-                      else 1 if n.preferred else 2)
+                      else 1 if n.preferred(state_names) else 2)
     order = sorted(nodes, key=rank)
     for n in order:
         if known(n):
@@ -225,7 +246,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
         dim = n.domain.dim
         syms = []
         for pot in n.domain.potentials:
-            qname, vname = _state_names(n, len(syms), pot)
+            qname, vname = _state_names(n, len(syms), pot, state_names)
             s, v, a = ca.SX.sym(qname), ca.SX.sym(vname), ca.SX.sym(f"der({vname})")
             der_table[s.name()], der_table[v.name()], der_table[a.name()] = v, a, None
             q.append(s); qd.append(v); qdd.append(a)
@@ -250,11 +271,11 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
     for i, n in enumerate(one_d):
         n.pos, n.vel, n.acc = pos[i], vel[i], acc[i]
     rows = pos[len(one_d):]
-    loops = [(r, 1, r.flows) for r in lin_loops]
+    loops = [LoopBlock(r, 1, r.flows) for r in lin_loops]
     names = [r.owner.path for r in lin_loops]
     for r, phi, flows in nl_loops:
         rows += ca.vertsplit(phi)
-        loops.append((r, phi.numel(), flows))
+        loops.append(LoopBlock(r, phi.numel(), flows))
         names += [f"{r.owner.path}.{c}" for c in r.row_names(flows is None)]
     residual = ca.vertcat(*rows) if rows else ca.SX(0, 1)
     vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)      # noqa: E731
@@ -262,12 +283,12 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict) -> Tree:
                 names)
 
 
-def _state_names(n: Node, k: int, potential: str) -> tuple[str, str]:
+def _state_names(n: Node, k: int, potential: str, state_names: dict) -> tuple[str, str]:
     """Names of the k-th coordinate of a free node and of its rate: those a component gave
     (StructureBuilder.states, a Mass's centre ``mass.s``/``mass.v``), else the first port's
     ``<port>.<potential>`` and ``der(...)``."""
     for p in n.ports:
-        names = getattr(p, "state_names", None)
+        names = state_names.get(p)
         if names:
             base = f"{p.owner.path}." if p.owner.path else ""
             return base + names[0][k], base + names[1][k]

@@ -18,7 +18,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import StructureError
-from ..simulation.kernels import independent_rows
+from ..numerics import independent_rows
 
 
 @dataclass
@@ -92,8 +92,8 @@ def _constant_row(tree, phi, i, ws) -> None:
 
 def _relation_of_row(tree, i):
     k = 0
-    for r, dim, _ in tree.loops:
-        if i < k + dim:
-            return r, i - k
-        k += dim
+    for block in tree.loops:
+        if i < k + block.rows:
+            return block.relation, i - k
+        k += block.rows
     raise IndexError(i)

@@ -1,7 +1,25 @@
 """Parameter: a named, documented constant of a component, a CasADi symbol once compiled."""
 from __future__ import annotations
 
+from contextlib import contextmanager
+from contextvars import ContextVar
+
 from ..errors import ParameterError
+
+#: While a model is compiled: component -> {parameter name: CasADi symbol}. Held by the
+#: compiler for the duration of one compile (``symbolic_parameters``), never on a component.
+_SYMBOLS: ContextVar[dict | None] = ContextVar("acausal_parameter_symbols", default=None)
+
+
+@contextmanager
+def symbolic_parameters(table: dict):
+    """Within the block, the parameters of the components in ``table`` (component -> {name:
+    symbol}) read as their symbols; the components themselves are left untouched."""
+    token = _SYMBOLS.set(table)
+    try:
+        yield table
+    finally:
+        _SYMBOLS.reset(token)
 
 
 class Parameter:
@@ -14,8 +32,9 @@ class Parameter:
     different from 0 (gear ratios, radii).
 
     On an instance the attribute reads as the numeric value; while the instance is being
-    compiled it reads as the CasADi symbol that stands for it, so the equations a component
-    writes keep the parameter symbolic and it can be changed at simulation time.
+    compiled (``symbolic_parameters``) it reads as the CasADi symbol that stands for it, so
+    the equations a component writes keep the parameter symbolic and it can be changed at
+    simulation time.
     """
 
     def __init__(self, default, unit: str = "", description: str = "", *,
@@ -35,7 +54,8 @@ class Parameter:
     def __get__(self, instance, owner=None):
         if instance is None:
             return self
-        symbols = instance.__dict__.get("_symbols")
+        table = _SYMBOLS.get()
+        symbols = table.get(instance) if table is not None else None
         if symbols is not None:
             return symbols[self.name]
         return instance.__dict__["_values"][self.name]

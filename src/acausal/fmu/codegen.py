@@ -1,11 +1,12 @@
 """CasADi functions of a compiled model for the native FMU, generated as C.
 
-Every function takes the same five dense arguments (t, x, z, p, u):
+Every function takes the same five dense arguments (t, x, z, u, p), the order of every
+Function of the compiled model:
 
 - ``x`` the FMU's continuous states (``compiled.x``);
 - ``z`` the algebraic variables the FMU solves by Newton's method (massless nodes and the
   model's own algebraic variables: every entry of ``compiled.z`` but the loop multipliers);
-- the loop multipliers ``loops.mu_i``/``loops.nu_i`` of the stabilized (GGL) form are zero on
+- the loop multipliers μ, ν (``compiled.loop_multipliers``) of the stabilized (GGL) form are zero on
   the exact solution: they are replaced by 0 everywhere, and their residual rows become the
   constraint vector H = [Φ; Φ̇] that the C runtime keeps at zero by projection.
 
@@ -35,7 +36,7 @@ class ModelFunctions:
         c = self.compiled = compiled
         t, x, p, u = c.t, c.x, c.p, c.u
         zall = ca.vertsplit(c.z) if c.z.numel() else []
-        loop = [i for i, n in enumerate(c.z_names) if n.startswith("loops.")]
+        loop = sorted(c.loop_multipliers)
         free = [i for i in range(len(zall)) if i not in loop]
         self.z_names = [c.z_names[i] for i in free]
         z = ca.vertcat(*[zall[i] for i in free]) if free else ca.SX(0, 1)
@@ -50,7 +51,7 @@ class ModelFunctions:
         H = nol(ca.vertcat(*[alg[i] for i in loop])) if loop else ca.SX(0, 1)
         y = nol(c.y) if c.y.numel() else ca.SX(0, 1)
         rf = c.recorded_function
-        rec = nol(rf(t, x, c.z, p, u)) if rf.size1_out(0) else ca.SX(0, 1)
+        rec = nol(rf(t, x, c.z, u, p)) if rf.size1_out(0) else ca.SX(0, 1)
         self.nx, self.nz, self.np, self.nu = x.numel(), z.numel(), p.numel(), u.numel()
         self.ny, self.nrec, self.nh = y.numel(), rec.numel(), H.numel()
         phi_q = nol(c.lagrange.phi_q) if loop else ca.SX(0, 1)
@@ -60,7 +61,7 @@ class ModelFunctions:
 
         s0 = ca.vertsplit(c.start(p))          # start values of [x; z]: x and the free z
         start = ca.vertcat(*(s0[:self.nx] + [s0[self.nx + i] for i in free]))
-        args, names = [t, x, z, p, u], ["t", "x", "z", "p", "u"]
+        args, names = [t, x, z, u, p], ["t", "x", "z", "u", "p"]
         d = ca.densify
         w = ca.vertcat(x, u, t)
         F = ca.vertcat(ode, y)

@@ -4,7 +4,7 @@ importer's side, with a CasADi integrator.
 ``export_pythonfmu(compiled, path)`` writes an FMU whose ``resources`` hold
 
 - the slave module (the template ``acausal/fmu/pythonfmu_slave.py``), the numerics it shares with
-  acausal (``acausal/simulation/kernels.py``, as the module ``<slave>_kernels``) and pythonfmu's
+  acausal (``acausal/numerics.py``, as the module ``<slave>_kernels``) and pythonfmu's
   own Python files (pythonfmu's builder embeds them);
 - ``acausal_model/model.json``: the FMU variables of ``acausal.fmu.variables.fmu_variables``
   (the same names, value references, causalities, units and start values as the native FMU),
@@ -57,7 +57,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import FmuExportError, SimulationError
-from ..simulation import kernels
+from .. import numerics
 from ..simulation.initialization import model_equations
 from ..simulation.simulate import integrator_settings
 from .model_description import base_unit_attributes, naming_convention
@@ -99,7 +99,7 @@ def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str 
         path = path / f"{ident}.fmu"
     functions, meta = _contents(compiled, ident, rtol, atol, solver)
     source = TEMPLATE.read_text(encoding="utf-8")
-    shared = Path(kernels.__file__).read_text(encoding="utf-8")
+    shared = Path(numerics.__file__).read_text(encoding="utf-8")
     digest = hashlib.sha1((source + shared).encode()).hexdigest()[:10]
     module = f"acausal_slave_{digest}"
     with tempfile.TemporaryDirectory(prefix="acausal_fmu_") as tmp:
@@ -142,7 +142,7 @@ def _contents(compiled, ident, rtol, atol, solver):
     c = compiled
     variables = fmu_variables(c)
     has_alg = c.z.numel() > 0
-    loops = c.lagrange.phi.numel() > 0
+    loops = c.has_loops
     integrator, deviation = _integrator(c, solver, rtol, atol)
     rec = c.recorded_function
     functions = {
@@ -159,10 +159,10 @@ def _contents(compiled, ident, rtol, atol, solver):
     if loops:
         functions["phi_q"] = c.phi_q_function
     checks = []
-    for name, default, unit, desc, par in c.params:
-        checks.append({k: bool(getattr(par, k, False))
+    for v in c.params:
+        checks.append({k: bool(getattr(v.declaration, k, False))
                        for k in ("positive", "nonnegative", "nonzero")}
-                      | {"description": getattr(par, "description", "") or desc or ""})
+                      | {"description": v.description or ""})
     layout = c.recorded_layout
     meta = {
         "identifier": ident,
@@ -224,10 +224,10 @@ def _integrator(c, solver, rtol, atol):
     if loops:
         d, x0, f0 = ca.SX.sym("delta", nx), ca.SX.sym("x0", nx), ca.SX.sym("f0", nx)
         P += [x0, f0]
-        ode, alg = c.f(x0 + h * tau * f0 + d, c.u, c.p, c.z, t)
+        ode, alg = c.f(t, x0 + h * tau * f0 + d, c.z, c.u, c.p)
         dae = {"x": d, "ode": h * ode - h * f0}
     else:
-        ode, alg = c.f(c.x, c.u, c.p, c.z, t)
+        ode, alg = c.f(t, c.x, c.z, c.u, c.p)
         dae = {"x": c.x, "ode": h * ode}
     dae.update(t=tau, p=ca.vertcat(*P))
     if has_alg:
@@ -238,11 +238,11 @@ def _integrator(c, solver, rtol, atol):
 
 
 def _init_function(c):
-    """(w = [x; z], t, p, u) -> (H, ∂H/∂w): loop constraints Φ, Φ̇ and algebraic equations,
+    """(t, w = [x; z], u, p) -> (H, ∂H/∂w): loop constraints Φ, Φ̇ and algebraic equations,
     the equations acausal.simulation.initialization.initial_state holds; and their labels."""
     w = ca.vertcat(c.x, c.z)
     eqs, labels = model_equations(c)
     H = ca.vertcat(*[ca.vec(e) for e in eqs])
-    f = ca.Function("init", [w, c.t, c.p, c.u], [H, ca.jacobian(H, w)],
-                    ["w", "t", "p", "u"], ["H", "J"])
+    f = ca.Function("init", [c.t, w, c.u, c.p], [H, ca.jacobian(H, w)],
+                    ["t", "w", "u", "p"], ["H", "J"])
     return f, labels

@@ -5,7 +5,7 @@ name carries a hash of this file, so that FMUs of different acausal versions loa
 process do not share a module) next to ``acausal_model/``: ``model.json`` (variables, value
 references, units, parameter checks, solver settings) and the model's serialized CasADi
 Functions (``*.casadi``); and next to it the module ``<this module>_kernels``, a copy of
-``acausal/simulation/kernels.py`` (the numerics acausal runs in-process: initial-value
+``acausal/numerics.py`` (the numerics acausal runs in-process: initial-value
 projection, time events, solver messages). The slave needs only Python, numpy and casadi — not
 acausal, and not pythonfmu either (the FMU carries pythonfmu's Python files).
 
@@ -36,7 +36,7 @@ from pythonfmu.fmi2slave import Fmi2Slave
 from pythonfmu.variables import Real
 
 DATA = "acausal_model"          # folder in resources with model.json and the *.casadi files
-# acausal.simulation.kernels, shipped next to this module under this module's name (unique per
+# acausal.numerics, shipped next to this module under this module's name (unique per
 # acausal version) + "_kernels"
 kernels = importlib.import_module(f"{__name__}_kernels")
 _CAUSALITY = {c.name: c for c in Fmi2Causality}
@@ -202,10 +202,10 @@ class AcausalSlave(Fmi2Slave):
     def _derived(self):
         """Outputs, state derivatives and recorded variables at the current point (cached)."""
         if self._cache is None:
-            args = (self.x, self.u, self.p, self.z, self.t)
+            args = (self.t, self.x, self.z, self.u, self.p)
             xdot = self.fn["f"](*args)[0]
             y = self.fn["outputs"](*args)
-            r = self.fn["recorded"](self.t, self.x, self.z, self.p, self.u)
+            r = self.fn["recorded"](*args)
             self._cache = {k: np.asarray(ca.DM(val).full(), dtype=float).ravel()
                            for k, val in (("xdot", xdot), ("y", y), ("r", r))}
         return self._cache
@@ -242,7 +242,7 @@ class AcausalSlave(Fmi2Slave):
             return
         self.x, self.z = self._consistent(hard)
         if "phi_q" in self.fn:          # enforce the loop rows independent here, as simulate()
-            J = self.fn["phi_q"](self.x, self.z, self.t, self.p)
+            J = self.fn["phi_q"](self.t, self.x, self.z, self.u, self.p)
             self.p[self.meta["loop_switches"]] = kernels.independent_rows(J.full())
 
     def _consistent(self, hard):
@@ -255,7 +255,7 @@ class AcausalSlave(Fmi2Slave):
         targets = [hard[i] for i in rows]
 
         def equations(w):
-            h, J = self.fn["init"](w, self.t, self.p, self.u)
+            h, J = self.fn["init"](self.t, w, self.u, self.p)
             h = np.asarray(h.full(), dtype=float).ravel()
             return np.concatenate([E @ w - targets, h]), np.vstack([E, np.asarray(J.full())])
 
@@ -306,7 +306,7 @@ class AcausalSlave(Fmi2Slave):
             return x, z
         P = [self.p, self.u, [a, h]]
         if self.meta["deviation_form"]:
-            f0 = np.asarray(self.fn["f"](x, self.u, self.p, z, a)[0].full(), dtype=float).ravel()
+            f0 = np.asarray(self.fn["f"](a, x, z, self.u, self.p)[0].full(), dtype=float).ravel()
             P += [x, f0]
             sol = self.fn["integrator"](x0=np.zeros(self.nx), z0=z, p=np.concatenate(P))
             d = np.asarray(sol["xf"].full(), dtype=float).ravel()

@@ -4,7 +4,7 @@ One list serves every backend (native FMI 2.0 / 3.0 and pythonfmu), so that a mo
 agree on names, causalities, units and start values:
 
 - parameters (causality ``parameter``, variability ``tunable``, start = default);
-- the switches ``loops.active_i`` of closed-loop rows (``calculatedParameter``, ``fixed``,
+- the switches of closed-loop rows, ``loops.active_i`` (``calculatedParameter``, ``fixed``,
   initial ``calculated``): the FMU sets them in initialization as simulate() does, at the
   assembled configuration (rows that add nothing to the rank of Φ_q there are off);
 - inputs (``input``, ``continuous``, start = the Input's start);
@@ -18,7 +18,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..compiler.compiled import CompiledModel
+from ..compiler import CompiledModel
 
 
 @dataclass(frozen=True)
@@ -46,22 +46,25 @@ def fmu_variables(compiled: CompiledModel) -> list[FmuVariable]:
                                initial, start, unit or "", desc or "", der))
 
     switches = set(compiled.loop_switches)
-    for i, (name, start, unit, desc, _) in enumerate(compiled.params):
+    for i, v in enumerate(compiled.params):
         if i in switches:
-            add(name, "switch", i, "calculatedParameter", "fixed", "calculated", None, unit,
-                desc)
+            add(v.name, "switch", i, "calculatedParameter", "fixed", "calculated", None, v.unit,
+                v.description)
         else:
-            add(name, "parameter", i, "parameter", "tunable", "exact", float(start), unit, desc)
-    for i, (name, start, unit, desc) in enumerate(compiled.inputs):
-        add(name, "input", i, "input", "continuous", None, float(start), unit, desc)
-    for i, (name, unit, desc) in enumerate(compiled.outputs):
-        add(name, "output", i, "output", "continuous", "calculated", None, unit, desc)
+            add(v.name, "parameter", i, "parameter", "tunable", "exact", float(v.start), v.unit,
+                v.description)
+    for i, v in enumerate(compiled.inputs):
+        add(v.name, "input", i, "input", "continuous", None, float(v.start), v.unit,
+            v.description)
+    for i, v in enumerate(compiled.outputs):
+        add(v.name, "output", i, "output", "continuous", "calculated", None, v.unit,
+            v.description)
     x_start = compiled.start(compiled.param_vector())
     x_start = [float(v) for v in x_start.full().ravel()[:len(compiled.x_names)]]
     state_ref = {}
-    for i, name in enumerate(compiled.x_names):
-        add(name, "state", i, "local", "continuous", "exact", x_start[i], units.get(name, ""),
-            f"state {name}")
+    for i, v in enumerate(compiled.states):
+        add(v.name, "state", i, "local", "continuous", "exact", x_start[i],
+            v.unit or units.get(v.name, ""), v.description or f"state {v.name}")
         state_ref[i] = out[-1].value_reference
     for i, name in enumerate(compiled.x_names):
         unit = units.get(name, "")

@@ -6,10 +6,11 @@ from collections.abc import Mapping
 import casadi as ca
 import numpy as np
 
-from ..errors import ParameterError, did_you_mean
-from ..errors import OCPError
+from ..errors import OCPError, ParameterError, VariableNameError, did_you_mean
 
-TIME = "time"
+#: the OCP's word for each kind of name the compiled model resolves
+_KINDS = {"time": "time", "state": "state", "input": "control", "parameter": "parameter",
+          "algebraic": "variable", "recorded": "variable"}
 
 
 class ModelView:
@@ -32,11 +33,6 @@ class ModelView:
         if len(set(self.free)) != len(self.free):
             raise OCPError(f"free parameters listed twice: {self.free}")
         self.free_index = [compiled.param_names.index(n) for n in self.free]
-        self._kinds = {TIME: "time"}
-        self._kinds.update({n: "variable" for n in compiled.recorded_names})
-        self._kinds.update({n: "parameter" for n in compiled.param_names})
-        self._kinds.update({n: "control" for n in compiled.input_names})
-        self._kinds.update({n: "state" for n in compiled.x_names})
         # fixed parameters as numbers (folded into the arithmetic, as in simulate), free
         # ones as the symbols they are
         fold = [ca.SX(v) for v in self.p_values]
@@ -46,7 +42,7 @@ class ModelView:
         self.f = self.function([compiled.ode, compiled.alg], "f", ["xdot", "alg"])
         start = np.asarray(compiled.start(self.p_values), dtype=float).ravel()
         self.x_start, self.z_start = start[:self.nx], start[self.nx:]
-        self.u_start = np.array([i[1] for i in compiled.inputs], dtype=float)
+        self.u_start = compiled.input_start
         self._split_algebraic()
 
     # ---- sizes and names --------------------------------------------------------------------
@@ -62,33 +58,30 @@ class ModelView:
     def nu(self) -> int:
         return self.compiled.u.numel()
 
+    def _resolve(self, name: str):
+        if not isinstance(name, str):
+            raise OCPError(f"variable names are strings, got {name!r}")
+        try:
+            return self.compiled.variable(name)
+        except VariableNameError as e:
+            raise OCPError(str(e)) from None
+
     def kind(self, name: str) -> str:
         """'state', 'control', 'parameter', 'time' or 'variable'; OCPError if unknown."""
-        try:
-            return self._kinds[name]
-        except (KeyError, TypeError):
-            raise OCPError(f"model '{self.compiled.name}' has no variable '{name}'"
-                           f"{did_you_mean(str(name), self._kinds)}") from None
+        return _KINDS[self._resolve(name).kind]
 
     def index(self, name: str) -> int:
         """Row of a state, control or parameter in x, u or p."""
-        c, kind = self.compiled, self.kind(name)
-        names = {"state": c.x_names, "control": c.input_names, "parameter": c.param_names}[kind]
-        return names.index(name)
+        return self._resolve(name).index
 
     # ---- symbols ------------------------------------------------------------------------------
     def sym(self, name: str) -> ca.SX:
-        """The SX expression of ``name`` in the model's symbols t, x, z, p, u."""
-        c, kind = self.compiled, self.kind(name)
-        if kind == "time":
-            return c.t
-        if kind == "state":
-            return c.x[self.index(name)]
-        if kind == "control":
-            return c.u[self.index(name)]
-        if kind == "parameter":
-            return c.p[self.index(name)]
-        return c.expression(name)
+        """The SX expression of ``name`` in the model's symbols t, x, z, u, p."""
+        return self._resolve(name).expression
+
+    def names(self) -> list[str]:
+        """Every name the model resolves: time, parameters, and every recorded variable."""
+        return ["time"] + self.compiled.param_names + self.compiled.recorded_names
 
     def expression(self, expr) -> ca.SX:
         """A scalar SX in the model's symbols from an SX, a name, or a callable receiving
@@ -106,14 +99,12 @@ class ModelView:
         return expr
 
     def function(self, exprs: list, name: str = "g", outputs=("g",)) -> ca.Function:
-        """Function (x, u, p, z, t) -> ``exprs`` (stacked into one output unless ``outputs``
-        names each), the argument order of compiled.f; the fixed parameters' values are
-        folded in (only the free entries of p are read)."""
+        """Function (t, x, z, u, p) -> ``exprs`` (stacked into one output unless ``outputs``
+        names each), the argument order of every Function of the compiled model; the fixed
+        parameters' values are folded in (only the free entries of p are read)."""
         c = self.compiled
         outs = [ca.vertcat(*exprs)] if len(outputs) == 1 else list(exprs)
-        outs = ca.substitute(outs, [c.p], [self._fold])
-        return ca.Function(name, [c.x, c.u, c.p, c.z, c.t], outs,
-                           ["x", "u", "p", "z", "t"], list(outputs))
+        return c.function(name, ca.substitute(outs, [c.p], [self._fold]), outputs)
 
     # ---- algebraic structure ------------------------------------------------------------------
     def _split_algebraic(self):
@@ -121,7 +112,7 @@ class ModelView:
         e.g. massless nodes) and which rows hold on the states alone (``rows_x``: the
         loops' Φ = 0, Φ̇ = 0 of the stabilized index-2 form, whose multipliers μ, ν enter
         only the state equations and are 0 on the exact solution). Judged on the equations
-        with the fixed parameters' values (``loops.active`` switches rows to index 1)."""
+        with the fixed parameters' values (the loop-row switches turn rows to index 1)."""
         c = self.compiled
         alg = ca.substitute(c.alg, c.p, ca.DM(self.p_values))
         J = ca.jacobian(alg, c.z).sparsity() if self.nz else ca.Sparsity(0, 0)
@@ -141,7 +132,7 @@ class Symbols(Mapping):
         return self._view.sym(name)
 
     def __iter__(self):
-        return iter(self._view._kinds)
+        return iter(self._view.names())
 
     def __len__(self):
-        return len(self._view._kinds)
+        return len(self._view.names())

@@ -101,7 +101,7 @@ class OCP:
             return n.t.T
         if name not in self._variables:
             f = self.view.function([self.view.sym(name)], "variable").map(self.N + 1)
-            self._variables[name] = f(n.X, n.U_nodes, n.P, n.Z, n.t).T
+            self._variables[name] = f(n.t, n.X, n.Z, n.U_nodes, n.P).T
         return self._variables[name]
 
     def integral(self, integrand) -> ca.MX:

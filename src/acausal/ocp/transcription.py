@@ -76,16 +76,16 @@ class Transcription:
         Q = ca.MX(len(integrands), 1)
         if held:
             gh = view.function([integrands[i] for i in held], "held").map(N)
-            Q[held] = nodes.h * ca.sum2(gh(nodes.X[:, :N], nodes.U, nodes.P, nodes.Z[:, :N],
-                                            nodes.t[:, :N]))
+            Q[held] = nodes.h * ca.sum2(gh(nodes.t[:, :N], nodes.X[:, :N], nodes.Z[:, :N],
+                                            nodes.U, nodes.P))
         if other:
             Q[other] = ca.sum2(Q_other)
         f, U = view.f, nodes.U_nodes
         if view.rows_z:             # index-1 algebraic equations at every node
-            alg = f.map(N + 1)(nodes.X, U, nodes.P, nodes.Z, nodes.t)[1]
+            alg = f.map(N + 1)(nodes.t, nodes.X, nodes.Z, U, nodes.P)[1]
             nlp.equal(alg[view.rows_z, :])
         if view.rows_x:             # the loops' Φ = 0, Φ̇ = 0 at the start
-            alg = f(nodes.X[:, 0], U[:, 0], nodes.P, nodes.Z[:, 0], nodes.t[0])[1]
+            alg = f(nodes.t[0], nodes.X[:, 0], nodes.Z[:, 0], U[:, 0], nodes.P)[1]
             nlp.equal(alg[view.rows_x])
         return Q
 
@@ -126,7 +126,7 @@ class Collocation(Transcription):
         spread = ca.kron(E, ca.DM.ones(1, d))                   # interval -> its points
         Tc = nodes.t[:, :N] @ spread + nodes.h * ca.DM(np.tile(self.tau, N)).T
         Uc = nodes.U @ spread
-        xdot, alg = view.f.map(N * d)(Xc, Uc, nodes.P, Zc, Tc)
+        xdot, alg = view.f.map(N * d)(Tc, Xc, Zc, Uc, nodes.P)
         Xs = nodes.X[:, :N]
         slope = Xs @ ca.kron(E, self.C[0, :]) + Xc @ ca.kron(E, self.C[1:, :])
         nlp.equal(nodes.h * xdot - slope)
@@ -134,7 +134,7 @@ class Collocation(Transcription):
         X_end = Xs @ ca.kron(E, self.D[0]) + Xc @ ca.kron(E, self.D[1:])
         Q = None
         if g is not None:
-            G = g.map(N * d)(Xc, Uc, nodes.P, Zc, Tc)
+            G = g.map(N * d)(Tc, Xc, Zc, Uc, nodes.P)
             Q = nodes.h * (G @ ca.kron(E, self.B))
         return X_end, Q
 
@@ -172,12 +172,12 @@ class MultipleShooting(Transcription):
         view, c, N = self.view, self.view.compiled, nodes.N
         tau, tk, h = ca.SX.sym("tau"), ca.SX.sym("t_k"), ca.SX.sym("h")
         scaled = lambda e: ca.substitute(e, c.t, tk + h * tau)
-        xdot, alg = view.f(c.x, c.u, c.p, c.z, c.t)
+        xdot, alg = view.f(c.t, c.x, c.z, c.u, c.p)
         dae = {"x": c.x, "p": ca.vertcat(c.p, c.u, tk, h), "t": tau, "ode": h * scaled(xdot)}
         if view.nz:
             dae.update(z=c.z, alg=scaled(alg))
         if g is not None:
-            dae["quad"] = h * scaled(g(c.x, c.u, c.p, c.z, c.t))
+            dae["quad"] = h * scaled(g(c.t, c.x, c.z, c.u, c.p))
         try:
             F = ca.integrator("interval", self.plugin, dae, 0.0, 1.0, self.options)
             if self.plugin == "rk" and F.is_a("MXFunction"):

@@ -1,5 +1,6 @@
-"""Simulation: CasADi integrators, consistent initial values, Result; ``kernels`` holds the
-dependency-free pieces (projection, event times) that the pythonfmu FMU ships and runs too."""
+"""Simulation: CasADi integrators, consistent initial values, Result. The dependency-free
+pieces it shares with the compiler and the pythonfmu FMU (projection, event times) are in the
+base leaf ``acausal.numerics``."""
 from .initialization import initial_state
 from .result import Result
 from .simulate import input_expression, simulate

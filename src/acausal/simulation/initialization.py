@@ -14,7 +14,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import InitializationError
-from .kernels import ProjectionError, moved_note, project
+from ..numerics import ProjectionError, moved_note, project
 
 
 def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
@@ -28,15 +28,11 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     nx = model.x.numel()
     hard, labels, targets = [], [], []
     names = model.x_names + model.z_names
-    direct = dict(zip(names, ca.vertsplit(w)))
     for name, value in x0.items():
-        if name in direct:
-            ex = direct[name]
-        else:
-            try:
-                ex = model.expression(name)
-            except KeyError as e:
-                raise InitializationError(f"x0: {e.args[0]}") from None
+        try:
+            ex = model.expression(name)
+        except KeyError as e:
+            raise InitializationError(f"x0: {e.args[0]}") from None
         if not ca.depends_on(ex, w):
             raise InitializationError(f"x0: '{name}' does not depend on any state (it is fixed "
                                       f"by the model); remove it from x0")
@@ -49,17 +45,17 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     labels += more_labels
     start = np.array(model.start(p), dtype=float).ravel()
     for name, value in (guess or {}).items():
-        if name not in direct:
+        if name not in names:
             raise InitializationError(f"guess: '{name}' is not a state of '{model.name}' (its "
                                       f"states: {', '.join(names[:8])}...)")
         start[names.index(name)] = float(value)
     if not eqs:
         return start[:nx], start[nx:]
     H = ca.vertcat(*[ca.vec(e) for e in eqs])
-    f = ca.Function("init", [w, model.t, model.p, model.u], [H, ca.jacobian(H, w)])
+    f = ca.Function("init", [model.t, w, model.u, model.p], [H, ca.jacobian(H, w)])
 
     def equations(wk):
-        h, J = f(wk, t0, p, u0)
+        h, J = f(t0, wk, u0, p)
         return np.array(h, dtype=float).ravel(), np.array(J, dtype=float)
 
     wk = start.copy()
@@ -70,7 +66,7 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
         wk = project(equations, start, wk, nx, labels, targets)
     except ProjectionError as e:
         raise InitializationError(str(e)) from None
-    note = moved_note(names[:nx], start, wk, held=x0) if model.lagrange.phi.numel() else None
+    note = moved_note(names[:nx], start, wk, held=x0) if model.has_loops else None
     if note:
         warnings.warn(note, stacklevel=3)
     return wk[:nx], wk[nx:]
@@ -78,11 +74,11 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
 
 def model_equations(model):
     """The equations every initial state satisfies besides the given values, as a list of SX
-    in (x, z, t, p, u), and a label per row: closed loops' Φ = 0 and Φ̇ = 0 ("loop constraint
+    in (t, x, z, u, p), and a label per row: closed loops' Φ = 0 and Φ̇ = 0 ("loop constraint
     <row>", "loop velocity constraint <row>"), then the algebraic equations."""
     eqs, labels = [], []
     phi = model.lagrange.phi
-    if phi.numel():
+    if model.has_loops:
         # Φ̇ along the model's own motion (states other than q, e.g. a Speed source's angle,
         # may enter Φ), with the stabilizing multipliers at their consistent value 0
         xdot = ca.substitute(model.ode, model.z, ca.SX.zeros(model.z.numel()))

@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from .initialization import initial_state
-from .kernels import just_before, short_error
+from ..numerics import just_before, short_error
 from .result import Result
 
 SOLVERS = ("cvodes", "adams", "idas", "rk", "collocation")
@@ -87,14 +87,14 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     if unknown:
         raise SimulationError(f"model '{model.name}' has no input {sorted(unknown)}; its inputs: "
                               f"{model.input_names or 'none'}")
-    u_ex = [input_expression(n, inputs.get(n, start), model.t, grid)
-            for n, start, *_ in model.inputs]
+    u_ex = [input_expression(v.name, inputs.get(v.name, v.start), model.t, grid)
+            for v in model.inputs]
     u_expr = ca.vertcat(*u_ex) if u_ex else ca.SX(0, 1)
     u0 = np.array(ca.evalf(ca.substitute(u_expr, model.t, grid[0]))).ravel()
     xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess)
     mobility = None
-    if model.lagrange.phi.numel():       # enforce the loop rows independent at this assembly
-        active, mobility = model.mobility_at(xs, zs, p, grid[0])
+    if model.has_loops:                  # enforce the loop rows independent at this assembly
+        active, mobility = model.mobility_at(grid[0], xs, zs, u0, p)
         p[model.loop_switches] = active
 
     has_alg = model.z.numel() > 0
@@ -171,7 +171,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     P = np.tile(p.reshape(-1, 1), (1, grid.size))
 
     def evaluate():            # the recorded variables that are not states, on first access
-        V = model.recorded_function.map(grid.size)(grid.reshape(1, -1), X, Z, P, U)
+        V = model.recorded_function.map(grid.size)(grid.reshape(1, -1), X, Z, U, P)
         return np.asarray(V.full(), dtype=float)
 
     res = Result(grid, model.recorded_names, model.recorded_layout, model.recorded_units,
@@ -201,15 +201,16 @@ def integrator_settings(model, solver: str, rtol: float, atol: float,
         opts.update(abstol=atol, reltol=rtol, max_num_steps=100000)
         if max_step is not None:
             opts["max_step_size"] = max_step
-    loops = solver == "idas" and model.lagrange.phi.numel() > 0
+    loops = solver == "idas" and model.has_loops
     if loops:
         # the loops' index-2 multipliers (zero on the exact solution) take no part in the
         # error test and get a loose tolerance in the Newton test; the initial values are
         # consistent already, so IDAS's own initialization (whose Newton iteration is
         # ill-conditioned for index 2 at tiny steps) is replaced by the known derivatives
         opts["suppress_algebraic"] = True
+        multipliers = set(model.loop_multipliers)
         opts["abstolv"] = [atol] * model.x.numel() + [
-            1.0 if n.startswith("loops.") else atol for n in model.z_names]
+            1.0 if k in multipliers else atol for k in range(model.z.numel())]
         opts["calc_ic"] = False
     return plugin, opts, loops
 

@@ -71,7 +71,7 @@ static int eval(ac_inst *m, ac_fn f, double t, const double *x, const double *z,
                 int nout) {
     int i;
     double tt = t;
-    m->arg[0] = &tt; m->arg[1] = x; m->arg[2] = z; m->arg[3] = m->d.p; m->arg[4] = m->d.u;
+    m->arg[0] = &tt; m->arg[1] = x; m->arg[2] = z; m->arg[3] = m->d.u; m->arg[4] = m->d.p;
     for (i = 0; i < nout; i++) m->res[i] = out[i];
     return f(m->arg, m->res, m->iw, m->w, 0);
 }

@@ -1,8 +1,9 @@
-"""Numerical kernels shared by acausal and the pythonfmu FMU's slave.
+"""Numerical kernels shared by every layer of acausal and by the pythonfmu FMU's slave.
 
-This module imports only the standard library, numpy and casadi (no acausal, no relative
-imports): the pythonfmu backend copies it into every FMU, where the slave runs without acausal.
-It holds the pieces both sides run: the projection onto the initial-value equations, the time
+A base leaf: it imports only the standard library, numpy and casadi (no acausal, no relative
+imports), so the compiler, the simulator and the analyses may all use it, and the pythonfmu
+backend copies it into every FMU, where the slave runs without acausal. It holds the pieces
+they share: the loop rows' independence rule, the projection onto the initial-value equations, the time
 events' rule, the restart time before an event and the readable line of a CasADi error.
 """
 from __future__ import annotations

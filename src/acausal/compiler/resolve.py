@@ -1,0 +1,83 @@
+"""Signals, state derivatives and relaxations, resolved once and substituted anywhere.
+
+Components write their physics with placeholders: a signal input reads as ``sig:<output>``
+(and its rates ``der(sig:...)`` where a prescribed motion differentiates it), a state's
+derivative as ``der(<state>)`` until the component sets it. Once every component has spoken,
+the placeholders' values are known; a Resolver substitutes them (and the relaxations ε of the
+tree relations by zero) in any expression.
+"""
+from __future__ import annotations
+
+import casadi as ca
+
+from ..errors import StructureError
+from .builders import Workspace
+from .symbolic import UnknownDerivative, der_with, substitute_all
+
+_vc = ca.vertcat
+
+
+class Resolver:
+    """Substitutes signal placeholders (and their rates), state-derivative placeholders and
+    the relaxations ε (by zero) in any expression, with values resolved once."""
+
+    def __init__(self, syms, vals, zeros_for, failed):
+        self.syms, self.failed = syms, failed
+        self.sv = _vc(*syms) if syms else ca.SX(0, 1)
+        self.vals = _vc(*vals) if vals else ca.SX(0, 1)
+        self.zeros_for = zeros_for
+
+    def __call__(self, pieces: list) -> list:
+        if self.syms:
+            pieces = ca.substitute(pieces, [self.sv], [self.vals])
+        z = [ca.SX.zeros(v.numel()) for v in self.zeros_for]
+        pieces = ca.substitute(pieces, self.zeros_for, z)
+        self.check(pieces)
+        return pieces
+
+    def check(self, pieces):
+        """Raise the error of a placeholder whose rate could not be derived, if any piece
+        still needs it."""
+        for sym, err in self.failed:
+            if any(ca.depends_on(x, sym) for x in pieces):
+                raise err
+
+
+def make_resolver(ws: Workspace, relaxations: list[ca.SX]) -> Resolver:
+    """The Resolver of a workspace whose components have all contributed their physics;
+    ``relaxations`` (ε, ε̇, ε̈ of the tree) are substituted by zero."""
+    missing = [o for o in ws.signal_sym if o not in ws.signal_expr]
+    if missing:
+        o = missing[0]
+        raise StructureError(f"{type(o.owner).__name__} '{o.owner.path}' never sets its output "
+                             f"'{o.path}' (call e.output in physics)")
+    syms, vals = [], []
+    for o, s in ws.signal_sym.items():
+        syms.append(s)
+        vals.append(ws.signal_expr[o])
+    for info in ws.states:
+        if info.placeholder is not None:
+            syms.append(info.placeholder)
+            vals.append(info.der)
+    vals = substitute_all(vals, syms, vals) if syms else vals
+    # rates of signals (prescribed motion): d/dt of the resolved signal expressions
+    failed = []
+    by_name = {s.name(): v for s, v in zip(syms, vals)}
+    for name in list(ws.der_table):
+        if not name.startswith("sig:"):
+            continue
+        level, value = ws.der_table[name], by_name[name]
+        while level is not None and level.name().startswith("der("):
+            try:
+                value = _resolve_once(der_with(value, ws.der_table), syms, vals)
+            except UnknownDerivative as e:
+                failed.append((level, e))
+                break
+            syms.append(level)
+            vals.append(value)
+            level = ws.der_table.get(level.name())
+    return Resolver(syms, vals, relaxations, failed)
+
+
+def _resolve_once(ex, syms, vals):
+    return ca.substitute([ex], [_vc(*syms)], [_vc(*vals)])[0] if syms else ex

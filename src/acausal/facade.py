@@ -1,0 +1,53 @@
+"""The facade: ``acausal.compile`` and what users call on its result.
+
+A top module, above every package (core → components → compiler → simulation →
+analysis | fmu | ocp): it may import any of them and none imports it. The compiler's record
+(``acausal.compiler.CompiledModel``, the seam) knows nothing of simulation or FMUs; the
+``CompiledModel`` returned here is that record with the calls users write on it —
+``simulate``, ``export_fmu``, ``mobility`` — each delegating to the layer that does the work.
+"""
+from __future__ import annotations
+
+from dataclasses import fields
+from pathlib import Path
+
+from . import compiler
+from .compiler.loops import Mobility
+from .core.component import Model
+from .simulation import Result, initial_state, simulate
+
+
+class CompiledModel(compiler.CompiledModel):
+    """A compiled model (see ``acausal.compiler.CompiledModel`` for what it holds) with the
+    calls users write on it."""
+
+    @classmethod
+    def wrap(cls, record: compiler.CompiledModel) -> "CompiledModel":
+        """The facade over the compiler's ``record`` (sharing its symbols and caches)."""
+        return cls(**{f.name: getattr(record, f.name) for f in fields(record)})
+
+    def simulate(self, t_final: float, **kwargs) -> Result:
+        """Simulate; see ``acausal.simulation.simulate`` for the arguments."""
+        return simulate(self, t_final, **kwargs)
+
+    def export_fmu(self, path, **kwargs) -> Path:
+        """Export as an FMU; see ``acausal.fmu.export_fmu`` for the arguments."""
+        from .fmu import export_fmu          # needs the 'fmu' extra only when used
+        return export_fmu(self, path, **kwargs)
+
+    def mobility(self, params: dict | None = None, x0: dict | None = None,
+                 guess: dict | None = None, t0: float = 0.0) -> Mobility:
+        """Degrees of freedom at the configuration assembled from x0 / guess (Gruebler count
+        vs the rank of Φ_q there) and the redundant constraint rows."""
+        p = self.param_vector(params)
+        u0 = self.input_start
+        x, z = initial_state(self, dict(x0 or {}), p, u0, t0, guess)
+        return self.mobility_at(t0, x, z, u0, p)[1]
+
+
+def compile(model: Model) -> CompiledModel:
+    """Compile ``model`` into a CompiledModel: the CasADi equations of motion by name."""
+    return CompiledModel.wrap(compiler.compile(model))
+
+
+__all__ = ["compile", "CompiledModel"]
