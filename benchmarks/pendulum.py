@@ -221,11 +221,11 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     x = y[inv]                                                           # acausal's order
     p = compiled.param_vector()
     t, z, u = 0.0, np.zeros(0), np.zeros(0)
-    qdd_ac = np.asarray(rhs(x, u, p, z, t)[0], dtype=float).ravel()[perm][n:]
+    qdd_ac = np.asarray(rhs(t, x, z, u, p)[0], dtype=float).ravel()[perm][n:]
     tau = np.zeros(n)
     qdd_pin = pin.aba(pmodel, pdata, y[:n], y[n:], tau)
     r["dev_ac"] = np.max(np.abs(qdd_ac - qdd_pin)) / max(1.0, np.max(np.abs(qdd_pin)))
-    r["ac_rhs_py"] = per_call(lambda: rhs(x, u, p, z, t))
+    r["ac_rhs_py"] = per_call(lambda: rhs(t, x, z, u, p))
     r["ac_rhs_native"] = mapped_per_eval(rhs, [x, u, p, z, t])
     folded = ca.Function("folded", [compiled.x],
                          [ca.substitute(compiled.ode, compiled.p, ca.SX(p))])
@@ -314,7 +314,7 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
                 break
 
     dae = dict(compiled.dae)
-    pu = np.concatenate([p, np.zeros(compiled.u.numel())])
+    pu = np.concatenate([np.zeros(compiled.u.numel()), p])      # dae p = [u; p]
     creates, runs = [], []
     for _ in range(repeat):
         t0 = time.perf_counter()
@@ -433,7 +433,7 @@ def main(argv=None):
         f"N={r['N']}: {r['ac_folded_instr'] / r['N']:.0f} instr, "
         + ", ".join(f"{v / r['N']:.1f} {k}" for k, v in r["ac_ops"].items()
                     if k in ("sin", "cos", "div")) for r in rows if r["N"] >= 8))
-    print("  ac python: compiled.f(x, u, p, z, t) called from Python on numpy arrays; ac native: "
+    print("  ac python: compiled.f(t, x, z, u, p) called from Python on numpy arrays; ac native: "
           "per\n  evaluation inside compiled.f.map(K) (no Python overhead); ac folded: the ODE "
           "with the\n  parameter values substituted, as simulate() gives it to cvodes (mapped); "
           "instr: SX\n  instructions of compiled.f; dev: max |q''(model) - q''(ABA)| / max(1, "

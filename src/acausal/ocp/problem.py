@@ -238,7 +238,9 @@ class OCP:
             if view.kind(name) == "control":
                 U_guess[view.index(name)] = v(t[:-1]) if callable(v) else v
         nlp.set(n.U, *self._box("control", n.U.shape, self.N - 1), guess=U_guess)
-        box = [self._bounds.get(name, (-np.inf, np.inf)) for name in view.free]
+        declared = view.compiled.params          # a free parameter keeps its declared range
+        box = [self._bounds.get(name, (declared[i].min, declared[i].max))
+               for name, i in zip(view.free, view.free_index)]
         guess = [self._guess.get(name, view.p_values[i])
                  for name, i in zip(view.free, view.free_index)]
         column = lambda values: np.reshape(values, (-1, 1))
