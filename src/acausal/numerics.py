@@ -23,27 +23,31 @@ class ProjectionError(ValueError):
 
 
 def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
-    """The point w = [x; z] closest to ``start`` that satisfies H(w) = 0.
+    """The point w = [x; z] whose states x are closest to ``start`` (least squares) and that
+    satisfies H(w) = 0; the algebraic variables z are free.
 
     equations  w -> (H, ∂H/∂w) as numpy arrays; its first len(targets) rows are the given
                values (row i: v_i(w) − targets[i]), the others the model's equations;
-    start      the start values (states 1, algebraic variables (nearly) free: metric D with
-               1 for the nx states and 1e8 for the rest);
+    start      the start values of [x; z];
     w0         where the iteration starts (start with the given values put in);
     labels     a name per row of H, for the error message; ``given`` names the given values
                in it ("x0", "start").
     Each iteration projects the start values onto the equations linearized at the current
-    point (exact in one step when they are linear); far from the solution a step moves no
-    state by more than 0.3, so that a guess keeps a linkage on its branch. A start at a
-    singular configuration (a linkage with every joint at 0: the residual's gradient vanishes)
-    stalls the iteration; it is then restarted from a few deterministic perturbations of the
-    states (up to ±ASSEMBLY_JITTER/2 · (1 + |w0|), the sequence of the native FMU's runtime, so
-    that both find the same assembly). Raises ProjectionError naming the equations
-    that fail, or two given values that conflict.
+    point (exact in one step when they are linear), eliminating z by an orthogonal basis of
+    the range of ∂H/∂z rather than by weights, so that stiff elements (a massless node between
+    springs of 1e3 N/m) keep it well conditioned; far from the solution a step moves no state
+    by more than 0.3, so that a guess keeps a linkage on its branch. Should that stall (a
+    start at a singular configuration, a linkage with every joint at 0, where the residual's
+    gradient vanishes), a Levenberg–Marquardt descent on the scaled residual takes over and
+    the projection resumes from where it ends; as a last resort the iteration restarts from a
+    few deterministic perturbations of the states (up to ±ASSEMBLY_JITTER/2 · (1 + |w0|), the
+    sequence of the native FMU's runtime). Converged when every row of H, divided by its
+    gradient's size, is below 1e-10 · (1 + max |w|): a distance in the variables' own units.
+    Raises ProjectionError naming the equations that fail, or two given values that conflict.
     """
     start = np.asarray(start, dtype=float)
     w0 = np.asarray(w0, dtype=float)
-    scale = 1 + max(abs(float(v)) for v in targets) if len(targets) else 1.0
+    scale = 1 + max(np.abs(start).max(initial=0.0), np.abs(w0).max(initial=0.0))
     seed = 12345
     for attempt in range(ASSEMBLY_RETRIES + 1):
         wk = w0.copy()
@@ -51,25 +55,32 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
             seed = (seed * 1103515245 + 12345) % 2**32         # C's unsigned arithmetic
             wk[k] += ASSEMBLY_JITTER * (1 + abs(w0[k])) * (((seed >> 8) & 0xFFFF) / 65535 - 0.5)
         wk = _iterate(equations, start, wk, nx)
+        if not _solved(*equations(wk), scale):
+            wk = _iterate(equations, start, _descend(equations, wk, nx, scale), nx)
         h, J = equations(wk)
-        if np.max(np.abs(h), initial=0.0) <= 1e-8 * scale:
+        if _solved(h, J, scale):
             return wk
         if attempt == 0:
             h0, J0 = h, J
     raise ProjectionError(_conflict(J0, h0, labels, targets, given))
 
 
+def _row_scales(J) -> np.ndarray:
+    """The size of each row's gradient (1 for a row with none)."""
+    s = np.abs(J).max(axis=1, initial=0.0) if J.size else np.ones(J.shape[0])
+    return np.where(s > 0, s, 1.0)
+
+
+def _solved(h, J, scale: float) -> bool:
+    """Every row of H, over its gradient's size, below 1e-10 · scale."""
+    return bool(np.all(np.abs(h) / _row_scales(J) <= 1e-10 * scale))
+
+
 def _iterate(equations, start, wk, nx: int):
-    """The iteration of ``project`` from wk, until its step vanishes (≤ 200 iterations)."""
-    D = np.ones(start.size)
-    D[nx:] = 1e8
+    """The projection of ``project`` from wk, until its step vanishes (≤ 200 iterations)."""
     for _ in range(200):
         h, J = equations(wk)
-        # closest point to the start values (metric D⁻¹) on the linearized equations:
-        #   w = start + D Jᵀ (J D Jᵀ)⁺ (J (wk − start) − h)    (J is k × n with k small)
-        JD = J * D
-        lam = np.linalg.lstsq(JD @ J.T, J @ (wk - start) - h, rcond=1e-14)[0]
-        step = start + JD.T @ lam - wk
+        step = _projection_step(J, -h, start - wk, nx)
         big = np.max(np.abs(step[:nx]), initial=0.0)
         if big > 0.3:
             step *= 0.3 / big
@@ -79,8 +90,55 @@ def _iterate(equations, start, wk, nx: int):
     return wk
 
 
+def _projection_step(J, b, r, nx: int):
+    """The step d with J d = b (least squares where inconsistent) whose state part is closest
+    to r[:nx]; the algebraic part is free. With J = [Jx Jz] and P the projector onto the
+    complement of range(Jz): P Jx dx = P b, dx = r_x + (P Jx)⁺ (P b − P Jx r_x), then
+    dz = Jz⁺ (b − Jx dx). Orthogonal factorizations only: no normal equations."""
+    s = _row_scales(J)
+    J, b = J / s[:, None], b / s                  # rows scaled: each in its own unit
+    Jx, Jz = J[:, :nx], J[:, nx:]
+    if Jz.shape[1]:
+        U, sv, _ = np.linalg.svd(Jz, full_matrices=False)
+        U = U[:, sv > 1e-12 * max(1.0, sv.max(initial=0.0))]
+        P = np.eye(J.shape[0]) - U @ U.T
+    else:
+        P = np.eye(J.shape[0])
+    PJx = P @ Jx
+    rx = r[:nx]
+    dx = rx + np.linalg.lstsq(PJx, P @ b - PJx @ rx, rcond=1e-12)[0]
+    dz = np.linalg.lstsq(Jz, b - Jx @ dx, rcond=1e-12)[0] if Jz.shape[1] else np.zeros(0)
+    return np.concatenate([dx, dz])
+
+
+def _descend(equations, wk, nx: int, scale: float, iterations: int = 100):
+    """Levenberg–Marquardt on the row-scaled residual from wk: minimum-norm damped steps
+    d = −Jᵀ (J Jᵀ + μ I)⁻¹ h, μ adapted to the progress (a singular Jacobian is no
+    obstacle), no state moved by more than 0.3 a step. Returns the best point reached."""
+    h, J = equations(wk)
+    s = _row_scales(J)
+    cost, mu = float(np.sum((h / s) ** 2)), 1e-3
+    for _ in range(iterations):
+        Js, hs = J / s[:, None], h / s
+        d = -Js.T @ np.linalg.lstsq(Js @ Js.T + mu * np.eye(len(hs)), hs, rcond=None)[0]
+        big = np.max(np.abs(d[:nx]), initial=0.0)
+        if big > 0.3:
+            d *= 0.3 / big
+        h_new, J_new = equations(wk + d)
+        cost_new = float(np.sum((h_new / s) ** 2))
+        if cost_new < cost:
+            wk, h, J, cost, mu = wk + d, h_new, J_new, cost_new, max(mu / 10, 1e-12)
+            if _solved(h, J, scale):
+                break
+        else:
+            mu *= 10
+            if mu > 1e12:
+                break
+    return wk
+
+
 def _conflict(J, h, labels, targets, given) -> str:
-    bad = [labels[i] for i in np.flatnonzero(np.abs(h) > 1e-8)]
+    bad = [labels[i] for i in np.flatnonzero(np.abs(h) / _row_scales(J) > 1e-10)]
     for i in range(len(targets)):
         for j in range(i + 1, len(targets)):
             if np.linalg.matrix_rank(J[[i, j]], 1e-9) < 2:

@@ -1,0 +1,83 @@
+"""Consistent initial values where the projection must be well conditioned.
+
+References: closed forms (a massless node between springs sits where their forces balance),
+and loop closure evaluated here from the recorded frame poses of random linkages.
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import acausal as ac
+from acausal.analysis import operating_point
+from acausal.components import planar as pl
+from acausal.components import rotational as rot
+from acausal.components import translational as tr
+
+
+def test_massless_node_between_stiff_springs_starts_where_the_forces_balance():
+    """wall | spring c1 | node (no mass) | spring c2 | mass: with mass.s = 0.5 m held, the
+    node sits at c2·s/(c1 + c2) (the springs' forces balance), whatever their stiffness."""
+    c1, c2, s = 1e3, 3e3, 0.5
+    m = ac.Model("node")
+    m.wall, m.s1, m.s2, m.mass = tr.Fixed(), tr.Spring(c=c1), tr.Spring(c=c2), tr.Mass(m=1.0)
+    m.connect(m.wall.flange, m.s1.flange_a)
+    m.connect(m.s1.flange_b, m.s2.flange_a)
+    m.connect(m.s2.flange_b, m.mass.flange_a)
+    res = ac.compile(m).simulate(0.01, t=np.linspace(0, 0.01, 3), x0={"mass.s": s})
+    assert abs(res["mass.s"][0] - s) < 1e-12
+    assert abs(res["s1.flange_b.s"][0] - c2 * s / (c1 + c2)) < 1e-12
+    assert abs(res["s1.f"][0] - res["s2.f"][0]) < 1e-9 * c1
+
+
+def test_two_default_rotational_springs_in_series_start_from_x0():
+    """Two Springs at their default c = 1e5 N.m/rad in series to an inertia: the node between
+    them at phi/2."""
+    m = ac.Model("series")
+    m.fixed, m.s1, m.s2, m.inertia = rot.Fixed(), rot.Spring(), rot.Spring(), rot.Inertia()
+    m.connect(m.fixed.flange, m.s1.flange_a)
+    m.connect(m.s1.flange_b, m.s2.flange_a)
+    m.connect(m.s2.flange_b, m.inertia.flange_a)
+    res = ac.compile(m).simulate(1e-3, t=np.linspace(0, 1e-3, 3), x0={"inertia.phi": 0.5})
+    assert abs(res["inertia.phi"][0] - 0.5) < 1e-12
+    assert abs(res["s1.flange_b.phi"][0] - 0.25) < 1e-12
+
+
+def _four_bar(lengths):
+    """Four-bar of bars (ground, crank, coupler, rocker) [m], 1 kg bodies at the bars' ends."""
+    l0, l1, l2, l3 = lengths
+    m = ac.Model("random_four_bar")
+    m.world, m.A, m.D = pl.World(), pl.Fixed(), pl.Fixed(r=(l0, 0.0))
+    m.rev1, m.rev2, m.rev3, m.rev4 = pl.Revolute(), pl.Revolute(), pl.Revolute(), pl.Revolute()
+    m.crank, m.coupler, m.rocker = (pl.FixedTranslation(r=(l, 0.0)) for l in (l1, l2, l3))
+    m.b1, m.b2, m.b3 = pl.Body(m=1.0, I=0.1), pl.Body(m=1.0, I=0.1), pl.Body(m=1.0, I=0.1)
+    for a, b in [(m.A.frame, m.rev1.frame_a), (m.rev1.frame_b, m.crank.frame_a),
+                 (m.crank.frame_b, m.b1.frame_a), (m.crank.frame_b, m.rev2.frame_a),
+                 (m.rev2.frame_b, m.coupler.frame_a), (m.coupler.frame_b, m.b2.frame_a),
+                 (m.D.frame, m.rev3.frame_a), (m.rev3.frame_b, m.rocker.frame_a),
+                 (m.rocker.frame_b, m.b3.frame_a), (m.coupler.frame_b, m.rev4.frame_a),
+                 (m.rocker.frame_b, m.rev4.frame_b)]:
+        m.connect(a, b)
+    return m
+
+
+@pytest.mark.parametrize("seed", range(12))
+def test_random_closable_four_bars_assemble_without_a_guess(seed):
+    """Random Grashof crank-rockers (the shortest bar the crank, s + l < p + q: every crank
+    angle closes), the crank at a random angle, every other joint from its start value 0:
+    assembly closes the loop, measured on the recorded frame positions."""
+    rng = np.random.default_rng(seed)
+    while True:
+        l0, l2, l3 = rng.uniform(0.5, 2.0, 3)
+        l1 = rng.uniform(0.05, 0.45) * min(l0, l2, l3)
+        bars = sorted([l0, l1, l2, l3])
+        if bars[0] + bars[3] < bars[1] + bars[2] - 0.05:
+            break
+    compiled = ac.compile(_four_bar((l0, l1, l2, l3)))
+    theta = rng.uniform(-np.pi, np.pi)
+    with pytest.warns(UserWarning, match="close the kinematic loops"):
+        pt = operating_point(compiled, {"rev1.phi": theta})
+    gap = [pt[f"rev4.frame_a.{c}"] - pt[f"rev4.frame_b.{c}"] for c in ("x", "y")]
+    assert np.max(np.abs(gap)) < 1e-10
+    assert abs(pt["rev1.phi"] - theta) < 1e-12
+    assert abs(pt["crank.frame_b.x"] - l1 * np.cos(theta)) < 1e-12
