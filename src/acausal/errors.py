@@ -1,4 +1,5 @@
-"""The exceptions of acausal, in one hierarchy, and ``did_you_mean`` for their messages.
+"""The exceptions of acausal, in one hierarchy; ``did_you_mean`` for their messages and
+``warn_user`` for warnings that point at the user's line.
 
 A base leaf: it imports nothing of acausal, and every layer may import it. Every user mistake
 raises one of these, and its message names the part at fault and says what to do. Errors that
@@ -23,8 +24,10 @@ are also Python's own kind derive from both, so ``except KeyError`` / ``except A
 from __future__ import annotations
 
 import difflib
+import sys
+import warnings
 
-__all__ = ["did_you_mean", "AcausalError", "VariableNameError", "ParameterError",
+__all__ = ["did_you_mean", "warn_user", "AcausalError", "VariableNameError", "ParameterError",
            "PortConnectionError", "DisabledPortError", "StructureError", "SingularModelError",
            "InitializationError", "SimulationError", "AnalysisError", "OCPError", "SolveError",
            "FmuExportError", "FmuPathError"]
@@ -34,6 +37,14 @@ def did_you_mean(name: str, options) -> str:
     """'; did you mean 'a', 'b'?' for the options closest to a mistyped ``name`` (or '')."""
     close = difflib.get_close_matches(name, list(options), n=3)
     return f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
+
+
+def warn_user(message: str, category: type[Warning] = UserWarning) -> None:
+    """Warn, pointing at the user's line: the first caller outside the acausal package."""
+    level, frame = 2, sys._getframe(1)
+    while frame is not None and frame.f_globals.get("__name__", "").startswith("acausal"):
+        frame, level = frame.f_back, level + 1
+    warnings.warn(message, category, stacklevel=level)
 
 
 class AcausalError(Exception):

@@ -114,3 +114,83 @@ def test_bad_inputs(compiled):
         compiled.simulate(T_END, t=GRID, inputs={"FF": 1.0})
     with pytest.raises(acausal.SimulationError, match="'F'"):
         compiled.simulate(T_END, t=GRID, inputs={"F": np.zeros(7)})      # not on the grid
+
+
+def _piecewise_reference(ts, fs, hold):
+    """scipy DOP853 of the forced oscillator, integrated piece by piece between the sample
+    times, with the force as numpy gives it: held (zero-order) or interpolated linearly."""
+    def force(t, a):
+        if hold:
+            return fs[np.searchsorted(ts, a, side="right") - 1]
+        return np.interp(t, ts, fs)
+
+    y, out = np.zeros(2), np.zeros(GRID.size)
+    bounds = np.unique(np.concatenate([ts, [T_END]]))
+    for a, b in zip(bounds[:-1], bounds[1:]):
+        rhs = lambda t, y: [y[1], (force(t, a) - STIFF * y[0]) / MASS]   # noqa: E731
+        pts = (GRID >= a) & (GRID < b)
+        sol = solve_ivp(rhs, (a, b), y, t_eval=GRID[pts], rtol=1e-12, atol=1e-14,
+                        method="DOP853")
+        out[pts] = sol.y[0]
+        y = solve_ivp(rhs, (a, b), y, rtol=1e-12, atol=1e-14, method="DOP853").y[:, -1]
+    out[-1] = y[0]
+    return out
+
+
+def test_held_samples_are_a_zero_order_hold(compiled):
+    """Samples(..., 'hold'): each value holds until the next sample time (a sampled
+    controller's output), integrated with a restart at every jump."""
+    ts = np.array([0.0, 0.35, 0.8, 1.7, 2.45])
+    fs = np.array([1.0, -0.5, 2.0, 0.0, 0.7])
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": acausal.simulation.Samples(ts, fs,
+                                                                                  "hold")})
+    np.testing.assert_allclose(res["mass.s"], _piecewise_reference(ts, fs, hold=True),
+                               atol=1e-7)
+    held = fs[np.searchsorted(ts, GRID, side="right") - 1]
+    np.testing.assert_allclose(res["F"], held, atol=1e-12)
+
+
+def test_repeated_sample_times_are_steps(compiled):
+    """(times, values) with a time given twice: linear pieces with a jump there."""
+    ts = np.array([0.0, 1.0, 1.0, 3.0])
+    fs = np.array([0.0, 1.0, -1.0, 0.0])
+    res = compiled.simulate(T_END, t=GRID, inputs={"F": (ts, fs)})
+    ref_force = np.where(GRID < 1.0, GRID, -1.0 + (GRID - 1.0) / 2.0)
+    np.testing.assert_allclose(res["F"], ref_force, atol=1e-12)
+
+    def rhs(t, y):
+        return [y[1], ((t if t < 1.0 else -1.0 + (t - 1.0) / 2.0) - STIFF * y[0]) / MASS]
+    first = GRID < 1.0
+    a = solve_ivp(rhs, (0.0, 1.0), [0.0, 0.0], t_eval=GRID[first], rtol=1e-12, atol=1e-14,
+                  method="DOP853")
+    y1 = solve_ivp(rhs, (0.0, 1.0), [0.0, 0.0], rtol=1e-12, atol=1e-14,
+                   method="DOP853").y[:, -1]
+    b = solve_ivp(rhs, (1.0, T_END), y1, t_eval=GRID[~first], rtol=1e-12, atol=1e-14,
+                  method="DOP853")
+    np.testing.assert_allclose(res["mass.s"], np.concatenate([a.y[0], b.y[0]]), atol=1e-7)
+
+
+def test_a_sampled_callable_is_announced(compiled):
+    """A callable that rejects CasADi symbols is sampled: the user is told, at their line."""
+    with pytest.warns(UserWarning, match="does not accept CasADi symbols") as record:
+        compiled.simulate(T_END, t=GRID, inputs={"F": lambda t: 1.0 if t > 1 else 0.0})
+    assert record[0].filename == __file__
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"t_final": float("nan")}, "t_final must be a finite number"),
+    ({"t_final": 0.0}, "t_final must be > 0"),
+    ({"t_final": -1.0}, "t_final must be > 0"),
+    ({"t_final": 1.0, "rtol": float("nan")}, "rtol must be a finite number > 0"),
+    ({"t_final": 1.0, "atol": 0.0}, "atol must be a finite number > 0"),
+    ({"t_final": 1.0, "max_step": float("inf")}, "max_step must be a finite number > 0"),
+    ({"t_final": 1.0, "t": [0.0, float("nan"), 1.0]}, "increasing grid of at least two finite"),
+    ({"t_final": 1.0, "x0": {"mass.s": float("nan")}}, r"x0\['mass.s'\] must be a finite"),
+    ({"t_final": 1.0, "inputs": {"F": float("nan")}}, "input 'F': values must be finite"),
+    ({"t_final": 1.0, "inputs": {"F": ([0.0, 2.0, 1.0], [0, 1, 2])}}, "must not decrease"),
+])
+def test_non_finite_or_bad_settings_are_refused(compiled, kwargs, message):
+    """Every time, grid, tolerance and value is checked before integrating (a NaN t_final
+    used to hang inside the integrator)."""
+    with pytest.raises(acausal.SimulationError, match=message):
+        compiled.simulate(**kwargs)

@@ -27,7 +27,7 @@ from scipy.interpolate import CubicSpline
 
 from ..errors import StructureError
 from ..simulation.result import Result
-from ..simulation.simulate import input_expression
+from ..simulation.inputs import input_signal
 from ..errors import AnalysisError
 from .point import index_of, set_loop_switches
 
@@ -111,7 +111,7 @@ class MotionSolver:
     # ---- inputs and motions as numbers on the grid -------------------------------------
     def _inputs(self, known: dict) -> np.ndarray:
         m, grid = self.model, self.grid
-        ex = [input_expression(n, known.get(n, start), m.t, _grid2(grid))
+        ex = [input_signal(n, known.get(n, start), m.t, _grid2(grid)).expression
               for n, start in zip(m.input_names, m.input_start)]
         self.u_expr = _vc(*ex) if ex else ca.SX(0, 1)
         if not ex:
@@ -137,7 +137,7 @@ class MotionSolver:
                     s = CubicSpline(tt, vals[0])
                     out[:, i] = [s(grid), s(grid, 1), s(grid, 2)]
                 continue
-            ex = input_expression(f"motion of {name}", spec, t, _grid2(grid))
+            ex = input_signal(f"motion of {name}", spec, t, _grid2(grid)).expression
             d1 = ca.jacobian(ex, t)
             f = ca.Function("motion", [t], [_vc(ex, d1, ca.jacobian(d1, t))])
             out[:, i] = np.array(f.map(grid.size)(grid.reshape(1, -1)), dtype=float)

@@ -11,13 +11,12 @@ would share are statically indeterminate (the remaining constraints carry them).
 """
 from __future__ import annotations
 
-import warnings
 from dataclasses import dataclass, field
 
 import casadi as ca
 import numpy as np
 
-from ..errors import StructureError
+from ..errors import StructureError, warn_user
 from ..numerics import independent_rows
 
 
@@ -52,10 +51,9 @@ def analyse_loops(tree, phi: ca.SX, ws) -> tuple[list[int], list[str]]:
         else:
             _constant_row(tree, phi, i, ws)
     if len(keep) < phi.numel():
-        warnings.warn("redundant loop constraints dropped (they join parts that are fixed "
-                      "already; their reactions are statically indeterminate): "
-                      + ", ".join(tree.loop_rows[i] for i in range(phi.numel()) if i not in keep),
-                      stacklevel=4)
+        warn_user("redundant loop constraints dropped (they join parts that are fixed "
+                  "already; their reactions are statically indeterminate): "
+                  + ", ".join(tree.loop_rows[i] for i in range(phi.numel()) if i not in keep))
     return keep, tree.loop_rows
 
 
@@ -69,10 +67,10 @@ def mobility(J: np.ndarray, names: list[str], dropped: list[str]) -> tuple[np.nd
     total = nc + len(dropped)
     mob = Mobility(nq, total, nq - total, nq - int(active.sum()), redundant)
     if redundant:
-        warnings.warn(
+        warn_user(
             "redundant loop constraints (not enforced: the motion is unaffected; the reactions "
             "they would share are statically indeterminate and carried by the other "
-            "constraints): " + ", ".join(redundant), stacklevel=4)
+            "constraints): " + ", ".join(redundant))
     return active, mob
 
 

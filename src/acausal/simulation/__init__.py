@@ -3,6 +3,7 @@ pieces it shares with the compiler and the pythonfmu FMU (projection, event time
 base leaf ``acausal.numerics``."""
 from .initialization import initial_state
 from .result import Result
-from .simulate import input_expression, simulate
+from .inputs import Samples, input_signal
+from .simulate import simulate
 
-__all__ = ["simulate", "Result", "initial_state", "input_expression"]
+__all__ = ["simulate", "Result", "Samples", "initial_state", "input_signal"]

@@ -8,12 +8,10 @@ The cost grows with the number of equations k (a k × k system), not with the mo
 """
 from __future__ import annotations
 
-import warnings
-
 import casadi as ca
 import numpy as np
 
-from ..errors import InitializationError
+from ..errors import InitializationError, warn_user
 from ..numerics import ProjectionError, moved_note, project
 
 
@@ -68,7 +66,7 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
         raise InitializationError(str(e)) from None
     note = moved_note(names[:nx], start, wk, held=x0) if model.has_loops else None
     if note:
-        warnings.warn(note, stacklevel=3)
+        warn_user(note)
     return wk[:nx], wk[nx:]
 
 

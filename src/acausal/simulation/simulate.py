@@ -7,50 +7,13 @@ import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
-from .initialization import initial_state
 from ..numerics import just_before, short_error
+from .initialization import initial_state
+from .inputs import input_signal
 from .result import Result
+from .stiffness import adams_step_budget, is_stiff, spectral_radius
 
 SOLVERS = ("cvodes", "adams", "idas", "rk", "collocation")
-
-
-def input_expression(name: str, value, t: ca.SX, grid: np.ndarray) -> ca.SX:
-    """An input as an SX expression of time t.
-
-    ``value`` is a number (constant), a callable of time (called with the symbol t when it
-    accepts one — numpy ufuncs do — otherwise sampled on a fine grid and linearly
-    interpolated), or samples: a pair (times, values), or an array of values on ``grid``
-    (linear interpolation).
-    """
-    if callable(value):
-        try:
-            with warnings.catch_warnings():      # numpy ufuncs on SX: the casadi result is wanted
-                warnings.simplefilter("ignore", FutureWarning)
-                ex = value(t)
-            ex = ca.SX(ex) if not isinstance(ex, ca.SX) else ex
-            if ex.numel() == 1:
-                return ex
-        except Exception:
-            pass
-        fine = np.linspace(grid[0], grid[-1], max(2001, 4 * len(grid)))
-        try:
-            vals = np.array([float(value(tk)) for tk in fine])
-        except Exception as e:
-            raise SimulationError(f"input '{name}': calling it with a time failed: {e}") from None
-        return ca.pw_lin(t, ca.DM(fine), ca.DM(vals))
-    if isinstance(value, tuple) and len(value) == 2:
-        tt, vv = (np.asarray(a, dtype=float).ravel() for a in value)
-        if tt.size != vv.size or tt.size < 2 or np.any(np.diff(tt) <= 0):
-            raise SimulationError(f"input '{name}': samples need ≥ 2 increasing times and as many "
-                                  f"values")
-        return ca.pw_lin(t, ca.DM(tt), ca.DM(vv))
-    arr = np.asarray(value, dtype=float)
-    if arr.ndim == 0:
-        return ca.SX(float(arr))
-    if arr.size != len(grid):
-        raise SimulationError(f"input '{name}': {arr.size} samples but the output grid has "
-                              f"{len(grid)} points; give (times, values) instead")
-    return ca.pw_lin(t, ca.DM(grid), ca.DM(arr.ravel()))
 
 
 def simulate(model, t_final: float, *, t=None, params: dict | None = None,
@@ -61,7 +24,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     """Simulate ``model`` from t = 0 (or t[0]) to ``t_final`` [s].
 
     t        output grid (default: 501 points); params: overrides by dotted name;
-    inputs   per input name: a number, a callable of time, (times, values) or values on t;
+    inputs   per input name: a number, a callable of time, ``Samples(times, values,
+             interpolation='linear' | 'hold')``, (times, values) or values on t (see
+             ``acausal.simulation.inputs``);
     x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``),
              held exactly;
     guess    start values by state name, used where x0 and the constraints leave freedom
@@ -71,26 +36,25 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              such as pendulums and linkages without stiff springs), 'idas' (DAEs: closed loops,
              massless nodes), or CasADi's fixed-step 'rk' / 'collocation'
              (``options={'number_of_finite_elements': n}``). Default: 'idas' for DAEs; for
-             ODEs 'adams' when the linearization at the initial state is not stiff (see
-             ``is_stiff``), else 'cvodes' — and 'cvodes' again should Adams fail.
-             ``Result.solver`` says which ran;
+             ODEs 'adams' when the spectral radius at the initial state is small against the
+             time span (``acausal.simulation.stiffness``), else 'cvodes' — and 'cvodes' again
+             should Adams fail or work too hard. ``Result.solver`` says which ran;
     rtol, atol, max_step: integrator tolerances and step limit.
     """
-    grid = np.linspace(0.0, float(t_final), 501) if t is None else np.asarray(t, dtype=float)
-    if grid.ndim != 1 or grid.size < 2 or np.any(np.diff(grid) <= 0):
-        raise SimulationError("t must be an increasing grid of at least two times")
-    if t is not None and abs(grid[-1] - t_final) > 1e-12 * max(1.0, abs(t_final)):
-        raise SimulationError(f"the grid ends at {grid[-1]} but t_final is {t_final}")
+    grid = _grid(t_final, t)
+    _check_settings(rtol=rtol, atol=atol, max_step=max_step)
     p = model.param_vector(params)
     inputs = dict(inputs or {})
     unknown = set(inputs) - set(model.input_names)
     if unknown:
         raise SimulationError(f"model '{model.name}' has no input {sorted(unknown)}; its inputs: "
                               f"{model.input_names or 'none'}")
-    u_ex = [input_expression(v.name, inputs.get(v.name, v.start), model.t, grid)
-            for v in model.inputs]
-    u_expr = ca.vertcat(*u_ex) if u_ex else ca.SX(0, 1)
+    signals = [input_signal(v.name, inputs.get(v.name, v.start), model.t, grid)
+               for v in model.inputs]
+    u_expr = ca.vertcat(*[s.expression for s in signals]) if signals else ca.SX(0, 1)
     u0 = np.array(ca.evalf(ca.substitute(u_expr, model.t, grid[0]))).ravel()
+    for name, values in (("x0", x0), ("guess", guess)):
+        _check_finite(name, values)
     xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess)
     mobility = None
     if model.has_loops:                  # enforce the loop rows independent at this assembly
@@ -102,11 +66,15 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     # same folded arithmetic as a hand-written model with numbers (changing a parameter
     # rebuilds only the integrator, never the model)
     ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, ca.SX(p)])
+    rho = None if has_alg or not model.x.numel() else _spectral_radius(model, ode, p, u0, xs,
+                                                                         grid[0])
     auto = solver is None
     if auto:
         solver = "idas" if has_alg else (
-            "cvodes" if is_stiff(model.x, model.t, ode, xs, grid[0], grid[-1]) else "adams")
+            "cvodes" if rho is not None and is_stiff(rho, grid[0], grid[-1]) else "adams")
     plugin, opts, loops = integrator_settings(model, solver, rtol, atol, max_step)
+    if auto and solver == "adams" and rho is not None:   # too much work: BDF takes over
+        opts["max_num_steps"] = adams_step_budget(rho, float(np.max(np.diff(grid))))
     if loops:
         xdot = ca.Function("xdot", [model.x, model.z, model.t], [ode])
     opts.update(options or {})
@@ -131,7 +99,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
             return np.zeros((0, grid.size)), np.zeros((0, grid.size))
         x, z = X[0][:, 0], Z[0][:, 0]
-        for a, b, pts in _segments(grid, model.event_times(p, grid[0], grid[-1])):
+        events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
+            e for s in signals for e in s.events if grid[0] < e < grid[-1]))
+        for a, b, pts in _segments(grid, events):
             # integrate up to just before an event, restart at it (never step over a jump)
             if a != grid[0] and a in grid:           # an output time exactly at the event
                 X.append(x.reshape(-1, 1))
@@ -163,8 +133,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if not (auto and solver == "adams"):
             raise
         solver = "cvodes"                # misjudged as non-stiff: BDF with Newton iterations
-        for k in ("linear_multistep_method", "nonlinear_solver_iteration"):
-            opts.pop(k)
+        plugin, opts, _ = integrator_settings(model, solver, rtol, atol, max_step)
+        opts.update(options or {})
         X, Z = integrate("cvodes", opts)
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
@@ -219,26 +189,81 @@ _NO_AD = {"enable_fd": True, "enable_forward": False, "enable_reverse": False,
           "enable_jacobian": False}
 
 
-def is_stiff(x: ca.SX, t: ca.SX, ode: ca.SX, x0, t0: float, t1: float,
-             max_states: int = 400) -> bool:
-    """Whether the ODE ẋ = ode(x, t) is stiff at (x0, t0), judged on the eigenvalues λ of its
-    Jacobian (finite differences, one mapped evaluation): stiff when some mode decays more
-    than ten times faster than both the fastest oscillation and 1/(t1 − t0) — an explicit
-    method would be held to steps far shorter than accuracy needs. Models with more than
-    ``max_states`` states are taken as stiff (BDF is the safe choice, the test too costly)."""
-    n = x.numel()
-    if n == 0 or n > max_states:
-        return n > 0
-    f = ca.Function("f", [x, t], [ode])
-    x0 = np.asarray(x0, dtype=float).ravel()
-    h = 1e-7 * np.maximum(1.0, np.abs(x0))
-    X = np.hstack([x0.reshape(-1, 1), x0.reshape(-1, 1) + np.diag(h)])
-    F = np.asarray(f.map(n + 1)(X, t0), dtype=float)
-    lam = np.linalg.eigvals((F[:, 1:] - F[:, :1]) / h)
-    if not np.all(np.isfinite(lam)):
-        return True
-    decay = max(0.0, float(np.max(-lam.real)))
-    return decay > 10.0 * max(float(np.max(np.abs(lam.imag))), 1.0 / max(t1 - t0, 1e-12))
+def _grid(t_final, t) -> np.ndarray:
+    """The output grid: ``t`` as given, or 501 points on [0, t_final]; checked."""
+    try:
+        t_final = float(t_final)
+    except (TypeError, ValueError):
+        raise SimulationError(f"t_final must be a number [s], got {t_final!r}") from None
+    if not np.isfinite(t_final):
+        raise SimulationError(f"t_final must be a finite number [s], got {t_final}")
+    if t is None:
+        if t_final <= 0:
+            raise SimulationError(f"t_final must be > 0 s (the simulation starts at t = 0), got "
+                                  f"{t_final:g}; give a grid t to start elsewhere")
+        return np.linspace(0.0, t_final, 501)
+    grid = np.asarray(t, dtype=float)
+    if grid.ndim != 1 or grid.size < 2 or not np.all(np.isfinite(grid)) \
+            or np.any(np.diff(grid) <= 0):
+        raise SimulationError("t must be an increasing grid of at least two finite times [s]")
+    if abs(grid[-1] - t_final) > 1e-12 * max(1.0, abs(t_final)):
+        raise SimulationError(f"the grid t ends at {grid[-1]:g} s but t_final is {t_final:g} s")
+    return grid
+
+
+def _check_settings(**values) -> None:
+    """Tolerances and step limits: finite and > 0 (None: not set)."""
+    for name, v in values.items():
+        if v is not None and not (isinstance(v, (int, float, np.floating)) and np.isfinite(v)
+                                  and v > 0):
+            raise SimulationError(f"{name} must be a finite number > 0, got {v!r}")
+
+
+def _check_finite(what: str, values: dict | None) -> None:
+    for name, v in (values or {}).items():
+        try:
+            ok = np.isfinite(float(v))
+        except (TypeError, ValueError):
+            ok = False
+        if not ok:
+            raise SimulationError(f"{what}['{name}'] must be a finite number, got {v!r}")
+
+
+def _spectral_radius(model, ode, p, u0, xs, t0) -> float:
+    """ρ of the ODE at its initial state, once per model and operating point; the start is
+    checked first: equations that are not finite there are diagnosed, not integrated."""
+    key = ("rho", p.tobytes(), u0.tobytes(), np.asarray(xs, float).tobytes(), float(t0))
+    cache = model._cache.setdefault("stiffness", {})
+    if key not in cache:
+        f = ca.Function("ode", [model.x, model.t], [ode])
+        x0 = np.asarray(xs, dtype=float).ravel()
+        fx0 = np.asarray(f(x0, t0), dtype=float).ravel()
+        if not np.all(np.isfinite(fx0)):
+            raise SimulationError(_not_finite(model, x0, fx0, p, u0, t0))
+        cache[key] = spectral_radius(f, x0, t0, fx0)
+    return cache[key]
+
+
+def _not_finite(model, x0, fx0, p, u0, t0) -> str:
+    """Why the state derivatives are not finite at the start: a singular mass matrix (named
+    by its coordinates), or non-finite values."""
+    bad = [f"d({n})/dt = {v}" for n, v in zip(model.x_names, fx0) if not np.isfinite(v)][:4]
+    head = f"the equations of motion of '{model.name}' are not finite at t = {t0:g} s " \
+           f"({', '.join(bad)})"
+    L = model.lagrange
+    if L.q.numel() and not model.z.numel():
+        M = np.array(model.function("M", [L.M])(t0, x0, np.zeros(0), u0, p), dtype=float)
+        if np.all(np.isfinite(M)):
+            w, V = np.linalg.eigh(M)
+            tol = 1e-12 * max(1.0, np.abs(w).max(initial=0.0))
+            null = [L.q_names[k] for k in np.flatnonzero(np.abs(V[:, np.argmin(np.abs(w))])
+                                                         > 0.1)] if w.min() <= tol else []
+            if null:
+                return (f"{head}: the mass matrix is singular there, along the coordinates "
+                        f"{', '.join(null)}: a part without mass or inertia moves them; give it "
+                        f"mass / inertia, or connect it to something that has some")
+    return (f"{head}; check the parameters, inputs and initial values for values that make "
+            f"the equations infinite (a division by zero, a zero length)")
 
 
 def _segments(grid: np.ndarray, events: list[float]):
