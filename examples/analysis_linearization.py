@@ -1,5 +1,5 @@
 """Equilibrium, linearization and modes (acausal.analysis) of the gantry crane of
-gantry_crane.py: the load hanging at rest is an equilibrium; about it, the linear model from
+acausal.models.crane (examples/gantry_crane.py): the load hanging at rest is an equilibrium; about it, the linear model from
 the force F [N] on the cart to the cart position and the rope angle, its damped eigenvalues,
 the undamped natural frequency and mode shape, and (if python-control is installed) its
 export as a control.StateSpace with the frequency response.
@@ -15,7 +15,7 @@ import numpy as np
 
 import acausal
 from acausal.analysis import equilibrium, linearize, modes
-from gantry_crane import CART_MASS, LOAD_MASS, ROPE, GantryCrane
+from acausal.models.crane import CART_MASS, LOAD_MASS, ROPE, GantryCrane
 
 
 def main():
