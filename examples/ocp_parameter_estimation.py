@@ -4,10 +4,11 @@ A mass m on a spring c and a damper d to the ground (acausal.models.oscillators.
 translational Mass, Spring, Damper, Fixed), released from rest at s0. Its position is
 measured every Δt for 10 s with Gaussian noise σ (fixed seed). acausal.ocp estimates c, d
 and the unknown release position s0 by least squares, Σ (s(t_i) − y_i)², with the
-measurement times as the collocation mesh and c, d as free parameters (decision variables). An independent fit, scipy's least_squares on
-scipy's solve_ivp of the hand-written ODE m s̈ = −c s − d ṡ, gives the same estimates and
-their standard deviations σ·sqrt(diag((JᵀJ)⁻¹)). The script saves
-``ocp_parameter_estimation.png`` (in $ACAUSAL_OUT, default the current directory).
+measurement times as the collocation mesh and c, d as free parameters (decision variables).
+An independent fit, scipy's least_squares on scipy's solve_ivp of the hand-written ODE
+m s̈ = −c s − d ṡ, gives the same estimates and their standard deviations
+σ·sqrt(diag((JᵀJ)⁻¹)). The script saves ``ocp_parameter_estimation.png`` (in $ACAUSAL_OUT,
+default the current directory).
 """
 from __future__ import annotations
 

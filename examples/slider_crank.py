@@ -2,8 +2,9 @@
 
 The model is acausal.models.linkages.SliderCrank. The crank O–A turns about O = (0, 0)
 (rev1), the connecting rod A–B hangs on the crank (rev2) and its end B is pinned (rev3) to a
-slider that runs on a horizontal Prismatic along x, a distance H below O. Crank and rod are bars (FixedTranslation) with a Body at their middle.
-Mobility (Gruebler): 3 moving bodies · 3 − 4 joints · 2 = 1 degree of freedom.
+slider that runs on a horizontal Prismatic along x, a distance H below O. Crank and rod are
+bars (FixedTranslation) with a Body at their middle. Mobility (Gruebler): 3 moving bodies · 3
+− 4 joints · 2 = 1 degree of freedom.
 
     World   O: Fixed ── rev1 ── crank ── rev2 ── rod ── rev3 ──┐
             track: Fixed(0, −H) ── prismatic ───────── slider: Body

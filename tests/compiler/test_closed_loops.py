@@ -1,5 +1,6 @@
 """Closed kinematic loops (issue 3): a four-bar linkage and a slider-crank under gravity,
-undamped: the linkages of acausal.models.linkages, built from planar components (World, Fixed, FixedTranslation, Body, Revolute, Prismatic).
+undamped: the linkages of acausal.models.linkages, built from planar components (World,
+Fixed, FixedTranslation, Body, Revolute, Prismatic).
 
 What is checked, against references that do not come from the code under test:
 - loop closure: every joint relation evaluated here from the recorded frame poses (for the
@@ -55,7 +56,7 @@ def inertia(m, L):
     return m * L ** 2 / 12
 
 
-# ---- the models under test: the examples' linkages ------------------------------------------
+# ---- the models under test: acausal.models.linkages ----------------------------------------
 def four_bar(parallelogram=False, fifth_link=False, crank_flange=False):
     """acausal.models' FourBar: ground pivots A = (0, 0) and D = (L0, 0), crank A–B on
     rev1, coupler B–C on rev2, rocker D–C on rev3, rev4 closing the loop at C.

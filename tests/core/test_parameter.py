@@ -53,6 +53,7 @@ def test_bad_values_at_construction_name_the_parameter(kw, message):
 def test_assignment_is_checked_and_names_the_instance_path():
     model = Model("rig")
     model.probe = Probe()
-    with pytest.raises(ParameterError, match=r"^parameter 'probe\.m' must be > 0 \(mass\), got 0\.0$"):
+    with pytest.raises(ParameterError) as err:
         model.probe.m = 0.0
+    assert str(err.value) == "parameter 'probe.m' must be > 0 (mass), got 0.0"
     assert model.probe.m == 1.0                    # the bad value was not stored

@@ -7,12 +7,14 @@ from acausal.core import (PLANAR, ROTATIONAL, TRANSLATIONAL, Frame, PortVector, 
 
 
 def test_domains_name_their_potentials_flows_and_units():
-    assert (TRANSLATIONAL.potentials, TRANSLATIONAL.flows, TRANSLATIONAL.dim) == (("s",), ("f",), 1)
+    assert (TRANSLATIONAL.potentials, TRANSLATIONAL.flows, TRANSLATIONAL.dim) == \
+        (("s",), ("f",), 1)
     assert (TRANSLATIONAL.potential_units, TRANSLATIONAL.flow_units,
             TRANSLATIONAL.velocity_units) == (("m",), ("N",), ("m/s",))
     assert (ROTATIONAL.potentials, ROTATIONAL.flows, ROTATIONAL.flow_units) == \
         (("phi",), ("tau",), ("N.m",))
-    assert (PLANAR.potentials, PLANAR.flows, PLANAR.dim) == (("x", "y", "phi"), ("fx", "fy", "t"), 3)
+    assert (PLANAR.potentials, PLANAR.flows, PLANAR.dim) == \
+        (("x", "y", "phi"), ("fx", "fy", "t"), 3)
     assert PLANAR.potential_units == ("m", "m", "rad")
 
 
