@@ -27,7 +27,6 @@ from __future__ import annotations
 
 import argparse
 import subprocess
-import sys
 import tempfile
 import warnings
 from pathlib import Path
@@ -35,19 +34,14 @@ from pathlib import Path
 import numpy as np
 from fmpy import extract, instantiate_fmu, read_model_description, simulate_fmu
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "examples"))
-sys.path.insert(0, str(Path(__file__).resolve().parent))
-
-import acausal                                          # noqa: E402
-from acausal.fmu.export import find_compiler, find_fmi_headers, platform_dirs  # noqa: E402
-from drivetrain import Drivetrain                       # noqa: E402
-from four_bar import FourBar                            # noqa: E402
-from gantry_crane import GantryCrane                    # noqa: E402
-from timing import best_of, print_table                 # noqa: E402
+import acausal
+from acausal.fmu.export import find_compiler, find_fmi_headers, platform_dirs
+from acausal.models import Drivetrain, FourBar, GantryCrane
+from timing import best_of, print_table
 
 CASES = {   # name: (model, horizon [s], start values, compared variable)
     "crane": (GantryCrane, 10.0, {"hinge.phi": 0.3, "F": 2.0}, "hinge.phi"),
-    "drivetrain": (lambda: Drivetrain("drivetrain"), 4.0, {}, "drum.w"),
+    "drivetrain": (Drivetrain, 4.0, {}, "drum.w"),
     "four_bar": (FourBar, 5.0, {"rev1.phi": 1.0, "rev1.w": 2.0}, "rev3.phi"),
 }
 

@@ -5,7 +5,8 @@ damping. Link i: a revolute joint (relative angle q_i, 0 = hanging along the pre
 a massless bar of length L = 0.5 m along -y of the joint frame, and a body (m = 1 kg,
 I = 0.01 kg.m² about its centre of mass) at the bar's end, where the next joint sits.
 
-- acausal: planar World, Fixed, then N x (Revolute + FixedTranslation(r = {0, -L}) + Body);
+- acausal: acausal.models.PendulumChain: planar World, Fixed, then N x (Revolute +
+  FixedTranslation(r = {0, -L}) + Body);
 - Pinocchio: a model built programmatically, N revolute joints about z (JointModelRZ), the
   same inertias, gravity along -y; forward dynamics by pin.aba;
 - sympy.physics.mechanics: KanesMethod (relative angles, u = q'), mass matrix and forcing
@@ -59,8 +60,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 import acausal
+from acausal.models.pendulums import PendulumChain
 from timing import best_of, fit_exponent, print_table
-from acausal.components.planar import Body, Fixed, FixedTranslation, Revolute, World
 
 L, MASS, INERTIA, G = 0.5, 1.0, 0.01, 9.81
 Q0, T_FINAL, RTOL, ATOL = 0.1, 10.0, 1e-8, 1e-10
@@ -73,19 +74,7 @@ TARGETS = {"compile_32": 0.1, "rhs_ratio": 2.0, "sim_ratio": 2.0}
 
 # ---- models ---------------------------------------------------------------------------------
 def build_acausal(n: int) -> acausal.Model:
-    m = acausal.Model(f"pendulum{n}")
-    m.world, m.fixed = World(g=G), Fixed()
-    prev = m.fixed.frame
-    for i in range(1, n + 1):
-        rev, bar, body = Revolute(), FixedTranslation(r=(0.0, -L)), Body(m=MASS, I=INERTIA)
-        setattr(m, f"rev{i}", rev)
-        setattr(m, f"bar{i}", bar)
-        setattr(m, f"body{i}", body)
-        m.connect(prev, rev.frame_a)
-        m.connect(rev.frame_b, bar.frame_a)
-        m.connect(bar.frame_b, body.frame_a)
-        prev = bar.frame_b
-    return m
+    return PendulumChain(n, L=L, m=MASS, I=INERTIA, g=G)
 
 
 def acausal_state_order(compiled, n: int) -> np.ndarray:

@@ -1,8 +1,8 @@
-"""Equilibrium, linearization and modes (acausal.analysis) of the gantry crane of
-gantry_crane.py: the load hanging at rest is an equilibrium; about it, the linear model from
-the force F [N] on the cart to the cart position and the rope angle, its damped eigenvalues,
-the undamped natural frequency and mode shape, and (if python-control is installed) its
-export as a control.StateSpace with the frequency response.
+"""Equilibrium, linearization and modes (acausal.analysis) of the gantry crane
+(acausal.models.crane, as in gantry_crane.py): the load hanging at rest is an equilibrium;
+about it, the linear model from the force F [N] on the cart to the cart position and the rope
+angle, its damped eigenvalues, the undamped natural frequency and mode shape, and (if
+python-control is installed) its export as a control.StateSpace with the frequency response.
 
 Prints a summary and saves ``analysis_linearization.png`` (in $ACAUSAL_OUT, default the
 current directory): the Bode magnitude from F to the rope angle.
@@ -15,7 +15,7 @@ import numpy as np
 
 import acausal
 from acausal.analysis import equilibrium, linearize, modes
-from gantry_crane import CART_MASS, LOAD_MASS, ROPE, GantryCrane
+from acausal.models.crane import CART_MASS, LOAD_MASS, ROPE, GantryCrane
 
 
 def main():

@@ -1,7 +1,7 @@
 """Kinematics, inverse and mixed dynamics of a four-bar linkage (acausal.analysis).
 
 The crank-rocker of four_bar.py with its crank joint rev1 driven through its flange
-(Revolute(useFlange=True)):
+(acausal.models.linkages.DrivenFourBar):
 
 1. kinematic analysis and inverse dynamics: a Position source (exact=True) turns the crank
    as phi_ref(t) = 1 + 2t + 0.3 sin(2π·0.5·t) [rad]; positions by Newton–Raphson, then
@@ -22,33 +22,10 @@ import numpy as np
 
 import acausal
 from acausal.analysis import inverse_dynamics, mixed_dynamics
-from acausal.components import rotational as rot
-from acausal.components import signals as sig
-from four_bar import FourBar
+from acausal.models.linkages import DrivenFourBar
 
 T0, OMEGA = 2.0, 3.0                          # N.m, rad/s: the torque of the mixed problem
 GUESS = {"rev2.phi": -0.5, "rev3.phi": 1.6}   # rad: the assembly branch (rocker up)
-
-
-class DrivenFourBar(FourBar):
-    """The four-bar of four_bar.py with rev1 driven by ``drive``: "position" (exact Position
-    source, phi_ref = 1 + 2t + 0.3 sin(πt) [rad]) or "torque" (Torque source, model Input T
-    [N.m])."""
-
-    def __init__(self, drive: str = "position", name: str = "driven_four_bar"):
-        super().__init__(name, crank_flange=True)
-        if drive == "position":
-            self.drive = rot.Position(exact=True)
-            self.ramp = sig.Ramp(height=2.0 * 100, duration=100.0, offset=1.0)
-            self.wobble = sig.Sine(amplitude=0.3, f=0.5)
-            self.ref = sig.Add()
-            self.connect(self.ramp.y, self.ref.u1)
-            self.connect(self.wobble.y, self.ref.u2)
-            self.connect(self.ref.y, self.drive.phi_ref)
-        else:
-            self.T, self.drive = acausal.Input(unit="N.m", description="crank torque"), rot.Torque()
-            self.connect(self.T.y, self.drive.tau)
-        self.connect(self.drive.flange, self.rev1.flange_a)
 
 
 def phi_ref(t):

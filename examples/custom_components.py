@@ -1,8 +1,9 @@
 """Writing your own components: a few lines each.
 
-Three components are defined here, each with the two optional methods every component has:
-``structure(s)`` (kinematic relations, internal points and states) and ``physics(e)``
-(energies, flows on ports, state derivatives, recorded variables).
+Three components, written as a user writes them, are in ``acausal.models.custom_components``
+(read its source: each declares parameters and ports, and has the two optional methods every
+component has, ``structure(s)`` for kinematic relations, internal points and states, and
+``physics(e)`` for energies, flows on ports, state derivatives and recorded variables):
 
 - ``CubicSpring``: a hardening spring f = c·δ + c3·δ³ (δ = s_rel − s_rel0), reusing the
   translational ``PartialCompliant`` base (which supplies flanges, s_rel, v_rel and f);
@@ -22,78 +23,7 @@ import os
 import numpy as np
 
 import acausal
-from acausal.core import Component, Parameter, RealInput, RotationalFlange
-from acausal.core.ports import ROTATIONAL
-from acausal.components.translational import Fixed, Mass, PartialCompliant
-
-
-class CubicSpring(PartialCompliant):
-    """Hardening spring: f = c·δ + c3·δ³ with δ = s_rel − s_rel0 [m]; f [N] on flange_b."""
-    c = Parameter(1.0, "N/m", "linear stiffness", nonnegative=True)
-    c3 = Parameter(0.0, "N/m3", "cubic stiffness (> 0: hardening)")
-    s_rel0 = Parameter(0.0, "m", "unstretched spring length")
-
-    def force(self, s_rel, v_rel):
-        d = s_rel - self.s_rel0
-        return self.c * d + self.c3 * d ** 3
-
-
-class Flywheel(Component):
-    """Rigid rotor of inertia J [kg.m2]; states phi [rad] and w [rad/s]; a [rad/s2]."""
-    J = Parameter(1.0, "kg.m2", "moment of inertia", positive=True)
-    flange_a = RotationalFlange("left flange of shaft")
-    flange_b = RotationalFlange("right flange of shaft")
-
-    def structure(self, s):
-        self._rotor = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
-        s.linear({self.flange_a: 1.0, self._rotor: -1.0})        # flange_a.phi = phi
-        s.linear({self.flange_b: 1.0, self._rotor: -1.0})        # flange_b.phi = phi
-
-    def physics(self, e):
-        e.kinetic_energy(0.5 * self.J * e.vel(self._rotor) ** 2)
-
-
-class SimpleDCMotor(Component):
-    """DC motor (housing fixed): L·di/dt = v − R·i − k·w, torque k·i on ``flange``.
-
-    v [V] is the RealInput ``v``; w [rad/s] the flange speed. Records i [A], tau [N.m] (the
-    torque the motor applies to the shaft) and w [rad/s].
-    """
-    R = Parameter(1.0, "Ohm", "armature resistance", positive=True)
-    L = Parameter(1e-3, "H", "armature inductance", positive=True)
-    k = Parameter(0.1, "N.m/A", "torque (and back-EMF, V.s/rad) constant", positive=True)
-    v = RealInput("armature voltage [V]")
-    flange = RotationalFlange("shaft")
-
-    def structure(self, s):
-        self._i = s.state("i", start=0.0, unit="A", description="armature current")
-
-    def physics(self, e):
-        w = e.vel(self.flange)
-        e.derivative(self._i, (e.input(self.v) - self.R * self._i - self.k * w) / self.L)
-        e.flow(self.flange, -self.k * self._i)     # flow into the motor: −(torque it applies)
-        e.variable("tau", self.k * self._i, "N.m")
-        e.variable("w", w, "rad/s")
-
-
-def duffing_model(m=1.0, c=4.0, c3=40.0) -> acausal.Model:
-    """wall | CubicSpring | mass."""
-    model = acausal.Model("duffing")
-    model.wall, model.spring, model.mass = Fixed(), CubicSpring(c=c, c3=c3), Mass(m=m)
-    model.connect(model.wall.flange, model.spring.flange_a)
-    model.connect(model.spring.flange_b, model.mass.flange_a)
-    return model
-
-
-def motor_model(R=0.5, L=0.02, k=0.08, J=2e-3) -> acausal.Model:
-    """Input voltage V -> SimpleDCMotor -> Flywheel."""
-    model = acausal.Model("drive")
-    model.V = acausal.Input(start=12.0, unit="V", description="supply voltage")
-    model.motor = SimpleDCMotor(R=R, L=L, k=k)
-    model.rotor = Flywheel(J=J)
-    model.connect(model.V.y, model.motor.v)
-    model.connect(model.motor.flange, model.rotor.flange_a)
-    return model
+from acausal.models.custom_components import duffing_model, motor_model
 
 
 def _period(t, x):

@@ -9,16 +9,9 @@ With q = [θ, δ]:
     M(q) = [[I + m(L² + δ²), mL], [mL, m]],  K = diag(0, k),  C = diag(c_T, 0),
     coriolis = [−2mδθ̇δ̇, mδθ̇²],  B = [1, 0]ᵀ (input T).
 
-Components (PlanarMechanics and MSL names):
-
-    World(g=0)  base: Fixed.frame ── pivot: Revolute(useFlange) ── arm: Body (I about the pivot)
-                    pivot.flange_a ← pivotDamper (to pivot.support), voiceCoil: Torque ← Input T
-                    pivot.frame_b ── tip: FixedTranslation r = (L, 0)
-                                     ── flexure: Prismatic(r = (0, 1), useFlange) ── head: Body (m)
-                                        flexure.flange_a ← flexureSpring (to flexure.support)
-
-Compiled coordinates: θ = ``pivot.phi``, δ = ``flexure.s``. The arm Body's centre of mass is
-on the pivot axis, so its mass (``arm.m``) does not enter the equations.
+The model, built from PlanarMechanics and MSL components, is
+``acausal.models.disk_drive.DiskDriveHead``; its coordinates are θ = ``pivot.phi``,
+δ = ``flexure.s``.
 
 The script compares the compiled pieces with the closed forms at a sample state, simulates a
 short seek (one sine period of torque, 2 ms) and the residual vibration of the head, prints
@@ -35,49 +28,10 @@ import casadi as ca
 import numpy as np
 
 import acausal
-from acausal.components import rotational as rot
-from acausal.components import translational as tr
-from acausal.components.planar import Body, Fixed, FixedTranslation, Prismatic, Revolute, World
+from acausal.models.disk_drive import (ARM_INERTIA, FLEXURE_STIFFNESS, HEAD_MASS,
+                                      PIVOT_DAMPING, RADIUS, DiskDriveHead)
 
-ARM_INERTIA = 2.0e-6        # kg.m²
-HEAD_MASS = 1.0e-4          # kg
-RADIUS = 0.04               # m
-FLEXURE_STIFFNESS = 1.6e4   # N/m (a lateral mode near 2 kHz)
-PIVOT_DAMPING = 1.0e-6      # N.m.s/rad
 T0, T_SEEK = 0.02, 2.0e-3   # N.m, s: T = T0 sin(2π t/T_SEEK) for t < T_SEEK
-
-
-class DiskDriveHead(acausal.Model):
-    """Actuator arm on a pivot with a laterally flexible tip carrying the head; input ``T``
-    [N.m] is the voice-coil torque on the arm."""
-
-    def __init__(self, name="disk", I=ARM_INERTIA, m=HEAD_MASS, L=RADIUS, k=FLEXURE_STIFFNESS,
-                 c_T=PIVOT_DAMPING):
-        super().__init__(name)
-        self.world = World(g=0.0)
-        self.base = Fixed()
-        self.pivot = Revolute(useFlange=True)
-        self.arm = Body(m=0.01, I=I)
-        self.tip = FixedTranslation(r=(L, 0.0))
-        self.flexure = Prismatic(r=(0.0, 1.0), useFlange=True)
-        self.head = Body(m=m, I=0.0)
-        self.pivotDamper = rot.Damper(d=c_T)
-        self.flexureSpring = tr.Spring(c=k)
-        self.T = acausal.Input(unit="N.m", description="voice-coil torque on the arm")
-        self.voiceCoil = rot.Torque(useSupport=True)
-        for a, b in [(self.base.frame, self.pivot.frame_a),
-                     (self.pivot.frame_b, self.arm.frame_a),
-                     (self.pivot.frame_b, self.tip.frame_a),
-                     (self.tip.frame_b, self.flexure.frame_a),
-                     (self.flexure.frame_b, self.head.frame_a),
-                     (self.pivot.support, self.pivotDamper.flange_a),
-                     (self.pivotDamper.flange_b, self.pivot.flange_a),
-                     (self.T.y, self.voiceCoil.tau),
-                     (self.voiceCoil.flange, self.pivot.flange_a),
-                     (self.voiceCoil.support, self.pivot.support),
-                     (self.flexure.support, self.flexureSpring.flange_a),
-                     (self.flexureSpring.flange_b, self.flexure.flange_a)]:
-            self.connect(a, b)
 
 
 def closed_form(q, qd, I, m, L, k, c_T):

@@ -6,8 +6,8 @@
     SpeedSensor on the drum
 
 Written as one would draw it in Modelica.Mechanics.Rotational (same names, parameters and
-sign conventions). The motor has MSL's DC_PermanentMagnet data (100 V, 100 A nominal). The
-script
+sign conventions; the model is acausal.models.drivetrains.Drivetrain). The motor has MSL's
+DC_PermanentMagnet data (100 V, 100 A nominal). The script
 
 - simulates 4 s and checks the final operating point against the steady state solved by
   hand (motor torque through the gear = fan + extra load; current from the armature
@@ -27,41 +27,11 @@ import time
 import numpy as np
 
 import acausal
-from acausal.components.rotational import (DCMotor, IdealGear, Inertia,
-                                           QuadraticSpeedDependentTorque, SpeedSensor,
-                                           SpringDamper, TorqueSensor, TorqueStep)
-from acausal.components.signals import Ramp
-
-RATIO = 10.0            # gear ratio motor/drum
-J_DRUM = 20.0           # kg.m²
-C_SHAFT, D_SHAFT = 2.0e4, 40.0          # N.m/rad, N.m.s/rad
-FAN_TAU, FAN_W = -500.0, 14.0           # fan load: tau = FAN_TAU·(w/FAN_W)² [N.m]
-STEP_TAU, STEP_TIME = -150.0, 2.5       # extra load torque [N.m] from STEP_TIME [s]
+from acausal.models.drivetrains import (C_SHAFT, FAN_TAU, FAN_W, J_DRUM, RATIO, STEP_TAU,
+                                       STEP_TIME, VOLTAGE, Drivetrain)
 
 
-class Drivetrain(acausal.Model):
-    def __init__(self, name=None):
-        super().__init__(name)
-        self.supply = Ramp(height=100.0, duration=0.5)          # armature voltage [V]
-        self.motor = DCMotor()
-        self.gear = IdealGear(ratio=RATIO)
-        self.shaftTorque = TorqueSensor()
-        self.shaft = SpringDamper(c=C_SHAFT, d=D_SHAFT)
-        self.drum = Inertia(J=J_DRUM)
-        self.fan = QuadraticSpeedDependentTorque(tau_nominal=FAN_TAU, w_nominal=FAN_W)
-        self.extraLoad = TorqueStep(stepTorque=STEP_TAU, startTime=STEP_TIME)
-        self.drumSpeed = SpeedSensor()
-        for a, b in [(self.supply.y, self.motor.v), (self.motor.flange, self.gear.flange_a),
-                     (self.gear.flange_b, self.shaftTorque.flange_a),
-                     (self.shaftTorque.flange_b, self.shaft.flange_a),
-                     (self.shaft.flange_b, self.drum.flange_a),
-                     (self.fan.flange, self.drum.flange_b),
-                     (self.extraLoad.flange, self.drum.flange_b),
-                     (self.drumSpeed.flange, self.drum.flange_b)]:
-            self.connect(a, b)
-
-
-def steady_state(ratio, p, V=100.0):
+def steady_state(ratio, p, V=VOLTAGE):
     """Drum speed and motor current where ratio·k·i = −(fan + extra load), i = (V − k·w)/R:
     a quadratic in the drum speed, solved by hand."""
     R, k = p["motor.R"], p["motor.k"]
@@ -73,7 +43,7 @@ def steady_state(ratio, p, V=100.0):
 
 def main():
     t0 = time.perf_counter()
-    model = acausal.compile(Drivetrain("drivetrain"))
+    model = acausal.compile(Drivetrain())
     t1 = time.perf_counter()
     grid = np.linspace(0.0, 4.0, 2001)
     res = model.simulate(4.0, t=grid)

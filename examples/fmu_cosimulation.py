@@ -25,7 +25,7 @@ from fmpy import extract, read_model_description
 from fmpy.fmi2 import FMU2Slave
 
 import acausal
-from gantry_crane import GantryCrane
+from acausal.models.crane import GantryCrane
 
 TS, T_END, X_REF = 0.01, 8.0, 2.0          # s, s, m
 KP, KD, KTH, KW = 20.0, 20.0, 20.0, 10.0   # N/m, N.s/m, N/rad, N.s/rad

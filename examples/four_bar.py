@@ -1,8 +1,9 @@
 """Four-bar linkage under gravity, undamped: a closed kinematic loop.
 
-Ground pivots A = (0, 0) and D = (L0, 0); the crank A–B (rev1), the coupler B–C (rev2) and
-the rocker D–C (rev3) are bars (FixedTranslation) with a Body at their middle; rev4 joins
-the coupler's end to the rocker's end at C and closes the loop. Mobility (Gruebler):
+The model is acausal.models.linkages.FourBar (a Grashof crank-rocker): ground pivots
+A = (0, 0) and D = (L0, 0); the crank A–B (rev1), the coupler B–C (rev2) and the rocker D–C
+(rev3) are bars (FixedTranslation) with a Body at their middle; rev4 joins the coupler's end
+to the rocker's end at C and closes the loop. Mobility (Gruebler):
 3 moving bodies · 3 − 4 joints · 2 = 1 degree of freedom.
 
     World   A: Fixed ── rev1 ── crank ── rev2 ── coupler ──┐
@@ -25,61 +26,12 @@ import warnings
 import numpy as np
 
 import acausal
-from acausal.components.planar import Body, Fixed, FixedTranslation, Revolute, World
+from acausal.models.linkages import FOUR_BAR_LENGTHS, FOUR_BAR_MASSES, FourBar
 
-L0, L1, L2, L3 = 1.0, 0.3, 1.0, 0.8          # m: ground, crank, coupler, rocker (Grashof)
-M1, M2, M3 = 0.5, 1.0, 0.8                   # kg: crank, coupler, rocker
 G = 9.81                                     # m/s², the World's default
-
-
-def add_link(model, name, L, m, frame):
-    """A bar of length L [m] along ``frame``'s x axis with a Body of mass m [kg] (a slender
-    rod, I = m L²/12) at its middle (``name``), halves ``name_a`` and ``name_b``, added to
-    ``model``; returns the frame at its far end."""
-    half_a, half_b = FixedTranslation(r=(L / 2, 0.0)), FixedTranslation(r=(L / 2, 0.0))
-    body = Body(m=m, I=m * L ** 2 / 12)
-    setattr(model, f"{name}_a", half_a)
-    setattr(model, name, body)
-    setattr(model, f"{name}_b", half_b)
-    model.connect(frame, half_a.frame_a)
-    model.connect(half_a.frame_b, body.frame_a)
-    model.connect(body.frame_a, half_b.frame_a)
-    return half_b.frame_b
-
-
-class FourBar(acausal.Model):
-    """Crank-rocker four-bar; bars are slender rods (I = m L²/12) with the mass at the middle.
-    ``lengths`` (ground, crank, coupler, rocker) [m], ``masses`` (crank, coupler, rocker)
-    [kg]; ``crank_flange``: rev1 with its 1-D flange, to be driven or loaded; ``fifth_link``:
-    a link as long as the crank, with the rocker's mass, from (ground/2, 0) (rev5) to the
-    coupler's middle (rev6) — with parallelogram lengths, a redundant second loop."""
-
-    def __init__(self, name="four_bar", lengths=(L0, L1, L2, L3), masses=(M1, M2, M3),
-                 crank_flange: bool = False, fifth_link: bool = False):
-        super().__init__(name)
-        (l0, l1, l2, l3), (m1, m2, m3) = lengths, masses
-        self.world = World()
-        self.A, self.D = Fixed(), Fixed(r=(l0, 0.0))
-        self.rev1 = Revolute(useFlange=crank_flange)
-        self.rev2, self.rev3, self.rev4 = Revolute(), Revolute(), Revolute()
-        self.connect(self.A.frame, self.rev1.frame_a)
-        B = add_link(self, "crank", l1, m1, self.rev1.frame_b)
-        self.connect(B, self.rev2.frame_a)
-        C = add_link(self, "coupler", l2, m2, self.rev2.frame_b)
-        self.connect(self.D.frame, self.rev3.frame_a)
-        C_rocker = add_link(self, "rocker", l3, m3, self.rev3.frame_b)
-        self.connect(C, self.rev4.frame_a)               # the loop closes here
-        self.connect(C_rocker, self.rev4.frame_b)
-        if fifth_link:
-            self.E = Fixed(r=(l0 / 2, 0.0))
-            self.rev5, self.rev6 = Revolute(), Revolute()
-            self.connect(self.E.frame, self.rev5.frame_a)
-            self.connect(add_link(self, "link5", l1, m3, self.rev5.frame_b), self.rev6.frame_a)
-            self.connect(self.coupler.frame_a, self.rev6.frame_b)
-
-
-BODIES = {"crank": (M1, M1 * L1 ** 2 / 12), "coupler": (M2, M2 * L2 ** 2 / 12),
-          "rocker": (M3, M3 * L3 ** 2 / 12)}
+BODIES = {name: (m, m * L ** 2 / 12)       # slender rods: (m [kg], I [kg.m²])
+          for name, m, L in zip(("crank", "coupler", "rocker"), FOUR_BAR_MASSES,
+                                FOUR_BAR_LENGTHS[1:])}
 
 
 def energy(res, bodies):

@@ -8,19 +8,13 @@ along the rail, θ the rope angle from the downward vertical, counter-clockwise)
     M(q) = [[M+m, mL cosθ], [mL cosθ, mL²]],  C = diag(c, c_T),  K = 0,
     gravity = [0, −mgL sinθ],  coriolis = [mL sinθ θ̇², 0],  B = [1, 0]ᵀ (input F).
 
-Components (PlanarMechanics and MSL names):
-
-    World  Fixed.frame ── rail: Prismatic(useFlange) ── cart: Body (m=M, I=0)
-                                   │ flange_a ← railDamper (to rail.support), force ← Input F
-                                   └ frame_b ── hinge: Revolute(useFlange) ── rope: FixedTranslation
-                                                  │ flange_a ← hingeDamper        r = (0, −L)
-                                                  └─────────────────────── load: Body (m, I=0)
-
-Compiled coordinates: x = ``rail.s``, θ = ``hinge.phi``. The script compares the compiled
-M, C, K, gravity, Coriolis and B with the closed forms at a sample state and simulates a
-"move and stop" manoeuvre, one full sine period of force F0 sin(2πt/T) for t < T, twice: with
-T = 2 s, and with T = two periods of the linearized sway (the force's spectrum then vanishes
-at the sway frequency, and the load arrives almost without residual sway). It saves
+The model, built from PlanarMechanics and MSL components, is
+``acausal.models.crane.GantryCrane``; its coordinates are x = ``rail.s``, θ = ``hinge.phi``.
+The script compares the compiled M, C, K, gravity, Coriolis and B with the closed forms at a
+sample state and simulates a "move and stop" manoeuvre, one full sine period of force
+F0 sin(2πt/T) for t < T, twice: with T = 2 s, and with T = two periods of the linearized
+sway (the force's spectrum then vanishes at the sway frequency, and the load arrives almost
+without residual sway). It saves
 ``gantry_crane.png`` (in $ACAUSAL_OUT, default the current directory).
 """
 from __future__ import annotations
@@ -32,42 +26,10 @@ import casadi as ca
 import numpy as np
 
 import acausal
-from acausal.components import rotational as rot
-from acausal.components import translational as tr
-from acausal.components.planar import Body, Fixed, FixedTranslation, Prismatic, Revolute, World
+from acausal.models.crane import (CART_MASS, HINGE_DAMPING, LOAD_MASS, RAIL_DAMPING, ROPE,
+                                 GantryCrane)
 
-CART_MASS, LOAD_MASS, ROPE = 5.0, 2.0, 1.0       # kg, kg, m
-RAIL_DAMPING, HINGE_DAMPING = 0.5, 0.05          # N.s/m, N.m.s/rad
 F0 = 8.0                                         # N, force amplitude
-
-
-class GantryCrane(acausal.Model):
-    """Cart on a damped rail with a pendulum load; input ``F`` [N] pushes the cart along +x."""
-
-    def __init__(self, name="crane", M=CART_MASS, m=LOAD_MASS, L=ROPE, c=RAIL_DAMPING,
-                 c_T=HINGE_DAMPING):
-        super().__init__(name)
-        self.world = World()
-        self.base = Fixed()
-        self.rail = Prismatic(r=(1.0, 0.0), useFlange=True)
-        self.cart = Body(m=M, I=0.0)
-        self.hinge = Revolute(useFlange=True)
-        self.rope = FixedTranslation(r=(0.0, -L))
-        self.load = Body(m=m, I=0.0)
-        self.railDamper = tr.Damper(d=c)
-        self.hingeDamper = rot.Damper(d=c_T)
-        self.F = acausal.Input(unit="N", description="force pushing the cart")
-        self.force = tr.Force()
-        for a, b in [(self.base.frame, self.rail.frame_a), (self.rail.frame_b, self.cart.frame_a),
-                     (self.rail.frame_b, self.hinge.frame_a),
-                     (self.hinge.frame_b, self.rope.frame_a),
-                     (self.rope.frame_b, self.load.frame_a),
-                     (self.rail.support, self.railDamper.flange_a),
-                     (self.railDamper.flange_b, self.rail.flange_a),
-                     (self.hinge.support, self.hingeDamper.flange_a),
-                     (self.hingeDamper.flange_b, self.hinge.flange_a),
-                     (self.F.y, self.force.f), (self.force.flange, self.rail.flange_a)]:
-            self.connect(a, b)
 
 
 def closed_form(q, qd, M, m, L, c, c_T, g):

@@ -8,12 +8,8 @@ a pole of length l carries a point mass m2 at its tip and hangs from a hinge on 
     minimize ∫₀ᵀ F² dt,  T = 2 s,  |F| ≤ 20 N,  |x| ≤ 2 m,
     from rest hanging down at x = 0 to rest upright (θ = π) at x = d = 1 m.
 
-Components (PlanarMechanics and MSL names):
-
-    World  Fixed.frame ── rail: Prismatic(useFlange) ── cart: Body (m1, I = 0)
-                            │ flange_a ← force: Force ← Input F
-                            └ frame_b ── hinge: Revolute ── pole: FixedTranslation (0, −l)
-                                                               └ tip: Body (m2, I = 0)
+The model, built from PlanarMechanics and MSL components, is
+``acausal.models.cartpole.CartPole``.
 
 The same problem is written by hand (``hand_written``) in casadi.Opti from the closed-form
 equations of motion (Lagrange, eliminated for the accelerations):
@@ -35,37 +31,13 @@ import casadi as ca
 import numpy as np
 
 import acausal
-from acausal.components import translational as tr
-from acausal.components.planar import Body, Fixed, FixedTranslation, Prismatic, Revolute, World
+from acausal.models.cartpole import LENGTH, M_CART, M_POLE, CartPole
 from acausal.ocp import OCP
 
-M_CART, M_POLE, LENGTH, G = 1.0, 0.3, 0.5, 9.81      # kg, kg, m, m/s²
+G = 9.81                                               # m/s²
 T_FINAL, DISTANCE, F_MAX, X_MAX = 2.0, 1.0, 20.0, 2.0  # s, m, N, m
 START = {"rail.s": 0.0, "hinge.phi": 0.0, "rail.v": 0.0, "hinge.w": 0.0}
 TARGET = {"rail.s": DISTANCE, "hinge.phi": np.pi, "rail.v": 0.0, "hinge.w": 0.0}
-
-
-class CartPole(acausal.Model):
-    """Cart on a rail (rail.s [m]) with a pole (hinge.phi [rad] from hanging down); input F
-    [N] pushes the cart along +x."""
-
-    def __init__(self, name="cartpole", m1=M_CART, m2=M_POLE, l=LENGTH):
-        super().__init__(name)
-        self.world = World()
-        self.base = Fixed()
-        self.rail = Prismatic(r=(1.0, 0.0), useFlange=True)
-        self.cart = Body(m=m1, I=0.0)
-        self.hinge = Revolute()
-        self.pole = FixedTranslation(r=(0.0, -l))
-        self.tip = Body(m=m2, I=0.0)
-        self.F = acausal.Input(unit="N", description="force pushing the cart")
-        self.force = tr.Force()
-        for a, b in [(self.base.frame, self.rail.frame_a), (self.rail.frame_b, self.cart.frame_a),
-                     (self.rail.frame_b, self.hinge.frame_a),
-                     (self.hinge.frame_b, self.pole.frame_a),
-                     (self.pole.frame_b, self.tip.frame_a),
-                     (self.F.y, self.force.f), (self.force.flange, self.rail.flange_a)]:
-            self.connect(a, b)
 
 
 def swing_up(compiled, N=30, method="collocation", **kw) -> OCP:

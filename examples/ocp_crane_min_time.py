@@ -1,6 +1,6 @@
 """Gantry crane transfer in minimum time: the load moved by D and at rest at the end.
 
-The crane of examples/gantry_crane.py (cart M on a damped rail, load m on a rope of length L
+The crane of acausal.models.crane (cart M on a damped rail, load m on a rope of length L
 with a damped hinge; input F [N] pushes the cart). Minimize the final time T [s] (free) with
 |F| ≤ F_max, from rest at x = 0 to rest at x = D with the rope vertical (the load at rest
 above its target):
@@ -22,7 +22,7 @@ import numpy as np
 
 import acausal
 from acausal.ocp import OCP, FreeTime
-from gantry_crane import CART_MASS, LOAD_MASS, GantryCrane
+from acausal.models.crane import CART_MASS, LOAD_MASS, GantryCrane
 
 DISTANCE, F_MAX = 1.0, 10.0                  # m, N
 REST = {"hinge.phi": 0.0, "rail.v": 0.0, "hinge.w": 0.0}

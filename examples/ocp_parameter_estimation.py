@@ -1,13 +1,14 @@
 """Parameter estimation: a spring stiffness and a damping from noisy position measurements.
 
-A mass m on a spring c and a damper d to the ground (translational Mass, Spring, Damper,
-Fixed), released from rest at s0. Its position is measured every Δt for 10 s with Gaussian
-noise σ (fixed seed). acausal.ocp estimates c, d and the unknown release position s0 by
-least squares, Σ (s(t_i) − y_i)², with the measurement times as the collocation mesh and
-c, d as free parameters (decision variables). An independent fit, scipy's least_squares on
-scipy's solve_ivp of the hand-written ODE m s̈ = −c s − d ṡ, gives the same estimates and
-their standard deviations σ·sqrt(diag((JᵀJ)⁻¹)). The script saves
-``ocp_parameter_estimation.png`` (in $ACAUSAL_OUT, default the current directory).
+A mass m on a spring c and a damper d to the ground (acausal.models.oscillators.Oscillator:
+translational Mass, Spring, Damper, Fixed), released from rest at s0. Its position is
+measured every Δt for 10 s with Gaussian noise σ (fixed seed). acausal.ocp estimates c, d
+and the unknown release position s0 by least squares, Σ (s(t_i) − y_i)², with the
+measurement times as the collocation mesh and c, d as free parameters (decision variables).
+An independent fit, scipy's least_squares on scipy's solve_ivp of the hand-written ODE
+m s̈ = −c s − d ṡ, gives the same estimates and their standard deviations
+σ·sqrt(diag((JᵀJ)⁻¹)). The script saves ``ocp_parameter_estimation.png`` (in $ACAUSAL_OUT,
+default the current directory).
 """
 from __future__ import annotations
 
@@ -20,27 +21,12 @@ from scipy.integrate import solve_ivp
 from scipy.optimize import least_squares
 
 import acausal
-from acausal.components import translational as tr
+from acausal.models.oscillators import Oscillator
 from acausal.ocp import OCP
 
 MASS, STIFFNESS, DAMPING, S0 = 1.0, 4.0, 0.4, 0.5     # kg, N/m, N.s/m, m (the truth)
 SIGMA, DT, DURATION, SEED = 0.01, 0.1, 10.0, 0         # m, s, s
 GUESS = {"spring.c": 3.0, "damper.d": 0.2}             # N/m, N.s/m
-
-
-class Oscillator(acausal.Model):
-    """Mass on a spring and a damper in parallel to the ground."""
-
-    def __init__(self, name="oscillator", m=MASS, c=1.0, d=0.1):
-        super().__init__(name)
-        self.fixed = tr.Fixed()
-        self.spring = tr.Spring(c=c)
-        self.damper = tr.Damper(d=d)
-        self.mass = tr.Mass(m=m)
-        self.connect(self.fixed.flange, self.spring.flange_a)
-        self.connect(self.spring.flange_b, self.mass.flange_a)
-        self.connect(self.fixed.flange, self.damper.flange_a)
-        self.connect(self.damper.flange_b, self.mass.flange_a)
 
 
 def hand_positions(t, c, d, s0, m=MASS):

@@ -8,25 +8,10 @@ the downward vertical (counter-clockwise):
     (m1+m2) ẍ + m2 l cosφ φ̈ − m2 l sinφ φ̇² + k x = k u(t)
     (J_S + m2 l²) φ̈ + m2 l cosφ ẍ + m2 g l sinφ = 0
 
-Components (PlanarMechanics and MSL names):
-
-    World  base: Fixed.frame ── rail: Prismatic(useFlange) ── cart: Body (m1, I=0)
-              rail.flange_a ── spring (c = k) ── shaker.flange
-                                                 shaker: Position(exact=True, useSupport=True),
-                                                 support on rail.support, s_ref ← u: Sine
-              rail.frame_b ── hinge: Revolute ── arm: FixedTranslation r = (0, −l)
-                                                  ── pendulum: Body (m2, I = J_S)
-
-How u(t) enters: the spring's far end is moved by a translational Position source with
-exact=True, which makes the end follow u(t) exactly (its speed and acceleration by algorithmic
-differentiation). exact=True needs u to be a function of time only, so u is a signal source
-(``u``: Sine, u = U sin(2π f t)), not a model Input: the generalized force k·u(t) then sits in
-``lagrange.Q_rest`` and the spring's k·x in K. ``drive="input"`` builds the equivalent with a
-model Input ``u`` instead: the spring ties the cart to the ground (rail.support) and a Force
-k·u (``gain``: Gain with k, which must be kept equal to ``spring.c``) pushes the cart, so
-that B = [k, 0]ᵀ — the form a controller or an optimal-control problem wants.
-
-Compiled coordinates: x = ``rail.s``, φ = ``hinge.phi``.
+The model, built from PlanarMechanics and MSL components, is
+``acausal.models.pendulum_on_cart.PendulumOnCart``: the spring's far end is moved by a
+Position source (exact=True) from a Sine source ``u`` (``drive="input"`` builds the variant
+with a model Input). Compiled coordinates: x = ``rail.s``, φ = ``hinge.phi``.
 
 The script shows the pendulum working as a vibration absorber: at Ω_a = sqrt(m2 g l/(J_S +
 m2 l²)) the linearized cart amplitude is zero. It starts both runs on the linear steady
@@ -42,54 +27,8 @@ import time
 import numpy as np
 
 import acausal
-from acausal.components import translational as tr
-from acausal.components.planar import Body, Fixed, FixedTranslation, Prismatic, Revolute, World
-from acausal.components.signals import Gain, Sine
-
-CART_MASS, PENDULUM_MASS = 2.0, 0.5     # kg
-ARM, J_S = 0.3, 0.015                   # m (hinge to centre of mass), kg.m² (about the centre)
-STIFFNESS = 200.0                       # N/m
-AMPLITUDE, FREQUENCY = 2.0e-3, 0.5      # m, Hz: u(t) = AMPLITUDE sin(2π FREQUENCY t)
-
-
-class PendulumOnCart(acausal.Model):
-    """Cart on a spring whose far end moves by u(t), with a pendulum hanging from the cart.
-
-    drive="position": u is the Sine source ``u`` (amplitude U [m], frequency f [Hz]) moving
-    the spring's end through Position(exact=True). drive="input": u [m] is a model Input, the
-    spring is tied to the ground and the force k·u acts on the cart.
-    """
-
-    def __init__(self, name="pendulumOnCart", m1=CART_MASS, m2=PENDULUM_MASS, l=ARM, J_S=J_S,
-                 k=STIFFNESS, U=AMPLITUDE, f=FREQUENCY, drive="position"):
-        super().__init__(name)
-        if drive not in ("position", "input"):
-            raise ValueError(f"drive must be 'position' or 'input', got {drive!r}")
-        self.world = World()
-        self.base = Fixed()
-        self.rail = Prismatic(r=(1.0, 0.0), useFlange=True)
-        self.cart = Body(m=m1, I=0.0)
-        self.hinge = Revolute()
-        self.arm = FixedTranslation(r=(0.0, -l))
-        self.pendulum = Body(m=m2, I=J_S)
-        self.spring = tr.Spring(c=k)
-        links = [(self.base.frame, self.rail.frame_a), (self.rail.frame_b, self.cart.frame_a),
-                 (self.rail.frame_b, self.hinge.frame_a), (self.hinge.frame_b, self.arm.frame_a),
-                 (self.arm.frame_b, self.pendulum.frame_a),
-                 (self.spring.flange_b, self.rail.flange_a)]
-        if drive == "position":
-            self.u = Sine(amplitude=U, f=f)
-            self.shaker = tr.Position(exact=True, useSupport=True)
-            links += [(self.u.y, self.shaker.s_ref), (self.shaker.support, self.rail.support),
-                      (self.shaker.flange, self.spring.flange_a)]
-        else:
-            self.u = acausal.Input(unit="m", description="position of the spring's far end")
-            self.gain = Gain(k=k)
-            self.force = tr.Force()
-            links += [(self.rail.support, self.spring.flange_a), (self.u.y, self.gain.u),
-                      (self.gain.y, self.force.f), (self.force.flange, self.rail.flange_a)]
-        for a, b in links:
-            self.connect(a, b)
+from acausal.models.pendulum_on_cart import (AMPLITUDE, ARM, CART_MASS, J_S, PENDULUM_MASS,
+                                             STIFFNESS, PendulumOnCart)
 
 
 def harmonic(Omega, m1, m2, l, J_S, k, U, g=9.81):

@@ -1,9 +1,10 @@
 """Slider-crank under gravity, undamped: a closed loop with a prismatic joint.
 
-The crank O–A turns about O = (0, 0) (rev1), the connecting rod A–B hangs on the crank (rev2)
-and its end B is pinned (rev3) to a slider that runs on a horizontal Prismatic along x, a
-distance H below O. Crank and rod are bars (FixedTranslation) with a Body at their middle.
-Mobility (Gruebler): 3 moving bodies · 3 − 4 joints · 2 = 1 degree of freedom.
+The model is acausal.models.linkages.SliderCrank. The crank O–A turns about O = (0, 0)
+(rev1), the connecting rod A–B hangs on the crank (rev2) and its end B is pinned (rev3) to a
+slider that runs on a horizontal Prismatic along x, a distance H below O. Crank and rod are
+bars (FixedTranslation) with a Body at their middle. Mobility (Gruebler): 3 moving bodies · 3
+− 4 joints · 2 = 1 degree of freedom.
 
     World   O: Fixed ── rev1 ── crank ── rev2 ── rod ── rev3 ──┐
             track: Fixed(0, −H) ── prismatic ───────── slider: Body
@@ -23,43 +24,14 @@ import os
 import numpy as np
 
 import acausal
-from acausal.components.planar import Body, Fixed, Prismatic, Revolute, World
-from acausal.components.rotational import Torque
-from four_bar import add_link, energy, simulate_assembled      # the shared linkage pieces
+from acausal.models.linkages import (SLIDER_CRANK_LENGTHS, SLIDER_CRANK_MASSES, SLIDER_INERTIA,
+                                    SliderCrank)
+from four_bar import energy, simulate_assembled      # the linkage examples' shared pieces
 
-R, L, H = 0.2, 0.6, 0.05                     # m: crank, rod, offset of the slider's track
-M_CRANK, M_ROD, M_SLIDER = 0.4, 0.6, 1.0     # kg
-I_SLIDER = 0.01                              # kg.m² (the slider does not turn)
-
-
-class SliderCrank(acausal.Model):
-    """Crank, connecting rod (slender rods, I = m L²/12) and a slider on a horizontal track;
-    ``driven``: a Torque source on the crank's flange from the model Input ``tau`` [N.m]."""
-
-    def __init__(self, name="slider_crank", driven: bool = False):
-        super().__init__(name)
-        self.world = World()
-        self.O, self.track = Fixed(), Fixed(r=(0.0, -H))
-        self.rev1, self.rev2, self.rev3 = Revolute(useFlange=driven), Revolute(), Revolute()
-        if driven:
-            self.tau = acausal.Input(unit="N.m", description="torque driving the crank")
-            self.motor = Torque()
-            self.connect(self.tau.y, self.motor.tau)
-            self.connect(self.motor.flange, self.rev1.flange_a)
-        self.prismatic = Prismatic(r=(1.0, 0.0))
-        self.slider = Body(m=M_SLIDER, I=I_SLIDER)
-        self.connect(self.O.frame, self.rev1.frame_a)
-        A = add_link(self, "crank", R, M_CRANK, self.rev1.frame_b)
-        self.connect(A, self.rev2.frame_a)
-        B = add_link(self, "rod", L, M_ROD, self.rev2.frame_b)
-        self.connect(B, self.rev3.frame_a)
-        self.connect(self.track.frame, self.prismatic.frame_a)
-        self.connect(self.prismatic.frame_b, self.slider.frame_a)
-        self.connect(self.rev3.frame_b, self.slider.frame_a)
-
-
+R, L, H = SLIDER_CRANK_LENGTHS               # m: crank, rod, offset of the slider's track
+M_CRANK, M_ROD, M_SLIDER = SLIDER_CRANK_MASSES   # kg
 BODIES = {"crank": (M_CRANK, M_CRANK * R ** 2 / 12), "rod": (M_ROD, M_ROD * L ** 2 / 12),
-          "slider": (M_SLIDER, I_SLIDER)}
+          "slider": (M_SLIDER, SLIDER_INERTIA)}
 
 
 def main():

@@ -13,8 +13,6 @@ test:
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -25,10 +23,10 @@ from acausal.analysis import AnalysisError, equilibrium, linearize
 from acausal.components import rotational as rot
 from acausal.components import translational as tr
 from acausal.components.planar import Body, Fixed, FixedTranslation, Revolute, World
+from acausal.models.linkages import FOUR_BAR_LENGTHS, FOUR_BAR_MASSES, FourBar
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from four_bar import FourBar, L0, L1, L2, L3, M1, M2, M3  # noqa: E402
-
+L0, L1, L2, L3 = FOUR_BAR_LENGTHS            # m: ground, crank, coupler, rocker
+M1, M2, M3 = FOUR_BAR_MASSES                 # kg
 G = 9.81
 PM, PL, PI, PC = 0.7, 0.4, 0.02, 2.0            # kg, m, kg.m², N.m/rad
 

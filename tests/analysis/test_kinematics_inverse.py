@@ -17,9 +17,7 @@ come from the code under test:
 from __future__ import annotations
 
 import math
-import sys
 import warnings
-from pathlib import Path
 
 import casadi as ca
 import numpy as np
@@ -30,11 +28,11 @@ from acausal.analysis import (AnalysisError, inverse_dynamics, kinematic_analysi
                               mixed_dynamics)
 from acausal.components import rotational as rot
 from acausal.components import signals as sig
+from acausal.models.linkages import FOUR_BAR_LENGTHS, FOUR_BAR_MASSES, DrivenFourBar, FourBar
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from analysis_mechanism import GUESS, DrivenFourBar  # noqa: E402
-from four_bar import FourBar, L0, L1, L2, L3, M1, M2, M3  # noqa: E402
-
+L0, L1, L2, L3 = FOUR_BAR_LENGTHS            # m: ground, crank, coupler, rocker
+M1, M2, M3 = FOUR_BAR_MASSES                 # kg
+GUESS = {"rev2.phi": -0.5, "rev3.phi": 1.6}  # rad: the assembly branch (rocker up)
 G = 9.81
 T_GRID = np.linspace(0.0, 2.0, 81)
 

@@ -16,9 +16,7 @@ under test:
 from __future__ import annotations
 
 import math
-import sys
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -29,10 +27,8 @@ from acausal.analysis import AnalysisError, LinearModel, linearize, modes
 from acausal.components import rotational as rot
 from acausal.components import translational as tr
 from acausal.components.planar import Body, Fixed, FixedTranslation, Revolute, World
+from acausal.models.linkages import FourBar, Parallelogram
 from acausal.simulation.initialization import initial_state
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from four_bar import FourBar  # noqa: E402
 
 G = 9.81
 
@@ -200,7 +196,7 @@ def test_four_bar_reduced_A_equals_finite_differences_on_the_loop():
 
 
 def parallelogram(m1=1.0, m2=2.0, m3=1.5, l1=0.5, l0=1.0):
-    return ac.compile(FourBar("parallelogram", lengths=(l0, l1, l0, l1), masses=(m1, m2, m3)))
+    return ac.compile(Parallelogram(ground=l0, crank=l1, masses=(m1, m2, m3)))
 
 
 def test_parallelogram_hanging_frequency_closed_form():

@@ -1,6 +1,6 @@
 """Closed kinematic loops (issue 3): a four-bar linkage and a slider-crank under gravity,
-undamped: the linkages of examples/four_bar.py and examples/slider_crank.py, built from planar
-components (World, Fixed, FixedTranslation, Body, Revolute, Prismatic).
+undamped: the linkages of acausal.models.linkages, built from planar components (World,
+Fixed, FixedTranslation, Body, Revolute, Prismatic).
 
 What is checked, against references that do not come from the code under test:
 - loop closure: every joint relation evaluated here from the recorded frame poses (for the
@@ -22,8 +22,6 @@ What is checked, against references that do not come from the code under test:
 from __future__ import annotations
 
 import math
-import sys
-from pathlib import Path
 
 import casadi as ca
 import numpy as np
@@ -31,9 +29,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import acausal as ac
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from four_bar import FourBar  # noqa: E402
-from slider_crank import SliderCrank  # noqa: E402
+from acausal.models.linkages import FourBar, Parallelogram, SliderCrank
 
 G = 9.81                                     # m/s², World default, along n = (0, -1)
 T_END = 10.0                                 # s
@@ -60,23 +56,23 @@ def inertia(m, L):
     return m * L ** 2 / 12
 
 
-# ---- the models under test: the examples' linkages ------------------------------------------
+# ---- the models under test: acausal.models.linkages ----------------------------------------
 def four_bar(parallelogram=False, fifth_link=False, crank_flange=False):
-    """examples/four_bar.py's FourBar: ground pivots A = (0, 0) and D = (L0, 0), crank A–B on
+    """acausal.models' FourBar: ground pivots A = (0, 0) and D = (L0, 0), crank A–B on
     rev1, coupler B–C on rev2, rocker D–C on rev3, rev4 closing the loop at C.
     ``parallelogram``: the rocker as long as the crank, the coupler as long as the ground.
     ``fifth_link`` (a parallelogram too): a fifth link, as long as the crank, from
     E = (L0/2, 0) (rev5) to the coupler's middle (rev6): a redundant second loop.
     ``crank_flange``: rev1 with its 1-D flange (to drive it)."""
-    parallelogram = parallelogram or fifth_link
-    lengths = (L0, L1, L0, L1) if parallelogram else (L0, L1, L2, L3)
-    return FourBar("four_bar", lengths, (M1, M2, M3), crank_flange, fifth_link)
+    if parallelogram or fifth_link:
+        return Parallelogram("four_bar", L0, L1, (M1, M2, M3), crank_flange, fifth_link)
+    return FourBar("four_bar", (L0, L1, L2, L3), (M1, M2, M3), crank_flange)
 
 
 def slider_crank():
-    """examples/slider_crank.py's SliderCrank: crank O–A on rev1 (O at the origin), rod A–B
+    """acausal.models' SliderCrank: crank O–A on rev1 (O at the origin), rod A–B
     on rev2, slider (a Body) on a Prismatic along x from (0, −H), rev3 joining them."""
-    return SliderCrank()
+    return SliderCrank(lengths=(R_C, L_R, H), masses=(MC, MR, MS))
 
 
 FB_BODIES = {"crank": (M1, inertia(M1, L1)), "coupler": (M2, inertia(M2, L2)),

@@ -1,19 +1,13 @@
-"""User-written components (examples/custom_components.py and one defined here) against
-hand-written ODEs integrated with scipy at tight tolerances."""
-import importlib.util
-from pathlib import Path
-
+"""User-written components (acausal.models.custom_components, shown by
+examples/custom_components.py, and one defined here) against hand-written ODEs integrated with
+scipy at tight tolerances."""
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
 import acausal
 from acausal.core import Component, Parameter, RotationalFlange
-
-_path = Path(__file__).resolve().parents[2] / "examples" / "custom_components.py"
-_spec = importlib.util.spec_from_file_location("custom_components", _path)
-ex = importlib.util.module_from_spec(_spec)
-_spec.loader.exec_module(ex)
+from acausal.models.custom_components import duffing_model, motor_model
 
 TIGHT = dict(rtol=1e-12, atol=1e-14, method="DOP853")
 
@@ -33,7 +27,7 @@ M, C, C3 = 1.0, 4.0, 40.0
 
 @pytest.fixture(scope="module")
 def duffing():
-    return acausal.compile(ex.duffing_model(m=M, c=C, c3=C3))
+    return acausal.compile(duffing_model(m=M, c=C, c3=C3))
 
 
 def duffing_ref(t, x0, v0, c3=C3):
@@ -72,7 +66,7 @@ R, L, K, J, B = 0.5, 0.02, 0.08, 2e-3, 1e-3
 
 @pytest.fixture(scope="module")
 def drive():
-    model = ex.motor_model(R=R, L=L, k=K, J=J)
+    model = motor_model(R=R, L=L, k=K, J=J)
     model.load = ViscousLoad(b=B)
     model.connect(model.load.flange, model.rotor.flange_b)
     return acausal.compile(model)

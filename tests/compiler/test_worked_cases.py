@@ -1,5 +1,5 @@
 """The worked cases of DESIGN.md (gantry crane, hard-disk head, pendulum on a spring-mounted
-cart), built from planar and 1-D components in examples/, against their closed forms.
+cart), built from planar and 1-D components in acausal.models, against their closed forms.
 
 1. compiled.lagrange's M, C, K, gravity, coriolis, B and Q_rest equal DESIGN's formulas at 25
    random states and parameter sets (parameters through compiled.param_vector) to 1e-12, and
@@ -14,28 +14,12 @@ Coordinate maps, DESIGN → compiled (same sign: the checks below would fail oth
 The maps are applied by name (lagrange.q_names), so they do not depend on the order in which
 the compiler lists its coordinates.
 """
-import importlib.util
-from pathlib import Path
-
 import casadi as ca
 import numpy as np
 import pytest
 
 import acausal
-
-_EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-
-
-def _load(name):
-    spec = importlib.util.spec_from_file_location(f"worked_{name}", _EXAMPLES / f"{name}.py")
-    mod = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(mod)
-    return mod
-
-
-crane_ex = _load("gantry_crane")
-disk_ex = _load("disk_drive_head")
-cart_ex = _load("pendulum_on_cart")
+from acausal.models import DiskDriveHead, GantryCrane, PendulumOnCart
 
 N_RANDOM = 25
 EXACT = dict(rtol=1e-12, atol=1e-12)
@@ -233,22 +217,22 @@ def check_simulation(compiled, cmap, ref):
 # ---- fixtures --------------------------------------------------------------------------------
 @pytest.fixture(scope="module")
 def crane():
-    return acausal.compile(crane_ex.GantryCrane())
+    return acausal.compile(GantryCrane())
 
 
 @pytest.fixture(scope="module")
 def disk():
-    return acausal.compile(disk_ex.DiskDriveHead())
+    return acausal.compile(DiskDriveHead())
 
 
 @pytest.fixture(scope="module")
 def cart():
-    return acausal.compile(cart_ex.PendulumOnCart())
+    return acausal.compile(PendulumOnCart())
 
 
 @pytest.fixture(scope="module")
 def cart_input():
-    return acausal.compile(cart_ex.PendulumOnCart(drive="input"))
+    return acausal.compile(PendulumOnCart(drive="input"))
 
 
 # ---- 1. exact pieces ------------------------------------------------------------------------

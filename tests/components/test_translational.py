@@ -8,8 +8,8 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import acausal
-from acausal.core import Component, RealInput, RealOutput, RotationalFlange
-from acausal.errors import ParameterError, PortConnectionError, StructureError
+from acausal.core import Component, RealInput, RealOutput
+from acausal.errors import ParameterError, StructureError
 from acausal.components import translational as tr
 
 T_END = 1.0
@@ -616,33 +616,6 @@ def test_negative_mass_is_a_parameter_error():
     compiled = acausal.compile(m)
     with pytest.raises(ParameterError, match=r"mass\.m"):
         compiled.simulate(0.1, params={"mass.m": -2.0})
-
-
-def test_unknown_parameter_and_option_errors():
-    with pytest.raises(ParameterError, match=r"Spring has no parameter 'k'.*\bc\b"):
-        tr.Spring(k=3.0)
-    with pytest.raises(ParameterError, match="useSupport"):
-        tr.Force(useSupport="yes")
-    with pytest.raises(ParameterError, match=r"'f_constant'.*no default.*ConstantForce"):
-        tr.ConstantForce()
-    with pytest.raises(ParameterError, match=r"'f_nominal', 'v_nominal'"):
-        tr.QuadraticSpeedDependentForce()
-    with pytest.raises(AttributeError, match="useSupport=True"):
-        tr.Force().support
-    with pytest.raises(ParameterError, match="structural"):
-        tr.Position().exact = True
-
-
-def test_translational_to_rotational_connection_names_both_ports():
-    class Shaft(Component):
-        flange = RotationalFlange("a rotational flange")
-
-    m = acausal.Model("mix")
-    m.mass = tr.Mass()
-    m.shaft = Shaft()
-    with pytest.raises(PortConnectionError) as err:
-        m.connect(m.mass.flange_a, m.shaft.flange)
-    assert "mass.flange_a" in str(err.value) and "shaft.flange" in str(err.value)
 
 
 def test_unconnected_sensor_flange_and_support_are_errors():

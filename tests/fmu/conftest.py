@@ -1,15 +1,8 @@
-"""Shared by the FMU tests: the examples/ directory on sys.path (the worked models live there)
-and a per-module directory for exported FMUs (each module exports its FMUs once)."""
+"""Shared by the FMU tests: a per-module directory for exported FMUs (each module exports its
+FMUs once)."""
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import pytest
-
-EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-if str(EXAMPLES) not in sys.path:
-    sys.path.insert(0, str(EXAMPLES))
 
 
 @pytest.fixture(scope="module")

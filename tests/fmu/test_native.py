@@ -21,10 +21,8 @@ from fmpy import simulate_fmu                                    # noqa: E402
 from fmpy.validation import validate_fmu                         # noqa: E402
 
 import acausal                                                   # noqa: E402
-from disk_drive_head import DiskDriveHead                        # noqa: E402
-from drivetrain import Drivetrain                                # noqa: E402
-from four_bar import FourBar                                     # noqa: E402
-from gantry_crane import GantryCrane                             # noqa: E402
+from acausal.models import (DiskDriveHead, Drivetrain, FourBar, GantryCrane,  # noqa: E402
+                            Parallelogram)
 
 RTOL = 1e-6
 VERSIONS = ("2.0", "3.0")
@@ -40,7 +38,7 @@ CASES = {
     "four_bar": (lambda: FourBar(), 2.0, {"coupler.m": 1.5},
                  {"rev1.phi": 1.0, "rev1.w": 2.0}, ["rev1.phi", "rev2.phi", "rev3.phi", "rev3.w"],
                  None),
-    "drivetrain": (lambda: Drivetrain("drivetrain"), 3.0, {"gear.ratio": 8.0}, {},
+    "drivetrain": (lambda: Drivetrain(), 3.0, {"gear.ratio": 8.0}, {},
                    ["motor.w", "drum.w", "motor.i", "shaft.tau"], None),
 }
 INPUTS = {"crane": ("F", 0.25, lambda t: 5.0 * np.sin(2.0 * t + 0.3)),
@@ -191,8 +189,7 @@ def test_redundant_loop_rows_are_switched_off(fmu_dir, kind):
     simulate() sets them (one redundant row off), so the constrained solve is regular and the motion equals the in-process one (started
     from the in-process assembly of crank angle 1 rad, rate 1 rad/s, for 0.25 s: before the
     crank falls to the collinear configuration at 0.33 s, where the rows left on lose rank)."""
-    compiled = acausal.compile(FourBar("double_parallelogram", lengths=(1.0, 0.3, 1.0, 0.3),
-                                       fifth_link=True))
+    compiled = acausal.compile(Parallelogram("double_parallelogram", fifth_link=True))
     path = compiled.export_fmu(fmu_dir / f"double_parallelogram_{kind}.fmu", stop_time=0.25)
     assert validate_fmu(str(path)) == []
     grid = np.linspace(0.0, 0.25, 101)

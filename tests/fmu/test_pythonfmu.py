@@ -12,7 +12,6 @@ from __future__ import annotations
 import subprocess
 import sys
 import warnings
-from pathlib import Path
 
 import casadi as ca
 import numpy as np
@@ -27,12 +26,8 @@ import acausal                                                    # noqa: E402
 from acausal.components import translational as tr                # noqa: E402
 from acausal.fmu.pythonfmu_backend import export_pythonfmu        # noqa: E402
 from acausal.fmu.variables import fmu_variables                   # noqa: E402
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from disk_drive_head import DiskDriveHead                         # noqa: E402
-from drivetrain import Drivetrain                                 # noqa: E402
-from four_bar import FourBar                                      # noqa: E402
-from gantry_crane import GantryCrane                              # noqa: E402
+from acausal.models import (DiskDriveHead, Drivetrain, FourBar, GantryCrane,  # noqa: E402
+                            Parallelogram)
 
 RTOL = 1e-6
 
@@ -339,8 +334,7 @@ def test_redundant_loop_rows_are_switched_off(tmp_path):
     (calculated parameters) in initialization as simulate() does, one redundant row off, and
     moves as the in-process simulation from the same assembly (0.25 s, before the collinear
     configuration where the rows left on lose rank)."""
-    compiled = acausal.compile(FourBar("double_parallelogram", lengths=(1.0, 0.3, 1.0, 0.3),
-                                       fifth_link=True))
+    compiled = acausal.compile(Parallelogram("double_parallelogram", fifth_link=True))
     path = export_pythonfmu(compiled, tmp_path / "double_parallelogram.fmu")
     assert validate_fmu(str(path)) == []
     ref = run_in_process(compiled, 0.25, 100, x0={"rev1.phi": 1.0, "rev1.w": 1.0},

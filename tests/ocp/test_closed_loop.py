@@ -1,4 +1,4 @@
-"""A closed kinematic loop in an OCP: a slider-crank (examples/slider_crank.py) whose crank
+"""A closed kinematic loop in an OCP: a slider-crank (acausal.models.linkages) whose crank
 is driven by an input torque tau [N.m] moves the crank from rest at 0.5 rad to rest at 2 rad
 in 1 s with minimum ∫tau² dt.
 
@@ -14,25 +14,33 @@ References independent of acausal:
 - collocation and multiple shooting (CasADi's fixed-step Radau integrator) reach the same
   cost (1e-5 relative).
 """
-import sys
-from pathlib import Path
-
 import numpy as np
 import pytest
 
 import acausal
+from acausal.models.linkages import SliderCrank
 from acausal.ocp import OCP
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "examples"))
-from four_bar import energy  # noqa: E402
-from slider_crank import BODIES, H, L, R, SliderCrank  # noqa: E402
-
 PHI_START, PHI_END, T_FINAL = 0.5, 2.0, 1.0     # rad, rad, s
+R, L, H = 0.2, 0.6, 0.05                        # m: crank, rod, offset of the slider's track
+M_CRANK, M_ROD, M_SLIDER, I_SLIDER = 0.4, 0.6, 1.0, 0.01     # kg, kg, kg, kg.m²
+BODIES = {"crank": (M_CRANK, M_CRANK * R ** 2 / 12), "rod": (M_ROD, M_ROD * L ** 2 / 12),
+          "slider": (M_SLIDER, I_SLIDER)}      # (m [kg], I [kg.m²]); slender rods
+G = 9.81                                        # m/s², the World's default
+
+
+def energy(res, bodies):
+    """(T, V) [J] of the bodies from their recorded motion: T = ½ m v² + ½ I w², V = m g y."""
+    T = sum(0.5 * m * (res[f"{b}.v[1]"] ** 2 + res[f"{b}.v[2]"] ** 2) + 0.5 * I * res[f"{b}.w"] ** 2
+            for b, (m, I) in bodies.items())
+    V = sum(m * G * res[f"{b}.r[2]"] for b, (m, _) in bodies.items())
+    return T, V
 
 
 @pytest.fixture(scope="module")
 def compiled():
-    c = acausal.compile(SliderCrank("driven_slider_crank", driven=True))
+    c = acausal.compile(SliderCrank("driven_slider_crank", driven=True, lengths=(R, L, H),
+                                    masses=(M_CRANK, M_ROD, M_SLIDER)))
     assert c.z_names and c.loop_rows          # a constrained model: GGL multipliers
     return c
 

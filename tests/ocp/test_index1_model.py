@@ -15,7 +15,7 @@ from scipy.integrate import solve_ivp
 
 import acausal
 from acausal.components import translational as tr
-from acausal.ocp import OCP
+from acausal.ocp import OCP, OCPError
 
 M, C, D, T_FINAL, N = 1.0, 4.0, 0.5, 2.0, 20
 
@@ -64,3 +64,8 @@ def test_optimum_replays_through_the_hand_ode(compiled, method):
     np.testing.assert_allclose(y, replay[2], atol=1e-6)
     np.testing.assert_allclose(sol["damper.f"], C * (x - y), atol=1e-9)
     assert sol.cost == pytest.approx(T_FINAL / N * np.sum(F ** 2), rel=1e-10)
+
+
+def test_dae_needs_a_dae_integrator():
+    with pytest.raises(OCPError, match="integrator 'rk' does not solve DAEs.*'collocation'"):
+        OCP(acausal.compile(Maxwell()), N=5, method="shooting", integrator="rk")

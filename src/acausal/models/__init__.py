@@ -1,0 +1,32 @@
+"""The models that examples, tests and benchmarks share, kept inside the library as the
+Modelica Standard Library keeps its Examples.
+
+Each builder returns an uncompiled ``acausal.Model`` (compile it with ``acausal.compile``);
+its docstring gives the parameters with their units and the coordinates it compiles to. The
+package depends only on ``acausal.core`` and ``acausal.components`` (and ``acausal.errors``):
+no compiler or simulation imports.
+
+    crane               GantryCrane: cart on a damped rail, load on a rope (input F)
+    disk_drive          DiskDriveHead: actuator arm with a flexible tip (input T)
+    pendulum_on_cart    PendulumOnCart: pendulum on a spring-mounted, base-excited cart
+    cartpole            CartPole: cart with a pole on a hinge (input F)
+    linkages            FourBar, Parallelogram, DrivenFourBar, SliderCrank, add_link
+    pendulums           PendulumChain: N-link planar pendulum
+    drivetrains         Drivetrain: DC motor, gear, elastic shaft, fan drum
+    oscillators         Oscillator: mass on a spring and a damper
+    custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
+"""
+from .cartpole import CartPole
+from .crane import GantryCrane
+from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
+from .disk_drive import DiskDriveHead
+from .drivetrains import Drivetrain
+from .linkages import DrivenFourBar, FourBar, Parallelogram, SliderCrank, add_link
+from .oscillators import Oscillator
+from .pendulum_on_cart import PendulumOnCart
+from .pendulums import PendulumChain
+
+__all__ = ["CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
+           "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
+           "FourBar", "Parallelogram", "SliderCrank", "add_link", "Oscillator",
+           "PendulumOnCart", "PendulumChain"]
