@@ -100,8 +100,6 @@ def test_imports_follow_the_layer_order():
     assert bad == []
 
 
-@pytest.mark.xfail(strict=False,
-                   reason="compiler imports simulation/fmu until the seam redesign lands")
 def test_no_import_cycle_between_packages():
     found = cycles()
     print("\n".join(found))

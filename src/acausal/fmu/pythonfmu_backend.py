@@ -51,6 +51,7 @@ import re
 import shutil
 import sys
 import tempfile
+from importlib.metadata import version
 from pathlib import Path
 
 import casadi as ca
@@ -138,7 +139,6 @@ def _identifier(name: str) -> str:
 
 def _contents(compiled, ident, rtol, atol, solver):
     """The serialized Functions and the JSON metadata of the FMU."""
-    import acausal
     c = compiled
     variables = fmu_variables(c)
     has_alg = c.z.numel() > 0
@@ -169,7 +169,7 @@ def _contents(compiled, ident, rtol, atol, solver):
         "description": (f"acausal model '{c.name}': {len(c.x_names)} states, "
                         f"{len(c.params)} parameters, {len(c.inputs)} inputs, "
                         f"{len(c.outputs)} outputs (pythonfmu co-simulation)"),
-        "acausal_version": acausal.__version__,
+        "acausal_version": version("acausal"),
         "casadi_version": ca.__version__,
         "functions": sorted(functions),
         "x_names": list(c.x_names),
