@@ -9,7 +9,7 @@ from acausal.errors import (AcausalError, AnalysisError, DisabledPortError, FmuE
                             FmuPathError, OCPError, ParameterError, SingularModelError,
                             SolveError, StructureError, VariableNameError, did_you_mean)
 
-CLASSES = [name for name in errors.__all__ if name != "did_you_mean"]
+CLASSES = [name for name in errors.__all__ if isinstance(getattr(errors, name), type)]
 
 
 def instance(cls, message):
