@@ -25,10 +25,9 @@ import math
 
 import casadi as ca
 
-from ..core import Component, Parameter, PortVector, RealInput, RealOutput, RotationalFlange, \
-    TranslationalFlange
+from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
+                    RotationalFlange, TranslationalFlange, VectorPort)
 from ..core.ports import ROTATIONAL
-# The structural-options base is shared with the translational library (one implementation).
 
 Flange = RotationalFlange
 
@@ -55,24 +54,16 @@ __all__ = [
 # =========================================================================================
 # Interfaces: supports
 # =========================================================================================
-def _support_port(description: str = "support/housing of the component") -> RotationalFlange:
-    return RotationalFlange(description, required=True)
+def _support(option: str = "useSupport", description: str = "support/housing of component",
+             flange_cls: type = Flange) -> ConditionalPort:
+    """MSL's ``Support support if useSupport``."""
+    return ConditionalPort(flange_cls(description, required=True), option)
 
 
 class _OneSupport(Component):
     """Shared by the MSL partials with one optional rotational ``support`` (``useSupport``)."""
     options = {"useSupport": False}
-
-    def _conditional_ports(self):
-        if self.useSupport:
-            self.support = _support_port()
-
-    def __getattr__(self, name):
-        if name == "support":
-            raise AttributeError(f"{type(self).__name__} '{self.path or self.name}' has no "
-                                 f"'support' flange (useSupport=False: it is fixed to the "
-                                 f"ground); create it with useSupport=True")
-        raise AttributeError(name)
+    support = _support()
 
     def _phi_support(self, e):
         """Absolute angle of the support [rad] (0 when implicitly grounded)."""
@@ -121,13 +112,9 @@ class PartialElementaryRotationalToTranslational(Component):
     options = {"useSupportR": False, "useSupportT": False}
     flangeR = Flange("flange of rotational shaft")
     flangeT = TranslationalFlange("flange of translational rod")
-
-    def _conditional_ports(self):
-        if self.useSupportR:
-            self.supportR = _support_port("rotational support/housing of component")
-        if self.useSupportT:
-            self.supportT = TranslationalFlange("translational support/housing of component",
-                                                required=True)
+    supportR = _support("useSupportR", "rotational support/housing of component")
+    supportT = _support("useSupportT", "translational support/housing of component",
+                        TranslationalFlange)
 
     def _declare(self, s, aR, aT, name: str) -> None:
         """aR·(flangeR.phi − supportR.phi) + aT·(flangeT.s − supportT.s) = 0."""
@@ -547,12 +534,9 @@ class Move(_PrescribedMotion):
     the actual ``w``, ``a`` so that the two can be compared.
     """
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        for i, what in enumerate(("angle", "angular velocity", "angular acceleration"), 1):
-            setattr(self, f"u[{i}]", RealInput(f"{what} of flange with respect to support "
-                                               f"as input signal"))
-        self.__dict__["u"] = PortVector("Move", "u", [getattr(self, f"u[{i}]") for i in (1, 2, 3)])
+    u = VectorPort(RealInput, 3, tuple(f"{what} of flange with respect to support as input "
+                                       f"signal" for what in
+                                       ("angle", "angular velocity", "angular acceleration")))
 
     def structure(self, s):
         self._prescribe(s, s.input(self.u[1]))

@@ -31,8 +31,8 @@ import math
 
 import casadi as ca
 
-from ..core import Component, Parameter, PortVector, RealInput, RealOutput, \
-    TranslationalFlange
+from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
+                    TranslationalFlange, VectorPort)
 from ..core.ports import TRANSLATIONAL
 
 Flange = TranslationalFlange
@@ -57,12 +57,6 @@ __all__ = [
 # =========================================================================================
 # Interfaces
 # =========================================================================================
-def _who(c: Component) -> str:
-    """'Force 'drive.force'' (or just the class name for a component not in a model)."""
-    where = c.path or c.name
-    return f"{type(c).__name__} '{where}'" if where else type(c).__name__
-
-
 class PartialRigid(Component):
     """Two rigidly connected flanges at distance ``L`` [m]; ``s`` [m] is the centre:
     flange_a.s = s − L/2, flange_b.s = s + L/2 (the forces at the flanges may differ)."""
@@ -126,18 +120,8 @@ class PartialElementaryOneFlangeAndSupport2(Component):
     """
     options = {"useSupport": False}
     flange = Flange("flange of component")
-
-    def _conditional_ports(self):
-        if self.useSupport:
-            self.support = Flange("support/housing of component", required=True)
-
-    def __getattr__(self, name):
-        if name == "support":
-            raise AttributeError(f"{_who(self)} has no "
-                                 f"'support' flange (useSupport=False: it is fixed to the "
-                                 f"ground); create it with "
-                                 f"{type(self).__name__}(useSupport=True)")
-        raise AttributeError(name)
+    support = ConditionalPort(Flange("support/housing of component", required=True),
+                              "useSupport")
 
     # relative motion of the flange with respect to the support
     def _s(self, e):
@@ -456,13 +440,8 @@ class Move(PartialElementaryOneFlangeAndSupport2):
     forces only) is not reproduced. u[2], u[3] must be connected; they are recorded as
     ``v_u``, ``a_u`` next to the actual ``v``, ``a`` so the two can be compared.
     """
-
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        for i, what in enumerate(("position", "velocity", "acceleration"), start=1):
-            setattr(self, f"u[{i}]", RealInput(f"{what} of flange as input signal"))
-        self.__dict__["u"] = PortVector("Move", "u", [getattr(self, f"u[{i}]")
-                                                   for i in (1, 2, 3)])
+    u = VectorPort(RealInput, 3, tuple(f"{what} of flange as input signal" for what in
+                                       ("position", "velocity", "acceleration")))
 
     def structure(self, s):
         self._prescribe(s, s.input(self.u[1]))
