@@ -211,6 +211,7 @@ class Spring(PartialCompliant):
 
     Default c = 1e5 N.m/rad: MSL's start value (MSL declares no default).
     """
+    batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
     phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
 
@@ -221,6 +222,7 @@ class Spring(PartialCompliant):
 class Damper(PartialCompliantWithRelativeStates):
     """Linear 1-D rotational damper: tau = d·w_rel; lossPower = tau·w_rel.
     d [N.m.s/rad] ≥ 0 (default 0 = MSL start value)."""
+    batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
 
     def torque(self, phi_rel, w_rel):
@@ -233,6 +235,7 @@ class Damper(PartialCompliantWithRelativeStates):
 class SpringDamper(PartialCompliantWithRelativeStates):
     """Linear spring and damper in parallel: tau = c·(phi_rel − phi_rel0) + d·w_rel;
     lossPower = d·w_rel². Defaults c = 1e5 N.m/rad, d = 0 N.m.s/rad (MSL's start values)."""
+    batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
     phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
