@@ -148,9 +148,10 @@ class PartialElementaryOneFlangeAndSupport2(_Support):
         opposite, to the support)."""
         self._relative_constraint(s, {self.flange: 1.0}, rhs, f"{self.path}: prescribed motion")
 
-    def _record_relative(self, e, *which: str) -> None:
-        """Record the flange's motion relative to the support: ``"s"`` (position), ``"v"``
-        (speed), ``"a"`` (acceleration), under the domain's names (s, v, a / phi, w, a)."""
+    def _record_relative(self, e, *which: str, **given) -> None:
+        """Record the flange's motion relative to the support under the domain's names
+        (s, v, a / phi, w, a): ``which`` of ``"s"`` (position), ``"v"`` (speed), ``"a"``
+        (acceleration) as measured, ``given`` as the values given (``a=...``)."""
         x = self.axis
         rows = {"s": (x.s, self._rel_position, x.s_unit,
                       f"{x.position} of flange with respect to support "
@@ -159,9 +160,10 @@ class PartialElementaryOneFlangeAndSupport2(_Support):
                       f"{x.speed} of flange with respect to support (= der({x.s}))"),
                 "a": ("a", self._rel_acc, x.a_unit,
                       f"{x.acceleration} of flange with respect to support (= der({x.v}))")}
-        for key in which:
+        for key in which + tuple(given):
             name, value, unit, description = rows[key]
-            e.variable(name, value(e, self.flange), unit, description)
+            e.variable(name, given[key] if key in given else value(e, self.flange), unit,
+                       description)
 
 
 class PartialElementaryTwoFlangesAndSupport2(_Support):
@@ -184,7 +186,26 @@ def quadratic_law(x, same_direction: bool):
 # =========================================================================================
 # Prescribed motion of the flange relative to the support (Sources)
 # =========================================================================================
-class Position(PartialElementaryOneFlangeAndSupport2):
+class _PrescribedMotion(PartialElementaryOneFlangeAndSupport2):
+    """flange − support is prescribed; its speed and position states start at 0 (MSL:
+    start=0, fixed=true)."""
+
+    def _speed_state(self, s, der=None, note: str = ""):
+        """The state v/w [m/s, rad/s]; its derivative ``der`` here or later in physics."""
+        x = self.axis
+        self._xv = s.state(x.v, 0.0, x.v_unit, f"{x.speed} of flange with respect to "
+                                               f"support{note}", der=der)
+        return self._xv
+
+    def _position_state(self, s, der, note: str = "") -> None:
+        """The state s/phi [m, rad] with derivative ``der``; flange − support follows it."""
+        x = self.axis
+        self._xs = s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect to "
+                                               f"support{note}", der=der)
+        self._prescribe(s, self._xs)
+
+
+class Position(_PrescribedMotion):
     """flange − support follows the reference input ``s_ref``/``phi_ref`` [m, rad]: exactly
     (``exact=True``; a function of time, differentiated twice) or through MSL's 2nd-order
     Bessel filter with cut-off f_crit [Hz] (states s/phi and v/w, from 0)."""
@@ -194,30 +215,27 @@ class Position(PartialElementaryOneFlangeAndSupport2):
     af = 1.3617   # s coefficient of Bessel filter
     bf = 0.6180   # s*s coefficient of Bessel filter
 
+    def _ref(self):
+        return getattr(self, f"{self.axis.s}_ref")
+
     def structure(self, s):
-        x = self.axis
         if self.exact:
-            self._prescribe(s, s.input(getattr(self, f"{x.s}_ref")))
-            return
-        self._xv = s.state(x.v, 0.0, x.v_unit, f"{x.speed} of flange with respect to "
-                                               f"support (filter state)")
-        self._xs = s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect to "
-                                               f"support (filter state)", der=self._xv)
-        self._prescribe(s, self._xs)
+            self._prescribe(s, s.input(self._ref()))
+        else:
+            self._position_state(s, self._speed_state(s, note=" (filter state)"),
+                                 " (filter state)")
 
     def physics(self, e):
         if self.exact:
             self._record_relative(e, "s", "v", "a")
             return
-        x = self.axis
         w_crit = 2 * math.pi * self.f_crit
-        ref = e.input(getattr(self, f"{x.s}_ref"))
-        a = ((ref - self._xs) * w_crit - self.af * self._xv) * (w_crit / self.bf)
+        a = ((e.input(self._ref()) - self._xs) * w_crit - self.af * self._xv) * (w_crit / self.bf)
         e.derivative(self._xv, a)
-        e.variable("a", a, x.a_unit, f"{x.acceleration} of flange with respect to support")
+        self._record_relative(e, a=a)
 
 
-class Speed(PartialElementaryOneFlangeAndSupport2):
+class Speed(_PrescribedMotion):
     """flange − support moves with the reference speed ``v_ref``/``w_ref`` [m/s, rad/s]:
     exactly (``exact=True``; a function of time, differentiated once) or through a
     first-order filter with cut-off f_crit [Hz] (state v/w, from 0). The position s/phi is a
@@ -226,42 +244,31 @@ class Speed(PartialElementaryOneFlangeAndSupport2):
     f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
                                    "input signal", positive=True)
 
+    def _ref(self):
+        return getattr(self, f"{self.axis.v}_ref")
+
     def structure(self, s):
-        x = self.axis
-        if self.exact:
-            v = s.input(getattr(self, f"{x.v}_ref"))
-        else:
-            v = self._xv = s.state(x.v, 0.0, x.v_unit, f"{x.speed} of flange with respect to "
-                                                       f"support (filter state)")
-        self._xs = s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect to "
-                                               f"support", der=v)
-        self._prescribe(s, self._xs)
+        v = s.input(self._ref()) if self.exact else self._speed_state(s, note=" (filter state)")
+        self._position_state(s, v)
 
     def physics(self, e):
         if self.exact:
             self._record_relative(e, "v", "a")
             return
-        x = self.axis
-        a = (e.input(getattr(self, f"{x.v}_ref")) - self._xv) * (2 * math.pi * self.f_crit)
+        a = (e.input(self._ref()) - self._xv) * (2 * math.pi * self.f_crit)
         e.derivative(self._xv, a)
-        e.variable("a", a, x.a_unit, f"{x.acceleration} of flange with respect to support")
+        self._record_relative(e, a=a)
 
 
-class Accelerate(PartialElementaryOneFlangeAndSupport2):
+class Accelerate(_PrescribedMotion):
     """flange − support accelerates with the input ``a_ref`` [m/s², rad/s²]; position and
-    speed are states integrated from 0 (MSL: start=0, fixed=true)."""
+    speed are states integrated from 0."""
 
     def structure(self, s):
-        x = self.axis
-        self._xv = s.state(x.v, 0.0, x.v_unit, f"{x.speed} of flange with respect to support",
-                           der=s.input(self.a_ref))
-        self._xs = s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect to "
-                                               f"support", der=self._xv)
-        self._prescribe(s, self._xs)
+        self._position_state(s, self._speed_state(s, der=s.input(self.a_ref)))
 
     def physics(self, e):
-        e.variable("a", e.input(self.a_ref), self.axis.a_unit,
-                   f"{self.axis.acceleration} of flange with respect to support")
+        self._record_relative(e, a=e.input(self.a_ref))
 
 
 class Move(PartialElementaryOneFlangeAndSupport2):
@@ -278,7 +285,7 @@ class Move(PartialElementaryOneFlangeAndSupport2):
         e.variable("a_u", e.input(self.u[3]), x.a_unit, f"{x.acceleration} input u[3]")
 
 
-class ConstantSpeed(PartialElementaryOneFlangeAndSupport2):
+class ConstantSpeed(_PrescribedMotion):
     """flange − support moves with the constant speed ``v_fixed``/``w_fixed`` [m/s, rad/s],
     whatever the flow; the position is a state from 0. Records the speed."""
 
@@ -286,12 +293,7 @@ class ConstantSpeed(PartialElementaryOneFlangeAndSupport2):
         return getattr(self, f"{self.axis.v}_fixed")
 
     def structure(self, s):
-        x = self.axis
-        self._xs = s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect to "
-                                               f"support", der=self._fixed())
-        self._prescribe(s, self._xs)
+        self._position_state(s, self._fixed())
 
     def physics(self, e):
-        x = self.axis
-        e.variable(x.v, self._fixed(), x.v_unit,
-                   f"{x.speed} of flange with respect to support (= der({x.s}))")
+        self._record_relative(e, v=self._fixed())

@@ -381,12 +381,19 @@ class LineSpringDamper(PartialLineForce):
 # =========================================================================================
 # Joints
 # =========================================================================================
+def _drive_flanges(flange_cls: type) -> tuple[ConditionalPort, ConditionalPort]:
+    """A joint's ``flange_a`` and ``support`` of the joint's 1-D domain, if useFlange."""
+    return (ConditionalPort(flange_cls("1-dim. flange that drives the joint"), "useFlange"),
+            ConditionalPort(flange_cls("1-dim. flange of the drive support (fixed in the "
+                                       "world frame, not in the joint)"), "useFlange"))
+
+
 class _Joint(Component):
     """A joint between frame_a and frame_b with an optional 1-D drive (``useFlange``):
     ``flange_a`` follows the joint coordinate and ``support`` is fixed in the world (as in
     PlanarMechanics, the support is *not* fixed in the joint). Unconnected, the flanges are
     free (no drive force); connect them to the 1-D libraries to drive or load the joint.
-    Each joint declares the two flanges of its domain."""
+    Each joint declares the two flanges of its domain (``_drive_flanges``)."""
     options = {"useFlange": False}
     frame_a = Frame("frame the joint is fixed to")
     frame_b = Frame("frame moved by the joint")
@@ -411,11 +418,7 @@ class Revolute(_Joint):
     as in PlanarMechanics): a torque on flange_a acts on frame_b and, opposite, on frame_a.
     """
     frame_b = Frame("frame turned by phi")
-    flange_a = ConditionalPort(RotationalFlange("1-dim. flange that drives the joint"),
-                               "useFlange")
-    support = ConditionalPort(RotationalFlange("1-dim. flange of the drive support (fixed "
-                                               "in the world frame, not in the joint)"),
-                              "useFlange")
+    flange_a, support = _drive_flanges(RotationalFlange)
 
     def structure(self, s):
         self._phi = s.node("phi", ROTATIONAL, velocity="w", acceleration="z")
@@ -436,11 +439,7 @@ class Prismatic(_Joint):
     default {1, 0} (PlanarMechanics gives none)."""
     r = Parameter((1.0, 0.0), "m", "direction of the rod wrt. body system at phi=0")
     frame_b = Frame("frame moved by s")
-    flange_a = ConditionalPort(TranslationalFlange("1-dim. flange that drives the joint"),
-                               "useFlange")
-    support = ConditionalPort(TranslationalFlange("1-dim. flange of the drive support (fixed "
-                                                  "in the world frame, not in the joint)"),
-                              "useFlange")
+    flange_a, support = _drive_flanges(TranslationalFlange)
 
     def structure(self, s):
         r0 = self._values["r"]
@@ -523,16 +522,10 @@ class _AbsoluteSensor(_Resolving):
     options = {"resolveInFrame": ResolveInFrameA.frame_a}
     frame_a = Frame("coordinate system from which absolute kinematic quantities are "
                     "measured", required=True)
-    _output = ""            # name of the output vector
 
-    def _world_vector(self, e):
-        raise NotImplementedError
-
-    def physics(self, e):
-        w = self._world_vector(e)
-        phi = self._angle(e)
-        _output_vector(e, getattr(self, self._output),
-                       ca.vertcat(_rot_t(phi, w[:2]), w[2]))
+    def _resolved(self, e, w):
+        """A world vector (x, y, angular) with x, y resolved in ``resolveInFrame``."""
+        return ca.vertcat(_rot_t(self._angle(e), w[:2]), w[2])
 
 
 class AbsolutePosition(_AbsoluteSensor):
@@ -550,23 +543,21 @@ class AbsolutePosition(_AbsoluteSensor):
 class AbsoluteVelocity(_AbsoluteSensor):
     """Outputs v[1], v[2] [m/s], v[3] [rad/s]: der(x, y) of frame_a resolved in
     ``resolveInFrame`` (default frame_a) and der(phi)."""
-    _output = "v"
     v = VectorPort(RealOutput, 3, "absolute velocity [m/s] and angular velocity [rad/s] of "
                                   "frame_a")
 
-    def _world_vector(self, e):
-        return e.vel(self.frame_a)
+    def physics(self, e):
+        _output_vector(e, self.v, self._resolved(e, e.vel(self.frame_a)))
 
 
 class AbsoluteAcceleration(_AbsoluteSensor):
     """Outputs a[1], a[2] [m/s²], a[3] [rad/s²]: der(der(x, y)) of frame_a resolved in
     ``resolveInFrame`` (default frame_a) and der(der(phi))."""
-    _output = "a"
     a = VectorPort(RealOutput, 3, "absolute acceleration [m/s2] and angular acceleration "
                                   "[rad/s2]")
 
-    def _world_vector(self, e):
-        return e.acc(self.frame_a)
+    def physics(self, e):
+        _output_vector(e, self.a, self._resolved(e, e.acc(self.frame_a)))
 
 
 class _RelativeSensor(_Resolving):
