@@ -42,7 +42,7 @@ def test_instance_reads_defaults_and_given_values_as_floats():
     ({"r": (1.0, 2.0, 3.0)}, "parameter 'Probe.r' takes 2 values, got (1.0, 2.0, 3.0)"),
     ({"r": 1.0}, "parameter 'Probe.r' takes 2 values, got 1.0"),
     ({"r": "ab"}, "parameter 'Probe.r' takes 2 values, got 'ab'"),
-    ({"r": (1.0, "x")}, "parameter 'Probe.r' must be a number, got 'x'"),
+    ({"r": (1.0, "x")}, "parameter 'Probe.r[2]' must be a number, got 'x'"),
 ])
 def test_bad_values_at_construction_name_the_parameter(kw, message):
     with pytest.raises(ParameterError) as err:

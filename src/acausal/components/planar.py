@@ -45,10 +45,11 @@ from enum import Enum
 
 import casadi as ca
 
-from ..core import (Component, Frame, Parameter, PortVector, RealInput,
-                    RealOutput, RotationalFlange, TranslationalFlange)
-from ..errors import ParameterError
+from ..core import (Component, ConditionalPort, Frame, Parameter, PortVector, RealInput,
+                    RealOutput, RotationalFlange, TranslationalFlange, VectorPort)
+from ..core.component import who
 from ..core.ports import ROTATIONAL, TRANSLATIONAL
+from ..errors import ParameterError
 
 __all__ = [
     # types
@@ -94,11 +95,6 @@ class ResolveInFrameAB(str, Enum):
     frame_resolve = "frame_resolve"
 
 
-def _who(c: Component) -> str:
-    where = c.path or c.name
-    return f"{type(c).__name__} '{where}'" if where else type(c).__name__
-
-
 def _rot(phi, v):
     """R(phi)·v: a 2-vector resolved in a frame at angle phi, resolved in the world."""
     c, s = ca.cos(phi), ca.sin(phi)
@@ -111,15 +107,6 @@ def _rot_t(phi, v):
     return ca.vertcat(c * v[0] + s * v[1], -s * v[0] + c * v[1])
 
 
-def _vector_ports(comp: Component, name: str, cls, n: int, description: str) -> None:
-    """Ports ``name[1]`` .. ``name[n]`` and the PortVector ``name`` (Modelica numbering)."""
-    items = []
-    for i in range(1, n + 1):
-        setattr(comp, f"{name}[{i}]", cls(f"{description} [{i}]"))
-        items.append(getattr(comp, f"{name}[{i}]"))
-    comp.__dict__[name] = PortVector(type(comp).__name__, name, items)
-
-
 def _output_vector(e, ports: PortVector, values) -> None:
     for k, port in enumerate(ports):
         e.output(port, values[k])
@@ -127,39 +114,11 @@ def _output_vector(e, ports: PortVector, values) -> None:
 
 class _Resolving(Component):
     """A component with PlanarMechanics' ``resolveInFrame`` choice (structural, fixed at
-    construction). ``frame_resolve`` adds a required frame of that name."""
-    resolve_type: type = ResolveInFrameA
-    resolve_default: str = "frame_a"
-
-    def __init__(self, name: str | None = None, *, resolveInFrame=None, **params):
-        kind = type(self).__name__
-        value = self.resolve_default if resolveInFrame is None else resolveInFrame
-        try:
-            choice = self.resolve_type(value)
-        except ValueError:
-            allowed = ", ".join(m.value for m in self.resolve_type)
-            raise ParameterError(f"{kind}: resolveInFrame={value!r} is not one of "
-                                 f"{self.resolve_type.__name__} ({allowed})") from None
-        self.__dict__["_resolveInFrame"] = choice
-        super().__init__(name, **params)
-
-    @property
-    def resolveInFrame(self):
-        """The frame vectors are resolved in (a ResolveInFrameA/B/AB member)."""
-        return self.__dict__["_resolveInFrame"]
-
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        if self.resolveInFrame.value == "frame_resolve":
-            self.frame_resolve = Frame("frame in which vectors are resolved (no force)",
-                                       required=True)
-
-    def __getattr__(self, name):
-        if name == "frame_resolve":
-            raise AttributeError(f"{_who(self)} has no 'frame_resolve' (resolveInFrame="
-                                 f"{self.resolveInFrame.value}); create it with "
-                                 f"{type(self).__name__}(resolveInFrame='frame_resolve')")
-        raise AttributeError(name)
+    construction; subclasses give the enumeration and its default in ``options``).
+    ``frame_resolve`` adds a required frame of that name."""
+    options = {"resolveInFrame": ResolveInFrameA.frame_a}
+    frame_resolve = ConditionalPort(Frame("frame in which vectors are resolved (no force)",
+                                          required=True), "resolveInFrame", "frame_resolve")
 
     def _angle(self, e):
         """Angle [rad] of the frame vectors are resolved in (0 for the world)."""
@@ -422,29 +381,25 @@ class LineSpringDamper(PartialLineForce):
 # =========================================================================================
 # Joints
 # =========================================================================================
+def _drive_flanges(flange_cls: type) -> tuple[ConditionalPort, ConditionalPort]:
+    """A joint's ``flange_a`` and ``support`` of the joint's 1-D domain, if useFlange."""
+    return (ConditionalPort(flange_cls("1-dim. flange that drives the joint"), "useFlange"),
+            ConditionalPort(flange_cls("1-dim. flange of the drive support (fixed in the "
+                                       "world frame, not in the joint)"), "useFlange"))
+
+
 class _Joint(Component):
     """A joint between frame_a and frame_b with an optional 1-D drive (``useFlange``):
     ``flange_a`` follows the joint coordinate and ``support`` is fixed in the world (as in
     PlanarMechanics, the support is *not* fixed in the joint). Unconnected, the flanges are
-    free (no drive force); connect them to the 1-D libraries to drive or load the joint."""
+    free (no drive force); connect them to the 1-D libraries to drive or load the joint.
+    Each joint declares the two flanges of its domain (``_drive_flanges``)."""
     options = {"useFlange": False}
     frame_a = Frame("frame the joint is fixed to")
     frame_b = Frame("frame moved by the joint")
-    _flange_cls: type = RotationalFlange
 
-    def _conditional_ports(self):
-        if self.useFlange:
-            self.flange_a = self._flange_cls("1-dim. flange that drives the joint")
-            self.support = self._flange_cls("1-dim. flange of the drive support (fixed in "
-                                            "the world frame, not in the joint)")
-
-    def __getattr__(self, name):
-        if name in ("flange_a", "support"):
-            raise AttributeError(f"{_who(self)} has no '{name}' (useFlange=False); create it "
-                                 f"with {type(self).__name__}(useFlange=True)")
-        raise AttributeError(name)
-
-    def _drive(self, s, node):
+    def _link_flange(self, s, node):
+        """flange_a follows the joint coordinate ``node``; support is fixed in the world."""
         if self.useFlange:
             s.linear({self.flange_a: 1.0, node: -1.0}, 0.0, f"{self.path}: flange_a")
             s.linear({self.support: 1.0}, 0.0, f"{self.path}: support")
@@ -463,12 +418,12 @@ class Revolute(_Joint):
     as in PlanarMechanics): a torque on flange_a acts on frame_b and, opposite, on frame_a.
     """
     frame_b = Frame("frame turned by phi")
-    _flange_cls = RotationalFlange
+    flange_a, support = _drive_flanges(RotationalFlange)
 
     def structure(self, s):
         self._phi = s.node("phi", ROTATIONAL, velocity="w", acceleration="z")
         s.revolute(self.frame_a, self.frame_b, self._phi)
-        self._drive(s, self._phi)
+        self._link_flange(s, self._phi)
 
     def physics(self, e):
         e.variable("t", self._drive_force(e), "N.m", "drive torque (= flange_a.tau)")
@@ -484,17 +439,17 @@ class Prismatic(_Joint):
     default {1, 0} (PlanarMechanics gives none)."""
     r = Parameter((1.0, 0.0), "m", "direction of the rod wrt. body system at phi=0")
     frame_b = Frame("frame moved by s")
-    _flange_cls = TranslationalFlange
+    flange_a, support = _drive_flanges(TranslationalFlange)
 
     def structure(self, s):
         r0 = self._values["r"]
         if r0[0] == 0.0 and r0[1] == 0.0:
-            raise ParameterError(f"{_who(self)}: r = {{0, 0}} gives no direction; give the "
+            raise ParameterError(f"{who(self)}: r = {{0, 0}} gives no direction; give the "
                                  f"direction of the joint axis, e.g. r=(1, 0)")
         e = self.r / ca.norm_2(self.r)
         self._s = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
         s.prismatic(self.frame_a, self.frame_b, self._s, e)
-        self._drive(s, self._s)
+        self._link_flange(s, self._s)
 
     def physics(self, e):
         e.variable("f", self._drive_force(e), "N", "drive force in direction of elongation "
@@ -508,10 +463,7 @@ class _ForceInput(_Resolving):
     """Input signals force[1], force[2] [N] (x-, y-coordinates, resolved per
     ``resolveInFrame``) and force[3] [N.m] (torque)."""
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, "force", RealInput, 3, "x-, y-coordinates of force [N] and "
-                                                   "torque [N.m]")
+    force = VectorPort(RealInput, 3, "x-, y-coordinates of force [N] and torque [N.m]")
 
     def _wrench(self, e) -> ca.SX:
         """(fx, fy, t) in world coordinates."""
@@ -525,8 +477,7 @@ class WorldForce(_ForceInput):
     frame_resolve (``resolveInFrame``: ResolveInFrameB), force[3] [N.m] the torque:
     frame_b.f = −(R·force[1:2]), frame_b.t = −force[3] (the force acts on what frame_b is
     connected to)."""
-    resolve_type = ResolveInFrameB
-    resolve_default = "frame_b"
+    options = {"resolveInFrame": ResolveInFrameB.frame_b}
     frame_b = Frame("frame the force and torque act on", required=True)
 
     def physics(self, e):
@@ -551,8 +502,7 @@ class RelativeForce(_ForceInput):
     ResolveInFrameAB), force[3] [N.m] is the torque on frame_b; frame_a gets the opposite:
     frame_b.f = −(R·force[1:2], force[3]) = −frame_a.f. As in PlanarMechanics the moment of
     the two forces about the origins is not balanced."""
-    resolve_type = ResolveInFrameAB
-    resolve_default = "frame_a"
+    options = {"resolveInFrame": ResolveInFrameAB.frame_a}
     frame_a = Frame("frame the reaction acts on", required=True)
     frame_b = Frame("frame the force acts on", required=True)
 
@@ -569,31 +519,20 @@ class _AbsoluteSensor(_Resolving):
     """Measures frame_a (no force); vectors resolved per ``resolveInFrame``
     (ResolveInFrameA, default frame_a): x, y components by R(angle)ᵀ, the angular component
     unchanged."""
-    resolve_type = ResolveInFrameA
-    resolve_default = "frame_a"
+    options = {"resolveInFrame": ResolveInFrameA.frame_a}
     frame_a = Frame("coordinate system from which absolute kinematic quantities are "
                     "measured", required=True)
-    _output: tuple = ("", "")          # output vector name, description
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, self._output[0], RealOutput, 3, self._output[1])
-
-    def _world_vector(self, e):
-        raise NotImplementedError
-
-    def physics(self, e):
-        w = self._world_vector(e)
-        phi = self._angle(e)
-        _output_vector(e, getattr(self, self._output[0]),
-                       ca.vertcat(_rot_t(phi, w[:2]), w[2]))
+    def _resolved(self, e, w):
+        """A world vector (x, y, angular) with x, y resolved in ``resolveInFrame``."""
+        return ca.vertcat(_rot_t(self._angle(e), w[:2]), w[2])
 
 
 class AbsolutePosition(_AbsoluteSensor):
     """Outputs r[1], r[2] [m], r[3] [rad]: the position of frame_a's origin resolved in
     ``resolveInFrame`` and its angle relative to that frame (PlanarMechanics: r[3] = 0 for
     frame_a, frame_a.phi for the world, frame_a.phi − frame_resolve.phi)."""
-    _output = ("r", "absolute position [m] and angle [rad] of frame_a")
+    r = VectorPort(RealOutput, 3, "absolute position [m] and angle [rad] of frame_a")
 
     def physics(self, e):
         r = e.pos(self.frame_a)
@@ -604,25 +543,26 @@ class AbsolutePosition(_AbsoluteSensor):
 class AbsoluteVelocity(_AbsoluteSensor):
     """Outputs v[1], v[2] [m/s], v[3] [rad/s]: der(x, y) of frame_a resolved in
     ``resolveInFrame`` (default frame_a) and der(phi)."""
-    _output = ("v", "absolute velocity [m/s] and angular velocity [rad/s] of frame_a")
+    v = VectorPort(RealOutput, 3, "absolute velocity [m/s] and angular velocity [rad/s] of "
+                                  "frame_a")
 
-    def _world_vector(self, e):
-        return e.vel(self.frame_a)
+    def physics(self, e):
+        _output_vector(e, self.v, self._resolved(e, e.vel(self.frame_a)))
 
 
 class AbsoluteAcceleration(_AbsoluteSensor):
     """Outputs a[1], a[2] [m/s²], a[3] [rad/s²]: der(der(x, y)) of frame_a resolved in
     ``resolveInFrame`` (default frame_a) and der(der(phi))."""
-    _output = ("a", "absolute acceleration [m/s2] and angular acceleration [rad/s2]")
+    a = VectorPort(RealOutput, 3, "absolute acceleration [m/s2] and angular acceleration "
+                                  "[rad/s2]")
 
-    def _world_vector(self, e):
-        return e.acc(self.frame_a)
+    def physics(self, e):
+        _output_vector(e, self.a, self._resolved(e, e.acc(self.frame_a)))
 
 
 class _RelativeSensor(_Resolving):
     """Measures frame_b relative to frame_a (no force); ResolveInFrameAB, default frame_a."""
-    resolve_type = ResolveInFrameAB
-    resolve_default = "frame_a"
+    options = {"resolveInFrame": ResolveInFrameAB.frame_a}
     frame_a = Frame("coordinate system a", required=True)
     frame_b = Frame("coordinate system b", required=True)
 
@@ -643,9 +583,7 @@ class RelativePosition(_RelativeSensor):
     """Outputs r_rel[1], r_rel[2] [m] (frame_b's origin minus frame_a's, resolved in
     ``resolveInFrame``, default frame_a) and r_rel[3] = frame_b.phi − frame_a.phi [rad]."""
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, "r_rel", RealOutput, 3, "relative position [m] and angle [rad]")
+    r_rel = VectorPort(RealOutput, 3, "relative position [m] and angle [rad]")
 
     def physics(self, e):
         _output_vector(e, self.r_rel, self._r_rel(e, self._angle(e)))
@@ -656,10 +594,7 @@ class RelativeVelocity(_RelativeSensor):
     der(R(phi_a)ᵀ·(r_b − r_a)), resolved in ``resolveInFrame`` (default frame_a), and
     der(phi_b − phi_a) [rad/s] (PlanarMechanics' definition)."""
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, "v_rel", RealOutput, 3, "relative velocity [m/s] and angular "
-                                                    "velocity [rad/s]")
+    v_rel = VectorPort(RealOutput, 3, "relative velocity [m/s] and angular velocity [rad/s]")
 
     def physics(self, e):
         _output_vector(e, self.v_rel, self._v_rel(e))
@@ -669,10 +604,8 @@ class RelativeAcceleration(_RelativeSensor):
     """Outputs a_rel[1..3] = der(v_rel) of RelativeVelocity with the same ``resolveInFrame``
     (PlanarMechanics' definition: for frame_a, the relative acceleration seen in frame_a)."""
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, "a_rel", RealOutput, 3, "relative acceleration [m/s2] and angular "
-                                                    "acceleration [rad/s2]")
+    a_rel = VectorPort(RealOutput, 3, "relative acceleration [m/s2] and angular "
+                                      "acceleration [rad/s2]")
 
     def physics(self, e):
         _output_vector(e, self.a_rel, e.der(self._v_rel(e)))
@@ -709,12 +642,9 @@ class _CutSensor(Component):
 class _CutForceOutputs(_Resolving, _CutSensor):
     """Output ``force[1..2]`` [N]: frame_a.fx, fy (× −1 with positiveSign=False) resolved in
     ``resolveInFrame`` (ResolveInFrameA: world, frame_a (default), frame_resolve)."""
-    resolve_type = ResolveInFrameA
-    resolve_default = "frame_a"
+    options = {"resolveInFrame": ResolveInFrameA.frame_a}
 
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        _vector_ports(self, "force", RealOutput, 2, "cut force resolved in resolveInFrame [N]")
+    force = VectorPort(RealOutput, 2, "cut force resolved in resolveInFrame [N]")
 
     def physics(self, e):
         f = self._cut(e)

@@ -1,9 +1,10 @@
-"""1-D rotational mechanics, after Modelica.Mechanics.Rotational (MSL 4.0), plus a DC motor.
+"""1-D rotational mechanics, after Modelica.Mechanics.Rotational (MSL 4.1), plus a DC motor.
 
 Sign conventions as in MSL: a flange's cut torque ``tau`` is positive into the component
 (Modelica's flow sign); a compliant element's ``tau`` is the torque on flange_b (flange_a gets
 −tau); ``phi_rel`` = flange_b.phi − flange_a.phi. An ``Inertia``'s states are ``phi`` [rad] and
-``w`` [rad/s], with flange_a.phi = flange_b.phi = phi.
+``w`` [rad/s], with flange_a.phi = flange_b.phi = phi. A torque source's ``tau`` is the
+accelerating torque = −flange.tau.
 
 Structural (Boolean) parameters of MSL — ``useSupport``, ``useSupportR``/``useSupportT``,
 ``exact``, ``TorqueDirection`` — are keyword arguments fixed at construction (they change the
@@ -16,6 +17,9 @@ IdealGear.ratio, ...) that value is the default; where MSL gives none at all
 (ConstantTorque.tau_constant, ConstantSpeed.w_fixed, ...) the parameter is required when the
 component is created (a ParameterError otherwise).
 
+The equations shared with the translational library are written once in ``interfaces``; the
+classes here declare MSL's connectors and names on top of them.
+
 Differences from MSL, by necessity of a Python library, are listed in each docstring.
 Friction, backlash, clutches and stops (non-smooth elements) are not here yet.
 """
@@ -25,17 +29,19 @@ import math
 
 import casadi as ca
 
-from ..core import Component, Parameter, PortVector, RealInput, RealOutput, RotationalFlange, \
-    TranslationalFlange
+from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
+                    RotationalFlange, TranslationalFlange, VectorPort)
 from ..core.ports import ROTATIONAL
-# The structural-options base is shared with the translational library (one implementation).
+from . import interfaces
+from .interfaces import ROTATIONAL_AXIS, linear_law, quadratic_law
 
 Flange = RotationalFlange
 
 __all__ = [
     # interfaces
-    "PartialElementaryOneFlangeAndSupport2", "PartialElementaryTwoFlangesAndSupport2",
-    "PartialElementaryRotationalToTranslational", "PartialCompliant", "PartialTorque",
+    "PartialTwoFlanges", "PartialElementaryOneFlangeAndSupport2",
+    "PartialElementaryTwoFlangesAndSupport2", "PartialElementaryRotationalToTranslational",
+    "PartialCompliant", "PartialCompliantWithRelativeStates", "PartialTorque",
     "PartialAbsoluteSensor", "PartialRelativeSensor",
     # components
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
@@ -53,66 +59,37 @@ __all__ = [
 
 
 # =========================================================================================
-# Interfaces: supports
+# Interfaces
 # =========================================================================================
-def _support_port(description: str = "support/housing of the component") -> RotationalFlange:
-    return RotationalFlange(description, required=True)
+def _support(option: str = "useSupport", description: str = "support/housing of component",
+             flange_cls: type = Flange) -> ConditionalPort:
+    """MSL's ``Support support if useSupport``."""
+    return ConditionalPort(flange_cls(description, required=True), option)
 
 
-class _OneSupport(Component):
-    """Shared by the MSL partials with one optional rotational ``support`` (``useSupport``)."""
-    options = {"useSupport": False}
-
-    def _conditional_ports(self):
-        if self.useSupport:
-            self.support = _support_port()
-
-    def __getattr__(self, name):
-        if name == "support":
-            raise AttributeError(f"{type(self).__name__} '{self.path or self.name}' has no "
-                                 f"'support' flange (useSupport=False: it is fixed to the "
-                                 f"ground); create it with useSupport=True")
-        raise AttributeError(name)
-
-    def _phi_support(self, e):
-        """Absolute angle of the support [rad] (0 when implicitly grounded)."""
-        return e.pos(self.support) if self.useSupport else 0.0
-
-    def _w_support(self, e):
-        """Absolute angular velocity of the support [rad/s]."""
-        return e.vel(self.support) if self.useSupport else 0.0
-
-    def _a_support(self, e):
-        """Absolute angular acceleration of the support [rad/s²]."""
-        return e.acc(self.support) if self.useSupport else 0.0
-
-    def _relative(self, s, coeffs: dict, rhs=0.0, name: str = "") -> None:
-        """Declare Σ a_i·(phi_i − phi_support) = rhs (support dropped when grounded)."""
-        coeffs = dict(coeffs)
-        if self.useSupport:
-            coeffs[self.support] = -sum(coeffs.values())
-        s.linear(coeffs, rhs, name)
+class PartialTwoFlanges(interfaces.PartialTwoFlanges):
+    """Component with two rotational 1-D shaft flanges ``flange_a``, ``flange_b``."""
+    axis = ROTATIONAL_AXIS
+    flange_a = Flange("flange of left shaft")
+    flange_b = Flange("flange of right shaft")
 
 
-class PartialElementaryOneFlangeAndSupport2(_OneSupport):
+class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlangeAndSupport2):
     """One ``flange`` and, with ``useSupport=True``, a ``support`` (housing) flange.
 
     The reaction of what acts on ``flange`` goes to the support: support.tau = −flange.tau.
     """
+    axis = ROTATIONAL_AXIS
     flange = Flange("flange of shaft")
-
-    def _drive(self, e, tau) -> None:
-        """Apply the accelerating torque ``tau`` [N.m] on flange (flange.tau = −tau) and
-        its reaction on the support."""
-        e.flow(self.flange, -tau)
-        if self.useSupport:
-            e.flow(self.support, tau)
+    support = _support()
 
 
-class PartialElementaryTwoFlangesAndSupport2(_OneSupport):
+class PartialElementaryTwoFlangesAndSupport2(interfaces.PartialElementaryTwoFlangesAndSupport2):
     """``flange_a``, ``flange_b`` and, with ``useSupport=True``, a ``support`` flange."""
+    axis = ROTATIONAL_AXIS
     flange_a = Flange("flange of left shaft")
     flange_b = Flange("flange of right shaft")
+    support = _support()
 
 
 class PartialElementaryRotationalToTranslational(Component):
@@ -121,13 +98,9 @@ class PartialElementaryRotationalToTranslational(Component):
     options = {"useSupportR": False, "useSupportT": False}
     flangeR = Flange("flange of rotational shaft")
     flangeT = TranslationalFlange("flange of translational rod")
-
-    def _conditional_ports(self):
-        if self.useSupportR:
-            self.supportR = _support_port("rotational support/housing of component")
-        if self.useSupportT:
-            self.supportT = TranslationalFlange("translational support/housing of component",
-                                                required=True)
+    supportR = _support("useSupportR", "rotational support/housing of component")
+    supportT = _support("useSupportT", "translational support/housing of component",
+                        TranslationalFlange)
 
     def _declare(self, s, aR, aT, name: str) -> None:
         """aR·(flangeR.phi − supportR.phi) + aT·(flangeT.s − supportT.s) = 0."""
@@ -137,6 +110,50 @@ class PartialElementaryRotationalToTranslational(Component):
         if self.useSupportT:
             coeffs[self.supportT] = -aT
         s.linear(coeffs, 0.0, name)
+
+
+class PartialCompliant(interfaces.PartialCompliant):
+    """Two flanges and a torque tau [N.m] = flange_b.tau = −flange_a.tau, a function of
+    phi_rel = flange_b.phi − flange_a.phi [rad] and w_rel = der(phi_rel) [rad/s].
+
+    Records phi_rel, w_rel, tau (and lossPower [W] when ``loss_power(phi_rel, w_rel, tau)``
+    gives one). Subclasses define ``torque(phi_rel, w_rel)``.
+    """
+    axis = ROTATIONAL_AXIS
+    flange_a = Flange("left flange of compliant 1-dim. rotational component")
+    flange_b = Flange("right flange of compliant 1-dim. rotational component")
+
+    def torque(self, phi_rel, w_rel):
+        """The torque tau [N.m] on flange_b for phi_rel [rad] and w_rel [rad/s]."""
+        raise NotImplementedError
+
+    def flange_b_flow(self, rel_pos, rel_speed):
+        return self.torque(rel_pos, rel_speed)
+
+
+class PartialCompliantWithRelativeStates(PartialCompliant):
+    """MSL's variant of PartialCompliant with phi_rel, w_rel as preferred states (here the
+    compiler chooses the coordinates); records also a_rel = der(w_rel) [rad/s²]."""
+    records_a_rel = True
+
+
+class PartialTorque(PartialElementaryOneFlangeAndSupport2):
+    """A torque source depending on time and on the flange's motion relative to the support.
+
+    Records phi = flange.phi − phi_support [rad], w = der(phi) [rad/s] and the accelerating
+    torque tau = −flange.tau [N.m]. Subclasses define ``torque(e, phi, w)``.
+    """
+
+    def torque(self, e, phi, w):
+        """The accelerating torque [N.m] (acting on flange, positive direction)."""
+        raise NotImplementedError
+
+    def physics(self, e):
+        tau = self.torque(e, self._rel_position(e, self.flange),
+                          self._rel_speed(e, self.flange))
+        self._apply_flange_flow(e, -tau)
+        self._record_relative(e, "s", "v")
+        e.variable("tau", tau, "N.m", "accelerating torque acting at flange (= -flange.tau)")
 
 
 # =========================================================================================
@@ -189,45 +206,12 @@ class Disc(Component):
                    "absolute rotation angle of component")
 
 
-class PartialCompliant(Component):
-    """Two flanges and a torque tau [N.m] = flange_b.tau = −flange_a.tau, a function of
-    phi_rel = flange_b.phi − flange_a.phi [rad] and w_rel = der(phi_rel) [rad/s].
-
-    Records phi_rel, w_rel, a_rel, tau (and lossPower [W] for elements with damping).
-    """
-    flange_a = Flange("left flange of compliant 1-dim. rotational component")
-    flange_b = Flange("right flange of compliant 1-dim. rotational component")
-    batch_physics = True
-
-    def torque(self, phi_rel, w_rel):
-        """The torque tau [N.m] on flange_b for phi_rel [rad] and w_rel [rad/s]."""
-        raise NotImplementedError
-
-    def loss_power(self, phi_rel, w_rel):
-        """Dissipated power [W] (None: no dissipation)."""
-        return None
-
-    def physics(self, e):
-        phi_rel = e.pos(self.flange_b) - e.pos(self.flange_a)
-        w_rel = e.vel(self.flange_b) - e.vel(self.flange_a)
-        tau = self.torque(phi_rel, w_rel)
-        e.flow(self.flange_b, tau)
-        e.flow(self.flange_a, -tau)
-        e.variable("phi_rel", phi_rel, "rad", "relative rotation angle (flange_b - flange_a)")
-        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity")
-        e.variable("tau", tau, "N.m", "torque between flanges (= flange_b.tau)")
-        loss = self.loss_power(phi_rel, w_rel)
-        if loss is not None:
-            e.variable("a_rel", e.acc(self.flange_b) - e.acc(self.flange_a), "rad/s2",
-                       "relative angular acceleration")
-            e.variable("lossPower", loss, "W", "loss power leaving the component as heat")
-
-
 class Spring(PartialCompliant):
     """Linear 1-D rotational spring: tau = c·(phi_rel − phi_rel0).
 
     Default c = 1e5 N.m/rad: MSL's start value (MSL declares no default).
     """
+    batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
     phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
 
@@ -235,20 +219,23 @@ class Spring(PartialCompliant):
         return self.c * (phi_rel - self.phi_rel0)
 
 
-class Damper(PartialCompliant):
-    """Linear 1-D rotational damper: tau = d·w_rel; lossPower = tau·w_rel."""
+class Damper(PartialCompliantWithRelativeStates):
+    """Linear 1-D rotational damper: tau = d·w_rel; lossPower = tau·w_rel.
+    d [N.m.s/rad] ≥ 0 (default 0 = MSL start value)."""
+    batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
 
     def torque(self, phi_rel, w_rel):
         return self.d * w_rel
 
-    def loss_power(self, phi_rel, w_rel):
-        return self.d * w_rel ** 2
+    def loss_power(self, phi_rel, w_rel, tau):
+        return tau * w_rel
 
 
-class SpringDamper(PartialCompliant):
+class SpringDamper(PartialCompliantWithRelativeStates):
     """Linear spring and damper in parallel: tau = c·(phi_rel − phi_rel0) + d·w_rel;
-    lossPower = d·w_rel². Default c = 1e5 N.m/rad (MSL's start value)."""
+    lossPower = d·w_rel². Defaults c = 1e5 N.m/rad, d = 0 N.m.s/rad (MSL's start values)."""
+    batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
     phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
@@ -256,7 +243,7 @@ class SpringDamper(PartialCompliant):
     def torque(self, phi_rel, w_rel):
         return self.c * (phi_rel - self.phi_rel0) + self.d * w_rel
 
-    def loss_power(self, phi_rel, w_rel):
+    def loss_power(self, phi_rel, w_rel, tau):
         return self.d * w_rel ** 2
 
 
@@ -270,14 +257,13 @@ class IdealGear(PartialElementaryTwoFlangesAndSupport2):
     ratio = Parameter(1.0, "1", "transmission ratio (flange_a.phi/flange_b.phi)", nonzero=True)
 
     def structure(self, s):
-        self._relative(s, {self.flange_a: 1.0, self.flange_b: -self.ratio}, 0.0,
-                       f"{self.path}: phi_a = ratio*phi_b")
+        self._relative_constraint(s, {self.flange_a: 1.0, self.flange_b: -self.ratio}, 0.0,
+                                  f"{self.path}: phi_a = ratio*phi_b")
 
     def physics(self, e):
-        phi_s = self._phi_support(e)
-        e.variable("phi_a", e.pos(self.flange_a) - phi_s, "rad",
+        e.variable("phi_a", self._rel_position(e, self.flange_a), "rad",
                    "angle between left shaft flange and support")
-        e.variable("phi_b", e.pos(self.flange_b) - phi_s, "rad",
+        e.variable("phi_b", self._rel_position(e, self.flange_b), "rad",
                    "angle between right shaft flange and support")
 
 
@@ -332,41 +318,16 @@ class Torque(PartialElementaryOneFlangeAndSupport2):
     tau = RealInput("accelerating torque acting at flange (= -flange.tau)")
 
     def physics(self, e):
-        self._drive(e, e.input(self.tau))
+        self._apply_flange_flow(e, -e.input(self.tau))
 
 
-class Torque2(Component):
+class Torque2(PartialTwoFlanges):
     """Input signal ``tau`` [N.m] acting on two flanges: flange_a.tau = tau,
     flange_b.tau = −tau."""
     tau = RealInput("torque driving the two flanges")
-    flange_a = Flange("flange a")
-    flange_b = Flange("flange b")
 
     def physics(self, e):
-        tau = e.input(self.tau)
-        e.flow(self.flange_a, tau)
-        e.flow(self.flange_b, -tau)
-
-
-class PartialTorque(PartialElementaryOneFlangeAndSupport2):
-    """A torque source depending on time and on the flange's motion relative to the support.
-
-    Records phi = flange.phi − phi_support [rad], w = der(phi) [rad/s] and the accelerating
-    torque tau = −flange.tau [N.m]. Subclasses define ``torque(e, phi, w)``.
-    """
-
-    def torque(self, e, phi, w):
-        """The accelerating torque [N.m] (acting on flange, positive direction)."""
-        raise NotImplementedError
-
-    def physics(self, e):
-        phi = e.pos(self.flange) - self._phi_support(e)
-        w = e.vel(self.flange) - self._w_support(e)
-        tau = self.torque(e, phi, w)
-        self._drive(e, tau)
-        e.variable("phi", phi, "rad", "angle of flange with respect to support")
-        e.variable("w", w, "rad/s", "angular velocity of flange with respect to support")
-        e.variable("tau", tau, "N.m", "accelerating torque acting at flange (= -flange.tau)")
+        self._apply_opposite_flows(e, -e.input(self.tau))
 
 
 class ConstantTorque(PartialTorque):
@@ -398,7 +359,7 @@ class QuadraticSpeedDependentTorque(_SpeedDependentTorque):
     tau_nominal·(w/w_nominal)·|w/w_nominal| (TorqueDirection=False)."""
 
     def law(self, x):
-        return x ** 2 if self.TorqueDirection else x * ca.fabs(x)
+        return quadratic_law(x, self.TorqueDirection)
 
 
 class LinearSpeedDependentTorque(_SpeedDependentTorque):
@@ -406,7 +367,7 @@ class LinearSpeedDependentTorque(_SpeedDependentTorque):
     (TorqueDirection=False)."""
 
     def law(self, x):
-        return ca.fabs(x) if self.TorqueDirection else x
+        return linear_law(x, self.TorqueDirection)
 
 
 class TorqueStep(PartialTorque):
@@ -421,26 +382,7 @@ class TorqueStep(PartialTorque):
         return self.offsetTorque + ca.if_else(e.time < self.startTime, 0.0, self.stepTorque)
 
 
-class _PrescribedMotion(PartialElementaryOneFlangeAndSupport2):
-    """flange.phi − phi_support = (a function of time, signals and internal states)."""
-
-    def _prescribe(self, s, rhs):
-        self._relative(s, {self.flange: 1.0}, rhs, f"{self.path}: prescribed angle")
-
-    def _record_relative(self, e, *which):
-        """Record phi, w, a of flange relative to support (those not already states)."""
-        if "phi" in which:
-            e.variable("phi", e.pos(self.flange) - self._phi_support(e), "rad",
-                       "rotation angle of flange with respect to support")
-        if "w" in which:
-            e.variable("w", e.vel(self.flange) - self._w_support(e), "rad/s",
-                       "angular velocity of flange with respect to support")
-        if "a" in which:
-            e.variable("a", e.acc(self.flange) - self._a_support(e), "rad/s2",
-                       "angular acceleration of flange with respect to support")
-
-
-class Position(_PrescribedMotion):
+class Position(PartialElementaryOneFlangeAndSupport2, interfaces.Position):
     """Forced movement of ``flange`` (relative to support) by the reference angle ``phi_ref``.
 
     exact=False (default, as MSL): phi_ref passes a critically damped 2nd-order Bessel filter
@@ -454,34 +396,10 @@ class Position(_PrescribedMotion):
     initial equation): when phi_ref(0) ≠ 0 give ``x0={"<name>.phi": phi_ref(0)}``. With
     exact=True, w and a are the actual relative speed and acceleration (MSL: dummies 0).
     """
-    options = {"exact": False}
-    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
-                                   "input signal", positive=True)
     phi_ref = RealInput("reference angle of flange with respect to support [rad]")
-    af = 1.3617   # s coefficient of Bessel filter
-    bf = 0.6180   # s*s coefficient of Bessel filter
-
-    def structure(self, s):
-        if self.exact:
-            self._prescribe(s, s.input(self.phi_ref))
-        else:
-            self._w = s.state("w", 0.0, "rad/s", "angular velocity of flange with respect to "
-                                                 "support (filter state)")
-            self._phi = s.state("phi", 0.0, "rad", "rotation angle of flange with respect to "
-                                                   "support (filter state)", der=self._w)
-            self._prescribe(s, self._phi)
-
-    def physics(self, e):
-        if self.exact:
-            self._record_relative(e, "phi", "w", "a")
-            return
-        w_crit = 2 * math.pi * self.f_crit
-        a = ((e.input(self.phi_ref) - self._phi) * w_crit - self.af * self._w) * (w_crit / self.bf)
-        e.derivative(self._w, a)
-        e.variable("a", a, "rad/s2", "angular acceleration of flange with respect to support")
 
 
-class Speed(_PrescribedMotion):
+class Speed(PartialElementaryOneFlangeAndSupport2, interfaces.Speed):
     """Forced movement of ``flange`` (relative to support) by the reference speed ``w_ref``.
 
     phi = ∫w is a state (start 0, as MSL's phi(start=0, fixed=true)).
@@ -492,48 +410,16 @@ class Speed(_PrescribedMotion):
     Difference from MSL: the filter starts at w = 0 (MSL: w = w_ref(0) by an initial
     equation): give ``x0={"<name>.w": w_ref(0)}`` when it differs.
     """
-    options = {"exact": False}
-    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
-                                   "input signal", positive=True)
     w_ref = RealInput("reference angular velocity of flange with respect to support [rad/s]")
 
-    def structure(self, s):
-        if self.exact:
-            w = s.input(self.w_ref)
-        else:
-            w = self._w = s.state("w", 0.0, "rad/s", "angular velocity of flange with respect "
-                                                     "to support (filter state)")
-        self._phi = s.state("phi", 0.0, "rad", "rotation angle of flange with respect to "
-                                               "support", der=w)
-        self._prescribe(s, self._phi)
 
-    def physics(self, e):
-        if self.exact:
-            self._record_relative(e, "w", "a")
-            return
-        a = (e.input(self.w_ref) - self._w) * (2 * math.pi * self.f_crit)
-        e.derivative(self._w, a)
-        e.variable("a", a, "rad/s2", "angular acceleration of flange with respect to support")
-
-
-class Accelerate(_PrescribedMotion):
+class Accelerate(PartialElementaryOneFlangeAndSupport2, interfaces.Accelerate):
     """Forced movement of ``flange`` (relative to support) by the acceleration ``a_ref``
     [rad/s²]; phi and w are states integrated from 0 (MSL: start=0, fixed=true)."""
     a_ref = RealInput("absolute angular acceleration of flange with respect to support")
 
-    def structure(self, s):
-        self._w = s.state("w", 0.0, "rad/s", "angular velocity of flange with respect to "
-                                             "support", der=s.input(self.a_ref))
-        self._phi = s.state("phi", 0.0, "rad", "rotation angle of flange with respect to "
-                                               "support", der=self._w)
-        self._prescribe(s, self._phi)
 
-    def physics(self, e):
-        e.variable("a", e.input(self.a_ref), "rad/s2",
-                   "angular acceleration of flange with respect to support")
-
-
-class Move(_PrescribedMotion):
+class Move(PartialElementaryOneFlangeAndSupport2, interfaces.Move):
     """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
     (angle [rad]), ``u[2]`` (angular velocity [rad/s]), ``u[3]`` (angular acceleration
     [rad/s²]), numbered from 1 as in MSL: ``connect(src.y, move.u[1])``.
@@ -546,38 +432,20 @@ class Move(_PrescribedMotion):
     reproduced. u[2], u[3] must be connected; they are recorded as ``w_u``, ``a_u`` next to
     the actual ``w``, ``a`` so that the two can be compared.
     """
-
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        for i, what in enumerate(("angle", "angular velocity", "angular acceleration"), 1):
-            setattr(self, f"u[{i}]", RealInput(f"{what} of flange with respect to support "
-                                               f"as input signal"))
-        self.__dict__["u"] = PortVector("Move", "u", [getattr(self, f"u[{i}]") for i in (1, 2, 3)])
-
-    def structure(self, s):
-        self._prescribe(s, s.input(self.u[1]))
-
-    def physics(self, e):
-        self._record_relative(e, "phi", "w", "a")
-        e.variable("w_u", e.input(self.u[2]), "rad/s", "angular velocity input u[2]")
-        e.variable("a_u", e.input(self.u[3]), "rad/s2", "angular acceleration input u[3]")
+    u = VectorPort(RealInput, 3, tuple(f"{what} of flange with respect to support as input "
+                                       f"signal" for what in
+                                       ("angle", "angular velocity", "angular acceleration")))
 
 
-class ConstantSpeed(_PrescribedMotion):
+class ConstantSpeed(PartialElementaryOneFlangeAndSupport2, interfaces.ConstantSpeed):
     """Constant speed w = w_fixed [rad/s] of flange relative to support, not dependent on
-    torque; phi is a state (start 0). Records also tau = −flange.tau [N.m], the torque the
-    source delivers (not an MSL variable). Required: w_fixed (MSL gives no default)."""
+    torque; phi is a state (start 0). Records w and also tau = −flange.tau [N.m], the torque
+    the source delivers (not an MSL variable). Required: w_fixed (MSL gives no default)."""
     w_fixed = Parameter(0.0, "rad/s", "fixed speed")
     required = ("w_fixed",)
 
-    def structure(self, s):
-        self._phi = s.state("phi", 0.0, "rad", "angle of flange with respect to support",
-                            der=self.w_fixed)
-        self._prescribe(s, self._phi)
-
     def physics(self, e):
-        e.variable("w", self.w_fixed, "rad/s",
-                   "angular velocity of flange with respect to support")
+        super().physics(e)
         e.variable("tau", -e.cut_flow(self.flange), "N.m",
                    "torque the source applies to the flange (= -flange.tau)")
 
@@ -719,12 +587,11 @@ class DCMotor(PartialElementaryOneFlangeAndSupport2):
         self._i = s.state("i", 0.0, "A", "armature current")
 
     def physics(self, e):
-        w = e.vel(self._rotor)
-        w_rel = w - self._w_support(e)
+        w_rel = self._rel_speed(e, self._rotor)
         v = e.input(self.v)
         tau_el = self.k * self._i
-        e.kinetic_energy(0.5 * self.J * w ** 2)
-        self._drive(e, tau_el)
+        e.kinetic_energy(0.5 * self.J * e.vel(self._rotor) ** 2)
+        self._apply_flange_flow(e, -tau_el)
         e.derivative(self._i, (v - self.R * self._i - self.k * w_rel) / self.L)
         e.variable("tau_el", tau_el, "N.m", "electrical (air gap) torque")
         e.variable("vi", self.k * w_rel, "V", "induced (back-emf) voltage")

@@ -31,7 +31,7 @@ import math
 import casadi as ca
 import numpy as np
 
-from ..core import Component, Parameter, PortVector, RealInput, RealOutput
+from ..core import Component, Parameter, RealInput, RealOutput, VectorPort
 from ..errors import ParameterError
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
@@ -395,7 +395,8 @@ class Sum(SO):
                 p = Parameter(1.0, "", f"gain of input u[{i}]")
                 p.__set_name__(None, f"k[{i}]")
                 attrs[f"k[{i}]"] = p
-                attrs[f"u[{i}]"] = RealInput(f"connector of Real input signal {i}")
+            attrs["u"] = VectorPort(RealInput, nin, tuple(
+                f"connector of Real input signal {i}" for i in range(1, nin + 1)))
             Sum._classes[nin] = type("Sum", (Sum,), attrs)
         return Sum._classes[nin]
 
@@ -411,8 +412,6 @@ class Sum(SO):
                 raise ParameterError(f"Sum: k has {ks.size} elements but nin = {n}")
             for i, v in enumerate(ks, start=1):
                 setattr(self, f"k[{i}]", v)
-        self.__dict__["u"] = PortVector("Sum", "u", [getattr(self, f"u[{i}]")
-                                                  for i in range(1, n + 1)])
 
     @property
     def nin(self) -> int:

@@ -1,4 +1,4 @@
-"""1-D translational mechanics, after Modelica.Mechanics.Translational (MSL 4.0).
+"""1-D translational mechanics, after Modelica.Mechanics.Translational (MSL 4.1).
 
 Names, parameters, defaults and sign conventions are MSL's, so a model written against MSL
 translates line by line: ``Mass(m=1, L=0.5)``, ``Force(useSupport=True)``,
@@ -20,6 +20,9 @@ keyword arguments fixed at construction (they change the ports or the equations)
 s = 0; with ``True`` it gets a ``support`` flange (the housing) that must be connected and
 receives the reaction force (support.f = −flange.f).
 
+The equations shared with the rotational library are written once in ``interfaces``; the
+classes here declare MSL's connectors and names on top of them.
+
 Not here (non-smooth, later): ElastoGap, friction (SupportFriction, Brake,
 MassWithStopAndFriction), SignForce, InverseSpeedDependentForce, EddyCurrentForce; nor the
 adaptors, InitializeFlange, RelativeStates, Vehicle. Differences from MSL are listed in each
@@ -27,21 +30,21 @@ docstring.
 """
 from __future__ import annotations
 
-import math
-
 import casadi as ca
 
-from ..core import Component, Parameter, PortVector, RealInput, RealOutput, \
-    TranslationalFlange
+from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
+                    TranslationalFlange, VectorPort)
 from ..core.ports import TRANSLATIONAL
+from . import interfaces
+from .interfaces import TRANSLATIONAL_AXIS, linear_law, quadratic_law
 
 Flange = TranslationalFlange
 
 __all__ = [
     # interfaces
-    "PartialRigid", "PartialCompliant", "PartialCompliantWithRelativeStates",
-    "PartialElementaryOneFlangeAndSupport2", "PartialForce", "PartialAbsoluteSensor",
-    "PartialRelativeSensor",
+    "PartialTwoFlanges", "PartialRigid", "PartialCompliant",
+    "PartialCompliantWithRelativeStates", "PartialElementaryOneFlangeAndSupport2",
+    "PartialForce", "PartialAbsoluteSensor", "PartialRelativeSensor",
     # components
     "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper",
     # sources
@@ -57,19 +60,19 @@ __all__ = [
 # =========================================================================================
 # Interfaces
 # =========================================================================================
-def _who(c: Component) -> str:
-    """'Force 'drive.force'' (or just the class name for a component not in a model)."""
-    where = c.path or c.name
-    return f"{type(c).__name__} '{where}'" if where else type(c).__name__
+class PartialTwoFlanges(interfaces.PartialTwoFlanges):
+    """Component with two translational 1-D flanges ``flange_a``, ``flange_b``."""
+    axis = TRANSLATIONAL_AXIS
+    flange_a = Flange("(left) driving flange (flange axis directed into cut plane, e. g. from "
+                      "left to right)")
+    flange_b = Flange("(right) driven flange (flange axis directed out of cut plane)")
 
 
-class PartialRigid(Component):
+class PartialRigid(PartialTwoFlanges):
     """Two rigidly connected flanges at distance ``L`` [m]; ``s`` [m] is the centre:
     flange_a.s = s − L/2, flange_b.s = s + L/2 (the forces at the flanges may differ)."""
     L = Parameter(0.0, "m", "length of component, from left flange to right flange "
                             "(= flange_b.s - flange_a.s)")
-    flange_a = Flange("left flange of translational component")
-    flange_b = Flange("right flange of translational component")
 
     def _centre(self, s):
         """The internal node ``s`` (the centre). Default: not a preferred coordinate."""
@@ -81,36 +84,20 @@ class PartialRigid(Component):
         s.linear({self.flange_b: 1.0, self._s: -1.0}, self.L / 2, f"{self.path}: flange_b")
 
 
-class PartialCompliant(Component):
+class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
     """Two flanges and a force f [N] = flange_b.f = −flange_a.f depending on s_rel and v_rel.
 
     Records s_rel = flange_b.s − flange_a.s [m], v_rel = der(s_rel) [m/s], f [N] and, when
-    ``loss_power`` gives one, lossPower [W]. Subclasses define ``force(s_rel, v_rel)``.
+    ``loss_power(s_rel, v_rel, f)`` gives one, lossPower [W]. Subclasses define
+    ``force(s_rel, v_rel)``.
     """
-    flange_a = Flange("left flange of compliant 1-dim. translational component")
-    flange_b = Flange("right flange of compliant 1-dim. translational component")
 
     def force(self, s_rel, v_rel):
         """The force f [N] on flange_b for relative position s_rel [m] and speed v_rel [m/s]."""
         raise NotImplementedError
 
-    def loss_power(self, s_rel, v_rel, f):
-        """Dissipated power [W] (MSL's lossPower), or None for a lossless element."""
-        return None
-
-    def physics(self, e):
-        s_rel = e.pos(self.flange_b) - e.pos(self.flange_a)
-        v_rel = e.vel(self.flange_b) - e.vel(self.flange_a)
-        f = self.force(s_rel, v_rel)
-        e.flow(self.flange_b, f)
-        e.flow(self.flange_a, -f)
-        e.variable("s_rel", s_rel, "m", "relative distance (= flange_b.s - flange_a.s)")
-        e.variable("v_rel", v_rel, "m/s", "relative velocity (= der(s_rel))")
-        e.variable("f", f, "N", "force between flanges (positive in direction of flange axis "
-                                "R)")
-        loss = self.loss_power(s_rel, v_rel, f)
-        if loss is not None:
-            e.variable("lossPower", loss, "W", "loss power leaving component via heatPort")
+    def flange_b_flow(self, rel_pos, rel_speed):
+        return self.force(rel_pos, rel_speed)
 
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
@@ -118,57 +105,16 @@ class PartialCompliantWithRelativeStates(PartialCompliant):
     as PartialCompliant: the compiler chooses the coordinates."""
 
 
-class PartialElementaryOneFlangeAndSupport2(Component):
+class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlangeAndSupport2):
     """One ``flange`` and, with ``useSupport=True``, a ``support`` (housing) flange.
 
-    Records s = flange.s − support.s [m] (support.s = 0 without support). What acts on the
-    flange reacts on the support: support.f = −flange.f.
+    What acts on the flange reacts on the support: support.f = −flange.f; s = flange.s −
+    support.s [m] (support.s = 0 without support).
     """
-    options = {"useSupport": False}
+    axis = TRANSLATIONAL_AXIS
     flange = Flange("flange of component")
-
-    def _conditional_ports(self):
-        if self.useSupport:
-            self.support = Flange("support/housing of component", required=True)
-
-    def __getattr__(self, name):
-        if name == "support":
-            raise AttributeError(f"{_who(self)} has no "
-                                 f"'support' flange (useSupport=False: it is fixed to the "
-                                 f"ground); create it with "
-                                 f"{type(self).__name__}(useSupport=True)")
-        raise AttributeError(name)
-
-    # relative motion of the flange with respect to the support
-    def _s(self, e):
-        """flange.s − support.s [m]."""
-        return e.pos(self.flange) - (e.pos(self.support) if self.useSupport else 0.0)
-
-    def _v(self, e):
-        """der(flange.s − support.s) [m/s]."""
-        return e.vel(self.flange) - (e.vel(self.support) if self.useSupport else 0.0)
-
-    def _a(self, e):
-        """der(der(flange.s − support.s)) [m/s²]."""
-        return e.acc(self.flange) - (e.acc(self.support) if self.useSupport else 0.0)
-
-    def _drive(self, e, flange_f) -> None:
-        """Set flange.f = flange_f [N] and its reaction support.f = −flange_f."""
-        e.flow(self.flange, flange_f)
-        if self.useSupport:
-            e.flow(self.support, -flange_f)
-
-    def _prescribe(self, s, rhs) -> None:
-        """Declare flange.s − support.s = rhs (prescribed motion; the reaction goes to the
-        flange and, opposite, to the support)."""
-        coeffs = {self.flange: 1.0}
-        if self.useSupport:
-            coeffs[self.support] = -1.0
-        s.linear(coeffs, rhs, f"{self.path}: prescribed position")
-
-    def _record_s(self, e):
-        e.variable("s", self._s(e), "m", "distance between flange and support "
-                                         "(= flange.s - support.s)")
+    support = ConditionalPort(Flange("support/housing of component", required=True),
+                              "useSupport")
 
 
 class PartialForce(PartialElementaryOneFlangeAndSupport2):
@@ -183,14 +129,9 @@ class PartialForce(PartialElementaryOneFlangeAndSupport2):
 
     def physics(self, e):
         f = self.flange_force(e)
-        self._drive(e, f)
-        self._record_s(e)
+        self._apply_flange_flow(e, f)
+        self._record_relative(e, "s")
         e.variable("f", f, "N", "accelerating force acting at flange (= flange.f)")
-
-    def _speed(self, e):
-        v = self._v(e)
-        e.variable("v", v, "m/s", "velocity of flange with respect to support (= der(s))")
-        return v
 
 
 # =========================================================================================
@@ -276,11 +217,11 @@ class Force(PartialElementaryOneFlangeAndSupport2):
     flange = Flange("flange of component", required=True)
 
     def physics(self, e):
-        self._drive(e, -e.input(self.f))
-        self._record_s(e)
+        self._apply_flange_flow(e, -e.input(self.f))
+        self._record_relative(e, "s")
 
 
-class Force2(Component):
+class Force2(PartialTwoFlanges):
     """Input signal ``f`` [N] acting on two flanges: flange_a.f = f, flange_b.f = −f
     (a positive f pushes the two connected bodies apart)."""
     f = RealInput("driving force as input signal [N]")
@@ -288,9 +229,7 @@ class Force2(Component):
     flange_b = Flange("right flange of component", required=True)
 
     def physics(self, e):
-        f = e.input(self.f)
-        e.flow(self.flange_a, f)
-        e.flow(self.flange_b, -f)
+        self._apply_opposite_flows(e, -e.input(self.f))
 
 
 class ConstantForce(PartialForce):
@@ -320,8 +259,8 @@ class ForceStep(PartialForce):
 
 
 class _SpeedDependentForce(PartialForce):
-    """f = −f_nominal·law(v/v_nominal), v = der(s) [m/s]; ``ForceDirection`` picks the law.
-    Required: f_nominal [N], v_nominal [m/s] > 0 (MSL gives no defaults)."""
+    """f = −f_nominal·law(v/v_nominal), v = der(s) [m/s] (recorded); ``ForceDirection`` picks
+    the law. Required: f_nominal [N], v_nominal [m/s] > 0 (MSL gives no defaults)."""
     options = {"ForceDirection": True}
     f_nominal = Parameter(0.0, "N", "nominal force (if negative, force is acting as load in "
                                     "positive direction of motion)")
@@ -329,7 +268,8 @@ class _SpeedDependentForce(PartialForce):
     required = ("f_nominal", "v_nominal")
 
     def flange_force(self, e):
-        return -self.f_nominal * self.law(self._speed(e) / self.v_nominal)
+        self._record_relative(e, "v")
+        return -self.f_nominal * self.law(self._rel_speed(e, self.flange) / self.v_nominal)
 
 
 class LinearSpeedDependentForce(_SpeedDependentForce):
@@ -337,7 +277,7 @@ class LinearSpeedDependentForce(_SpeedDependentForce):
     −f_nominal·v/v_nominal (ForceDirection=False)."""
 
     def law(self, x):
-        return ca.fabs(x) if self.ForceDirection else x
+        return linear_law(x, self.ForceDirection)
 
 
 class QuadraticSpeedDependentForce(_SpeedDependentForce):
@@ -345,10 +285,10 @@ class QuadraticSpeedDependentForce(_SpeedDependentForce):
     −f_nominal·(v/v_nominal)·|v/v_nominal| (ForceDirection=False)."""
 
     def law(self, x):
-        return x ** 2 if self.ForceDirection else x * ca.fabs(x)
+        return quadratic_law(x, self.ForceDirection)
 
 
-class Position(PartialElementaryOneFlangeAndSupport2):
+class Position(PartialElementaryOneFlangeAndSupport2, interfaces.Position):
     """Forced movement of ``flange`` (relative to the support) by the reference position
     ``s_ref`` [m].
 
@@ -362,36 +302,10 @@ class Position(PartialElementaryOneFlangeAndSupport2):
     equation): when s_ref(0) ≠ 0 give ``x0={"<name>.s": s_ref(0)}``. With exact=True, v and a
     are the actual relative speed and acceleration (MSL: dummies 0).
     """
-    options = {"exact": False}
-    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
-                                   "input signal", positive=True)
     s_ref = RealInput("reference position of flange as input signal [m]")
-    af = 1.3617   # s coefficient of Bessel filter
-    bf = 0.6180   # s*s coefficient of Bessel filter
-
-    def structure(self, s):
-        if self.exact:
-            self._prescribe(s, s.input(self.s_ref))
-        else:
-            self._xv = s.state("v", 0.0, "m/s", "absolute velocity of flange (filter state)")
-            self._xs = s.state("s", 0.0, "m", "distance between flange and support (filter "
-                                              "state)", der=self._xv)
-            self._prescribe(s, self._xs)
-
-    def physics(self, e):
-        if self.exact:
-            self._record_s(e)
-            e.variable("v", self._v(e), "m/s", "velocity of flange with respect to support")
-            e.variable("a", self._a(e), "m/s2", "acceleration of flange with respect to "
-                                                "support")
-            return
-        w_crit = 2 * math.pi * self.f_crit
-        a = ((e.input(self.s_ref) - self._xs) * w_crit - self.af * self._xv) * (w_crit / self.bf)
-        e.derivative(self._xv, a)
-        e.variable("a", a, "m/s2", "absolute acceleration of flange")
 
 
-class Speed(PartialElementaryOneFlangeAndSupport2):
+class Speed(PartialElementaryOneFlangeAndSupport2, interfaces.Speed):
     """Forced movement of ``flange`` (relative to the support) by the reference speed
     ``v_ref`` [m/s]. s = ∫v is a state (start 0, as MSL's s(start=0, fixed=true)).
 
@@ -403,47 +317,17 @@ class Speed(PartialElementaryOneFlangeAndSupport2):
     equation): give ``x0={"<name>.v": v_ref(0)}`` when it differs. With exact=True, a is the
     actual acceleration (MSL: dummy 0).
     """
-    options = {"exact": False}
-    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
-                                   "input signal", positive=True)
     v_ref = RealInput("reference speed of flange as input signal [m/s]")
 
-    def structure(self, s):
-        if self.exact:
-            v = s.input(self.v_ref)
-        else:
-            v = self._xv = s.state("v", 0.0, "m/s", "absolute velocity of flange (filter "
-                                                    "state)")
-        self._xs = s.state("s", 0.0, "m", "distance between flange and support", der=v)
-        self._prescribe(s, self._xs)
 
-    def physics(self, e):
-        if self.exact:
-            e.variable("v", e.input(self.v_ref), "m/s", "absolute velocity of flange")
-            e.variable("a", self._a(e), "m/s2", "absolute acceleration of flange")
-            return
-        a = (e.input(self.v_ref) - self._xv) * (2 * math.pi * self.f_crit)
-        e.derivative(self._xv, a)
-        e.variable("a", a, "m/s2", "absolute acceleration of flange")
-
-
-class Accelerate(PartialElementaryOneFlangeAndSupport2):
+class Accelerate(PartialElementaryOneFlangeAndSupport2, interfaces.Accelerate):
     """Forced movement of ``flange`` (relative to the support) by the acceleration signal
     ``a_ref`` [m/s²]; s [m] and v [m/s] are states integrated from 0 (MSL: start=0,
     fixed=true)."""
     a_ref = RealInput("absolute acceleration of flange as input signal [m/s2]")
 
-    def structure(self, s):
-        self._xv = s.state("v", 0.0, "m/s", "absolute velocity of flange",
-                           der=s.input(self.a_ref))
-        self._xs = s.state("s", 0.0, "m", "distance between flange and support", der=self._xv)
-        self._prescribe(s, self._xs)
 
-    def physics(self, e):
-        e.variable("a", e.input(self.a_ref), "m/s2", "absolute acceleration of flange")
-
-
-class Move(PartialElementaryOneFlangeAndSupport2):
+class Move(PartialElementaryOneFlangeAndSupport2, interfaces.Move):
     """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
     (position [m]), ``u[2]`` (velocity [m/s]), ``u[3]`` (acceleration [m/s²]), numbered from 1
     as in MSL: ``connect(src.y, move.u[1])``.
@@ -456,40 +340,20 @@ class Move(PartialElementaryOneFlangeAndSupport2):
     forces only) is not reproduced. u[2], u[3] must be connected; they are recorded as
     ``v_u``, ``a_u`` next to the actual ``v``, ``a`` so the two can be compared.
     """
-
-    def _conditional_ports(self):
-        super()._conditional_ports()
-        for i, what in enumerate(("position", "velocity", "acceleration"), start=1):
-            setattr(self, f"u[{i}]", RealInput(f"{what} of flange as input signal"))
-        self.__dict__["u"] = PortVector("Move", "u", [getattr(self, f"u[{i}]")
-                                                   for i in (1, 2, 3)])
-
-    def structure(self, s):
-        self._prescribe(s, s.input(self.u[1]))
-
-    def physics(self, e):
-        self._record_s(e)
-        e.variable("v", self._v(e), "m/s", "velocity of flange with respect to support")
-        e.variable("a", self._a(e), "m/s2", "acceleration of flange with respect to support")
-        e.variable("v_u", e.input(self.u[2]), "m/s", "velocity input u[2]")
-        e.variable("a_u", e.input(self.u[3]), "m/s2", "acceleration input u[3]")
+    u = VectorPort(RealInput, 3, tuple(f"{what} of flange as input signal" for what in
+                                       ("position", "velocity", "acceleration")))
 
 
-class ConstantSpeed(PartialForce):
+class ConstantSpeed(PartialElementaryOneFlangeAndSupport2, interfaces.ConstantSpeed):
     """Constant speed v = v_fixed [m/s] of flange relative to support, not dependent on
-    force; s [m] is a state (start 0). Records f = flange.f [N] (the reaction).
-    Required: v_fixed (MSL gives no default)."""
+    force; s [m] is a state (start 0). Records v and f = flange.f [N] (the reaction, as
+    MSL's PartialForce). Required: v_fixed (MSL gives no default)."""
     v_fixed = Parameter(0.0, "m/s", "fixed speed (if negative, force is acting as load)")
     required = ("v_fixed",)
-
-    def structure(self, s):
-        self._xs = s.state("s", 0.0, "m", "distance between flange and support",
-                           der=self.v_fixed)
-        self._prescribe(s, self._xs)
+    flange = Flange("flange of component", required=True)
 
     def physics(self, e):
-        e.variable("v", self.v_fixed, "m/s", "velocity of flange with respect to support "
-                                             "(= der(s))")
+        super().physics(e)
         e.variable("f", e.cut_flow(self.flange), "N", "accelerating force acting at flange "
                                                       "(= flange.f)")
 

@@ -3,14 +3,15 @@
 Nothing here knows the component library or the compiler; its errors are those of
 ``acausal.errors``.
 """
-from .component import Component, Model, connect
+from .component import Component, ConditionalPort, Model, connect
 from .interface import Input, Output
 from .parameter import Parameter
 from .ports import (PLANAR, ROTATIONAL, TRANSLATIONAL, Domain, Frame, PhysicalPort, Port,
-                    PortVector, RealInput, RealOutput, RotationalFlange, TranslationalFlange)
+                    PortVector, RealInput, RealOutput, RotationalFlange, TranslationalFlange,
+                    VectorPort)
 
 __all__ = [
-    "Component", "Model", "connect", "Input", "Output", "Parameter",
-    "Port", "PhysicalPort", "PortVector", "Domain", "TranslationalFlange", "RotationalFlange", "Frame",
-    "RealInput", "RealOutput", "TRANSLATIONAL", "ROTATIONAL", "PLANAR",
+    "Component", "ConditionalPort", "Model", "connect", "Input", "Output", "Parameter",
+    "Port", "PhysicalPort", "PortVector", "VectorPort", "Domain", "TranslationalFlange",
+    "RotationalFlange", "Frame", "RealInput", "RealOutput", "TRANSLATIONAL", "ROTATIONAL", "PLANAR",
 ]

@@ -12,28 +12,81 @@ compiler in two phases, both optional:
     (forces, torques) on its ports, state derivatives, residual equations, outputs and
     recorded variables (``e`` is the compiler's PhysicsBuilder).
 
+Ports are declared as class attributes; a port that exists only for some structural options
+(MSL's ``Support support if useSupport``) is declared once with ``ConditionalPort``, a vector
+connector (``RealInput u[3]``) with ``VectorPort``.
+
 A Model is a component made of components: assigning a component or port to an attribute of
 a model names it; ``connect(a, b)`` joins two ports acausally.
 """
 from __future__ import annotations
 
 import copy
+from enum import Enum
 
-from ..errors import ParameterError, PortConnectionError
+from ..errors import DisabledPortError, ParameterError, PortConnectionError
 from .parameter import Parameter
-from .ports import PhysicalPort, Port, RealOutput
+from .ports import PhysicalPort, Port, PortVector, RealOutput, VectorPort
+
+
+def who(c: "Component") -> str:
+    """``Force 'drive.force'``: a component's type and path (only the type outside a model)."""
+    where = c.path or c.name
+    return f"{type(c).__name__} '{where}'" if where else type(c).__name__
+
+
+def _shown(value) -> str:
+    """An option value as written in a call: True, 'frame_resolve'."""
+    return repr(value.value if isinstance(value, Enum) else value)
+
+
+class ConditionalPort:
+    """A port that exists only when the structural option ``option`` equals ``value``
+    (MSL's ``Flange_b support if useSupport``), declared as a class attribute::
+
+        support = ConditionalPort(Flange("support/housing of component", required=True),
+                                  "useSupport")
+        frame_resolve = ConditionalPort(Frame("..."), "resolveInFrame", "frame_resolve")
+
+    A component built with another value has no such port: it is not in ``ports`` and
+    reading it raises a DisabledPortError that says how to enable it.
+    """
+
+    def __init__(self, port: Port, option: str, value=True):
+        self.port, self.option, self.value = port, option, value
+        self.name = ""
+
+    def __set_name__(self, owner, name):
+        self.name = name
+
+    def exists(self, component: "Component") -> bool:
+        if self.option not in component.all_options():
+            raise TypeError(f"{type(component).__name__}.{self.name} depends on option "
+                            f"'{self.option}', which the class does not declare")
+        return getattr(component, self.option) == self.value
+
+    def __get__(self, instance, owner=None):
+        if instance is None:
+            return self
+        kind = type(instance).__name__
+        raise DisabledPortError(
+            f"{who(instance)} has no port '{self.name}' ({self.port.description}): it was "
+            f"built with {self.option}={_shown(getattr(instance, self.option))}; create it "
+            f"with {kind}({self.option}={_shown(self.value)}) to have it")
 
 
 class Component:
     """Base of every component.
 
     Keyword arguments set parameters by name, and structural options: ``options`` (a class
-    attribute, name -> default) are MSL's ``parameter Boolean`` settings such as
-    ``useSupport``; they are plain booleans ``self.<name>``, fixed once the component is built,
-    and may add ports (``_conditional_ports``). ``required`` names parameters that have no
-    default (MSL declares them without a value): they must be given.
+    attribute, name -> default) are MSL's structural parameters, a Boolean such as
+    ``useSupport`` or an enumeration such as ``resolveInFrame`` (the default is then a member
+    of the Enum, and a value is given as a member or its name). They read as
+    ``self.<name>``, are fixed once the component is built, and decide which
+    ``ConditionalPort`` exist. ``required`` names parameters that have no default (MSL
+    declares them without a value): they must be given.
     """
-    options: dict[str, bool] = {}
+    options: dict[str, bool | Enum] = {}
     required: tuple[str, ...] = ()
 
     def __init__(self, name: str | None = None, **params):
@@ -44,13 +97,8 @@ class Component:
         d["_children"] = {}
         d["_ports"] = {}
         kind = type(self).__name__
-        opts = {}
-        for key, default in self.all_options().items():
-            value = params.pop(key, default)
-            if not isinstance(value, bool):
-                raise ParameterError(f"{kind}: option '{key}' must be True or False, got "
-                                     f"{value!r}")
-            opts[key] = value
+        opts = {key: _option(kind, key, default, params.pop(key, default))
+                for key, default in self.all_options().items()}
         declared = self.parameters()
         for pname, par in declared.items():
             d["_values"][pname] = par.default
@@ -66,34 +114,46 @@ class Component:
             given = ", ".join(f"{p}=..." for p in missing)
             raise ParameterError(f"{kind}: parameter(s) {', '.join(repr(p) for p in missing)} "
                                  f"have no default (as in MSL); give them: {kind}({given})")
-        for cls in reversed(type(self).__mro__):
-            for pname, template in vars(cls).items():
-                if isinstance(template, Port):
-                    setattr(self, pname, copy.copy(template))
         d.update(opts)
-        self._conditional_ports()
+        ports = self._declared((Port, ConditionalPort, VectorPort))
+        for pname, template in ports.items():          # plain ports first, as declared
+            if isinstance(template, Port):
+                setattr(self, pname, copy.copy(template))
+        for pname, template in ports.items():
+            if isinstance(template, ConditionalPort) and template.exists(self):
+                setattr(self, pname, copy.copy(template.port))
+        for pname, template in ports.items():
+            if isinstance(template, VectorPort):
+                items = []
+                for i, text in enumerate(template.descriptions, start=1):
+                    setattr(self, f"{pname}[{i}]", template.port_cls(text))
+                    items.append(self._ports[f"{pname}[{i}]"])
+                d[pname] = PortVector(kind, pname, items)
 
     @classmethod
-    def all_options(cls) -> dict[str, bool]:
+    def all_options(cls) -> dict[str, bool | Enum]:
         """The structural options of this class and its bases, with their defaults."""
-        out: dict[str, bool] = {}
+        out: dict[str, bool | Enum] = {}
         for klass in reversed(cls.__mro__):
             out.update(vars(klass).get("options", {}))
         return out
 
-    def _conditional_ports(self) -> None:
-        """Create the ports that exist only for some options (default: none)."""
+    @classmethod
+    def _declared(cls, types) -> dict:
+        """Class attributes that are instances of ``types``, by name, in declaration order
+        (base classes first; a subclass's declaration replaces its base's)."""
+        out = {}
+        for klass in reversed(cls.__mro__):
+            for n, v in vars(klass).items():
+                if isinstance(v, types):
+                    out[n] = v
+        return out
 
     # ---- naming ------------------------------------------------------------------------
     @classmethod
     def parameters(cls) -> dict[str, Parameter]:
         """The declared parameters, by name, in declaration order (base classes first)."""
-        out = {}
-        for klass in reversed(cls.__mro__):
-            for n, v in vars(klass).items():
-                if isinstance(v, Parameter):
-                    out[n] = v
-        return out
+        return cls._declared(Parameter)
 
     @property
     def name(self) -> str:
@@ -121,9 +181,9 @@ class Component:
 
     def __setattr__(self, key, value):
         if key in self.all_options():
-            raise ParameterError(f"{type(self).__name__} '{self.path or self.name}': option "
-                                 f"'{key}' is structural and fixed when the component is "
-                                 f"created: {type(self).__name__}({key}={value!r})")
+            raise ParameterError(f"{who(self)}: option '{key}' is structural and fixed when "
+                                 f"the component is created: "
+                                 f"{type(self).__name__}({key}={_shown(value)})")
         if isinstance(value, Port) and not key.startswith("_"):
             value.owner, value.name = self, key
             self._ports[key] = value
@@ -146,6 +206,20 @@ class Component:
 
     def physics(self, e) -> None:
         """Contribute energies, flows, state derivatives, outputs. Default: none."""
+
+
+def _option(kind: str, key: str, default, value):
+    """An option's value, checked against the type of its default (bool or an Enum)."""
+    if isinstance(default, Enum):
+        try:
+            return type(default)(value)
+        except ValueError:
+            allowed = ", ".join(m.value for m in type(default))
+            raise ParameterError(f"{kind}: {key}={_shown(value)} is not one of "
+                                 f"{type(default).__name__} ({allowed})") from None
+    if not isinstance(value, bool):
+        raise ParameterError(f"{kind}: option '{key}' must be True or False, got {value!r}")
+    return value
 
 
 class Model(Component):

@@ -1,6 +1,7 @@
 """Parameter: a named, documented constant of a component, a CasADi symbol once compiled."""
 from __future__ import annotations
 
+import math
 from contextlib import contextmanager
 from contextvars import ContextVar
 
@@ -81,27 +82,32 @@ class Parameter:
             if items is None or len(items) != self.size:
                 raise ParameterError(f"parameter '{_label(where)}.{self.name}' takes "
                                      f"{self.size} values, got {value!r}")
-            return tuple(self.check_scalar(v, where) for v in items)
+            return tuple(self.check_scalar(v, where, i) for i, v in enumerate(items, 1))
         if self.size is not None:
             raise ParameterError(f"parameter '{_label(where)}.{self.name}' takes {self.size} "
                                  f"values, got {value!r}")
         return self.check_scalar(value, where)
 
-    def check_scalar(self, value, where) -> float:
+    def check_scalar(self, value, where, element: int | None = None) -> float:
+        """One value as float, or a ParameterError naming ``where.name`` (``where.name[i]``
+        for ``element`` i of a vector): the one rule for a parameter's value, wherever it is
+        set (construction, compile, simulate, FMUs)."""
+        name = f"{_label(where)}.{self.name}" + (f"[{element}]" if element else "")
         try:
             v = float(value)
         except (TypeError, ValueError):
-            raise ParameterError(f"parameter '{_label(where)}.{self.name}' must be a number, "
-                                 f"got {value!r}") from None
+            raise ParameterError(f"parameter '{name}' must be a number, got {value!r}") from None
+        what = self.description or self.name
+        if not math.isfinite(v):
+            unit = f" [{self.unit}]" if self.unit else ""
+            raise ParameterError(f"parameter '{name}' must be a finite number, got {v}: give "
+                                 f"it a finite value{unit}")
         if self.positive and not v > 0:
-            raise ParameterError(f"parameter '{_label(where)}.{self.name}' must be > 0 "
-                                 f"({self.description or self.name}), got {v}")
+            raise ParameterError(f"parameter '{name}' must be > 0 ({what}), got {v}")
         if self.nonnegative and not v >= 0:
-            raise ParameterError(f"parameter '{_label(where)}.{self.name}' must be >= 0 "
-                                 f"({self.description or self.name}), got {v}")
+            raise ParameterError(f"parameter '{name}' must be >= 0 ({what}), got {v}")
         if self.nonzero and v == 0:
-            raise ParameterError(f"parameter '{_label(where)}.{self.name}' must not be 0 "
-                                 f"({self.description or self.name})")
+            raise ParameterError(f"parameter '{name}' must not be 0 ({what})")
         return v
 
 

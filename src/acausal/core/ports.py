@@ -91,6 +91,20 @@ class RealOutput(Port):
     kind = "signal"
 
 
+class VectorPort:
+    """Declares a vector connector on a component class (Modelica's ``RealInput u[3]``):
+    ``u = VectorPort(RealInput, 3, "input signals")`` gives each instance the ports
+    ``u[1]`` .. ``u[3]`` and the PortVector ``u``. ``description`` is one text (the element
+    number is appended) or one text per element."""
+
+    def __init__(self, port_cls: type, n: int, description: str | tuple[str, ...] = ""):
+        if isinstance(description, str):
+            description = tuple(f"{description} [{i}]" for i in range(1, n + 1))
+        if len(description) != n:
+            raise TypeError(f"VectorPort of {n} elements given {len(description)} descriptions")
+        self.port_cls, self.descriptions = port_cls, tuple(description)
+
+
 class PortVector:
     """Ports of a vector connector (``Sum.u``), numbered from 1 as in Modelica: ``u[1]``."""
 

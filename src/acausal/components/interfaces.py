@@ -1,0 +1,299 @@
+"""The 1-D partials shared by the translational and rotational libraries, written once over
+the domain, after MSL's ``Translational.Interfaces`` and ``Rotational.Interfaces``.
+
+A domain is an ``Axis``: MSL's names and units of its position, speed and flow (``s``,
+``v``, ``f`` or ``phi``, ``w``, ``tau``). ``translational`` and ``rotational`` declare their
+MSL classes on top of these: the connectors (``flange``, ``flange_a``, ``flange_b``,
+``support``, with MSL's descriptions), the ``axis`` and the domain's method names; the
+equations are here.
+
+Sign convention (MSL): a flange's flow (f [N], tau [N.m]) is the force or torque acting *on
+the component* through that flange. The helpers that set flows name which flow they take:
+``_apply_flange_flow(e, flow_into_flange)`` sets flange.f (flange.tau) and the reaction on
+the support, ``_apply_opposite_flows(e, flow_into_flange_b)`` sets flange_b's flow and the
+opposite on flange_a.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import casadi as ca
+
+from ..core import Component, Parameter
+
+__all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS", "PartialTwoFlanges",
+           "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
+           "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law",
+           "Position", "Speed", "Accelerate", "Move", "ConstantSpeed"]
+
+
+@dataclass(frozen=True)
+class Axis:
+    """MSL's names, units and words of a 1-D mechanical domain."""
+    s: str              # position: "s" [m] | "phi" [rad]
+    v: str              # speed: "v" [m/s] | "w" [rad/s]; the acceleration is "a"
+    f: str              # flow: "f" [N] | "tau" [N.m]
+    s_unit: str
+    v_unit: str
+    a_unit: str
+    f_unit: str
+    position: str       # words for descriptions
+    speed: str
+    acceleration: str
+    flow: str
+
+
+TRANSLATIONAL_AXIS = Axis("s", "v", "f", "m", "m/s", "m/s2", "N",
+                          "position", "velocity", "acceleration", "force")
+ROTATIONAL_AXIS = Axis("phi", "w", "tau", "rad", "rad/s", "rad/s2", "N.m",
+                       "angle", "angular velocity", "angular acceleration", "torque")
+
+
+# =========================================================================================
+# Two flanges
+# =========================================================================================
+class PartialTwoFlanges(Component):
+    """``flange_a`` and ``flange_b`` (declared by the domain)."""
+    axis: Axis
+
+    def _apply_opposite_flows(self, e, flow_into_flange_b) -> None:
+        """flange_b.f = flow_into_flange_b, flange_a.f = −flow_into_flange_b (or .tau)."""
+        e.flow(self.flange_b, flow_into_flange_b)
+        e.flow(self.flange_a, -flow_into_flange_b)
+
+
+class PartialCompliant(PartialTwoFlanges):
+    """A flow (f [N] or tau [N.m]) = flange_b's = −flange_a's, a function of the relative
+    position rel_pos = flange_b − flange_a [m, rad] and its rate rel_speed [m/s, rad/s].
+
+    Records ``s_rel``/``phi_rel``, ``v_rel``/``w_rel``, ``f``/``tau`` (and ``a_rel`` when
+    ``records_a_rel``, as MSL's rotational PartialCompliantWithRelativeStates), and
+    ``lossPower`` [W] when ``loss_power`` gives one. The domain names the law
+    (``force(s_rel, v_rel)``, ``torque(phi_rel, w_rel)``) and maps ``flange_b_flow`` to it.
+    """
+    records_a_rel = False
+
+    def flange_b_flow(self, rel_pos, rel_speed):
+        """The flow into flange_b [N, N.m] (flange_a gets the opposite)."""
+        raise NotImplementedError
+
+    def loss_power(self, rel_pos, rel_speed, flow):
+        """Dissipated power [W] (MSL's lossPower), or None for a lossless element."""
+        return None
+
+    def physics(self, e):
+        x = self.axis
+        rel_pos = e.pos(self.flange_b) - e.pos(self.flange_a)
+        rel_speed = e.vel(self.flange_b) - e.vel(self.flange_a)
+        flow = self.flange_b_flow(rel_pos, rel_speed)
+        self._apply_opposite_flows(e, flow)
+        e.variable(f"{x.s}_rel", rel_pos, x.s_unit,
+                   f"relative {x.position} (= flange_b.{x.s} - flange_a.{x.s})")
+        e.variable(f"{x.v}_rel", rel_speed, x.v_unit, f"relative {x.speed} (= der({x.s}_rel))")
+        if self.records_a_rel:
+            e.variable("a_rel", e.acc(self.flange_b) - e.acc(self.flange_a), x.a_unit,
+                       f"relative {x.acceleration} (= der({x.v}_rel))")
+        e.variable(x.f, flow, x.f_unit, f"{x.flow} between flanges (= flange_b.{x.f})")
+        loss = self.loss_power(rel_pos, rel_speed, flow)
+        if loss is not None:
+            e.variable("lossPower", loss, "W", "loss power leaving component via heatPort")
+
+
+# =========================================================================================
+# Support (useSupport)
+# =========================================================================================
+class _Support(Component):
+    """MSL's optional ``support`` (housing): with ``useSupport=False`` (default) the component
+    is implicitly fixed to the ground (support at 0); with True the domain's ``support``
+    flange exists, must be connected, and takes the reactions.
+
+    Motion relative to the support works on ports and internal nodes alike.
+    """
+    axis: Axis
+    options = {"useSupport": False}
+
+    def _rel_position(self, e, port):
+        """port.s − support.s [m] (port.phi − support.phi [rad])."""
+        return e.pos(port) - (e.pos(self.support) if self.useSupport else 0.0)
+
+    def _rel_speed(self, e, port):
+        """der(port.s − support.s) [m/s, rad/s]."""
+        return e.vel(port) - (e.vel(self.support) if self.useSupport else 0.0)
+
+    def _rel_acc(self, e, port):
+        """der(der(port.s − support.s)) [m/s², rad/s²]."""
+        return e.acc(port) - (e.acc(self.support) if self.useSupport else 0.0)
+
+    def _relative_constraint(self, s, coeffs: dict, rhs, name: str) -> None:
+        """Declare Σ a_i·(port_i − support) = rhs (the support dropped when grounded)."""
+        coeffs = dict(coeffs)
+        if self.useSupport:
+            coeffs[self.support] = -sum(coeffs.values())
+        s.linear(coeffs, rhs, name)
+
+
+class PartialElementaryOneFlangeAndSupport2(_Support):
+    """One ``flange`` and the optional ``support``; what acts on the flange reacts on the
+    support: support.f = −flange.f (support.tau = −flange.tau)."""
+
+    def _apply_flange_flow(self, e, flow_into_flange) -> None:
+        """flange.f = flow_into_flange (or flange.tau) and support.f = −flow_into_flange."""
+        e.flow(self.flange, flow_into_flange)
+        if self.useSupport:
+            e.flow(self.support, -flow_into_flange)
+
+    def _prescribe(self, s, rhs) -> None:
+        """flange − support = rhs: prescribed motion (the reaction goes to the flange and,
+        opposite, to the support)."""
+        self._relative_constraint(s, {self.flange: 1.0}, rhs, f"{self.path}: prescribed motion")
+
+    def _record_relative(self, e, *which: str, **given) -> None:
+        """Record the flange's motion relative to the support under the domain's names
+        (s, v, a / phi, w, a): ``which`` of ``"s"`` (position), ``"v"`` (speed), ``"a"``
+        (acceleration) as measured, ``given`` as the values given (``a=...``)."""
+        x = self.axis
+        rows = {"s": (x.s, self._rel_position, x.s_unit,
+                      f"{x.position} of flange with respect to support "
+                      f"(= flange.{x.s} - support.{x.s})"),
+                "v": (x.v, self._rel_speed, x.v_unit,
+                      f"{x.speed} of flange with respect to support (= der({x.s}))"),
+                "a": ("a", self._rel_acc, x.a_unit,
+                      f"{x.acceleration} of flange with respect to support (= der({x.v}))")}
+        for key in which + tuple(given):
+            name, value, unit, description = rows[key]
+            e.variable(name, given[key] if key in given else value(e, self.flange), unit,
+                       description)
+
+
+class PartialElementaryTwoFlangesAndSupport2(_Support):
+    """``flange_a``, ``flange_b`` and the optional ``support``."""
+
+
+# =========================================================================================
+# Speed-dependent laws (Linear/QuadraticSpeedDependentForce and -Torque)
+# =========================================================================================
+def linear_law(x, same_direction: bool):
+    """|x| (same direction both ways: ForceDirection/TorqueDirection) or x."""
+    return ca.fabs(x) if same_direction else x
+
+
+def quadratic_law(x, same_direction: bool):
+    """x² (same direction both ways) or x·|x|."""
+    return x ** 2 if same_direction else x * ca.fabs(x)
+
+
+# =========================================================================================
+# Prescribed motion of the flange relative to the support (Sources)
+# =========================================================================================
+class _PrescribedMotion(PartialElementaryOneFlangeAndSupport2):
+    """flange − support is prescribed; its speed and position states start at 0 (MSL:
+    start=0, fixed=true)."""
+
+    def _speed_state(self, s, der=None, note: str = ""):
+        """The state v/w [m/s, rad/s]; its derivative ``der`` here or later in physics."""
+        x = self.axis
+        self._xv = s.state(x.v, 0.0, x.v_unit, f"{x.speed} of flange with respect to "
+                                               f"support{note}", der=der)
+        return self._xv
+
+    def _position_state(self, s, der, note: str = "") -> None:
+        """The state s/phi [m, rad] with derivative ``der``; flange − support follows it."""
+        x = self.axis
+        self._xs = s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect to "
+                                               f"support{note}", der=der)
+        self._prescribe(s, self._xs)
+
+
+class Position(_PrescribedMotion):
+    """flange − support follows the reference input ``s_ref``/``phi_ref`` [m, rad]: exactly
+    (``exact=True``; a function of time, differentiated twice) or through MSL's 2nd-order
+    Bessel filter with cut-off f_crit [Hz] (states s/phi and v/w, from 0)."""
+    options = {"exact": False}
+    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
+                                   "input signal", positive=True)
+    af = 1.3617   # s coefficient of Bessel filter
+    bf = 0.6180   # s*s coefficient of Bessel filter
+
+    def _ref(self):
+        return getattr(self, f"{self.axis.s}_ref")
+
+    def structure(self, s):
+        if self.exact:
+            self._prescribe(s, s.input(self._ref()))
+        else:
+            self._position_state(s, self._speed_state(s, note=" (filter state)"),
+                                 " (filter state)")
+
+    def physics(self, e):
+        if self.exact:
+            self._record_relative(e, "s", "v", "a")
+            return
+        w_crit = 2 * math.pi * self.f_crit
+        a = ((e.input(self._ref()) - self._xs) * w_crit - self.af * self._xv) * (w_crit / self.bf)
+        e.derivative(self._xv, a)
+        self._record_relative(e, a=a)
+
+
+class Speed(_PrescribedMotion):
+    """flange − support moves with the reference speed ``v_ref``/``w_ref`` [m/s, rad/s]:
+    exactly (``exact=True``; a function of time, differentiated once) or through a
+    first-order filter with cut-off f_crit [Hz] (state v/w, from 0). The position s/phi is a
+    state from 0."""
+    options = {"exact": False}
+    f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
+                                   "input signal", positive=True)
+
+    def _ref(self):
+        return getattr(self, f"{self.axis.v}_ref")
+
+    def structure(self, s):
+        v = s.input(self._ref()) if self.exact else self._speed_state(s, note=" (filter state)")
+        self._position_state(s, v)
+
+    def physics(self, e):
+        if self.exact:
+            self._record_relative(e, "v", "a")
+            return
+        a = (e.input(self._ref()) - self._xv) * (2 * math.pi * self.f_crit)
+        e.derivative(self._xv, a)
+        self._record_relative(e, a=a)
+
+
+class Accelerate(_PrescribedMotion):
+    """flange − support accelerates with the input ``a_ref`` [m/s², rad/s²]; position and
+    speed are states integrated from 0."""
+
+    def structure(self, s):
+        self._position_state(s, self._speed_state(s, der=s.input(self.a_ref)))
+
+    def physics(self, e):
+        self._record_relative(e, a=e.input(self.a_ref))
+
+
+class Move(PartialElementaryOneFlangeAndSupport2):
+    """flange − support = u[1]; u[2], u[3] (its speed and acceleration) are recorded as
+    ``v_u``/``w_u`` and ``a_u`` next to the actual motion (see the domain's Move)."""
+
+    def structure(self, s):
+        self._prescribe(s, s.input(self.u[1]))
+
+    def physics(self, e):
+        x = self.axis
+        self._record_relative(e, "s", "v", "a")
+        e.variable(f"{x.v}_u", e.input(self.u[2]), x.v_unit, f"{x.speed} input u[2]")
+        e.variable("a_u", e.input(self.u[3]), x.a_unit, f"{x.acceleration} input u[3]")
+
+
+class ConstantSpeed(_PrescribedMotion):
+    """flange − support moves with the constant speed ``v_fixed``/``w_fixed`` [m/s, rad/s],
+    whatever the flow; the position is a state from 0. Records the speed."""
+
+    def _fixed(self):
+        return getattr(self, f"{self.axis.v}_fixed")
+
+    def structure(self, s):
+        self._position_state(s, self._fixed())
+
+    def physics(self, e):
+        self._record_relative(e, v=self._fixed())
