@@ -256,11 +256,12 @@ class Lag(acausal.Component):
     y = RealOutput("x")
 
     def structure(self, s):
-        self._x = s.state("x", self.x0, "1", "lag state")
+        s.state("x", self.x0, "1", "lag state")
 
     def physics(self, e):
-        e.derivative(self._x, -self._x / self.T)
-        e.output(self.y, self._x)
+        x = e.state("x")
+        e.derivative(x, -x / self.T)
+        e.output(self.y, x)
 
 
 def test_states_follow_parameters_unless_set(fmu_dir):

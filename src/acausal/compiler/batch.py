@@ -63,6 +63,7 @@ class _TraceBuilder(PhysicsBuilder):
         raise _NotBatchable
 
     input = output = cut_flow = derivative = residual = model_input = model_output = _refuse
+    state = _refuse
     time_event = outer = rigid_body = _refuse
 
 

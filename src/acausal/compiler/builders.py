@@ -52,6 +52,7 @@ class Workspace:
     variables: list = field(default_factory=list)           # (name, expr, unit)
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
     state_names: dict = field(default_factory=dict)         # port -> its coordinates' names
+    declared: dict = field(default_factory=dict)            # (component, name) -> node / state
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
     events: list = field(default_factory=list)              # (time, period) of time events
     components: list = field(default_factory=list)          # all of them, flattened
@@ -161,7 +162,15 @@ class StructureBuilder(_Base):
         n = InternalNode(domain, velocity, acceleration, preferred)
         n.owner, n.name = self._owner, name
         self._ws.internal_nodes.append(n)
+        self._declare(name, n)
         return n
+
+    def _declare(self, name: str, handle) -> None:
+        key = (self._owner, name)
+        if key in self._ws.declared:
+            raise StructureError(f"{type(self._owner).__name__} '{self._owner.path}' declares "
+                                 f"'{name}' twice; give each node and state its own name")
+        self._ws.declared[key] = handle
 
     def state(self, name: str, start=0.0, unit: str = "", description: str = "",
               der=None) -> ca.SX:
@@ -172,6 +181,7 @@ class StructureBuilder(_Base):
         s = ca.SX.sym(self._name(name))
         info = StateInfo(s, _start(start), unit, description, self._owner)
         self._ws.states.append(info)
+        self._declare(name, s)
         if der is not None:
             info.der = sx(der)
             self._ws.der_table[s.name()] = info.der
@@ -186,12 +196,31 @@ class StructureBuilder(_Base):
         """An algebraic variable, fixed by a residual equation given in physics."""
         s = ca.SX.sym(self._name(name))
         self._ws.algebraics.append(StateInfo(s, _start(start), unit, description, self._owner))
+        self._declare(name, s)
         self._ws.der_table[s.name()] = None
         return s
 
 
 class PhysicsBuilder(_Base):
     """Phase 2: energies, flows, state derivatives, residuals, outputs, recorded variables."""
+
+    def node(self, name: str) -> InternalNode:
+        """The internal node this component declared as ``name`` in structure()."""
+        return self._declared(name, "node")
+
+    def state(self, name: str) -> ca.SX:
+        """The symbol of the state (or algebraic variable) this component declared as
+        ``name`` in structure()."""
+        return self._declared(name, "state")
+
+    def _declared(self, name: str, what: str):
+        try:
+            return self._ws.declared[(self._owner, name)]
+        except KeyError:
+            mine = [n for c, n in self._ws.declared if c is self._owner]
+            raise StructureError(f"{type(self._owner).__name__} '{self._owner.path}' declared "
+                                 f"no {what} '{name}' in structure() (it declared: "
+                                 f"{', '.join(mine) or 'none'})") from None
 
     def _node(self, port: PhysicalPort):
         self._mine(port)

@@ -193,16 +193,14 @@ class _PrescribedMotion(PartialElementaryOneFlangeAndSupport2):
     def _speed_state(self, s, der=None, note: str = ""):
         """The state v/w [m/s, rad/s]; its derivative ``der`` here or later in physics."""
         x = self.axis
-        self._xv = s.state(x.v, 0.0, x.v_unit, f"{x.speed} of flange with respect to "
-                                               f"support{note}", der=der)
-        return self._xv
+        return s.state(x.v, 0.0, x.v_unit, f"{x.speed} of flange with respect to support{note}",
+                       der=der)
 
     def _position_state(self, s, der, note: str = "") -> None:
         """The state s/phi [m, rad] with derivative ``der``; flange − support follows it."""
         x = self.axis
-        self._xs = s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect to "
-                                               f"support{note}", der=der)
-        self._prescribe(s, self._xs)
+        self._prescribe(s, s.state(x.s, 0.0, x.s_unit, f"{x.position} of flange with respect "
+                                                       f"to support{note}", der=der))
 
 
 class Position(_PrescribedMotion):
@@ -230,8 +228,9 @@ class Position(_PrescribedMotion):
             self._record_relative(e, "s", "v", "a")
             return
         w_crit = 2 * math.pi * self.f_crit
-        a = ((e.input(self._ref()) - self._xs) * w_crit - self.af * self._xv) * (w_crit / self.bf)
-        e.derivative(self._xv, a)
+        xs, xv = e.state(self.axis.s), e.state(self.axis.v)
+        a = ((e.input(self._ref()) - xs) * w_crit - self.af * xv) * (w_crit / self.bf)
+        e.derivative(xv, a)
         self._record_relative(e, a=a)
 
 
@@ -255,8 +254,9 @@ class Speed(_PrescribedMotion):
         if self.exact:
             self._record_relative(e, "v", "a")
             return
-        a = (e.input(self._ref()) - self._xv) * (2 * math.pi * self.f_crit)
-        e.derivative(self._xv, a)
+        xv = e.state(self.axis.v)
+        a = (e.input(self._ref()) - xv) * (2 * math.pi * self.f_crit)
+        e.derivative(xv, a)
         self._record_relative(e, a=a)
 
 

@@ -421,9 +421,9 @@ class Revolute(_Joint):
     flange_a, support = _drive_flanges(RotationalFlange)
 
     def structure(self, s):
-        self._phi = s.node("phi", ROTATIONAL, velocity="w", acceleration="z")
-        s.revolute(self.frame_a, self.frame_b, self._phi)
-        self._link_flange(s, self._phi)
+        phi = s.node("phi", ROTATIONAL, velocity="w", acceleration="z")
+        s.revolute(self.frame_a, self.frame_b, phi)
+        self._link_flange(s, phi)
 
     def physics(self, e):
         e.variable("t", self._drive_force(e), "N.m", "drive torque (= flange_a.tau)")
@@ -447,9 +447,9 @@ class Prismatic(_Joint):
             raise ParameterError(f"{who(self)}: r = {{0, 0}} gives no direction; give the "
                                  f"direction of the joint axis, e.g. r=(1, 0)")
         e = self.r / ca.norm_2(self.r)
-        self._s = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
-        s.prismatic(self.frame_a, self.frame_b, self._s, e)
-        self._link_flange(s, self._s)
+        s_rel = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
+        s.prismatic(self.frame_a, self.frame_b, s_rel, e)
+        self._link_flange(s, s_rel)
 
     def physics(self, e):
         e.variable("f", self._drive_force(e), "N", "drive force in direction of elongation "

@@ -180,12 +180,12 @@ class Inertia(Component):
     batch_physics = True
 
     def structure(self, s):
-        self._body = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
-        s.linear({self.flange_a: 1.0, self._body: -1.0}, 0.0)
-        s.linear({self.flange_b: 1.0, self._body: -1.0}, 0.0)
+        body = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
+        s.linear({self.flange_a: 1.0, body: -1.0}, 0.0)
+        s.linear({self.flange_b: 1.0, body: -1.0}, 0.0)
 
     def physics(self, e):
-        e.kinetic_energy(0.5 * self.J * e.vel(self._body) ** 2)
+        e.kinetic_energy(0.5 * self.J * e.vel(e.node("phi")) ** 2)
 
 
 class Disc(Component):
@@ -582,17 +582,18 @@ class DCMotor(PartialElementaryOneFlangeAndSupport2):
     v = RealInput("armature voltage [V]")
 
     def structure(self, s):
-        self._rotor = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
-        s.linear({self.flange: 1.0, self._rotor: -1.0}, 0.0)
-        self._i = s.state("i", 0.0, "A", "armature current")
+        rotor = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
+        s.linear({self.flange: 1.0, rotor: -1.0}, 0.0)
+        s.state("i", 0.0, "A", "armature current")
 
     def physics(self, e):
-        w_rel = self._rel_speed(e, self._rotor)
+        rotor, i = e.node("phi"), e.state("i")
+        w_rel = self._rel_speed(e, rotor)
         v = e.input(self.v)
-        tau_el = self.k * self._i
-        e.kinetic_energy(0.5 * self.J * e.vel(self._rotor) ** 2)
+        tau_el = self.k * i
+        e.kinetic_energy(0.5 * self.J * e.vel(rotor) ** 2)
         self._apply_flange_flow(e, -tau_el)
-        e.derivative(self._i, (v - self.R * self._i - self.k * w_rel) / self.L)
+        e.derivative(i, (v - self.R * i - self.k * w_rel) / self.L)
         e.variable("tau_el", tau_el, "N.m", "electrical (air gap) torque")
         e.variable("vi", self.k * w_rel, "V", "induced (back-emf) voltage")
-        e.variable("pin", v * self._i, "W", "electrical input power")
+        e.variable("pin", v * i, "W", "electrical input power")

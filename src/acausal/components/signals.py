@@ -454,11 +454,12 @@ class Integrator(_StartValues, SISO):
     k = Parameter(1.0, "1", "integrator gain")
 
     def structure(self, s):
-        self._y = s.state("y", self.y_start, description="integrator output (state)")
+        s.state("y", self.y_start, description="integrator output (state)")
 
     def physics(self, e):
-        e.derivative(self._y, self.k * e.input(self.u))
-        e.output(self.y, self._y)
+        y = e.state("y")
+        e.derivative(y, self.k * e.input(self.u))
+        e.output(self.y, y)
 
 
 class Derivative(_StartValues, SISO):
@@ -469,11 +470,12 @@ class Derivative(_StartValues, SISO):
     T = Parameter(0.01, "s", "time constant (T > 0 required)", positive=True)
 
     def structure(self, s):
-        self._x = s.state("x", self.x_start, description="state of block")
+        s.state("x", self.x_start, description="state of block")
 
     def physics(self, e):
-        xdot, y = _approx_derivative(e.input(self.u), self._x, self.k, self.T)
-        e.derivative(self._x, xdot)
+        x = e.state("x")
+        xdot, y = _approx_derivative(e.input(self.u), x, self.k, self.T)
+        e.derivative(x, xdot)
         e.output(self.y, y)
 
 
@@ -484,11 +486,12 @@ class FirstOrder(_StartValues, SISO):
     T = Parameter(1.0, "s", "time constant", nonzero=True)
 
     def structure(self, s):
-        self._y = s.state("y", self.y_start, description="output (state)")
+        s.state("y", self.y_start, description="output (state)")
 
     def physics(self, e):
-        e.derivative(self._y, (self.k * e.input(self.u) - self._y) / self.T)
-        e.output(self.y, self._y)
+        y = e.state("y")
+        e.derivative(y, (self.k * e.input(self.u) - y) / self.T)
+        e.output(self.y, y)
 
 
 class SecondOrder(_StartValues, SISO):
@@ -500,14 +503,14 @@ class SecondOrder(_StartValues, SISO):
     D = Parameter(1.0, "1", "damping")
 
     def structure(self, s):
-        self._y = s.state("y", self.y_start, description="output (state)")
-        self._yd = s.state("yd", self.yd_start, description="derivative of y (state)")
+        s.state("y", self.y_start, description="output (state)")
+        s.state("yd", self.yd_start, description="derivative of y (state)")
 
     def physics(self, e):
-        e.derivative(self._y, self._yd)
-        e.derivative(self._yd, self.w * (self.w * (self.k * e.input(self.u) - self._y)
-                                         - 2 * self.D * self._yd))
-        e.output(self.y, self._y)
+        y, yd = e.state("y"), e.state("yd")
+        e.derivative(y, yd)
+        e.derivative(yd, self.w * (self.w * (self.k * e.input(self.u) - y) - 2 * self.D * yd))
+        e.output(self.y, y)
 
 
 class PI(_StartValues, SISO):
@@ -517,12 +520,13 @@ class PI(_StartValues, SISO):
     T = Parameter(1.0, "s", "time constant (T > 0 required)", positive=True)
 
     def structure(self, s):
-        self._x = s.state("x", self.x_start, description="state of block")
+        s.state("x", self.x_start, description="state of block")
 
     def physics(self, e):
+        x = e.state("x")
         u = e.input(self.u)
-        e.derivative(self._x, u / self.T)
-        e.output(self.y, self.k * (self._x + u))
+        e.derivative(x, u / self.T)
+        e.output(self.y, self.k * (x + u))
 
 
 class PID(_StartValues, SISO):
@@ -541,15 +545,15 @@ class PID(_StartValues, SISO):
                    positive=True)
 
     def structure(self, s):
-        self._xi = s.state("I.y", self.xi_start, description="integral part (state)")
-        self._xd = s.state("D.x", self.xd_start, description="state of derivative block")
+        s.state("I.y", self.xi_start, description="integral part (state)")
+        s.state("D.x", self.xd_start, description="state of derivative block")
 
     def physics(self, e):
+        xi, xd = e.state("I.y"), e.state("D.x")
         u = e.input(self.u)
-        e.derivative(self._xi, u / self.Ti)
-        xd_dot, d_y = _approx_derivative(u, self._xd, self.Td, ca.fmax(self.Td / self.Nd,
-                                                                       100 * EPS))
-        e.derivative(self._xd, xd_dot)
+        e.derivative(xi, u / self.Ti)
+        xd_dot, d_y = _approx_derivative(u, xd, self.Td, ca.fmax(self.Td / self.Nd, 100 * EPS))
+        e.derivative(xd, xd_dot)
         e.variable("P.y", u, description="proportional part")
         e.variable("D.y", d_y, description="derivative part")
-        e.output(self.y, self.k * (u + self._xi + d_y))
+        e.output(self.y, self.k * (u + xi + d_y))

@@ -79,9 +79,9 @@ class PartialRigid(PartialTwoFlanges):
         return s.node("s", TRANSLATIONAL, preferred=False)
 
     def structure(self, s):
-        self._s = self._centre(s)
-        s.linear({self.flange_a: 1.0, self._s: -1.0}, -self.L / 2, f"{self.path}: flange_a")
-        s.linear({self.flange_b: 1.0, self._s: -1.0}, self.L / 2, f"{self.path}: flange_b")
+        centre = self._centre(s)
+        s.linear({self.flange_a: 1.0, centre: -1.0}, -self.L / 2, f"{self.path}: flange_a")
+        s.linear({self.flange_b: 1.0, centre: -1.0}, self.L / 2, f"{self.path}: flange_b")
 
 
 class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
@@ -160,7 +160,7 @@ class Mass(PartialRigid):
         return s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
 
     def physics(self, e):
-        e.kinetic_energy(0.5 * self.m * e.vel(self._s) ** 2)
+        e.kinetic_energy(0.5 * self.m * e.vel(e.node("s")) ** 2)
 
 
 class Rod(PartialRigid):

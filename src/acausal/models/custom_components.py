@@ -41,12 +41,12 @@ class Flywheel(Component):
     flange_b = RotationalFlange("right flange of shaft")
 
     def structure(self, s):
-        self._rotor = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
-        s.linear({self.flange_a: 1.0, self._rotor: -1.0})        # flange_a.phi = phi
-        s.linear({self.flange_b: 1.0, self._rotor: -1.0})        # flange_b.phi = phi
+        rotor = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
+        s.linear({self.flange_a: 1.0, rotor: -1.0})        # flange_a.phi = phi
+        s.linear({self.flange_b: 1.0, rotor: -1.0})        # flange_b.phi = phi
 
     def physics(self, e):
-        e.kinetic_energy(0.5 * self.J * e.vel(self._rotor) ** 2)
+        e.kinetic_energy(0.5 * self.J * e.vel(e.node("phi")) ** 2)   # the node of structure()
 
 
 class SimpleDCMotor(Component):
@@ -62,13 +62,13 @@ class SimpleDCMotor(Component):
     flange = RotationalFlange("shaft")
 
     def structure(self, s):
-        self._i = s.state("i", start=0.0, unit="A", description="armature current")
+        s.state("i", start=0.0, unit="A", description="armature current")
 
     def physics(self, e):
-        w = e.vel(self.flange)
-        e.derivative(self._i, (e.input(self.v) - self.R * self._i - self.k * w) / self.L)
-        e.flow(self.flange, -self.k * self._i)     # flow into the motor: −(torque it applies)
-        e.variable("tau", self.k * self._i, "N.m")
+        w, i = e.vel(self.flange), e.state("i")      # the state declared in structure()
+        e.derivative(i, (e.input(self.v) - self.R * i - self.k * w) / self.L)
+        e.flow(self.flange, -self.k * i)         # flow into the motor: −(torque it applies)
+        e.variable("tau", self.k * i, "N.m")
         e.variable("w", w, "rad/s")
 
 
