@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["ProjectionError", "project", "independent_rows", "moved_note", "event_times",
+__all__ = ["parameter_problem", "ProjectionError", "project", "independent_rows", "moved_note", "event_times",
            "just_before", "short_error"]
 
 
@@ -147,6 +147,26 @@ def _conflict(J, h, labels, targets, given) -> str:
                         f"joined); give only one of them")
     return (f"cannot find initial values satisfying {', '.join(bad)}; check {given} values "
             f"against the model's constraints")
+
+
+def parameter_problem(name: str, value: float, description: str = "", unit: str = "", *,
+                      positive: bool = False, nonnegative: bool = False,
+                      nonzero: bool = False) -> str | None:
+    """What is wrong with ``value`` for the parameter ``name`` under its declared rule
+    (finite; > 0, >= 0, != 0 as declared), as the message to show, or None: the one rule
+    for a parameter's value, wherever it is set (construction, simulate, the FMUs)."""
+    what = description or name.rsplit(".", 1)[-1]
+    if not np.isfinite(value):
+        unit = f" [{unit}]" if unit else ""
+        return f"parameter '{name}' must be a finite number, got {value}: give it a finite " \
+               f"value{unit}"
+    if positive and not value > 0:
+        return f"parameter '{name}' must be > 0 ({what}), got {value}"
+    if nonnegative and not value >= 0:
+        return f"parameter '{name}' must be >= 0 ({what}), got {value}"
+    if nonzero and value == 0:
+        return f"parameter '{name}' must not be 0 ({what})"
+    return None
 
 
 def independent_rows(J) -> np.ndarray:

@@ -25,6 +25,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 import numpy as np
 
+from ..core.parameter import checked_value
 from ..errors import ParameterError, VariableNameError, did_you_mean
 from ..numerics import event_times
 from .lagrange import Lagrange
@@ -51,8 +52,8 @@ class ScalarVariable:
     def check(self, value) -> float:
         """A parameter value as float, checked by its declaration's rule (ParameterError
         naming this parameter otherwise)."""
-        where = self.name.rsplit(".", 1)[0] if "." in self.name else self.name
-        return self.declaration.check_scalar(value, where)
+        return checked_value(self.name, value, self.declaration.rule, self.description,
+                             self.unit)
 
 
 @dataclass(frozen=True)

@@ -1,11 +1,11 @@
 """Parameter: a named, documented constant of a component, a CasADi symbol once compiled."""
 from __future__ import annotations
 
-import math
 from contextlib import contextmanager
 from contextvars import ContextVar
 
 from ..errors import ParameterError
+from ..numerics import parameter_problem
 
 #: While a model is compiled: component -> {parameter name: CasADi symbol}. Held by the
 #: compiler for the duration of one compile (``symbolic_parameters``), never on a component.
@@ -93,22 +93,26 @@ class Parameter:
         for ``element`` i of a vector): the one rule for a parameter's value, wherever it is
         set (construction, compile, simulate, FMUs)."""
         name = f"{_label(where)}.{self.name}" + (f"[{element}]" if element else "")
-        try:
-            v = float(value)
-        except (TypeError, ValueError):
-            raise ParameterError(f"parameter '{name}' must be a number, got {value!r}") from None
-        what = self.description or self.name
-        if not math.isfinite(v):
-            unit = f" [{self.unit}]" if self.unit else ""
-            raise ParameterError(f"parameter '{name}' must be a finite number, got {v}: give "
-                                 f"it a finite value{unit}")
-        if self.positive and not v > 0:
-            raise ParameterError(f"parameter '{name}' must be > 0 ({what}), got {v}")
-        if self.nonnegative and not v >= 0:
-            raise ParameterError(f"parameter '{name}' must be >= 0 ({what}), got {v}")
-        if self.nonzero and v == 0:
-            raise ParameterError(f"parameter '{name}' must not be 0 ({what})")
-        return v
+        return checked_value(name, value, self.rule, self.description or self.name, self.unit)
+
+    @property
+    def rule(self) -> dict[str, bool]:
+        """The declared range: ``positive``, ``nonnegative``, ``nonzero``."""
+        return {"positive": self.positive, "nonnegative": self.nonnegative,
+                "nonzero": self.nonzero}
+
+
+def checked_value(name: str, value, rule: dict, description: str = "", unit: str = "") -> float:
+    """``value`` as float if it is a number that keeps ``rule`` (``Parameter.rule``), else a
+    ParameterError naming the parameter ``name``."""
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        raise ParameterError(f"parameter '{name}' must be a number, got {value!r}") from None
+    problem = parameter_problem(name, v, description, unit, **rule)
+    if problem:
+        raise ParameterError(problem)
+    return v
 
 
 def _label(where) -> str:

@@ -160,9 +160,7 @@ def _contents(compiled, ident, rtol, atol, solver):
         functions["phi_q"] = c.phi_q_function
     checks = []
     for v in c.params:
-        checks.append({k: bool(getattr(v.declaration, k, False))
-                       for k in ("positive", "nonnegative", "nonzero")}
-                      | {"description": v.description or ""})
+        checks.append(dict(v.declaration.rule, description=v.description, unit=v.unit))
     layout = c.recorded_layout
     meta = {
         "identifier": ident,

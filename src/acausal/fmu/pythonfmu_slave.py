@@ -169,19 +169,10 @@ class AcausalSlave(Fmi2Slave):
         self._cache = None
 
     def _check_parameter(self, i, value):
-        """The checks of acausal's Parameter.check_scalar, as a message or None."""
-        rule = self.meta["parameter_checks"][i]
-        name = self.meta["param_names"][i]
-        what = rule.get("description") or name
-        if not np.isfinite(value):
-            return f"parameter '{name}' must be a finite number, got {value}"
-        if rule.get("positive") and not value > 0:
-            return f"parameter '{name}' must be > 0 ({what}), got {value}"
-        if rule.get("nonnegative") and not value >= 0:
-            return f"parameter '{name}' must be >= 0 ({what}), got {value}"
-        if rule.get("nonzero") and value == 0:
-            return f"parameter '{name}' must not be 0 ({what})"
-        return None
+        """acausal's rule for the parameter's value (``numerics.parameter_problem``, the one
+        Parameter.check_scalar applies), as a message or None."""
+        check = self.meta["parameter_checks"][i]
+        return kernels.parameter_problem(self.meta["param_names"][i], value, **check)
 
     def _value(self, v):
         kind, i = v["kind"], v["index"]
