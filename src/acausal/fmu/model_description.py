@@ -126,6 +126,23 @@ def _a(name, value) -> str:
 
 
 # ---- FMI 2.0 ------------------------------------------------------------------------------
+def _attributes(v, info: dict, derivative) -> tuple[str, str]:
+    """The XML attributes of a variable: (those of the variable itself, those of its real
+    type: unit, start, derivative — the state's index in FMI 2, its value reference in FMI 3
+    — and nominal)."""
+    attrs = (f'{_a("name", v.name)} valueReference="{v.value_reference}"'
+             f'{_a("description", v.description)} causality="{v.causality}"'
+             f' variability="{v.variability}"{_a("initial", v.initial)}')
+    real = _a("unit", v.unit)
+    if v.start is not None:
+        real += f' start="{_num(v.start)}"'
+    if derivative is not None:
+        real += f' derivative="{derivative}"'
+    if v.kind == "state" and v.name in info.get("nominal", {}):
+        real += f' nominal="{_num(info["nominal"][v.name])}"'
+    return attrs, real
+
+
 def fmi2_xml(info: dict) -> str:
     """info: model_name, identifier, guid, description, variables (FmuVariable list incl. the
     solver ones), me, cs, sources, deps (see export), loops, nx, stop_time."""
@@ -158,16 +175,7 @@ def fmi2_xml(info: dict) -> str:
                 f' tolerance="1e-06"/>\n')
     body = ["  <ModelVariables>\n"]
     for v in vs:
-        attrs = (f'{_a("name", v.name)} valueReference="{v.value_reference}"'
-                 f'{_a("description", v.description)} causality="{v.causality}"'
-                 f' variability="{v.variability}"{_a("initial", v.initial)}')
-        real = _a("unit", v.unit)
-        if v.start is not None:
-            real += f' start="{_num(v.start)}"'
-        if v.derivative_of is not None:
-            real += f' derivative="{index[v.derivative_of]}"'
-        if v.kind == "state" and v.name in info.get("nominal", {}):
-            real += f' nominal="{_num(info["nominal"][v.name])}"'
+        attrs, real = _attributes(v, info, index.get(v.derivative_of))
         body.append(f"    <ScalarVariable{attrs}>\n      <Real{real}/>\n    </ScalarVariable>\n")
     body.append("  </ModelVariables>\n  <ModelStructure>\n")
 
@@ -216,16 +224,8 @@ def fmi3_xml(info: dict) -> str:
             ' causality="independent" variability="continuous" description="simulation time"'
             ' unit="s"/>\n']
     for v in vs:
-        attrs = (f'{_a("name", v.name)} valueReference="{v.value_reference}"'
-                 f'{_a("description", v.description)} causality="{v.causality}"'
-                 f' variability="{v.variability}"{_a("initial", v.initial)}{_a("unit", v.unit)}')
-        if v.start is not None:
-            attrs += f' start="{_num(v.start)}"'
-        if v.derivative_of is not None:
-            attrs += f' derivative="{v.derivative_of}"'
-        if v.kind == "state" and v.name in info.get("nominal", {}):
-            attrs += f' nominal="{_num(info["nominal"][v.name])}"'
-        body.append(f"    <Float64{attrs}/>\n")
+        attrs, real = _attributes(v, info, v.derivative_of)
+        body.append(f"    <Float64{attrs}{real}/>\n")
     body.append("  </ModelVariables>\n  <ModelStructure>\n")
     for tag, key in (("Output", "outputs"), ("ContinuousStateDerivative", "derivatives"),
                      ("InitialUnknown", "initial")):
