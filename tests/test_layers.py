@@ -13,8 +13,6 @@ cycle between packages.
 import ast
 from pathlib import Path
 
-import pytest
-
 import acausal
 
 ROOT = Path(acausal.__file__).parent

@@ -7,6 +7,7 @@ FMU rebuilding the binary, and a clear error without a C compiler.
 from __future__ import annotations
 
 import ctypes
+import os
 import subprocess
 
 import numpy as np
@@ -318,3 +319,31 @@ def test_unclosable_loop_is_an_error(fmu_dir, capsys):
         simulate_fmu(str(path), stop_time=1.0, start_values={"rev1.phi": 1.0,
                                                              "rocker_b.r[1]": 5.0})
     assert "kinematic loops cannot be closed" in capsys.readouterr().out
+
+
+@pytest.mark.parametrize("backend", ["native", "pythonfmu"])
+def test_unwritable_destination_is_refused_before_building(tmp_path, backend):
+    """A destination under a file: FmuPathError (also a FileNotFoundError) naming the path,
+    raised before any build."""
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    with pytest.raises(acausal.FmuPathError, match="is a file, not a directory"):
+        _lag_model().export_fmu(blocker / "sub" / "lag.fmu", backend=backend)
+
+
+@pytest.mark.skipif(os.geteuid() == 0, reason="root may write into a read-only directory")
+def test_read_only_directory_is_refused(tmp_path):
+    locked = tmp_path / "locked"
+    locked.mkdir()
+    locked.chmod(0o500)
+    try:
+        with pytest.raises(FileNotFoundError, match="no permission"):
+            _lag_model().export_fmu(locked / "lag.fmu")
+    finally:
+        locked.chmod(0o700)
+
+
+def _lag_model():
+    m = acausal.Model("lag")
+    m.lag = Lag()
+    return acausal.compile(m)

@@ -315,10 +315,6 @@ def test_only_fmi2_cosimulation(fmus, tmp_path):
 def test_through_export_fmu(fmus, tmp_path):
     """compiled.export_fmu(..., backend='pythonfmu') goes through the dispatcher to this
     backend."""
-    try:
-        from acausal.fmu import export_fmu  # noqa: F401
-    except ImportError:
-        pytest.skip("acausal.fmu.export_fmu (the dispatcher) is not there yet")
     compiled, _ = fmus["drivetrain"]
     path = compiled.export_fmu(tmp_path / "drive.fmu", backend="pythonfmu", fmu_type="cs")
     assert validate_fmu(str(path)) == []

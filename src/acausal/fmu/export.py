@@ -70,7 +70,6 @@ from __future__ import annotations
 import hashlib
 import os
 import platform
-import re
 import shutil
 import subprocess
 import tempfile
@@ -81,8 +80,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import FmuExportError, FmuPathError
+from ..errors import FmuExportError
 from .codegen import ModelFunctions
+from .destination import fmu_path, identifier
 from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, fmi3_xml)
 from .variables import FmuVariable, fmu_variables
 
@@ -134,11 +134,6 @@ def platform_dirs() -> tuple[str, str, str]:
         return "darwin64", f"{arch}-darwin", ".dylib"
     raise FmuExportError(f"native FMU export supports Linux and macOS, not {system}; use "
                          f"backend='pythonfmu'")
-
-
-def identifier(name: str) -> str:
-    ident = re.sub(r"\W", "_", name) or "model"
-    return ident if not ident[0].isdigit() else f"m_{ident}"
 
 
 # ---- tables ------------------------------------------------------------------------------
@@ -250,10 +245,8 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
         raise FmuExportError(f"fmi_version must be '2.0' or '3.0', got {fmi_version!r}")
     if fmu_type not in ("me", "cs", "both"):
         raise FmuExportError(f"fmu_type must be 'me', 'cs' or 'both', got {fmu_type!r}")
-    path = Path(path)
+    path = fmu_path(path, compiled.name)
     ident = identifier(compiled.name)
-    if path.is_dir():
-        path = path / f"{ident}.fmu"
     headers = find_fmi_headers(fmi_version)
     cc = find_compiler()
     plat2, plat3, ext = platform_dirs()

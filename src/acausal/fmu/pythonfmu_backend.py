@@ -47,7 +47,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import re
 import shutil
 import sys
 import tempfile
@@ -55,12 +54,12 @@ from importlib.metadata import version
 from pathlib import Path
 
 import casadi as ca
-import numpy as np
 
 from ..errors import FmuExportError, SimulationError
 from .. import numerics
 from ..simulation.initialization import model_equations
 from ..simulation.simulate import integrator_settings
+from .destination import fmu_path, identifier
 from .model_description import base_unit_attributes, naming_convention
 from .variables import fmu_variables
 
@@ -94,10 +93,8 @@ def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str 
     except ImportError:
         raise FmuExportError("the pythonfmu backend needs the 'pythonfmu' package: "
                            "pip install pythonfmu (or acausal[fmu])") from None
-    path = Path(path)
-    ident = _identifier(compiled.name)
-    if path.is_dir():
-        path = path / f"{ident}.fmu"
+    path = fmu_path(path, compiled.name)
+    ident = identifier(compiled.name)
     functions, meta = _contents(compiled, ident, rtol, atol, solver)
     source = TEMPLATE.read_text(encoding="utf-8")
     shared = Path(numerics.__file__).read_text(encoding="utf-8")
@@ -130,11 +127,6 @@ def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str 
         path.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(built, path)
     return path
-
-
-def _identifier(name: str) -> str:
-    ident = re.sub(r"\W", "_", name or "model")
-    return ident if re.match(r"[A-Za-z_]", ident) else f"m_{ident}"
 
 
 def _contents(compiled, ident, rtol, atol, solver):

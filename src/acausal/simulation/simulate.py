@@ -1,8 +1,6 @@
 """simulate(): a compiled model through a CasADi integrator onto a time grid."""
 from __future__ import annotations
 
-import warnings
-
 import casadi as ca
 import numpy as np
 
