@@ -22,7 +22,8 @@ class ProjectionError(ValueError):
     """The initial-value equations have no solution near the start values (message says why)."""
 
 
-def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
+def project(equations, start, w0, nx: int, labels, targets, given: str = "x0",
+            positions=None):
     """The point w = [x; z] whose states x are closest to ``start`` (least squares) and that
     satisfies H(w) = 0; the algebraic variables z are free.
 
@@ -31,12 +32,15 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
     start      the start values of [x; z];
     w0         where the iteration starts (start with the given values put in);
     labels     a name per row of H, for the error message; ``given`` names the given values
-               in it ("x0", "start").
+               in it ("x0", "start");
+    positions  indices of the states that are positions (angles: where a large step could
+               jump to another assembly branch), default all states; speeds enter the
+               equations linearly and are never held back.
     Each iteration projects the start values onto the equations linearized at the current
     point (exact in one step when they are linear), eliminating z by an orthogonal basis of
     the range of ∂H/∂z rather than by weights, so that stiff elements (a massless node between
     springs of 1e3 N/m) keep it well conditioned; far from the solution a step moves no state
-    by more than 0.3, so that a guess keeps a linkage on its branch. Should that stall (a
+    by more than 0.3 (``positions`` only), so that a guess keeps a linkage on its branch. Should that stall (a
     start at a singular configuration, a linkage with every joint at 0, where the residual's
     gradient vanishes), a Levenberg–Marquardt descent on the scaled residual takes over and
     the projection resumes from where it ends; as a last resort the iteration restarts from a
@@ -47,6 +51,7 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
     """
     start = np.asarray(start, dtype=float)
     w0 = np.asarray(w0, dtype=float)
+    limited = np.arange(nx) if positions is None else np.asarray(positions, dtype=int)
     scale = 1 + max(np.abs(start).max(initial=0.0), np.abs(w0).max(initial=0.0))
     seed = 12345
     for attempt in range(ASSEMBLY_RETRIES + 1):
@@ -54,9 +59,10 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0"):
         for k in range(nx if attempt else 0):
             seed = (seed * 1103515245 + 12345) % 2**32         # C's unsigned arithmetic
             wk[k] += ASSEMBLY_JITTER * (1 + abs(w0[k])) * (((seed >> 8) & 0xFFFF) / 65535 - 0.5)
-        wk = _iterate(equations, start, wk, nx)
+        wk = _iterate(equations, start, wk, nx, limited)
         if not _solved(*equations(wk), scale):
-            wk = _iterate(equations, start, _descend(equations, wk, nx, scale), nx)
+            wk = _iterate(equations, start, _descend(equations, wk, limited, scale), nx,
+                          limited)
         h, J = equations(wk)
         if _solved(h, J, scale):
             return wk
@@ -76,14 +82,17 @@ def _solved(h, J, scale: float) -> bool:
     return bool(np.all(np.abs(h) / _row_scales(J) <= 1e-10 * scale))
 
 
-def _iterate(equations, start, wk, nx: int):
+def _limit(step, limited, most: float = 0.3):
+    """``step`` scaled down so that no entry of ``limited`` moves by more than ``most``."""
+    big = np.max(np.abs(step[limited]), initial=0.0)
+    return step * (most / big) if big > most else step
+
+
+def _iterate(equations, start, wk, nx: int, limited):
     """The projection of ``project`` from wk, until its step vanishes (≤ 200 iterations)."""
     for _ in range(200):
         h, J = equations(wk)
-        step = _projection_step(J, -h, start - wk, nx)
-        big = np.max(np.abs(step[:nx]), initial=0.0)
-        if big > 0.3:
-            step *= 0.3 / big
+        step = _limit(_projection_step(J, -h, start - wk, nx), limited)
         wk = wk + step
         if np.linalg.norm(step) < 1e-13 * (1 + np.linalg.norm(wk)):
             break
@@ -111,19 +120,17 @@ def _projection_step(J, b, r, nx: int):
     return np.concatenate([dx, dz])
 
 
-def _descend(equations, wk, nx: int, scale: float, iterations: int = 100):
+def _descend(equations, wk, limited, scale: float, iterations: int = 100):
     """Levenberg–Marquardt on the row-scaled residual from wk: minimum-norm damped steps
     d = −Jᵀ (J Jᵀ + μ I)⁻¹ h, μ adapted to the progress (a singular Jacobian is no
-    obstacle), no state moved by more than 0.3 a step. Returns the best point reached."""
+    obstacle), no position moved by more than 0.3 a step. Returns the best point reached."""
     h, J = equations(wk)
     s = _row_scales(J)
     cost, mu = float(np.sum((h / s) ** 2)), 1e-3
     for _ in range(iterations):
         Js, hs = J / s[:, None], h / s
         d = -Js.T @ np.linalg.lstsq(Js @ Js.T + mu * np.eye(len(hs)), hs, rcond=None)[0]
-        big = np.max(np.abs(d[:nx]), initial=0.0)
-        if big > 0.3:
-            d *= 0.3 / big
+        d = _limit(d, limited)
         h_new, J_new = equations(wk + d)
         cost_new = float(np.sum((h_new / s) ** 2))
         if cost_new < cost:

@@ -81,3 +81,22 @@ def test_random_closable_four_bars_assemble_without_a_guess(seed):
     assert np.max(np.abs(gap)) < 1e-10
     assert abs(pt["rev1.phi"] - theta) < 1e-12
     assert abs(pt["crank.frame_b.x"] - l1 * np.cos(theta)) < 1e-12
+
+
+def test_fast_crank_starts_without_a_guess():
+    """A four-bar whose crank starts at 45 rad/s: the loop's velocity constraints are linear
+    in the speeds, so the other joints' speeds come out exactly however large (the start-up
+    solver used to limit speed steps like angle steps, and gave up). Reference: the rates of
+    the loop-closing point, evaluated here from the recorded frame velocities, vanish."""
+    compiled = ac.compile(_four_bar((1.0, 0.3, 1.0, 0.8)))
+    with pytest.warns(UserWarning, match="close the kinematic loops"):
+        pt = operating_point(compiled, {"rev1.phi": 1.0, "rev1.w": 45.0})
+    assert abs(pt["rev1.w"] - 45.0) < 1e-12
+    gap = [pt[f"rev4.frame_a.{c}"] - pt[f"rev4.frame_b.{c}"] for c in ("x", "y")]
+    assert np.max(np.abs(gap)) < 1e-10
+    # the loop's end C moves the same seen from the coupler (body b2) and the rocker (b3);
+    # the crank's tip (b1) as the closed form says
+    for k in (1, 2):
+        assert abs(pt[f"b2.v[{k}]"] - pt[f"b3.v[{k}]"]) < 1e-9 * 45.0
+    assert abs(pt["b1.v[1]"] + 0.3 * 45.0 * np.sin(1.0)) < 1e-10
+    assert abs(pt["b1.v[2]"] - 0.3 * 45.0 * np.cos(1.0)) < 1e-10

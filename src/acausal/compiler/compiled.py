@@ -139,6 +139,13 @@ class CompiledModel:
         return bool(self.loop_rows)
 
     @property
+    def position_states(self) -> list[int]:
+        """Positions in x of the generalized coordinates (the states that are positions or
+        angles, not rates or internal states)."""
+        index = self._index("states")
+        return [index[n] for n in self.lagrange.q_names if n in index]
+
+    @property
     def loop_multipliers(self) -> list[int]:
         """Positions in z of every loop multiplier (μ then ν)."""
         return self.loop_mu + self.loop_nu

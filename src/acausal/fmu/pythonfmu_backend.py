@@ -167,6 +167,7 @@ def _contents(compiled, ident, rtol, atol, solver):
         "param_names": list(c.param_names),
         "param_defaults": [float(v) for v in c.param_vector()],
         "loop_switches": c.loop_switches,
+        "positions": c.position_states,
         "parameter_checks": checks,
         "variables": [_plain(v) for v in variables],
         "units": [_unit(u) for u in sorted({v.unit for v in variables if v.unit})],

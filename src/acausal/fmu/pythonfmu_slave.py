@@ -252,7 +252,8 @@ class AcausalSlave(Fmi2Slave):
 
         names = self.meta["x_names"]
         labels = [names[i] for i in rows] + self.meta["init_labels"]
-        w = kernels.project(equations, start, start, self.nx, labels, targets, given="start")
+        w = kernels.project(equations, start, start, self.nx, labels, targets, given="start",
+                            positions=self.meta["positions"])
         note = kernels.moved_note(names, start, w)
         if note:
             self.log(note, Fmi2Status.ok)

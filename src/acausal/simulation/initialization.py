@@ -61,7 +61,7 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
         if name in names:
             wk[names.index(name)] = float(value)
     try:
-        wk = project(equations, start, wk, nx, labels, targets)
+        wk = project(equations, start, wk, nx, labels, targets, positions=model.position_states)
     except ProjectionError as e:
         raise InitializationError(str(e)) from None
     note = moved_note(names[:nx], start, wk, held=x0) if model.has_loops else None
