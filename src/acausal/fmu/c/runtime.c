@@ -97,10 +97,10 @@ static int solve_z(ac_inst *m, double t, const double *x, double *z) {
         if (eval(m, (ac_fn)ac_alg, t, x, z, out, 2)) return ERR("evaluating the algebraic equations failed");
         if (!all_finite(m->g, AC_NZ) || !all_finite(m->gz, AC_NZ * AC_NZ))
             return ERR("the algebraic equations are not finite at t = %g", t);
-        if (lu(m->gz, AC_NZ, m->piv))
+        if (lu(m->gz, AC_NZ, m->zpiv))
             return ERR("the algebraic equations for %s are singular at t = %g", AC_Z_NAMES[0], t);
         for (i = 0; i < AC_NZ; i++) m->g[i] = -m->g[i];
-        lu_solve(m->gz, AC_NZ, m->piv, m->g);
+        lu_solve(m->gz, AC_NZ, m->zpiv, m->g);
         for (i = 0; i < AC_NZ; i++) {
             z[i] += m->g[i];
             if (fabs(m->g[i]) > step) step = fabs(m->g[i]);
@@ -132,12 +132,12 @@ static int total_jacobian(ac_inst *m, double t, const double *x, const double *z
     if (eval(m, (ac_fn)ac_jac, t, x, z, out, 4)) return ERR("evaluating the Jacobian failed");
     memcpy(m->T, m->Fw, sizeof(double) * AC_NF * AC_NW);
 #if AC_NZ > 0
-    if (lu(m->gz, AC_NZ, m->piv)) return ERR("the algebraic equations are singular at t = %g", t);
+    if (lu(m->gz, AC_NZ, m->zpiv)) return ERR("the algebraic equations are singular at t = %g", t);
     for (j = 0; j < AC_NW; j++) {
         double *s = m->g;        /* scratch: solve_z is not running here */
         int k;
         for (i = 0; i < AC_NZ; i++) s[i] = m->gw[i + j * AC_NZ];
-        lu_solve(m->gz, AC_NZ, m->piv, s);
+        lu_solve(m->gz, AC_NZ, m->zpiv, s);
         for (i = 0; i < AC_NF; i++) {
             double acc = 0.0;
             for (k = 0; k < AC_NZ; k++) acc += m->Fz[i + k * AC_NF] * s[k];

@@ -62,7 +62,9 @@ typedef struct ac_inst {
     double T[AC_D(AC_NF * AC_NW)];     /* total derivative of [xdot; y] w.r.t. [x; u; t] */
     double J[AC_D(AC_NX * AC_NX)], ft[AC_D(AC_NX)];
     double W[AC_D(AC_NX * AC_NX)];
-    int piv[AC_D(AC_NX > AC_NZ ? (AC_NX > AC_NH ? AC_NX : AC_NH) : (AC_NZ > AC_NH ? AC_NZ : AC_NH))];
+    int piv[AC_D(AC_NX > AC_NH ? AC_NX : AC_NH)];
+    int zpiv[AC_D(AC_NZ)];             /* Newton's for z: RODAS4's stages solve z between
+                                          uses of the pivots of W */
     double K[6][AC_D(AC_NX)];
     double y0[AC_D(AC_NX)], ytmp[AC_D(AC_NX)], f0[AC_D(AC_NX)];
     double H[AC_D(AC_NH)], Hx[AC_D(AC_NH * AC_NX)], A[AC_D(AC_NH * AC_NH)];
