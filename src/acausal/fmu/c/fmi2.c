@@ -1,10 +1,10 @@
-/* FMI 2.0 interface (model exchange and co-simulation in one binary) over runtime.c. */
+/* FMI 2.0 adapter (model exchange and co-simulation in one binary): translates the FMI 2
+ * API to the instance's calls (instance.h). */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "fmi2Functions.h"
-#include "runtime.h"
+#include "instance.h"
 
 typedef struct {
     ac_inst m;
@@ -51,17 +51,11 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     f = (fmu2 *)calloc(1, sizeof(fmu2));
     if (!f) return NULL;
     f->cb = *functions;
-    f->m.log = fmi2_log;
-    f->m.logging_on = loggingOn;
-    strncpy(f->m.name, instanceName, sizeof(f->m.name) - 1);
-    if (!fmuGUID || strcmp(fmuGUID, ac_guid) != 0) {
-        ac_logf(&f->m, AC_ERROR, "logStatusError", "GUID %s does not match this FMU's %s",
-                fmuGUID ? fmuGUID : "(null)", ac_guid);
+    if (ac_instantiate(&f->m, instanceName, fmuGUID, fmuType == fmi2CoSimulation, loggingOn,
+                       fmi2_log)) {
         free(f);
         return NULL;
     }
-    f->m.is_cs = fmuType == fmi2CoSimulation;
-    ac_defaults(&f->m);
     return (fmi2Component)f;
 }
 
@@ -95,21 +89,11 @@ fmi2Status fmi2Reset(fmi2Component c) {
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
-    size_t i;
-    for (i = 0; i < nvr; i++) {
-        int st = ac_get_real(M, vr[i], &value[i]);
-        if (st) return fail(c, st);
-    }
-    return fmi2OK;
+    return fail(c, ac_get_reals(M, vr, nvr, value));
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
-    size_t i;
-    for (i = 0; i < nvr; i++) {
-        int st = ac_set_real(M, vr[i], value[i]);
-        if (st) return ST(st);         /* a rejected value leaves the FMU usable */
-    }
-    return fmi2OK;
+    return ST(ac_set_reals(M, vr, nvr, value));   /* a rejected value leaves the FMU usable */
 }
 
 static fmi2Status no_such(fmi2Component c, size_t nvr, const char *type) {
@@ -191,10 +175,8 @@ fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) { M->d.mode = AC_CONT; r
 
 fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStatePriorToCurrentPoint,
                                        fmi2Boolean *enterEventMode, fmi2Boolean *terminateSimulation) {
-    int ex = 0;
     (void)noSetFMUStatePriorToCurrentPoint;
-    ac_drift_exceeded(M, &ex);
-    *enterEventMode = ex ? fmi2True : fmi2False;
+    *enterEventMode = ac_drift_exceeded(M) ? fmi2True : fmi2False;
     *terminateSimulation = fmi2False;
     return fmi2OK;
 }
@@ -202,14 +184,11 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
 fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) { ac_set_time(M, time); return fmi2OK; }
 
 fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t nx) {
-    if (nx != AC_NX) { ac_logf(M, AC_ERROR, "logStatusError", "expected %d states, got %d", AC_NX, (int)nx); return fmi2Error; }
-    ac_set_states(M, x);
-    return fmi2OK;
+    return ST(ac_set_states(M, x, nx));
 }
 
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx) {
-    if (nx != AC_NX) { ac_logf(M, AC_ERROR, "logStatusError", "expected %d states, got %d", AC_NX, (int)nx); return fmi2Error; }
-    return fail(c, ac_derivatives(M, derivatives));
+    return fail(c, ac_get_derivatives(M, derivatives, nx));
 }
 
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni) {
@@ -218,9 +197,7 @@ fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], s
 }
 
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx) {
-    if (nx != AC_NX) { ac_logf(M, AC_ERROR, "logStatusError", "expected %d states, got %d", AC_NX, (int)nx); return fmi2Error; }
-    memcpy(x, M->d.x, sizeof(double) * nx);
-    return fmi2OK;
+    return ST(ac_get_states(M, x, nx));
 }
 
 fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal[], size_t nx) {

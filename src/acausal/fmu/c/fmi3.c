@@ -1,10 +1,10 @@
-/* FMI 3.0 interface (model exchange and co-simulation) over runtime.c. */
+/* FMI 3.0 adapter (model exchange and co-simulation): translates the FMI 3 API to the
+ * instance's calls (instance.h). */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "fmi3Functions.h"
-#include "runtime.h"
+#include "instance.h"
 
 typedef struct {
     ac_inst m;
@@ -48,17 +48,10 @@ static fmi3Instance instantiate(fmi3String name, fmi3String token, fmi3Boolean l
     if (!f) return NULL;
     f->logger = logger;
     f->env = env;
-    f->m.log = fmi3_log;
-    f->m.logging_on = loggingOn;
-    strncpy(f->m.name, name, sizeof(f->m.name) - 1);
-    if (!token || strcmp(token, ac_guid) != 0) {
-        ac_logf(&f->m, AC_ERROR, "logStatusError", "instantiation token %s does not match this FMU's %s",
-                token ? token : "(null)", ac_guid);
+    if (ac_instantiate(&f->m, name, token, cs, loggingOn, fmi3_log)) {
         free(f);
         return NULL;
     }
-    f->m.is_cs = cs;
-    ac_defaults(&f->m);
     return (fmi3Instance)f;
 }
 
@@ -124,24 +117,14 @@ fmi3Status fmi3Reset(fmi3Instance instance) { ac_defaults(M); return fmi3OK; }
 /* ---- values ------------------------------------------------------------------------------ */
 fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t nValues) {
-    size_t i;
     if (nValues < nvr) return unsupported(instance, "arrays");
-    for (i = 0; i < nvr; i++) {
-        int st = ac_get_real(M, vr[i], &values[i]);
-        if (st) return fail(instance, st);
-    }
-    return fmi3OK;
+    return fail(instance, ac_get_reals(M, vr, nvr, values));
 }
 
 fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float64 values[], size_t nValues) {
-    size_t i;
     if (nValues < nvr) return unsupported(instance, "arrays");
-    for (i = 0; i < nvr; i++) {
-        int st = ac_set_real(M, vr[i], values[i]);
-        if (st) return ST(st);
-    }
-    return fmi3OK;
+    return ST(ac_set_reals(M, vr, nvr, values));   /* a rejected value leaves the FMU usable */
 }
 
 #define NO_VARS(NAME, CT, TYPE)                                                                  \
@@ -309,31 +292,20 @@ fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance) { M->d.mode = AC_C
 
 fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
                                        fmi3Boolean *enterEventMode, fmi3Boolean *terminateSimulation) {
-    int ex = 0;
     (void)noSetFMUStatePriorToCurrentPoint;
-    ac_drift_exceeded(M, &ex);
-    *enterEventMode = ex ? fmi3True : fmi3False;
+    *enterEventMode = ac_drift_exceeded(M) ? fmi3True : fmi3False;
     *terminateSimulation = fmi3False;
     return fmi3OK;
 }
 
 fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64 time) { ac_set_time(M, time); return fmi3OK; }
 
-static fmi3Status check_n(fmi3Instance instance, size_t n) {
-    if (n == AC_NX) return fmi3OK;
-    ac_logf(M, AC_ERROR, "logStatusError", "expected %d continuous states, got %d", AC_NX, (int)n);
-    return fmi3Error;
-}
-
 fmi3Status fmi3SetContinuousStates(fmi3Instance instance, const fmi3Float64 x[], size_t n) {
-    if (check_n(instance, n)) return fmi3Error;
-    ac_set_states(M, x);
-    return fmi3OK;
+    return ST(ac_set_states(M, x, n));
 }
 
 fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance instance, fmi3Float64 dx[], size_t n) {
-    if (check_n(instance, n)) return fmi3Error;
-    return fail(instance, ac_derivatives(M, dx));
+    return fail(instance, ac_get_derivatives(M, dx, n));
 }
 
 fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64 z[], size_t n) {
@@ -342,9 +314,7 @@ fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64 z[], size_t
 }
 
 fmi3Status fmi3GetContinuousStates(fmi3Instance instance, fmi3Float64 x[], size_t n) {
-    if (check_n(instance, n)) return fmi3Error;
-    memcpy(x, M->d.x, sizeof(double) * n);
-    return fmi3OK;
+    return ST(ac_get_states(M, x, n));
 }
 
 fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance, fmi3Float64 nominals[], size_t n) {
