@@ -140,9 +140,13 @@ int ac_keep_loops_closed(ac_inst *m, double factor, int *projected) {
     if (con_norm(m, m->d.x) <= factor * drift_tol(m)) return AC_OK;
     for (k = 0; k < AC_NX; k++) D[k] = 1.0;
     memcpy(target, m->d.x, sizeof(target));
-    if (project(m, m->d.x, target, D, 0.0, 20, 1e-3 * drift_tol(m)))
+    if (project(m, m->d.x, target, D, 0.0, 20, 1e-3 * drift_tol(m))) {
+        double residual = con_norm(m, m->d.x);
+        memcpy(m->d.x, target, sizeof(target));       /* the states as they were */
+        ac_invalidate(m);
         return ERR("cannot satisfy the loop constraints at t = %g (residual %g): the "
-                   "mechanism has left its assembled configuration", m->d.t, con_norm(m, m->d.x));
+                   "mechanism has left its assembled configuration", m->d.t, residual);
+    }
     if (projected) *projected = 1;
     return AC_OK;
 }
