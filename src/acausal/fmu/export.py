@@ -60,9 +60,20 @@ so both reach the same assembly). Then the loop-row switches ``loops.active_i``
 (calculatedParameters) are set at the assembled configuration as ``simulate()`` sets them:
 rows that add nothing to the rank of Φ_q there are off (a redundant link).
 
-Errors inside the FMU (a rejected parameter value — NaN, or violating the Parameter's
-positive / nonnegative / nonzero flag — a failed Newton or projection, a failed step) return
-fmi2Error / fmi3Error with a message through the logger callback.
+Errors and the life cycle
+-------------------------
+The FMU keeps the FMI life cycle (instantiated, initialization mode, event / continuous-time
+mode or step mode, terminated, and an error state after a failed initialization, step or
+event update) with the Reference FMUs' rules of which call is allowed when. Refused, with
+fmi2Error / fmi3Error and a message through the logger callback, and without changing the
+instance: a NULL instance (no message), a call out of order, a value reference no variable has
+(0 in FMI 2; time in FMI 3), a non-finite time, tolerance, input or state, a parameter value
+that is not finite or violates its Parameter's positive / nonnegative / nonzero flag (the
+flags are generated into model_data.c), a doStep whose step size is not finite and > 0 or
+whose communication point is not the FMU's time (the Reference FMUs' tolerance: 1e-5,
+absolute or relative; the step then ends at communication point + step size). A failed
+Newton, projection or step returns the same statuses and puts the instance in the error
+state, from which it can be read, reset, restored from an FMU state or freed.
 
 Directional derivatives (``providesDirectionalDerivative(s)``) of state derivatives and
 outputs w.r.t. states and inputs come from CasADi's AD (total derivatives through z).
@@ -164,10 +175,14 @@ def solver_variables(first_vr: int) -> list[FmuVariable]:
             for i, (name, start, unit, desc) in enumerate(SOLVER_VARIABLES)]
 
 
-def vr_table(compiled, variables: list[FmuVariable]):
+def vr_table(compiled, variables: list[FmuVariable], fmi_version: str):
+    """(kind, index) by value reference; value reference 0 is time in FMI 3.0 (declared
+    there as the independent variable) and no variable in FMI 2.0."""
     layout = compiled.recorded_layout
     n = max(v.value_reference for v in variables) + 1
-    kind, index = [KINDS["time"]] + [8] * (n - 1), [0] * n
+    kind, index = [8] * n, [0] * n
+    if fmi_version == "3.0":
+        kind[0] = KINDS["time"]
     for v in variables:
         k, i = KINDS[v.kind], v.index
         if v.kind == "recorded":
@@ -177,12 +192,12 @@ def vr_table(compiled, variables: list[FmuVariable]):
     return kind, index
 
 
-def model_sources(compiled, mf: ModelFunctions, variables, guid: str,
-                  nominal: list[float]) -> dict[str, str]:
+def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: list[float],
+                  fmi_version: str) -> dict[str, str]:
     """model.h (the sizes of the model and its tables' declarations) and model_data.c (the
     tables: value references, defaults, parameter flags, names)."""
     sz = mf.sizes()
-    kind, index = vr_table(compiled, variables)
+    kind, index = vr_table(compiled, variables, fmi_version)
     sizes = [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
              ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
              ("NEV", mf.nev), ("NVR", len(kind)), ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]),
@@ -286,7 +301,8 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
         digest.update(repr([(v.name, v.value_reference, v.start) for v in variables]
                            + nominal).encode())
         guid = "{" + str(uuid.UUID(digest.hexdigest()[:32])) + "}"
-        for name, text in model_sources(compiled, mf, variables, guid, nominal).items():
+        for name, text in model_sources(compiled, mf, variables, guid, nominal,
+                                       fmi_version).items():
             (src / name).write_text(text)
         wrapper = "fmi2.c" if fmi_version == "2.0" else "fmi3.c"
         pkg = resources.files("acausal.fmu") / "c"

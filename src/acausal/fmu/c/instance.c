@@ -46,6 +46,25 @@ static int update_starts(ac_inst *m) {
 }
 
 /* ---- life cycle ------------------------------------------------------------------------ */
+static const char *mode_name(int mode) {
+    switch (mode) {
+    case AC_INSTANTIATED: return "the instantiated state";
+    case AC_INIT: return "initialization mode";
+    case AC_EVENT: return "event mode";
+    case AC_CONT: return "continuous-time mode";
+    case AC_STEP: return "step mode";
+    case AC_TERMINATED: return "the terminated state";
+    default: return "the error state";
+    }
+}
+
+int ac_allowed(ac_inst *m, int modes, const char *fn) {
+    if (!m) return 0;
+    if (m->d.mode & modes) return 1;
+    ac_logf(m, AC_ERROR, "logStatusError", "%s is not allowed in %s", fn, mode_name(m->d.mode));
+    return 0;
+}
+
 int ac_instantiate(ac_inst *m, const char *name, const char *token, int is_cs, int logging_on,
                    ac_log_fn log) {
     m->log = log;
@@ -73,13 +92,17 @@ void ac_defaults(ac_inst *m) {
     update_starts(m);
 }
 
-void ac_tolerance(ac_inst *m, int defined, double tol) {
-    if (!defined || !(tol > 0)) return;
-    if (!m->d.rtol_set) m->d.rtol = tol;
-    if (!m->d.atol_set) m->d.atol = 1e-2 * tol;
+int ac_setup(ac_inst *m, int tolerance_defined, double tolerance, double start_time) {
+    if (!isfinite(start_time)) return ERR("the start time must be a finite number, got %g", start_time);
+    if (tolerance_defined && !(tolerance > 0 && isfinite(tolerance)))
+        return ERR("the tolerance must be a finite number > 0, got %g", tolerance);
+    if (tolerance_defined && !m->d.rtol_set) m->d.rtol = tolerance;
+    if (tolerance_defined && !m->d.atol_set) m->d.atol = 1e-2 * tolerance;
+    ac_set_time(m, start_time);
+    return AC_OK;
 }
 
-int ac_initialize(ac_inst *m) {
+static int initialize(ac_inst *m) {
     if (check_params(m)) return AC_ERROR;
     if (update_starts(m)) return AC_ERROR;
     if (ac_assemble_loops(m)) return AC_ERROR;
@@ -91,8 +114,14 @@ int ac_initialize(ac_inst *m) {
     return AC_OK;
 }
 
+int ac_exit_initialization(ac_inst *m) {
+    if (initialize(m)) { m->d.mode = AC_FAILED; return AC_ERROR; }
+    m->d.mode = m->is_cs ? AC_STEP : AC_EVENT;
+    return AC_OK;
+}
+
 int ac_event_update(ac_inst *m, int *states_changed) {
-    if (ac_keep_loops_closed(m, 1e-3, states_changed)) return AC_ERROR;
+    if (ac_keep_loops_closed(m, 1e-3, states_changed)) { m->d.mode = AC_FAILED; return AC_ERROR; }
     ac_invalidate(m);
     m->d.next_event = ac_next_event(m, m->d.t);
     return AC_OK;
@@ -163,8 +192,10 @@ int ac_set_reals(ac_inst *m, const unsigned *vr, size_t n, const double *values)
     return AC_OK;
 }
 
-void ac_set_time(ac_inst *m, double t) {
+int ac_set_time(ac_inst *m, double t) {
+    if (!isfinite(t)) return ERR("the time must be a finite number, got %g", t);
     if (t != m->d.t) { m->d.t = t; ac_invalidate(m); }
+    return AC_OK;
 }
 
 /* ---- continuous states ------------------------------------------------------------------ */
@@ -180,7 +211,10 @@ int ac_get_states(ac_inst *m, double *x, size_t n) {
 }
 
 int ac_set_states(ac_inst *m, const double *x, size_t n) {
+    size_t i;
     if (check_nx(m, n)) return AC_ERROR;
+    for (i = 0; i < n; i++)
+        if (!isfinite(x[i])) return ERR("state '%s': value %g is not finite", AC_X_NAMES[i], x[i]);
     memcpy(m->d.x, x, sizeof(double) * n);
     ac_invalidate(m);
     return AC_OK;

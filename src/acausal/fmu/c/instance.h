@@ -17,8 +17,18 @@ enum { AC_OK = 0, AC_WARNING = 1, AC_DISCARD = 2, AC_ERROR = 3, AC_FATAL = 4 };
 /* kinds of value references (export.py's KINDS) */
 enum { AC_K_PARAM = 0, AC_K_INPUT, AC_K_OUTPUT, AC_K_STATE, AC_K_DER, AC_K_REC, AC_K_SOLVER,
        AC_K_TIME, AC_K_NONE, AC_K_SWITCH };   /* AC_K_SWITCH: a loop-row switch (calculated) */
-/* life cycle */
-enum { AC_INSTANTIATED = 0, AC_INIT, AC_EVENT, AC_CONT, AC_STEP, AC_TERMINATED, AC_FAILED };
+/* life-cycle modes, bits so that a set of them is a mask. AC_FAILED: a computation failed
+ * (initialization, a step, an event update); the instance can then be read, restored from
+ * an FMU state, reset or freed. */
+enum { AC_INSTANTIATED = 1, AC_INIT = 2, AC_EVENT = 4, AC_CONT = 8, AC_STEP = 16,
+       AC_TERMINATED = 32, AC_FAILED = 64 };
+/* the modes each kind of call is allowed in (the Reference FMUs' masks of FMI 3, which FMI 2
+ * follows where its functions correspond) */
+#define AC_ANY 127
+#define AC_SETTABLE (AC_INSTANTIATED | AC_INIT | AC_EVENT | AC_CONT | AC_STEP)  /* set values */
+#define AC_RUNNING (AC_EVENT | AC_CONT | AC_STEP)                               /* terminate */
+#define AC_EVALUABLE (AC_INIT | AC_RUNNING | AC_TERMINATED)   /* directional derivatives */
+#define AC_STATES_READABLE (AC_INIT | AC_EVENT | AC_CONT | AC_TERMINATED | AC_FAILED)
 
 /* Everything the FMU state (get/set/serialize) saves. Plain data, no pointers. */
 typedef struct {
@@ -57,17 +67,19 @@ typedef struct ac_inst {
 void ac_logf(ac_inst *m, int status, const char *category, const char *fmt, ...);
 #define ERR(...) (ac_logf(m, AC_ERROR, "logStatusError", __VA_ARGS__), AC_ERROR)
 
-/* life cycle */
+/* life cycle. ac_allowed: 1 if the instance is in one of `modes`; else 0, logged naming
+ * the FMI function `fn` (a NULL instance: 0, unlogged) */
+int ac_allowed(ac_inst *m, int modes, const char *fn);
 int ac_instantiate(ac_inst *m, const char *name, const char *token, int is_cs, int logging_on,
                    ac_log_fn log);             /* AC_ERROR (logged): not this FMU's token */
 void ac_defaults(ac_inst *m);                  /* instantiated: defaults and start values */
-void ac_tolerance(ac_inst *m, int defined, double tol);
-int ac_initialize(ac_inst *m);                 /* exit initialization mode */
+int ac_setup(ac_inst *m, int tolerance_defined, double tolerance, double start_time);
+int ac_exit_initialization(ac_inst *m);        /* to event mode (ME) or step mode (CS) */
 int ac_event_update(ac_inst *m, int *states_changed);   /* ME: project the loops, next event */
 /* values by value reference */
 int ac_get_reals(ac_inst *m, const unsigned *vr, size_t n, double *values);
 int ac_set_reals(ac_inst *m, const unsigned *vr, size_t n, const double *values);
-void ac_set_time(ac_inst *m, double t);
+int ac_set_time(ac_inst *m, double t);
 /* the continuous states: n must be AC_NX */
 int ac_get_states(ac_inst *m, double *x, size_t n);
 int ac_set_states(ac_inst *m, const double *x, size_t n);

@@ -134,17 +134,14 @@ static int integrate(ac_inst *m, double t1) {
     return AC_OK;
 }
 
-int ac_do_step(ac_inst *m, double t0, double H) {
-    double t1 = t0 + H, tol = 1e-10 * (fabs(t1) > 1 ? fabs(t1) : 1);
-    if (fabs(t0 - m->d.t) > tol)
-        return ERR("doStep from t = %.17g but the FMU is at t = %.17g", t0, m->d.t);
-    if (H < 0) return ERR("doStep with a negative step size %g", H);
-    m->d.t = t0;
+/* to t1 from the instance's time, stopping just before every time event and restarting at it */
+static int advance(ac_inst *m, double t1) {
+    double tol = 1e-10 * (fabs(t1) > 1 ? fabs(t1) : 1);
     /* a parameter changed between steps may have opened the loops */
     if (ac_keep_loops_closed(m, 1.0, NULL)) return AC_ERROR;
     while (m->d.t < t1 - tol) {
         double te = ac_next_event(m, m->d.t);
-        if (te < t1 + tol) {           /* stop just before a time event, restart at it */
+        if (te < t1 + tol) {
             double end = te - 1e-12 * (fabs(te) > 1 ? fabs(te) : 1);
             if (end > m->d.t && integrate(m, end)) return AC_ERROR;
             m->d.t = te > t1 ? t1 : te;
@@ -153,5 +150,24 @@ int ac_do_step(ac_inst *m, double t0, double H) {
     }
     m->d.t = t1;
     ac_invalidate(m);
+    return AC_OK;
+}
+
+/* the Reference FMUs' rule for a communication point at the FMU's time */
+static int is_close(double a, double b) {
+    double d = fabs(a - b), big = fabs(a) > fabs(b) ? fabs(a) : fabs(b);
+    return d <= 1e-5 || d <= 1e-5 * big;
+}
+
+int ac_do_step(ac_inst *m, double t0, double H) {
+    double t1 = t0 + H;
+    if (!isfinite(t0) || !isfinite(H) || !(H > 0))
+        return ERR("doStep from t = %g over %g: the communication point must be finite and "
+                   "the step size finite and > 0", t0, H);
+    if (!is_close(t0, m->d.t))
+        return ERR("doStep from t = %.17g but the FMU is at t = %.17g", t0, m->d.t);
+    if (!(t1 > m->d.t))
+        return ERR("doStep to t = %.17g: the FMU is already at t = %.17g", t1, m->d.t);
+    if (advance(m, t1)) { m->d.mode = AC_FAILED; return AC_ERROR; }
     return AC_OK;
 }

@@ -15,7 +15,8 @@ typedef struct {
 } ac_solver_work;
 
 struct ac_inst;
-/* integrate from t0 (the instance's time) over H */
+/* integrate from the instance's time to t0 + H; t0 must be the instance's time (to within
+ * the Reference FMUs' tolerance, 1e-5 absolute or relative) and H > 0 */
 int ac_do_step(struct ac_inst *m, double t0, double H);
 
 #endif
