@@ -181,7 +181,7 @@ def independent_rows(J) -> np.ndarray:
     it, 0 for the others: the loop rows to enforce at a configuration. In row order, a row is
     on when its Gram–Schmidt residual against the rows on before it exceeds
     1e-9 · max(1, max |J|); the native FMU's runtime applies the same rule
-    (``select_loop_rows`` in runtime.c)."""
+    (``select_loop_rows`` in fmu/c/loops.c)."""
     J = np.asarray(J, dtype=float)
     tol = 1e-9 * max(1.0, np.abs(J).max(initial=0.0))
     active, basis = np.zeros(J.shape[0]), []

@@ -16,8 +16,6 @@ import pytest
 fmpy = pytest.importorskip("fmpy")
 from fmpy import extract, read_model_description, simulate_fmu    # noqa: E402
 from fmpy.fmi1 import FMICallException                            # noqa: E402
-from fmpy.fmi2 import FMU2Model, FMU2Slave                        # noqa: E402
-from fmpy.fmi3 import FMU3Model, FMU3Slave                        # noqa: E402
 from fmpy.validation import validate_fmu                          # noqa: E402
 
 import acausal                                                    # noqa: E402
@@ -25,6 +23,7 @@ from acausal.components import translational as tr               # noqa: E402
 from acausal.core import RealOutput                               # noqa: E402
 from acausal.fmu import FmuExportError                            # noqa: E402
 from acausal.models import FourBar, GantryCrane                   # noqa: E402
+from fmi_calls import derivatives, get_real, init, instance, set_real   # noqa: E402
 
 
 def crane_closed_form(q, qd, M, m, L, c, c_T, g):
@@ -67,45 +66,6 @@ def fmus(fmu_dir):
             ("crane", "3.0"): crane.export_fmu(fmu_dir / "crane3.fmu", fmi_version="3.0"),
             ("iso", "2.0"): iso.export_fmu(fmu_dir / "iso2.fmu"),
             ("iso", "3.0"): iso.export_fmu(fmu_dir / "iso3.fmu", fmi_version="3.0")}
-
-
-def instance(path, cs=False, **kw):
-    md = read_model_description(str(path))
-    cls = {("2.0", False): FMU2Model, ("2.0", True): FMU2Slave, ("3.0", False): FMU3Model,
-           ("3.0", True): FMU3Slave}[(md.fmiVersion, cs)]
-    ident = (md.coSimulation if cs else md.modelExchange).modelIdentifier
-    fmu = cls(guid=md.guid, unzipDirectory=extract(str(path)), modelIdentifier=ident,
-              instanceName="test")
-    fmu.instantiate(**kw)
-    vr = {v.name: v.valueReference for v in md.modelVariables}
-    return fmu, vr, md
-
-
-def init(fmu, md, start=None, vr=None):
-    v3 = md.fmiVersion == "3.0"
-    if not v3:
-        fmu.setupExperiment(startTime=0.0)
-    fmu.enterInitializationMode() if not v3 else fmu.enterInitializationMode(startTime=0.0)
-    for n, val in (start or {}).items():
-        set_real(fmu, md, [vr[n]], [val])
-    fmu.exitInitializationMode()
-
-
-def get_real(fmu, md, vrs):
-    return np.array(fmu.getFloat64(vrs) if md.fmiVersion == "3.0" else fmu.getReal(vrs))
-
-
-def set_real(fmu, md, vrs, vals):
-    fmu.setFloat64(vrs, vals) if md.fmiVersion == "3.0" else fmu.setReal(vrs, vals)
-
-
-def derivatives(fmu, md, x, t=0.0):
-    n = len(x)
-    fmu.setTime(t)
-    fmu.setContinuousStates((ctypes.c_double * n)(*x), n)
-    dx = (ctypes.c_double * n)()
-    (fmu.getContinuousStateDerivatives if md.fmiVersion == "3.0" else fmu.getDerivatives)(dx, n)
-    return np.array(dx)
 
 
 @pytest.mark.parametrize("version", ["2.0", "3.0"])

@@ -4,10 +4,12 @@ the system C compiler. No Python is needed where the FMU runs.
 What the FMU contains
 ---------------------
 - ``binaries/linux64/<id>.so`` (FMI 2.0) or ``binaries/x86_64-linux/<id>.so`` (FMI 3.0), built
-  from ``sources/``: the generated model functions (``model_functions.c``), the model's tables
-  (``model.h``, ``model_data.h``), the shared runtime (``runtime.c``: Newton for algebraic
-  variables, loop projection, the RODAS4 co-simulation solver, dense LU) and the FMI wrapper
-  (``fmi2.c`` or ``fmi3.c``). FMI 2 lists the sources in modelDescription.xml, FMI 3 in
+  from ``sources/``: the generated model functions (``model_functions.c``), the model's sizes
+  and tables (``model.h``, ``model_data.c``), the shared runtime (``c/`` in this package:
+  ``instance.c`` the instance, its variables and life cycle; ``equations.c`` evaluation and
+  Newton for algebraic variables; ``loops.c`` loop projection; ``solver.c`` the RODAS4
+  co-simulation solver; ``linalg.c`` dense LU) and the FMI adapter (``fmi2.c`` or
+  ``fmi3.c``). FMI 2 lists the sources in modelDescription.xml, FMI 3 in
   ``sources/buildDescription.xml``; to rebuild elsewhere compile them with the standard FMI
   headers on the include path and link with ``-lm``.
 - Variables: ``variables.fmu_variables`` (parameters tunable, inputs, outputs, states with
@@ -58,9 +60,20 @@ so both reach the same assembly). Then the loop-row switches ``loops.active_i``
 (calculatedParameters) are set at the assembled configuration as ``simulate()`` sets them:
 rows that add nothing to the rank of Φ_q there are off (a redundant link).
 
-Errors inside the FMU (a rejected parameter value — NaN, or violating the Parameter's
-positive / nonnegative / nonzero flag — a failed Newton or projection, a failed step) return
-fmi2Error / fmi3Error with a message through the logger callback.
+Errors and the life cycle
+-------------------------
+The FMU keeps the FMI life cycle (instantiated, initialization mode, event / continuous-time
+mode or step mode, terminated, and an error state after a failed initialization, step or
+event update) with the Reference FMUs' rules of which call is allowed when. Refused, with
+fmi2Error / fmi3Error and a message through the logger callback, and without changing the
+instance: a NULL instance (no message), a call out of order, a value reference no variable has
+(0 in FMI 2; time in FMI 3), a non-finite time, tolerance, input or state, a parameter value
+that is not finite or violates its Parameter's positive / nonnegative / nonzero flag (the
+flags are generated into model_data.c), a doStep whose step size is not finite and > 0 or
+whose communication point is not the FMU's time (the Reference FMUs' tolerance: 1e-5,
+absolute or relative; the step then ends at communication point + step size). A failed
+Newton, projection or step returns the same statuses and puts the instance in the error
+state, from which it can be read, reset, restored from an FMU state or freed.
 
 Directional derivatives (``providesDirectionalDerivative(s)``) of state derivatives and
 outputs w.r.t. states and inputs come from CasADi's AD (total derivatives through z).
@@ -87,8 +100,10 @@ from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, f
 from .variables import FmuVariable, fmu_variables
 
 KINDS = {"parameter": 0, "input": 1, "output": 2, "state": 3, "derivative": 4, "recorded": 5,
-         "solver": 6, "time": 7, "switch": 9}       # runtime.h's AC_K_* (8: no variable)
-RUNTIME_SOURCES = ("runtime.h", "runtime.c")
+         "solver": 6, "time": 7, "switch": 9}       # instance.h's AC_K_* (8: no variable)
+# the runtime shared by every native FMU (c/): headers, then the C files compiled
+RUNTIME_HEADERS = ("instance.h", "equations.h", "loops.h", "solver.h", "linalg.h")
+RUNTIME_SOURCES = ("instance.c", "equations.c", "loops.c", "solver.c", "linalg.c")
 
 
 # ---- the toolchain ---------------------------------------------------------------------
@@ -141,10 +156,12 @@ def _c_str(s: str) -> str:
     return '"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
-def _c_arr(ctype: str, name: str, values, fmt=repr) -> str:
+def _c_arr(ctype: str, name: str, values, fmt=repr) -> tuple[str, str]:
+    """(declaration for model.h, definition for model_data.c) of a constant table."""
     vals = list(values) or ["" if fmt is _c_str else 0]
     body = ", ".join(fmt(v) for v in vals)
-    return f"static const {ctype} {name}[{len(vals)}] = {{{body}}};\n"
+    head = f"const {ctype} {name}[{len(vals)}]"
+    return f"extern {head};\n", f"{head} = {{{body}}};\n"
 
 
 def solver_variables(first_vr: int) -> list[FmuVariable]:
@@ -153,10 +170,14 @@ def solver_variables(first_vr: int) -> list[FmuVariable]:
             for i, (name, start, unit, desc) in enumerate(SOLVER_VARIABLES)]
 
 
-def vr_table(compiled, variables: list[FmuVariable]):
+def vr_table(compiled, variables: list[FmuVariable], fmi_version: str):
+    """(kind, index) by value reference; value reference 0 is time in FMI 3.0 (declared
+    there as the independent variable) and no variable in FMI 2.0."""
     layout = compiled.recorded_layout
     n = max(v.value_reference for v in variables) + 1
-    kind, index = [KINDS["time"]] + [8] * (n - 1), [0] * n
+    kind, index = [8] * n, [0] * n
+    if fmi_version == "3.0":
+        kind[0] = KINDS["time"]
     for v in variables:
         k, i = KINDS[v.kind], v.index
         if v.kind == "recorded":
@@ -166,37 +187,43 @@ def vr_table(compiled, variables: list[FmuVariable]):
     return kind, index
 
 
-def model_headers(compiled, mf: ModelFunctions, variables, guid: str,
-                  nominal: list[float]) -> dict[str, str]:
+def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: list[float],
+                  fmi_version: str) -> dict[str, str]:
+    """model.h (the sizes of the model and its tables' declarations) and model_data.c (the
+    tables: value references, defaults, parameter flags, names)."""
     sz = mf.sizes()
-    model_h = ["/* generated by acausal: sizes of the model */\n#ifndef AC_MODEL_H\n"
-               "#define AC_MODEL_H\n"]
-    kind, index = vr_table(compiled, variables)
-    for k, v in [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
-                 ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
-                 ("NEV", mf.nev), ("NVR", len(kind)),
-                 ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
-                 ("SZ_W", sz["w"])]:
-        model_h.append(f"#define AC_{k} {v}\n")
-    model_h.append("#endif\n")
+    kind, index = vr_table(compiled, variables, fmi_version)
+    sizes = [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
+             ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
+             ("NEV", mf.nev), ("NVR", len(kind)), ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]),
+             ("SZ_IW", sz["iw"]), ("SZ_W", sz["w"])]
+    # the Parameter's flags, checked by the runtime as Parameter.check_scalar does
     rules = [v.declaration.rule for v in compiled.params]
     flags = [(1 if r["positive"] else 0) | (2 if r["nonnegative"] else 0)
              | (4 if r["nonzero"] else 0) for r in rules]
-    data = ["/* generated by acausal: tables of the model (included by runtime.c only) */\n",
-            '#include "model_functions.h"\n',
-            f"const char *ac_model_name = {_c_str(compiled.name)};\n",
-            f"const char *ac_guid = {_c_str(guid)};\n",
-            _c_arr("int", "AC_VR_KIND", kind, str), _c_arr("int", "AC_VR_INDEX", index, str),
-            _c_arr("double", "AC_P_DEFAULT", compiled.param_vector(), lambda v: repr(float(v))),
-            _c_arr("int", "AC_SWITCH", compiled.loop_switches, str),
-            _c_arr("unsigned char", "AC_P_FLAGS", flags, str),
-            _c_arr("char *", "AC_P_NAMES", compiled.param_names, _c_str),
-            _c_arr("double", "AC_U_START", [float(v) for v in compiled.input_start]),
-            _c_arr("char *", "AC_X_NAMES", compiled.x_names, _c_str),
-            _c_arr("double", "AC_X_NOMINAL", nominal),
-            _c_arr("char *", "AC_Z_NAMES", mf.z_names, _c_str),
-            _c_arr("double", "AC_SOLVER_DEFAULT", [float(s[1]) for s in SOLVER_VARIABLES])]
-    return {"model.h": "".join(model_h), "model_data.h": "".join(data)}
+    tables = [("char *", "ac_model_name", _c_str(compiled.name)),
+              ("char *", "ac_guid", _c_str(guid))]
+    arrays = [_c_arr("int", "AC_VR_KIND", kind, str), _c_arr("int", "AC_VR_INDEX", index, str),
+              _c_arr("double", "AC_P_DEFAULT", compiled.param_vector(),
+                     lambda v: repr(float(v))),
+              _c_arr("int", "AC_SWITCH", compiled.loop_switches, str),
+              _c_arr("unsigned char", "AC_P_FLAGS", flags, str),
+              _c_arr("char *", "AC_P_NAMES", compiled.param_names, _c_str),
+              _c_arr("double", "AC_U_START", [float(v) for v in compiled.input_start]),
+              _c_arr("char *", "AC_X_NAMES", compiled.x_names, _c_str),
+              _c_arr("double", "AC_X_NOMINAL", nominal),
+              _c_arr("char *", "AC_Z_NAMES", mf.z_names, _c_str),
+              _c_arr("double", "AC_SOLVER_DEFAULT", [float(s[1]) for s in SOLVER_VARIABLES])]
+    model_h = ["/* generated by acausal: sizes and tables of the model */\n#ifndef AC_MODEL_H\n"
+               "#define AC_MODEL_H\n"]
+    model_h += [f"#define AC_{k} {v}\n" for k, v in sizes]
+    model_h.append("#define AC_D(n) ((n) > 0 ? (n) : 1)   /* array length: C has no empty "
+                   "arrays */\n")
+    model_h += [f"extern const {t} {n};\n" for t, n, _ in tables] + [d for d, _ in arrays]
+    model_h.append("#endif\n")
+    data = ['/* generated by acausal: tables of the model */\n#include "model.h"\n']
+    data += [f"const {t} {n} = {v};\n" for t, n, v in tables] + [d for _, d in arrays]
+    return {"model.h": "".join(model_h), "model_data.c": "".join(data)}
 
 
 def dependencies(compiled, mf: ModelFunctions, variables: list[FmuVariable]) -> dict:
@@ -268,13 +295,14 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
         digest.update(repr([(v.name, v.value_reference, v.start) for v in variables]
                            + nominal).encode())
         guid = "{" + str(uuid.UUID(digest.hexdigest()[:32])) + "}"
-        for name, text in model_headers(compiled, mf, variables, guid, nominal).items():
+        for name, text in model_sources(compiled, mf, variables, guid, nominal,
+                                       fmi_version).items():
             (src / name).write_text(text)
         wrapper = "fmi2.c" if fmi_version == "2.0" else "fmi3.c"
         pkg = resources.files("acausal.fmu") / "c"
-        for name in RUNTIME_SOURCES + (wrapper,):
+        for name in RUNTIME_HEADERS + RUNTIME_SOURCES + (wrapper,):
             (src / name).write_text((pkg / name).read_text())
-        c_files = [generated[0], "runtime.c", wrapper]
+        c_files = [generated[0], "model_data.c", *RUNTIME_SOURCES, wrapper]
         plat = plat2 if fmi_version == "2.0" else plat3
         binary = tmp / "binaries" / plat / f"{ident}{ext}"
         binary.parent.mkdir(parents=True)

@@ -1,10 +1,11 @@
-/* FMI 2.0 interface (model exchange and co-simulation in one binary) over runtime.c. */
+/* FMI 2.0 adapter (model exchange and co-simulation in one binary): translates the FMI 2
+ * API to the instance's calls (instance.h). Every function with an instance first checks it
+ * (NULL, or a call out of order: fmi2Error). */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "fmi2Functions.h"
-#include "runtime.h"
+#include "instance.h"
 
 typedef struct {
     ac_inst m;
@@ -13,6 +14,8 @@ typedef struct {
 
 #define M ((ac_inst *)c)
 #define ST(x) ((fmi2Status)(x))
+#define BEGIN(modes) if (!ac_allowed(M, (modes), __func__)) return fmi2Error
+#define STATUS_MODES (AC_STEP | AC_TERMINATED | AC_FAILED)   /* fmi2Get*Status */
 
 static void fmi2_log(ac_inst *m, int status, const char *category, const char *message) {
     fmu2 *f = (fmu2 *)m;
@@ -27,9 +30,10 @@ static void fmi2_log(ac_inst *m, int status, const char *category, const char *m
     f->cb.logger(f->cb.componentEnvironment, m->name, (fmi2Status)status, category, buf);
 }
 
-static fmi2Status fail(fmi2Component c, int st) {
-    if (st >= AC_ERROR) M->d.mode = AC_FAILED;
-    return ST(st);
+static fmi2Status no_such(fmi2Component c, size_t nvr, const char *type) {
+    if (nvr == 0) return fmi2OK;
+    ac_logf(M, AC_ERROR, "logStatusError", "this FMU has no %s variables", type);
+    return fmi2Error;
 }
 
 const char *fmi2GetTypesPlatform(void) { return fmi2TypesPlatform; }
@@ -38,6 +42,7 @@ const char *fmi2GetVersion(void) { return fmi2Version; }
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t n,
                                const fmi2String categories[]) {
     (void)n; (void)categories;
+    BEGIN(AC_ANY);
     M->logging_on = loggingOn;
     return fmi2OK;
 }
@@ -51,17 +56,11 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     f = (fmu2 *)calloc(1, sizeof(fmu2));
     if (!f) return NULL;
     f->cb = *functions;
-    f->m.log = fmi2_log;
-    f->m.logging_on = loggingOn;
-    strncpy(f->m.name, instanceName, sizeof(f->m.name) - 1);
-    if (!fmuGUID || strcmp(fmuGUID, ac_guid) != 0) {
-        ac_logf(&f->m, AC_ERROR, "logStatusError", "GUID %s does not match this FMU's %s",
-                fmuGUID ? fmuGUID : "(null)", ac_guid);
+    if (ac_instantiate(&f->m, instanceName, fmuGUID, fmuType == fmi2CoSimulation, loggingOn,
+                       fmi2_log)) {
         free(f);
         return NULL;
     }
-    f->m.is_cs = fmuType == fmi2CoSimulation;
-    ac_defaults(&f->m);
     return (fmi2Component)f;
 }
 
@@ -70,161 +69,166 @@ void fmi2FreeInstance(fmi2Component c) { free(c); }
 fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fmi2Real tolerance,
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime) {
     (void)stopTimeDefined; (void)stopTime;
-    ac_tolerance(M, toleranceDefined, tolerance);
-    ac_set_time(M, startTime);
-    return fmi2OK;
+    BEGIN(AC_INSTANTIATED);
+    return ST(ac_setup(M, toleranceDefined, tolerance, startTime));
 }
 
 fmi2Status fmi2EnterInitializationMode(fmi2Component c) {
+    BEGIN(AC_INSTANTIATED);
     M->d.mode = AC_INIT;
     return fmi2OK;
 }
 
 fmi2Status fmi2ExitInitializationMode(fmi2Component c) {
-    int st = ac_initialize(M);
-    if (st) return fail(c, st);
-    M->d.mode = M->is_cs ? AC_STEP : AC_EVENT;
+    BEGIN(AC_INIT);
+    return ST(ac_exit_initialization(M));
+}
+
+fmi2Status fmi2Terminate(fmi2Component c) {
+    BEGIN(AC_RUNNING);
+    M->d.mode = AC_TERMINATED;
     return fmi2OK;
 }
 
-fmi2Status fmi2Terminate(fmi2Component c) { M->d.mode = AC_TERMINATED; return fmi2OK; }
-
 fmi2Status fmi2Reset(fmi2Component c) {
+    BEGIN(AC_ANY);
     ac_defaults(M);
     return fmi2OK;
 }
 
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[]) {
-    size_t i;
-    for (i = 0; i < nvr; i++) {
-        int st = ac_get_real(M, vr[i], &value[i]);
-        if (st) return fail(c, st);
-    }
-    return fmi2OK;
+    BEGIN(AC_ANY);
+    return ST(ac_get_reals(M, vr, nvr, value));
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[]) {
-    size_t i;
-    for (i = 0; i < nvr; i++) {
-        int st = ac_set_real(M, vr[i], value[i]);
-        if (st) return ST(st);         /* a rejected value leaves the FMU usable */
-    }
-    return fmi2OK;
-}
-
-static fmi2Status no_such(fmi2Component c, size_t nvr, const char *type) {
-    if (nvr == 0) return fmi2OK;
-    ac_logf(M, AC_ERROR, "logStatusError", "this FMU has no %s variables", type);
-    return fmi2Error;
+    BEGIN(AC_SETTABLE);
+    return ST(ac_set_reals(M, vr, nvr, value));   /* a rejected value leaves the FMU usable */
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[]) {
-    (void)vr; (void)value; return no_such(c, nvr, "Integer");
+    (void)vr; (void)value; BEGIN(AC_ANY); return no_such(c, nvr, "Integer");
 }
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[]) {
-    (void)vr; (void)value; return no_such(c, nvr, "Boolean");
+    (void)vr; (void)value; BEGIN(AC_ANY); return no_such(c, nvr, "Boolean");
 }
 fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2String value[]) {
-    (void)vr; (void)value; return no_such(c, nvr, "String");
+    (void)vr; (void)value; BEGIN(AC_ANY); return no_such(c, nvr, "String");
 }
 fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Integer value[]) {
-    (void)vr; (void)value; return no_such(c, nvr, "Integer");
+    (void)vr; (void)value; BEGIN(AC_SETTABLE); return no_such(c, nvr, "Integer");
 }
 fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Boolean value[]) {
-    (void)vr; (void)value; return no_such(c, nvr, "Boolean");
+    (void)vr; (void)value; BEGIN(AC_SETTABLE); return no_such(c, nvr, "Boolean");
 }
 fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[]) {
-    (void)vr; (void)value; return no_such(c, nvr, "String");
+    (void)vr; (void)value; BEGIN(AC_SETTABLE); return no_such(c, nvr, "String");
 }
 
 /* ---- FMU state ---------------------------------------------------------------------- */
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *state) {
+    BEGIN(AC_ANY);
     return ST(ac_state_get(M, state));
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate state) {
+    BEGIN(AC_ANY);
     return ST(ac_state_set(M, state));
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *state) {
-    (void)c;
+    BEGIN(AC_ANY);
     ac_state_free(state);
     return fmi2OK;
 }
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate state, size_t *size) {
-    (void)c; (void)state;
+    (void)state;
+    BEGIN(AC_ANY);
     *size = ac_state_size();
     return fmi2OK;
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate state, fmi2Byte bytes[], size_t size) {
+    BEGIN(AC_ANY);
     return ST(ac_state_serialize(M, state, bytes, size));
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte bytes[], size_t size, fmi2FMUstate *state) {
+    BEGIN(AC_ANY);
     return ST(ac_state_deserialize(M, bytes, size, state));
 }
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference vUnknown_ref[],
                                         size_t nUnknown, const fmi2ValueReference vKnown_ref[],
                                         size_t nKnown, const fmi2Real dvKnown[], fmi2Real dvUnknown[]) {
+    BEGIN(AC_EVALUABLE);
     return ST(ac_directional(M, vUnknown_ref, nUnknown, vKnown_ref, nKnown, dvKnown, dvUnknown));
 }
 
 /* ---- model exchange ---------------------------------------------------------------------- */
-fmi2Status fmi2EnterEventMode(fmi2Component c) { M->d.mode = AC_EVENT; return fmi2OK; }
+fmi2Status fmi2EnterEventMode(fmi2Component c) {
+    BEGIN(AC_EVENT | AC_CONT);
+    M->d.mode = AC_EVENT;
+    return fmi2OK;
+}
 
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *info) {
-    int changed = 0, st = ac_event_update(M, &changed);
+    int changed = 0, st;
+    BEGIN(AC_EVENT);
+    st = ac_event_update(M, &changed);
     info->newDiscreteStatesNeeded = fmi2False;
-    info->terminateSimulation = fmi2False;
+    info->terminateSimulation = st ? fmi2True : fmi2False;
     info->nominalsOfContinuousStatesChanged = fmi2False;
     info->valuesOfContinuousStatesChanged = changed ? fmi2True : fmi2False;
     info->nextEventTimeDefined = isfinite(M->d.next_event) ? fmi2True : fmi2False;
     info->nextEventTime = isfinite(M->d.next_event) ? M->d.next_event : 0.0;
-    if (st) { info->terminateSimulation = fmi2True; return fail(c, st); }
+    return ST(st);
+}
+
+fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) {
+    BEGIN(AC_EVENT);
+    M->d.mode = AC_CONT;
     return fmi2OK;
 }
 
-fmi2Status fmi2EnterContinuousTimeMode(fmi2Component c) { M->d.mode = AC_CONT; return fmi2OK; }
-
 fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStatePriorToCurrentPoint,
                                        fmi2Boolean *enterEventMode, fmi2Boolean *terminateSimulation) {
-    int ex = 0;
     (void)noSetFMUStatePriorToCurrentPoint;
-    ac_drift_exceeded(M, &ex);
-    *enterEventMode = ex ? fmi2True : fmi2False;
+    BEGIN(AC_CONT);
+    *enterEventMode = ac_drift_exceeded(M) ? fmi2True : fmi2False;
     *terminateSimulation = fmi2False;
     return fmi2OK;
 }
 
-fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) { ac_set_time(M, time); return fmi2OK; }
+fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) {
+    BEGIN(AC_EVENT | AC_CONT);
+    return ST(ac_set_time(M, time));
+}
 
 fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t nx) {
-    if (nx != AC_NX) { ac_logf(M, AC_ERROR, "logStatusError", "expected %d states, got %d", AC_NX, (int)nx); return fmi2Error; }
-    ac_set_states(M, x);
-    return fmi2OK;
+    BEGIN(AC_CONT);
+    return ST(ac_set_states(M, x, nx));
 }
 
 fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx) {
-    if (nx != AC_NX) { ac_logf(M, AC_ERROR, "logStatusError", "expected %d states, got %d", AC_NX, (int)nx); return fmi2Error; }
-    return fail(c, ac_derivatives(M, derivatives));
+    BEGIN(AC_STATES_READABLE);
+    return ST(ac_get_derivatives(M, derivatives, nx));
 }
 
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni) {
     (void)eventIndicators;
+    BEGIN(AC_STATES_READABLE);
     return no_such(c, ni, "event indicator");
 }
 
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx) {
-    if (nx != AC_NX) { ac_logf(M, AC_ERROR, "logStatusError", "expected %d states, got %d", AC_NX, (int)nx); return fmi2Error; }
-    memcpy(x, M->d.x, sizeof(double) * nx);
-    return fmi2OK;
+    BEGIN(AC_STATES_READABLE);
+    return ST(ac_get_states(M, x, nx));
 }
 
 fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal[], size_t nx) {
-    (void)c;
+    BEGIN(AC_ANY);
     ac_nominals(x_nominal, nx);
     return fmi2OK;
 }
@@ -233,47 +237,58 @@ fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                        const fmi2Integer order[], const fmi2Real value[]) {
     (void)vr; (void)order; (void)value;
+    BEGIN(AC_ANY);
     return no_such(c, nvr, "input derivative (canInterpolateInputs=false)");
 }
 
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                         const fmi2Integer order[], fmi2Real value[]) {
     (void)vr; (void)order; (void)value;
+    BEGIN(AC_ANY);
     return no_such(c, nvr, "output derivative (maxOutputDerivativeOrder=0)");
 }
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
     (void)noSetFMUStatePriorToCurrentPoint;
-    return fail(c, ac_do_step(M, currentCommunicationPoint, communicationStepSize));
+    BEGIN(AC_STEP);
+    return ST(ac_do_step(M, currentCommunicationPoint, communicationStepSize));
 }
 
 fmi2Status fmi2CancelStep(fmi2Component c) {
+    BEGIN(AC_ANY);
     ac_logf(M, AC_ERROR, "logStatusError", "fmi2CancelStep: doStep is synchronous");
     return fmi2Error;
 }
 
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *value) {
     (void)s;
+    BEGIN(STATUS_MODES);
     *value = M->d.mode == AC_FAILED ? fmi2Error : fmi2OK;
     return fmi2OK;
 }
 
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *value) {
+    BEGIN(STATUS_MODES);
     if (s == fmi2LastSuccessfulTime) { *value = M->d.t; return fmi2OK; }
     return fmi2Discard;
 }
 
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *value) {
-    (void)c; (void)s; (void)value; return fmi2Discard;
+    (void)s; (void)value;
+    BEGIN(STATUS_MODES);
+    return fmi2Discard;
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
-    (void)c; (void)s;
+    (void)s;
+    BEGIN(STATUS_MODES);
     *value = fmi2False;
     return fmi2Discard;
 }
 
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {
-    (void)c; (void)s; (void)value; return fmi2Discard;
+    (void)s; (void)value;
+    BEGIN(STATUS_MODES);
+    return fmi2Discard;
 }

@@ -1,10 +1,11 @@
-/* FMI 3.0 interface (model exchange and co-simulation) over runtime.c. */
+/* FMI 3.0 adapter (model exchange and co-simulation): translates the FMI 3 API to the
+ * instance's calls (instance.h). Every function with an instance first checks it (NULL, or
+ * a call out of order: fmi3Error). */
 #include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
 #include "fmi3Functions.h"
-#include "runtime.h"
+#include "instance.h"
 
 typedef struct {
     ac_inst m;
@@ -14,19 +15,15 @@ typedef struct {
 
 #define M ((ac_inst *)instance)
 #define ST(x) ((fmi3Status)(x))
+#define BEGIN(modes) if (!ac_allowed(M, (modes), __func__)) return fmi3Error
 
 static void fmi3_log(ac_inst *m, int status, const char *category, const char *message) {
     fmu3 *f = (fmu3 *)m;
     if (f->logger) f->logger(f->env, (fmi3Status)status, category, message);
 }
 
-static fmi3Status fail(fmi3Instance instance, int st) {
-    if (st >= AC_ERROR) M->d.mode = AC_FAILED;
-    return ST(st);
-}
-
 static fmi3Status unsupported(fmi3Instance instance, const char *what) {
-    ac_logf(M, AC_ERROR, "logStatusError", "%s is not supported by this FMU", what);
+    if (instance) ac_logf(M, AC_ERROR, "logStatusError", "%s is not supported by this FMU", what);
     return fmi3Error;
 }
 
@@ -35,6 +32,7 @@ const char *fmi3GetVersion(void) { return fmi3Version; }
 fmi3Status fmi3SetDebugLogging(fmi3Instance instance, fmi3Boolean loggingOn, size_t n,
                                const fmi3String categories[]) {
     (void)n; (void)categories;
+    BEGIN(AC_ANY);
     M->logging_on = loggingOn;
     return fmi3OK;
 }
@@ -48,17 +46,10 @@ static fmi3Instance instantiate(fmi3String name, fmi3String token, fmi3Boolean l
     if (!f) return NULL;
     f->logger = logger;
     f->env = env;
-    f->m.log = fmi3_log;
-    f->m.logging_on = loggingOn;
-    strncpy(f->m.name, name, sizeof(f->m.name) - 1);
-    if (!token || strcmp(token, ac_guid) != 0) {
-        ac_logf(&f->m, AC_ERROR, "logStatusError", "instantiation token %s does not match this FMU's %s",
-                token ? token : "(null)", ac_guid);
+    if (ac_instantiate(&f->m, name, token, cs, loggingOn, fmi3_log)) {
         free(f);
         return NULL;
     }
-    f->m.is_cs = cs;
-    ac_defaults(&f->m);
     return (fmi3Instance)f;
 }
 
@@ -79,8 +70,13 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
                                          fmi3InstanceEnvironment instanceEnvironment,
                                          fmi3LogMessageCallback logMessage,
                                          fmi3IntermediateUpdateCallback intermediateUpdate) {
-    (void)resourcePath; (void)visible; (void)eventModeUsed; (void)earlyReturnAllowed;
+    (void)resourcePath; (void)visible; (void)earlyReturnAllowed;
     (void)requiredIntermediateVariables; (void)nRequiredIntermediateVariables; (void)intermediateUpdate;
+    if (eventModeUsed) {
+        if (logMessage) logMessage(instanceEnvironment, fmi3Error, "logStatusError",
+                                   "event mode in co-simulation is not supported by this FMU");
+        return NULL;
+    }
     return instantiate(instanceName, instantiationToken, loggingOn, instanceEnvironment, logMessage, 1);
 }
 
@@ -104,50 +100,55 @@ fmi3Status fmi3EnterInitializationMode(fmi3Instance instance, fmi3Boolean tolera
                                        fmi3Float64 tolerance, fmi3Float64 startTime,
                                        fmi3Boolean stopTimeDefined, fmi3Float64 stopTime) {
     (void)stopTimeDefined; (void)stopTime;
-    ac_tolerance(M, toleranceDefined, tolerance);
-    ac_set_time(M, startTime);
+    BEGIN(AC_INSTANTIATED);
+    if (ac_setup(M, toleranceDefined, tolerance, startTime)) return fmi3Error;
     M->d.mode = AC_INIT;
     return fmi3OK;
 }
 
 fmi3Status fmi3ExitInitializationMode(fmi3Instance instance) {
-    int st = ac_initialize(M);
-    if (st) return fail(instance, st);
-    M->d.mode = M->is_cs ? AC_STEP : AC_EVENT;
+    BEGIN(AC_INIT);
+    return ST(ac_exit_initialization(M));
+}
+
+fmi3Status fmi3EnterEventMode(fmi3Instance instance) {
+    BEGIN(AC_EVENT | AC_CONT);
+    M->d.mode = AC_EVENT;
     return fmi3OK;
 }
 
-fmi3Status fmi3EnterEventMode(fmi3Instance instance) { M->d.mode = AC_EVENT; return fmi3OK; }
-fmi3Status fmi3Terminate(fmi3Instance instance) { M->d.mode = AC_TERMINATED; return fmi3OK; }
-fmi3Status fmi3Reset(fmi3Instance instance) { ac_defaults(M); return fmi3OK; }
+fmi3Status fmi3Terminate(fmi3Instance instance) {
+    BEGIN(AC_RUNNING);
+    M->d.mode = AC_TERMINATED;
+    return fmi3OK;
+}
+
+fmi3Status fmi3Reset(fmi3Instance instance) {
+    BEGIN(AC_ANY);
+    ac_defaults(M);
+    return fmi3OK;
+}
 
 /* ---- values ------------------------------------------------------------------------------ */
 fmi3Status fmi3GetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                           fmi3Float64 values[], size_t nValues) {
-    size_t i;
+    BEGIN(AC_ANY);
     if (nValues < nvr) return unsupported(instance, "arrays");
-    for (i = 0; i < nvr; i++) {
-        int st = ac_get_real(M, vr[i], &values[i]);
-        if (st) return fail(instance, st);
-    }
-    return fmi3OK;
+    return ST(ac_get_reals(M, vr, nvr, values));
 }
 
 fmi3Status fmi3SetFloat64(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                           const fmi3Float64 values[], size_t nValues) {
-    size_t i;
+    BEGIN(AC_SETTABLE);
     if (nValues < nvr) return unsupported(instance, "arrays");
-    for (i = 0; i < nvr; i++) {
-        int st = ac_set_real(M, vr[i], values[i]);
-        if (st) return ST(st);
-    }
-    return fmi3OK;
+    return ST(ac_set_reals(M, vr, nvr, values));   /* a rejected value leaves the FMU usable */
 }
 
 #define NO_VARS(NAME, CT, TYPE)                                                                  \
     fmi3Status NAME(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,            \
                     CT values[], size_t nValues) {                                               \
         (void)vr; (void)values; (void)nValues;                                                   \
+        BEGIN(AC_ANY);                                                                           \
         if (nvr == 0) return fmi3OK;                                                             \
         return unsupported(instance, "variables of type " TYPE);                                 \
     }
@@ -177,19 +178,23 @@ NO_VARS(fmi3SetString, const fmi3String, "String")
 fmi3Status fmi3GetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                          size_t valueSizes[], fmi3Binary values[], size_t nValues) {
     (void)vr; (void)valueSizes; (void)values; (void)nValues;
+    BEGIN(AC_ANY);
     return nvr ? unsupported(instance, "Binary variables") : fmi3OK;
 }
 fmi3Status fmi3SetBinary(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                          const size_t valueSizes[], const fmi3Binary values[], size_t nValues) {
     (void)vr; (void)valueSizes; (void)values; (void)nValues;
+    BEGIN(AC_ANY);
     return nvr ? unsupported(instance, "Binary variables") : fmi3OK;
 }
 fmi3Status fmi3GetClock(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, fmi3Clock values[]) {
     (void)vr; (void)values;
+    BEGIN(AC_ANY);
     return nvr ? unsupported(instance, "clocks") : fmi3OK;
 }
 fmi3Status fmi3SetClock(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr, const fmi3Clock values[]) {
     (void)vr; (void)values;
+    BEGIN(AC_ANY);
     return nvr ? unsupported(instance, "clocks") : fmi3OK;
 }
 
@@ -208,30 +213,35 @@ fmi3Status fmi3GetVariableDependencies(fmi3Instance instance, fmi3ValueReference
 
 /* ---- FMU state ---------------------------------------------------------------------------- */
 fmi3Status fmi3GetFMUState(fmi3Instance instance, fmi3FMUState *state) {
+    BEGIN(AC_ANY);
     return ST(ac_state_get(M, state));
 }
 
 fmi3Status fmi3SetFMUState(fmi3Instance instance, fmi3FMUState state) {
+    BEGIN(AC_ANY);
     return ST(ac_state_set(M, state));
 }
 
 fmi3Status fmi3FreeFMUState(fmi3Instance instance, fmi3FMUState *state) {
-    (void)instance;
+    BEGIN(AC_ANY);
     ac_state_free(state);
     return fmi3OK;
 }
 
 fmi3Status fmi3SerializedFMUStateSize(fmi3Instance instance, fmi3FMUState state, size_t *size) {
-    (void)instance; (void)state;
+    (void)state;
+    BEGIN(AC_ANY);
     *size = ac_state_size();
     return fmi3OK;
 }
 
 fmi3Status fmi3SerializeFMUState(fmi3Instance instance, fmi3FMUState state, fmi3Byte bytes[], size_t size) {
+    BEGIN(AC_ANY);
     return ST(ac_state_serialize(M, state, bytes, size));
 }
 
 fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte bytes[], size_t size, fmi3FMUState *state) {
+    BEGIN(AC_ANY);
     return ST(ac_state_deserialize(M, bytes, size, state));
 }
 
@@ -239,8 +249,9 @@ fmi3Status fmi3GetDirectionalDerivative(fmi3Instance instance, const fmi3ValueRe
                                         size_t nUnknowns, const fmi3ValueReference knowns[], size_t nKnowns,
                                         const fmi3Float64 seed[], size_t nSeed, fmi3Float64 sensitivity[],
                                         size_t nSensitivity) {
+    BEGIN(AC_EVALUABLE);
     if (nSeed != nKnowns || nSensitivity != nUnknowns) return unsupported(instance, "array variables");
-    return fail(instance, ac_directional(M, unknowns, nUnknowns, knowns, nKnowns, seed, sensitivity));
+    return ST(ac_directional(M, unknowns, nUnknowns, knowns, nKnowns, seed, sensitivity));
 }
 
 fmi3Status fmi3GetAdjointDerivative(fmi3Instance instance, const fmi3ValueReference unknowns[],
@@ -287,81 +298,97 @@ fmi3Status fmi3SetShiftFraction(fmi3Instance instance, const fmi3ValueReference 
     (void)vr; (void)n; (void)counters; (void)resolutions; return unsupported(instance, "clocks");
 }
 
-fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance instance) { (void)instance; return fmi3OK; }
+fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance instance) {
+    BEGIN(AC_RUNNING);         /* no discrete states */
+    return fmi3OK;
+}
 
 fmi3Status fmi3UpdateDiscreteStates(fmi3Instance instance, fmi3Boolean *discreteStatesNeedUpdate,
                                     fmi3Boolean *terminateSimulation,
                                     fmi3Boolean *nominalsOfContinuousStatesChanged,
                                     fmi3Boolean *valuesOfContinuousStatesChanged,
                                     fmi3Boolean *nextEventTimeDefined, fmi3Float64 *nextEventTime) {
-    int changed = 0, st = ac_event_update(M, &changed);
+    int changed = 0, st;
+    BEGIN(AC_EVENT);
+    st = ac_event_update(M, &changed);
     *discreteStatesNeedUpdate = fmi3False;
     *terminateSimulation = st ? fmi3True : fmi3False;
     *nominalsOfContinuousStatesChanged = fmi3False;
     *valuesOfContinuousStatesChanged = changed ? fmi3True : fmi3False;
     *nextEventTimeDefined = isfinite(M->d.next_event) ? fmi3True : fmi3False;
     *nextEventTime = isfinite(M->d.next_event) ? M->d.next_event : 0.0;
-    return fail(instance, st);
+    return ST(st);
 }
 
 /* ---- model exchange ------------------------------------------------------------------------ */
-fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance) { M->d.mode = AC_CONT; return fmi3OK; }
+fmi3Status fmi3EnterContinuousTimeMode(fmi3Instance instance) {
+    BEGIN(AC_EVENT);
+    M->d.mode = AC_CONT;
+    return fmi3OK;
+}
 
 fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance, fmi3Boolean noSetFMUStatePriorToCurrentPoint,
                                        fmi3Boolean *enterEventMode, fmi3Boolean *terminateSimulation) {
-    int ex = 0;
     (void)noSetFMUStatePriorToCurrentPoint;
-    ac_drift_exceeded(M, &ex);
-    *enterEventMode = ex ? fmi3True : fmi3False;
+    BEGIN(AC_CONT);
+    *enterEventMode = ac_drift_exceeded(M) ? fmi3True : fmi3False;
     *terminateSimulation = fmi3False;
     return fmi3OK;
 }
 
-fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64 time) { ac_set_time(M, time); return fmi3OK; }
-
-static fmi3Status check_n(fmi3Instance instance, size_t n) {
-    if (n == AC_NX) return fmi3OK;
-    ac_logf(M, AC_ERROR, "logStatusError", "expected %d continuous states, got %d", AC_NX, (int)n);
-    return fmi3Error;
+fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64 time) {
+    BEGIN(AC_EVENT | AC_CONT);
+    return ST(ac_set_time(M, time));
 }
 
 fmi3Status fmi3SetContinuousStates(fmi3Instance instance, const fmi3Float64 x[], size_t n) {
-    if (check_n(instance, n)) return fmi3Error;
-    ac_set_states(M, x);
-    return fmi3OK;
+    BEGIN(AC_CONT);
+    return ST(ac_set_states(M, x, n));
 }
 
 fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance instance, fmi3Float64 dx[], size_t n) {
-    if (check_n(instance, n)) return fmi3Error;
-    return fail(instance, ac_derivatives(M, dx));
+    BEGIN(AC_STATES_READABLE);
+    return ST(ac_get_derivatives(M, dx, n));
 }
 
 fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64 z[], size_t n) {
     (void)z;
+    BEGIN(AC_STATES_READABLE);
     return n ? unsupported(instance, "event indicators") : fmi3OK;
 }
 
 fmi3Status fmi3GetContinuousStates(fmi3Instance instance, fmi3Float64 x[], size_t n) {
-    if (check_n(instance, n)) return fmi3Error;
-    memcpy(x, M->d.x, sizeof(double) * n);
-    return fmi3OK;
+    BEGIN(AC_STATES_READABLE);
+    return ST(ac_get_states(M, x, n));
 }
 
 fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance, fmi3Float64 nominals[], size_t n) {
-    (void)instance;
+    BEGIN(AC_ANY);
     ac_nominals(nominals, n);
     return fmi3OK;
 }
 
-fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance, size_t *n) { (void)instance; *n = 0; return fmi3OK; }
-fmi3Status fmi3GetNumberOfContinuousStates(fmi3Instance instance, size_t *n) { (void)instance; *n = AC_NX; return fmi3OK; }
+fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance, size_t *n) {
+    BEGIN(AC_ANY);
+    *n = 0;
+    return fmi3OK;
+}
+
+fmi3Status fmi3GetNumberOfContinuousStates(fmi3Instance instance, size_t *n) {
+    BEGIN(AC_ANY);
+    *n = AC_NX;
+    return fmi3OK;
+}
 
 /* ---- co-simulation -------------------------------------------------------------------------- */
-fmi3Status fmi3EnterStepMode(fmi3Instance instance) { M->d.mode = AC_STEP; return fmi3OK; }
+fmi3Status fmi3EnterStepMode(fmi3Instance instance) {   /* co-simulation starts in step mode */
+    return unsupported(instance, "fmi3EnterStepMode (no event mode: hasEventMode=false)");
+}
 
 fmi3Status fmi3GetOutputDerivatives(fmi3Instance instance, const fmi3ValueReference vr[], size_t nvr,
                                     const fmi3Int32 orders[], fmi3Float64 values[], size_t nValues) {
     (void)vr; (void)orders; (void)values; (void)nValues;
+    BEGIN(AC_ANY);
     return nvr ? unsupported(instance, "output derivatives (maxOutputDerivativeOrder=0)") : fmi3OK;
 }
 
@@ -371,12 +398,13 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoi
                       fmi3Boolean *earlyReturn, fmi3Float64 *lastSuccessfulTime) {
     int st;
     (void)noSetFMUStatePriorToCurrentPoint;
+    BEGIN(AC_STEP);
     st = ac_do_step(M, currentCommunicationPoint, communicationStepSize);
     *eventHandlingNeeded = fmi3False;
     *terminateSimulation = fmi3False;
     *earlyReturn = fmi3False;
     *lastSuccessfulTime = M->d.t;
-    return fail(instance, st);
+    return ST(st);
 }
 
 fmi3Status fmi3ActivateModelPartition(fmi3Instance instance, fmi3ValueReference clockReference,
