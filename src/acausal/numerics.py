@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["parameter_problem", "ProjectionError", "project", "independent_rows", "moved_note", "event_times",
+__all__ = ["parameter_problem", "row_scales", "ProjectionError", "project", "independent_rows", "moved_note", "event_times",
            "just_before", "short_error"]
 
 
@@ -71,7 +71,7 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0",
     raise ProjectionError(_conflict(J0, h0, labels, targets, given))
 
 
-def _row_scales(J) -> np.ndarray:
+def row_scales(J) -> np.ndarray:
     """The size of each row's gradient (1 for a row with none)."""
     s = np.abs(J).max(axis=1, initial=0.0) if J.size else np.ones(J.shape[0])
     return np.where(s > 0, s, 1.0)
@@ -79,7 +79,7 @@ def _row_scales(J) -> np.ndarray:
 
 def _solved(h, J, scale: float) -> bool:
     """Every row of H, over its gradient's size, below 1e-10 · scale."""
-    return bool(np.all(np.abs(h) / _row_scales(J) <= 1e-10 * scale))
+    return bool(np.all(np.abs(h) / row_scales(J) <= 1e-10 * scale))
 
 
 def _limit(step, limited, most: float = 0.3):
@@ -104,7 +104,7 @@ def _projection_step(J, b, r, nx: int):
     to r[:nx]; the algebraic part is free. With J = [Jx Jz] and P the projector onto the
     complement of range(Jz): P Jx dx = P b, dx = r_x + (P Jx)⁺ (P b − P Jx r_x), then
     dz = Jz⁺ (b − Jx dx). Orthogonal factorizations only: no normal equations."""
-    s = _row_scales(J)
+    s = row_scales(J)
     J, b = J / s[:, None], b / s                  # rows scaled: each in its own unit
     Jx, Jz = J[:, :nx], J[:, nx:]
     if Jz.shape[1]:
@@ -125,7 +125,7 @@ def _descend(equations, wk, limited, scale: float, iterations: int = 100):
     d = −Jᵀ (J Jᵀ + μ I)⁻¹ h, μ adapted to the progress (a singular Jacobian is no
     obstacle), no position moved by more than 0.3 a step. Returns the best point reached."""
     h, J = equations(wk)
-    s = _row_scales(J)
+    s = row_scales(J)
     cost, mu = float(np.sum((h / s) ** 2)), 1e-3
     for _ in range(iterations):
         Js, hs = J / s[:, None], h / s
@@ -145,7 +145,7 @@ def _descend(equations, wk, limited, scale: float, iterations: int = 100):
 
 
 def _conflict(J, h, labels, targets, given) -> str:
-    bad = [labels[i] for i in np.flatnonzero(np.abs(h) / _row_scales(J) > 1e-10)]
+    bad = [labels[i] for i in np.flatnonzero(np.abs(h) / row_scales(J) > 1e-10)]
     for i in range(len(targets)):
         for j in range(i + 1, len(targets)):
             if np.linalg.matrix_rank(J[[i, j]], 1e-9) < 2:

@@ -131,3 +131,19 @@ def test_no_equilibrium_names_the_residual():
     md.connect(md.force.flange, md.mass.flange_a)
     with pytest.raises(AnalysisError, match=r"d\(mass.v\)/dt = 0.5"):
         equilibrium(ac.compile(md))
+
+
+def test_stiff_chain_equilibrium_is_found():
+    """wall | c1 = 1e9 N/m | m1 = 1 mg | c2 = 1 N/m | m2 = 1 kg | constant force F = 1 N:
+    s1 = F/c1, s2 = s1 + F/c2. The accelerations' residual scales with c/m = 1e12, so an
+    absolute tolerance on them could not be met; the scaled one is."""
+    m = ac.Model("stiff_chain")
+    m.wall, m.s1, m.m1 = tr.Fixed(), tr.Spring(c=1e9), tr.Mass(m=1e-6)
+    m.s2, m.m2, m.push = tr.Spring(c=1.0), tr.Mass(m=1.0), tr.ConstantForce(f_constant=1.0)
+    for a, b in [(m.wall.flange, m.s1.flange_a), (m.s1.flange_b, m.m1.flange_a),
+                 (m.m1.flange_b, m.s2.flange_a), (m.s2.flange_b, m.m2.flange_a),
+                 (m.m2.flange_b, m.push.flange)]:
+        m.connect(a, b)
+    eq = equilibrium(ac.compile(m))
+    assert abs(eq["m1.s"] - 1e-9) < 1e-18
+    assert abs(eq["m2.s"] - (1.0 + 1e-9)) < 1e-12

@@ -20,6 +20,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import AnalysisError
+from ..numerics import row_scales
 from .point import OperatingPoint, operating_point
 
 
@@ -36,7 +37,10 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
                 max_iter: int = 100) -> Equilibrium:
     """The equilibrium of ``model`` at time t [s] with inputs ``u`` and parameters ``params``
     (by name), nearest to ``guess`` (state names -> values; default the start values).
-    Raises AnalysisError naming the equations that do not vanish when none is found."""
+    Converged when every equation, divided by the size of its gradient (a distance in the
+    variables' own units, whatever the stiffness: 1e9 N/m on 1 mg as well as 1 N/m on 1 kg),
+    is below ``tol`` · (1 + max |x, z|). Raises AnalysisError naming the equations that do
+    not vanish when none is found."""
     with warnings.catch_warnings():          # the guess is moved onto the loops: expected
         warnings.filterwarnings("ignore", message="initial values changed")
         start = operating_point(model, {}, u=u, params=params, t=t, guess=guess)
@@ -47,29 +51,34 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
                     [H, ca.jacobian(H, w_sym)])
     nx = len(model.x_names)
     w = np.concatenate([start.x, start.z])
+    def converged(h, J, w):
+        return np.all(np.abs(h) / row_scales(J) <= tol * (1 + np.abs(w).max(initial=0.0)))
+
     for _ in range(max_iter):
         h, J = _eval(F, t, w, uv, p)
-        if np.max(np.abs(h), initial=0.0) <= tol:
+        if converged(h, J, w):
             break
-        step = -np.linalg.lstsq(J, h, rcond=1e-13)[0]
+        scale = row_scales(J)              # rows in their own units: well conditioned
+        step = -np.linalg.lstsq(J / scale[:, None], h / scale, rcond=1e-13)[0]
         big = np.max(np.abs(step[:nx]), initial=0.0)
         if big > 0.5:                      # stay on the guess's branch
             step *= 0.5 / big
-        norm0 = np.linalg.norm(h)
+        norm0 = np.linalg.norm(h / scale)
         for _ in range(30):                # backtrack while the residual grows
             h_new = _eval(F, t, w + step, uv, p)[0]
-            if np.linalg.norm(h_new) < norm0 or np.linalg.norm(step) < 1e-14:
+            if np.linalg.norm(h_new / scale) < norm0 or np.linalg.norm(step) < 1e-14:
                 break
             step = step / 2
         w = w + step
-        h = h_new
         if np.linalg.norm(step) < 1e-15 * (1 + np.linalg.norm(w)):
             break
+    h, J = _eval(F, t, w, uv, p)
     res = float(np.max(np.abs(h), initial=0.0))
-    if res > tol:
+    if not converged(h, J, w):
         given = dict(zip(model.input_names, map(float, uv)))
         raise AnalysisError(f"no equilibrium of '{model.name}' found near the guess (inputs "
-                            f"{given}): these do not vanish: {_name_residuals(model, h, tol)}; "
+                            f"{given}): these do not vanish: "
+                            f"{_name_residuals(model, h / row_scales(J), tol)}; "
                             f"change the inputs, parameters or guess")
     x, z = w[:nx], w[nx:]
     return Equilibrium(model, float(t), x, z, p, uv, _multipliers(model, x, z, p, uv, t), res)
