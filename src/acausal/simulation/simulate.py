@@ -5,7 +5,8 @@ import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
-from ..numerics import just_before, short_error
+from ..numerics import just_before
+from .diagnosis import failure_message
 from .initialization import initial_state
 from .inputs import input_signal
 from .result import Result
@@ -114,10 +115,19 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                 F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
                 sol = F(x0=x, z0=z)
             except RuntimeError as e:
-                raise SimulationError(
-                    f"simulation of '{model.name}' failed between t = {a:g} and {b:g} s: "
-                    f"{short_error(e)}; check the parameters and initial values, or try a "
-                    f"smaller rtol/atol or another solver") from None
+                def state_near(t_fail, a=a, x=x, z=z):
+                    """(x, z) shortly before the failure, by a second run; None if it fails."""
+                    try:
+                        probe = ca.integrator("probe", plugin, dae, float(a),
+                                              [a + (t_fail - a) * (1 - 1e-6)], opts)
+                        sol = probe(x0=x, z0=z)
+                    except RuntimeError:
+                        return None
+                    return np.array(sol["xf"]).ravel(), np.array(sol["zf"]).ravel()
+                raise SimulationError(failure_message(
+                    model, e, a, b, rtol, atol, state_near if loops else None, p,
+                    lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel())
+                ) from None
             xf = np.array(sol["xf"])
             zf = np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
             X.append(xf[:, :len(pts)])

@@ -1,0 +1,66 @@
+"""Why an integration failed, in the model's terms, and what helps.
+
+The integrators report codes (``IDA_CONV_FAIL``, ``CV_TOO_MUCH_WORK``) and a time. For a
+closed loop the configuration reached there is examined: where the loop constraints'
+Jacobian Φ_q loses rank (links lining up: a dead point, a parallelogram passing its
+collinear position), the constraints no longer determine the motion, and the rows that became
+dependent and the coordinates are named. Otherwise the advice follows the code and the
+tolerances: a Newton iteration that cannot converge at very tight tolerances needs looser
+ones, not tighter.
+"""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+
+from ..numerics import independent_rows, short_error
+
+TIGHT_RTOL, TIGHT_ATOL = 1e-10, 1e-12
+
+
+def failure_message(model, error: Exception, a: float, b: float, rtol: float, atol: float,
+                    state_near=None, p=None, u_at=None) -> str:
+    """The message of a failed integration of ``model`` over [a, b]: what the solver said,
+    and why in the model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None)
+    for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs."""
+    said = short_error(error).rstrip(". ")
+    head = f"simulation of '{model.name}' failed between t = {a:g} and {b:g} s: {said}"
+    text = str(error)
+    found = re.search(r"At t = ([-+0-9.eE]+)", text)
+    t_fail = float(found.group(1)) if found else None
+    if model.has_loops and t_fail is not None and state_near is not None:
+        near = state_near(t_fail)
+        if near is not None:
+            singular = _singular_configuration(model, t_fail, *near, u_at(t_fail), p)
+            if singular:
+                return f"{head}. {singular}"
+    if "TOO_MUCH_WORK" in text:
+        return (f"{head}. The solver took too many steps: the model may be stiff (give "
+                f"solver='cvodes' for BDF) or the tolerances tighter than needed; "
+                f"options={{'max_num_steps': n}} raises the limit")
+    if ("CONV_FAIL" in text or "ERR_FAIL" in text) and (rtol < TIGHT_RTOL or atol < TIGHT_ATOL):
+        return (f"{head}. rtol = {rtol:g}, atol = {atol:g} are tighter than the solver's "
+                f"Newton iteration can meet on this model (round-off in the equations' own "
+                f"solve): loosen them, e.g. rtol = {TIGHT_RTOL:g}, atol = {TIGHT_ATOL:g}")
+    return (f"{head}. Check the parameters and the initial values (a value that makes the "
+            f"equations blow up), or try another solver")
+
+
+def _singular_configuration(model, t, x, z, u, p) -> str | None:
+    """The description of a singular loop configuration at (t, x, z), or None."""
+    J = np.array(model.phi_q_function(t, x, z, u, p), dtype=float)
+    on = [i for i in range(J.shape[0]) if p[model.loop_switches[i]] > 0.5]
+    keep = independent_rows(J[on])
+    lost = [model.loop_rows[on[k]] for k in range(len(on)) if not keep[k]]
+    if not lost:
+        return None
+    coords = ", ".join(f"{n} = {x[i]:.6g}" for n, i in
+                       zip(model.lagrange.q_names, model.position_states))
+    return (f"Near t = {t:g} s the closed loop reaches a singular configuration ({coords}): the "
+            f"loop constraints' Jacobian loses rank there (rows {', '.join(lost)} become "
+            f"dependent on the others), so the links line up (a dead point, such as a "
+            f"parallelogram passing its collinear position) and the constraints no longer "
+            f"determine the motion. Start the mechanism on another assembly branch (guess), "
+            f"keep it away from that configuration (less energy, a stop), or, when a loop is "
+            f"redundant only there, build the mechanism without that redundant link")

@@ -1,0 +1,47 @@
+"""A failed integration is explained in the model's terms (the exact advice expected)."""
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+import acausal as ac
+from acausal.models import Parallelogram
+from acausal.simulation.diagnosis import failure_message
+
+
+@pytest.fixture(scope="module")
+def parallelogram():
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        return ac.compile(Parallelogram())
+
+
+def test_tight_tolerances_are_blamed_not_praised(parallelogram):
+    """At rtol 1e-12 / atol 1e-14 IDAS's corrector fails on the parallelogram: the advice is
+    to loosen the tolerances (it used to be to tighten them)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        with pytest.raises(ac.SimulationError, match=r"rtol = 1e-12, atol = 1e-14 are tighter "
+                                                     r"than .* loosen them"):
+            parallelogram.simulate(3.0, x0={"rev1.phi": 0.5, "rev1.w": 0.0},
+                                   guess={"rev2.phi": -0.5, "rev3.phi": 0.5},
+                                   rtol=1e-12, atol=1e-14)
+
+
+def test_singular_loop_configuration_is_named(parallelogram):
+    """At the collinear position of a parallelogram (crank, coupler, rocker all along x:
+    rev1.phi = rev3.phi = 0) its loop constraints' Jacobian loses a rank; a failure there is
+    explained as a dead point, naming the loop's rows and the coordinates."""
+    c = parallelogram
+    x = np.zeros(c.x.numel())                       # every joint at 0: the collinear position
+    z = np.zeros(c.z.numel())
+    p = c.param_vector()
+    error = RuntimeError('IDASolve returned "IDA_CONV_FAIL"\nAt t = 0.7 and h = 1e-20, the '
+                         'corrector convergence failed')
+    text = failure_message(c, error, 0.0, 3.0, 1e-8, 1e-10, lambda t: (x, z), p,
+                           lambda t: c.input_start)
+    assert "Near t = 0.7 s the closed loop reaches a singular configuration" in text
+    assert "rev4" in text and "rev1.phi = 0" in text
+    assert "loosen" not in text
