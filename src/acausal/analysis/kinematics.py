@@ -183,13 +183,7 @@ class MotionSolver:
             a = np.array(m.f(x=X[:, k], u=U[:, k], p=self.p, t=tk)["xdot"],
                          dtype=float).ravel()[self.iv]
         Z = np.zeros((len(m.z_names), n))
-        P = np.tile(self.p.reshape(-1, 1), (1, n))
-
-        def evaluate():
-            V = m.recorded_function.map(n)(grid.reshape(1, -1), X, Z, U, P)
-            return np.asarray(V.full(), dtype=float)
-        return Result(grid, m.recorded_names, m.recorded_layout, m.recorded_units,
-                      {"x": X, "r": evaluate}, m.name)
+        return Result(m, grid, X, Z, U, self.p)
 
     def _positions(self, q, t, o, u, f, first):
         m = self.model

@@ -59,8 +59,8 @@ class ScalarVariable:
 @dataclass(frozen=True)
 class Resolved:
     """What a name stands for in a compiled model: ``kind`` (time / state / algebraic /
-    input / parameter / recorded), ``index`` in t, x, z, u, p (None for recorded variables,
-    which are expressions), ``expression`` in (t, x, z, u, p), ``unit``."""
+    input / parameter / recorded), ``index`` in x, z, u, p (recorded variables: in
+    ``recorded_names``; time: None), ``expression`` in (t, x, z, u, p), ``unit``."""
     name: str
     kind: str
     index: int | None
@@ -172,24 +172,37 @@ class CompiledModel:
             self._cache[key] = {v.name: i for i, v in enumerate(getattr(self, kind))}
         return self._cache[key]
 
-    def variable(self, name: str) -> Resolved:
-        """What ``name`` is: time ('time'), a state, an algebraic variable, an input, a
-        parameter, or any other recorded variable (a port's potential or flow, a sensor
-        signal, a component's variable). VariableNameError, with the closest names,
-        otherwise."""
+    _KINDS = (("state", "states", "x"), ("algebraic", "algebraics", "z"),
+              ("input", "inputs", "u"), ("parameter", "params", "p"))
+
+    def locate(self, name: str) -> tuple[str, int | None]:
+        """(kind, index) of ``name`` — see ``variable`` — without building its expression:
+        states, algebraics, inputs and parameters cost a dictionary look-up."""
         if name in ("time", "t"):
-            return Resolved(name, "time", None, self.t, "s")
-        for kind, attr, sym in (("state", "states", self.x), ("algebraic", "algebraics", self.z),
-                                ("input", "inputs", self.u), ("parameter", "params", self.p)):
+            return "time", None
+        for kind, attr, _ in self._KINDS:
             i = self._index(attr).get(name)
             if i is not None:
-                return Resolved(name, kind, i, sym[i], getattr(self, attr)[i].unit)
+                return kind, i
         i = self._recorded_index().get(name)
         if i is None:
             raise VariableNameError(
                 f"no variable '{name}' in model '{self.name}'"
                 f"{did_you_mean(name, self.recorded_names + self.param_names)}")
-        return Resolved(name, "recorded", None, self.recorded[i], self.recorded_units[i])
+        return "recorded", i
+
+    def variable(self, name: str) -> Resolved:
+        """What ``name`` is: time ('time'), a state, an algebraic variable, an input, a
+        parameter, or any other recorded variable (a port's potential or flow, a sensor
+        signal, a component's variable). VariableNameError, with the closest names,
+        otherwise."""
+        kind, i = self.locate(name)
+        if kind == "time":
+            return Resolved(name, kind, None, self.t, "s")
+        if kind == "recorded":
+            return Resolved(name, kind, i, self.recorded[i], self.recorded_units[i])
+        attr, sym = next((a, getattr(self, s)) for k, a, s in self._KINDS if k == kind)
+        return Resolved(name, kind, i, sym[i], getattr(self, attr)[i].unit)
 
     def expression(self, name: str) -> ca.SX:
         """The symbolic expression of any variable by name, in (t, x, z, u, p)."""

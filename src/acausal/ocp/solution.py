@@ -29,15 +29,8 @@ class Solution(Result):
         t, P = np.atleast_1d(t).ravel(), np.atleast_1d(P).reshape(-1, 1)
         X, U, Z = (np.asarray(a, dtype=float).reshape(-1, t.size) for a in (X, U, Z))
 
-        def recorded():
-            V = c.recorded_function.map(t.size)(t.reshape(1, -1), X, Z, U, P)
-            return np.asarray(V.full(), dtype=float)
-
-        super().__init__(t, c.recorded_names, c.recorded_layout, c.recorded_units,
-                         {"x": X, "r": recorded}, c.name)
+        super().__init__(c, t, X, Z, U, P)
         self._U, self._view = U[:, :-1], view
-        for v in c.inputs:                         # the Inputs' declared units
-            self.units[v.name] = self.units.get(v.name) or v.unit
         self.cost, self.T = cost, float(t[-1] - t[0])
         self.stats, self.status = stats, stats["return_status"]
         self.iterations = stats["iter_count"]

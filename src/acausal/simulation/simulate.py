@@ -146,14 +146,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         X, Z = integrate("cvodes", opts)
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
-    P = np.tile(p.reshape(-1, 1), (1, grid.size))
-
-    def evaluate():            # the recorded variables that are not states, on first access
-        V = model.recorded_function.map(grid.size)(grid.reshape(1, -1), X, Z, U, P)
-        return np.asarray(V.full(), dtype=float)
-
-    res = Result(grid, model.recorded_names, model.recorded_layout, model.recorded_units,
-                 {"x": X, "r": evaluate}, model.name)
+    res = Result(model, grid, X, Z, U, p)
     res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
     res.solver = solver
     return res
