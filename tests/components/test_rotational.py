@@ -656,7 +656,8 @@ def test_bad_values_at_simulation_time_and_structure_errors_are_named():
     with pytest.raises(acausal.StructureError, match="gear.support"):
         acausal.compile(m)
     # exact=True needs a function of time, not a model input (raised when compiling or, for
-    # a rate needed only by recorded variables, when they are first built)
+    # a rate needed only by recorded variables, when they are first built: here j1.w, the
+    # input's rate, when it is read)
     m = base_excited(rot.Position(exact=True), lambda s: s.phi_ref, acausal.Input())
     with pytest.raises(acausal.StructureError, match="exact=False"):
-        acausal.compile(m).simulate(0.1, inputs={"ref": np.sin})
+        acausal.compile(m).simulate(0.1, inputs={"ref": np.sin})["j1.w"]
