@@ -1,6 +1,7 @@
 """Component and Model: parameters and structural options at construction, naming by
 assignment, ports per instance; connect() and its errors, each naming the parts at fault.
 The library's components serve as ordinary instances here."""
+import numpy as np
 import pytest
 
 import acausal
@@ -118,6 +119,41 @@ def test_a_component_belongs_to_one_model():
         second.mass = first.mass
     assert str(err.value) == ("component 'mass' already belongs to a model; create a new one "
                               "for 'mass'")
+
+
+def test_a_component_has_one_name_in_its_model():
+    """Assigning a part a second name would put it in the model twice (its parameters
+    listed twice, an oscillator moving like twice the mass): refused, naming both names.
+    The model is left with the one mass: its period is 2π·sqrt(m/c) (closed form)."""
+    m = Model("osc")
+    m.fixed, m.spring, m.mass = tr.Fixed(), Spring(c=4.0), Mass(m=1.0)
+    with pytest.raises(PortConnectionError) as err:
+        m.other = m.mass
+    assert str(err.value) == ("component 'mass' is already part of this model; assigning it "
+                              "to 'other' too would put it in the model twice: use 'mass' "
+                              "itself, or create a new component for 'other'")
+    m.mass = m.mass                                   # the same name again: nothing changes
+    assert list(m.children) == ["fixed", "spring", "mass"]
+    connect(m.fixed.flange, m.spring.flange_a)
+    connect(m.spring.flange_b, m.mass.flange_a)
+    compiled = acausal.compile(m)
+    assert compiled.param_names.count("mass.m") == 1
+    t = np.linspace(0.0, 2.0, 201)
+    res = compiled.simulate(2.0, t=t, x0={"mass.s": 0.1})
+    np.testing.assert_allclose(res["mass.s"], 0.1 * np.cos(2.0 * t), atol=1e-6,
+                               err_msg="s = s0·cos(√(c/m)·t) with one mass m = 1, c = 4")
+
+
+def test_a_port_has_one_owner():
+    m = Model("m")
+    m.mass = Mass()
+    with pytest.raises(PortConnectionError) as err:
+        m.end = m.mass.flange_b
+    assert str(err.value) == ("port 'mass.flange_b' already belongs to Mass 'mass'; assigning "
+                              "it to 'end' too would give one port two names: use "
+                              "'mass.flange_b' itself (connect it), or create a new port for "
+                              "'end'")
+    assert m.mass.flange_b.path == "mass.flange_b" and "end" not in m.ports
 
 
 # ---- connect --------------------------------------------------------------------------------

@@ -185,9 +185,19 @@ class Component:
                                  f"the component is created: "
                                  f"{type(self).__name__}({key}={_shown(value)})")
         if isinstance(value, Port) and not key.startswith("_"):
+            if value.owner is not None and (value.owner is not self or value.name != key):
+                raise PortConnectionError(
+                    f"port '{value.path}' already belongs to {who(value.owner)}; assigning it "
+                    f"to '{_attribute(self, key)}' too would give one port two names: use "
+                    f"'{value.path}' itself (connect it), or create a new port for '{key}'")
             value.owner, value.name = self, key
             self._ports[key] = value
         elif isinstance(value, Component) and not key.startswith("_"):
+            if value._owner is self and value._name != key:
+                raise PortConnectionError(
+                    f"component '{value.path}' is already part of this model; assigning it to "
+                    f"'{_attribute(self, key)}' too would put it in the model twice: use "
+                    f"'{value.path}' itself, or create a new component for '{key}'")
             if value._owner is not None and value._owner is not self:
                 raise PortConnectionError(
                     f"component '{value.path}' already belongs to a model; create a new one "
@@ -206,6 +216,11 @@ class Component:
 
     def physics(self, e) -> None:
         """Contribute energies, flows, state derivatives, outputs. Default: none."""
+
+
+def _attribute(owner: Component, key: str) -> str:
+    """The dotted name an attribute ``key`` of ``owner`` would have."""
+    return f"{owner.path}.{key}" if owner.path else key
 
 
 def _option(kind: str, key: str, default, value):
