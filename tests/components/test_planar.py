@@ -142,6 +142,31 @@ def test_free_body_tilted_gravity():
     assert np.max(np.abs(res["body.r[2]"] + 0.5 * 4.0 * t ** 2)) < TOL
 
 
+@pytest.mark.parametrize("g, n", [(9.81, (0.0, -2.0)), (4.0, (3.0, 4.0))])
+def test_world_gravity_is_g_along_n_over_its_length(g, n):
+    """MultiBody's World: gravity = g·n/|n|, whatever the length of n. A free body falls by
+    r = ½·g·n/|n|·t² (closed form)."""
+    md = Model("fall")
+    md.world = P.World(g=g, n=n)
+    md.body = P.Body(m=2.0, I=0.1)
+    t = np.linspace(0, 1.0, 11)
+    res = acausal.compile(md).simulate(1.0, t=t, **SIM)
+    e = np.array(n) / np.hypot(*n)
+    assert np.max(np.abs(res["body.r[1]"] - 0.5 * g * e[0] * t ** 2)) < TOL
+    assert np.max(np.abs(res["body.r[2]"] - 0.5 * g * e[1] * t ** 2)) < TOL
+    assert np.max(np.abs(res["body.f[2]"])) < TOL                  # free fall: no force
+
+
+def test_world_without_a_direction_is_refused():
+    md = Model("fall")
+    md.world = P.World(n=(0.0, 0.0))
+    md.body = P.Body()
+    with pytest.raises(ParameterError) as err:
+        acausal.compile(md)
+    assert str(err.value) == ("World 'world': n = {0, 0} gives no direction; give one, e.g. "
+                              "World(n=(0, -1))")
+
+
 def test_prismatic_incline_and_normal_force():
     alpha, m = 0.4, 2.5
     md = Model("incline")

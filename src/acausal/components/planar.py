@@ -107,6 +107,17 @@ def _rot_t(phi, v):
     return ca.vertcat(c * v[0] + s * v[1], -s * v[0] + c * v[1])
 
 
+def _direction(c: Component, name: str, example: str) -> ca.SX:
+    """The unit vector of ``c``'s direction parameter ``name`` (v/|v|, MSL's
+    normalizeWithAssert): {0, 0} gives no direction and is refused naming the parameter."""
+    v0 = c._values[name]
+    if v0[0] == 0.0 and v0[1] == 0.0:
+        raise ParameterError(f"{who(c)}: {name} = {{0, 0}} gives no direction; give one, "
+                             f"e.g. {type(c).__name__}({name}={example})")
+    v = getattr(c, name)
+    return v / ca.norm_2(v)
+
+
 def _output_vector(e, ports: PortVector, values) -> None:
     for k, port in enumerate(ports):
         e.output(port, values[k])
@@ -132,12 +143,17 @@ class _Resolving(Component):
 # World and parts
 # =========================================================================================
 class World(Component):
-    """Gravity for every Body of the model: acceleration g [m/s²] along n (unit vector).
+    """Gravity for every Body of the model: acceleration g [m/s²] along n, as MultiBody's
+    World: gravity = g·n/|n| (n need not be a unit vector; n = {0, 0} is refused).
 
     PlanarMechanics' PlanarWorld gives one vector ``constantGravity`` = {0, -9.81}: here
-    g·n with the defaults g = 9.81, n = {0, -1} (MultiBody's World parametrization)."""
+    g·n/|n| with the defaults g = 9.81, n = {0, -1} (MultiBody's World parametrization)."""
     g = Parameter(9.81, "m/s2", "gravity constant", nonnegative=True)
-    n = Parameter((0.0, -1.0), "1", "direction of gravity (normalized)")
+    n = Parameter((0.0, -1.0), "1", "direction of gravity (gravity = g*n/length(n))")
+
+    def gravity(self) -> ca.SX:
+        """The gravity acceleration g·n/|n| [m/s²], resolved in the world frame."""
+        return self.g * _direction(self, "n", "(0, -1)")
 
 
 class Fixed(Component):
@@ -193,8 +209,7 @@ class Body(Component):
         # split once: indexing an SX from Python costs as much as an operation
         r, v, a = (ca.vertsplit(x) for x in (e.pos(self.frame_a), e.vel(self.frame_a),
                                              e.acc(self.frame_a)))
-        n = ca.vertsplit(world.n)
-        gx, gy = world.g * n[0], world.g * n[1]
+        gx, gy = ca.vertsplit(world.gravity())
         e.rigid_body(self.frame_a, self.m, self.I)
         e.potential_energy(-self.m * (gx * r[0] + gy * r[1]))
         for k, name in enumerate(("r[1]", "r[2]", "phi")):
@@ -442,11 +457,7 @@ class Prismatic(_Joint):
     flange_a, support = _drive_flanges(TranslationalFlange)
 
     def structure(self, s):
-        r0 = self._values["r"]
-        if r0[0] == 0.0 and r0[1] == 0.0:
-            raise ParameterError(f"{who(self)}: r = {{0, 0}} gives no direction; give the "
-                                 f"direction of the joint axis, e.g. r=(1, 0)")
-        e = self.r / ca.norm_2(self.r)
+        e = _direction(self, "r", "(1, 0)")
         s_rel = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
         s.prismatic(self.frame_a, self.frame_b, s_rel, e)
         self._link_flange(s, s_rel)
