@@ -5,10 +5,12 @@ import numpy as np
 import pytest
 
 import acausal
+from acausal.components import rotational as rot
 from acausal.components import translational as tr
 from acausal.components.translational import Force, Mass, Spring
 from acausal.core import (Component, Input, Model, Output, Parameter, RealInput, RealOutput,
-                          RotationalFlange, TranslationalFlange, connect)
+                          RotationalFlange, StateSelect, TranslationalFlange, Unavailable,
+                          connect)
 from acausal.errors import ParameterError, PortConnectionError
 
 
@@ -119,6 +121,28 @@ def test_a_component_belongs_to_one_model():
         second.mass = first.mass
     assert str(err.value) == ("component 'mass' already belongs to a model; create a new one "
                               "for 'mass'")
+
+
+def test_an_option_not_available_yet_accepts_only_its_off_value():
+    """MSL options acausal does not implement yet (``Unavailable``) take their "off" value
+    and refuse the other naming what is missing; stateSelect is accepted as a hint."""
+    class Heated(Component):
+        options = {"useHeatPort": Unavailable(False, "the heatPort")}
+
+    assert Heated().useHeatPort is False and Heated.all_options() == {"useHeatPort": False}
+    with pytest.raises(ParameterError) as err:
+        Heated(useHeatPort=True)
+    assert str(err.value) == ("Heated: useHeatPort=True is not available yet (the heatPort); "
+                              "leave useHeatPort=False, the default")
+    with pytest.raises(ParameterError, match="must be True or False"):
+        Heated(useHeatPort="no")
+    for cls in (tr.Damper, tr.SpringDamper, rot.Damper, rot.SpringDamper):
+        assert cls(useHeatPort=False).useHeatPort is False
+        with pytest.raises(ParameterError, match=r"useHeatPort=True is not available yet"):
+            cls(useHeatPort=True)
+    assert rot.Inertia(stateSelect="always").stateSelect is StateSelect.always
+    assert tr.Mass(stateSelect=StateSelect.never).stateSelect is StateSelect.never
+    assert tr.Damper().stateSelect is StateSelect.prefer              # MSL's default there
 
 
 def test_a_component_has_one_name_in_its_model():

@@ -33,10 +33,10 @@ from __future__ import annotations
 import casadi as ca
 
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
-                    TranslationalFlange, VectorPort)
+                    StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import TRANSLATIONAL
 from . import interfaces
-from .interfaces import TRANSLATIONAL_AXIS, linear_law, quadratic_law
+from .interfaces import TRANSLATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
 Flange = TranslationalFlange
 
@@ -102,7 +102,9 @@ class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
     """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states. Here the same
-    as PartialCompliant: the compiler chooses the coordinates."""
+    as PartialCompliant: the compiler chooses the coordinates (``stateSelect``, default
+    prefer, is a hint, see StateSelect)."""
+    options = {"stateSelect": StateSelect.prefer}
 
 
 class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlangeAndSupport2):
@@ -151,8 +153,9 @@ class Mass(PartialRigid):
 
     States s [m] (centre: flange_a.s = s − L/2, flange_b.s = s + L/2) and v [m/s];
     a [m/s²] recorded; m·a = flange_a.f + flange_b.f. m must be > 0 (MSL: min = 0; a mass of
-    zero is a Rod).
+    zero is a Rod). ``stateSelect`` is a hint (StateSelect).
     """
+    options = {"stateSelect": StateSelect.default}
     m = Parameter(1.0, "kg", "mass of the sliding mass", positive=True)
     batch_physics = True
 
@@ -181,7 +184,8 @@ class Spring(PartialCompliant):
 
 class Damper(PartialCompliantWithRelativeStates):
     """Linear damper: f = d·v_rel; d [N.s/m] ≥ 0 (default 0 = MSL start value).
-    lossPower = f·v_rel [W]."""
+    lossPower = f·v_rel [W]. useHeatPort only False."""
+    options = {"useHeatPort": USE_HEAT_PORT}
     batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.s/m", "damping constant", nonnegative=True)
 
@@ -194,7 +198,9 @@ class Damper(PartialCompliantWithRelativeStates):
 
 class SpringDamper(PartialCompliantWithRelativeStates):
     """Linear spring and damper in parallel: f = c·(s_rel − s_rel0) + d·v_rel;
-    c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL start values). lossPower = d·v_rel² [W]."""
+    c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL start values). lossPower = d·v_rel² [W].
+    useHeatPort only False."""
+    options = {"useHeatPort": USE_HEAT_PORT}
     batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
