@@ -175,10 +175,12 @@ class Inertia(Component):
     a [rad/s²] recorded. flange_a.phi = flange_b.phi = phi. ``stateSelect`` is a hint
     (StateSelect).
 
-    MSL allows J = 0 (min=0); here J must be > 0 (a massless rigid link is a connection).
+    J = 0 is allowed (MSL: min = 0), a massless shaft where something else carries the
+    inertia: as Translational.Mass with m = 0 (J fixed at 0 in the compiled model, its angle
+    algebraic where nothing with inertia is rigidly attached).
     """
     options = {"stateSelect": StateSelect.default}
-    J = Parameter(1.0, "kg.m2", "moment of inertia", positive=True)
+    J = Parameter(1.0, "kg.m2", "moment of inertia", nonnegative=True, structural_zero=True)
     flange_a = Flange("left flange of shaft")
     flange_b = Flange("right flange of shaft")
     batch_physics = True

@@ -152,11 +152,18 @@ class Mass(PartialRigid):
     """Sliding mass with inertia ``m`` [kg] and length ``L`` [m], without friction.
 
     States s [m] (centre: flange_a.s = s − L/2, flange_b.s = s + L/2) and v [m/s];
-    a [m/s²] recorded; m·a = flange_a.f + flange_b.f. m must be > 0 (MSL: min = 0; a mass of
-    zero is a Rod). ``stateSelect`` is a hint (StateSelect).
+    a [m/s²] recorded; m·a = flange_a.f + flange_b.f. ``stateSelect`` is a hint
+    (StateSelect).
+
+    m = 0 is allowed (MSL: min = 0), a massless flange where something else carries the
+    inertia: its position is then an algebraic variable of the DAE, fixed by the forces on
+    it (0 = flange_a.f + flange_b.f), and m is fixed at 0 in the compiled model (compile a
+    Mass built with m > 0 to change it); a node on which nothing but given forces act is
+    singular and refused at compile time.
     """
     options = {"stateSelect": StateSelect.default}
-    m = Parameter(1.0, "kg", "mass of the sliding mass", positive=True)
+    m = Parameter(1.0, "kg", "mass of the sliding mass", nonnegative=True,
+                  structural_zero=True)
     batch_physics = True
 
     def _centre(self, s):
