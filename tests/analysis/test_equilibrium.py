@@ -44,9 +44,9 @@ def spring_pendulum(c=PC, with_spring=True):
     if with_spring:
         md.spring = rot.Spring(c=c)
         md.connect(md.ground.flange, md.spring.flange_a)
-        md.connect(md.spring.flange_b, md.rev.flange_a)
+        md.connect(md.spring.flange_b, md.rev.axis)
     md.connect(md.T.y, md.torque.tau)
-    md.connect(md.torque.flange, md.rev.flange_a)
+    md.connect(md.torque.flange, md.rev.axis)
     return ac.compile(md)
 
 

@@ -121,10 +121,10 @@ def pendulum():
     md.connect(md.fixed.frame, md.rev.frame_a)
     md.connect(md.rev.frame_b, md.bar.frame_a)
     md.connect(md.bar.frame_b, md.body.frame_a)
-    md.connect(md.rev.flange_a, md.damper.flange_b)
+    md.connect(md.rev.axis, md.damper.flange_b)
     md.connect(md.ground.flange, md.damper.flange_a)
     md.connect(md.T.y, md.torque.tau)
-    md.connect(md.torque.flange, md.rev.flange_a)
+    md.connect(md.torque.flange, md.rev.axis)
     return ac.compile(md)
 
 

@@ -18,8 +18,8 @@ def test_rod_connected_to_nothing_is_named():
     m = ac.Model("loose_rod")
     _oscillator(m)
     m.rod = tr.Rod(L=1.0)
-    with pytest.raises(ac.SingularModelError, match=r"massless node\(s\) rod\.flange_a\.s is "
-                                                    r"not determined"):
+    with pytest.raises(ac.SingularModelError, match=r"massless node\(s\) rod\.flange_a\.s: "
+                                                    r"the forces on it depend neither"):
         ac.compile(m)
 
 
@@ -31,5 +31,6 @@ def test_force_on_a_massless_rod_blames_the_node_not_the_input():
     m.rod, m.push, m.F = tr.Rod(L=1.0), tr.Force(), ac.Input(start=1.0)
     m.connect(m.push.flange, m.rod.flange_a)
     m.connect(m.F.y, m.push.f)
-    with pytest.raises(ac.SingularModelError, match=r"rod\.flange_a\.s is not determined"):
+    with pytest.raises(ac.SingularModelError, match=r"massless node\(s\) rod\.flange_a\.s: "
+                                                    r"the forces on it depend neither"):
         ac.compile(m)

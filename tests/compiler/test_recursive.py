@@ -28,7 +28,7 @@ def chain(n, prismatic_every=3, free_body=True, armature=True):
         prev = bar.frame_b
     if armature:
         m.rotor = rot.Inertia(J=0.3)
-        m.connect(m.j0.flange_a, m.rotor.flange_a)
+        m.connect(m.j0.axis, m.rotor.flange_a)
     if free_body:
         m.puck = P.Body(m=0.7, I=0.02)
     return m

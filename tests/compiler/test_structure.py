@@ -186,7 +186,7 @@ def test_fully_driven_pendulum_has_no_states_but_its_drive_torque():
     m.ref = sig.Sine(amplitude=0.5, f=1.0)
     for a, b in [(m.fixed.frame, m.rev.frame_a), (m.rev.frame_b, m.bar.frame_a),
                  (m.bar.frame_b, m.body.frame_a), (m.ref.y, m.pos.phi_ref),
-                 (m.pos.flange, m.rev.flange_a)]:
+                 (m.pos.flange, m.rev.axis)]:
         m.connect(a, b)
     c = acausal.compile(m)
     assert c.x_names == [] and c.z_names == []

@@ -142,6 +142,31 @@ def test_free_body_tilted_gravity():
     assert np.max(np.abs(res["body.r[2]"] + 0.5 * 4.0 * t ** 2)) < TOL
 
 
+@pytest.mark.parametrize("g, n", [(9.81, (0.0, -2.0)), (4.0, (3.0, 4.0))])
+def test_world_gravity_is_g_along_n_over_its_length(g, n):
+    """MultiBody's World: gravity = g·n/|n|, whatever the length of n. A free body falls by
+    r = ½·g·n/|n|·t² (closed form)."""
+    md = Model("fall")
+    md.world = P.World(g=g, n=n)
+    md.body = P.Body(m=2.0, I=0.1)
+    t = np.linspace(0, 1.0, 11)
+    res = acausal.compile(md).simulate(1.0, t=t, **SIM)
+    e = np.array(n) / np.hypot(*n)
+    assert np.max(np.abs(res["body.r[1]"] - 0.5 * g * e[0] * t ** 2)) < TOL
+    assert np.max(np.abs(res["body.r[2]"] - 0.5 * g * e[1] * t ** 2)) < TOL
+    assert np.max(np.abs(res["body.f[2]"])) < TOL                  # free fall: no force
+
+
+def test_world_without_a_direction_is_refused():
+    md = Model("fall")
+    md.world = P.World(n=(0.0, 0.0))
+    md.body = P.Body()
+    with pytest.raises(ParameterError) as err:
+        acausal.compile(md)
+    assert str(err.value) == ("World 'world': n = {0, 0} gives no direction; give one, e.g. "
+                              "World(n=(0, -1))")
+
+
 def test_prismatic_incline_and_normal_force():
     alpha, m = 0.4, 2.5
     md = Model("incline")
@@ -439,7 +464,7 @@ def test_world_force_in_world_frame_and_world_torque():
     body = _free_body(md, m=m, I=I)
     md.wf = P.WorldForce(resolveInFrame="world")
     md.wt = P.WorldTorque()
-    for k, src in zip(md.wf.force, _constants(md, F)):
+    for k, src in zip([*md.wf.force, md.wf.torque], _constants(md, F)):
         md.connect(src.y, k)
     md.kt = S.Constant(k=0.6)
     md.connect(md.kt.y, md.wt.torque)
@@ -459,7 +484,7 @@ def test_world_force_resolved_in_turning_frame_b():
     md.world = P.World(g=0.0)
     body = _free_body(md, m=m)
     md.wf = P.WorldForce()                                # default: frame_b
-    for k, src in zip(md.wf.force, _constants(md, (*F, 0.0))):
+    for k, src in zip([*md.wf.force, md.wf.torque], _constants(md, (*F, 0.0))):
         md.connect(src.y, k)
     md.connect(md.wf.frame_b, body.frame_a)
     t = np.linspace(0, 1.2, 13)
@@ -480,7 +505,7 @@ def test_world_force_resolved_in_frame_resolve():
     body = _free_body(md, m=m)
     md.ref = P.Fixed(phi=beta)
     md.wf = P.WorldForce(resolveInFrame=P.ResolveInFrameB.frame_resolve)
-    for k, src in zip(md.wf.force, _constants(md, (*F, 0.0))):
+    for k, src in zip([*md.wf.force, md.wf.torque], _constants(md, (*F, 0.0))):
         md.connect(src.y, k)
     md.connect(md.wf.frame_b, body.frame_a)
     md.connect(md.wf.frame_resolve, md.ref.frame)
@@ -497,7 +522,7 @@ def test_relative_force_acts_equal_and_opposite():
     a = _free_body(md, "a", m=mA, I=IA)
     b = _free_body(md, "b", m=mB, I=IB)
     md.rf = P.RelativeForce()                             # default: resolved in frame_a
-    for k, src in zip(md.rf.force, _constants(md, F)):
+    for k, src in zip([*md.rf.force, md.rf.torque], _constants(md, F)):
         md.connect(src.y, k)
     md.connect(md.rf.frame_a, a.frame_a)
     md.connect(md.rf.frame_b, b.frame_a)
@@ -518,7 +543,7 @@ def test_relative_force_torque_in_world_frame():
     a = _free_body(md, "a", I=IA)
     b = _free_body(md, "b", I=IB)
     md.rf = P.RelativeForce(resolveInFrame="world")
-    for k, src in zip(md.rf.force, _constants(md, (0.0, 0.0, tau))):
+    for k, src in zip([*md.rf.force, md.rf.torque], _constants(md, (0.0, 0.0, tau))):
         md.connect(src.y, k)
     md.connect(md.rf.frame_a, a.frame_a)
     md.connect(md.rf.frame_b, b.frame_a)
@@ -526,6 +551,75 @@ def test_relative_force_torque_in_world_frame():
     res = acausal.compile(md).simulate(1.0, t=t, **SIM)
     assert np.max(np.abs(res["b.w"] - tau / IB * t)) < TOL
     assert np.max(np.abs(res["a.w"] + tau / IA * t)) < TOL
+
+
+def test_power_sensor_measures_the_power_into_frame_b():
+    """PlanarMechanics.Sensors.Power between a WorldForce (world frame, force F, torque τ)
+    and a free body starting at rest: power = F·v + τ·w = (|F|²/m + τ²/I)·t (closed
+    form); frame_a and frame_b move together."""
+    m, I, F, tau = 2.0, 0.5, (3.0, -1.0), 0.4
+    md = Model("power")
+    md.world = P.World(g=0.0)
+    body = _free_body(md, m=m, I=I)
+    md.wf = P.WorldForce(resolveInFrame="world")
+    md.power = P.Power()
+    for k, src in zip([*md.wf.force, md.wf.torque], _constants(md, (*F, tau))):
+        md.connect(src.y, k)
+    md.connect(md.wf.frame_b, md.power.frame_a)
+    md.connect(md.power.frame_b, body.frame_a)
+    t = np.linspace(0, 1, 11)
+    res = acausal.compile(md).simulate(1.0, t=t, x0={"body.r[1]": 0.3}, **SIM)
+    expected = ((F[0] ** 2 + F[1] ** 2) / m + tau ** 2 / I) * t
+    assert np.max(np.abs(res["power.power"] - expected)) < TOL
+    assert np.max(np.abs(res["power.frame_a.x"] - res["body.r[1]"])) < TOL
+
+
+def test_body_without_gravity_keeps_still_while_another_falls():
+    """Body.enableGravity = false (PlanarMechanics): f = m·a, gravity does not act on it;
+    a body with the default falls by ½·g·t² (closed forms)."""
+    md = Model("gravity")
+    md.world = P.World()
+    md.floating = P.Body(m=2.0, enableGravity=False)
+    md.falling = P.Body(m=2.0)
+    t = np.linspace(0, 1, 11)
+    res = acausal.compile(md).simulate(1.0, t=t, x0={"floating.v[1]": 0.5}, **SIM)
+    assert np.max(np.abs(res["floating.r[1]"] - 0.5 * t)) < TOL
+    assert np.max(np.abs(res["floating.r[2]"])) < TOL
+    assert np.max(np.abs(res["floating.f[2]"])) < TOL              # f = m·a = 0
+    assert np.max(np.abs(res["falling.r[2]"] + 0.5 * G * t ** 2)) < TOL
+
+
+def test_state_select_is_a_hint_that_changes_nothing():
+    """stateSelect (Revolute, Prismatic, Body as PlanarMechanics) is accepted with every
+    value of Modelica's StateSelect; the pendulum still matches the hand ODE."""
+    t = np.linspace(0, 1, 21)
+    phi, _ = pendulum_ref(t, 0.3, 0.0)
+    for choice in ("never", "avoid", "default", "prefer", "always"):
+        md = Model("pendulum")
+        md.world, md.fixed = P.World(), P.Fixed()
+        md.rev = P.Revolute(stateSelect=choice)
+        assert md.rev.stateSelect is P.StateSelect(choice)
+        md.bar = P.FixedTranslation(r=(1.0, 0.0))
+        md.body = P.Body(m=1.0, I=0.1, stateSelect=choice)
+        for a, b in [(md.fixed.frame, md.rev.frame_a), (md.rev.frame_b, md.bar.frame_a),
+                     (md.bar.frame_b, md.body.frame_a)]:
+            md.connect(a, b)
+        res = acausal.compile(md).simulate(1.0, t=t, x0={"rev.phi": 0.3}, **SIM)
+        assert np.max(np.abs(res["rev.phi"] - phi)) < TOL
+    assert P.Prismatic(stateSelect=P.StateSelect.always).stateSelect == "always"
+
+
+def test_options_not_available_yet_accept_only_their_off_value():
+    assert P.Damper(enableAssert=False, useHeatPort=False).enableAssert is False
+    assert P.Spring(enableAssert=False).enableAssert is False     # a warning: no effect
+    with pytest.raises(ParameterError) as err:
+        P.SpringDamper(useHeatPort=True)
+    assert str(err.value) == ("SpringDamper: useHeatPort=True is not available yet (the "
+                              "heatPort: acausal has no thermal domain); leave "
+                              "useHeatPort=False, the default")
+    with pytest.raises(ParameterError, match=r"Damper: enableAssert=True is not available "
+                                             r"yet .*run-time assertions"):
+        P.Damper(enableAssert=True)
 
 
 # =========================================================================================
@@ -538,8 +632,8 @@ def test_revolute_flange_driven_by_torque_and_damped():
     md.sine = S.Sine(amplitude=3.0, f=0.7)
     md.damper = Rot.Damper(d=d)
     md.connect(md.sine.y, md.torque.tau)
-    md.connect(md.torque.flange, md.rev.flange_a)
-    md.connect(md.damper.flange_a, md.rev.flange_a)
+    md.connect(md.torque.flange, md.rev.axis)
+    md.connect(md.damper.flange_a, md.rev.axis)
     md.connect(md.damper.flange_b, md.rev.support)
     t = np.linspace(0, 3, 121)
     res = acausal.compile(md).simulate(3.0, t=t, x0={"rev.phi": -1.2}, **SIM)
@@ -571,7 +665,7 @@ def test_prismatic_flange_driven_by_force():
     md.connect(md.fixed.frame, md.prism.frame_a)
     md.connect(md.prism.frame_b, md.body.frame_a)
     md.connect(md.k.y, md.force.f)
-    md.connect(md.force.flange, md.prism.flange_a)
+    md.connect(md.force.flange, md.prism.axis)
     t = np.linspace(0, 1, 11)
     res = acausal.compile(md).simulate(1.0, t=t, **SIM)
     assert np.max(np.abs(res["prism.s"] - 0.5 * F / m * t ** 2)) < TOL
@@ -602,7 +696,7 @@ def test_structural_mistakes_name_the_part():
     with pytest.raises(ParameterError, match="resolveInFrame"):
         P.WorldForce(resolveInFrame="frame_a")
     with pytest.raises(AttributeError, match="useFlange"):
-        P.Revolute().flange_a                                   # noqa: B018
+        P.Revolute().axis                                       # noqa: B018
     with pytest.raises(AttributeError, match="frame_resolve"):
         P.CutForce().frame_resolve                              # noqa: B018
     md = pendulum()

@@ -661,3 +661,24 @@ def test_bad_values_at_simulation_time_and_structure_errors_are_named():
     m = base_excited(rot.Position(exact=True), lambda s: s.phi_ref, acausal.Input())
     with pytest.raises(acausal.StructureError, match="exact=False"):
         acausal.compile(m).simulate(0.1, inputs={"ref": np.sin})["j1.w"]
+
+
+@pytest.mark.parametrize("J_motor", [0.0, 0.2])
+def test_massless_inertia_in_a_gear_train_is_the_reduced_inertia(J_motor):
+    """MSL allows Inertia.J = 0: torque τ on motor (J_motor) ── IdealGear(ratio i) ── load
+    (J_load). Reduced to the load: (J_load + i²·J_motor)·φ̈_load = i·τ (closed form), so
+    J_motor = 0 leaves J_load alone; the motor turns i times the load."""
+    tau, i, J_load = 1.5, 3.0, 0.8
+    m = acausal.Model("train")
+    m.T = TimeSignal(fn=lambda t: tau + 0 * t)
+    m.torque, m.motor = rot.Torque(), rot.Inertia(J=J_motor)
+    m.gear, m.load = rot.IdealGear(ratio=i), rot.Inertia(J=J_load)
+    connect_all(m, (m.T.y, m.torque.tau), (m.torque.flange, m.motor.flange_a),
+                (m.motor.flange_b, m.gear.flange_a), (m.gear.flange_b, m.load.flange_a))
+    compiled = acausal.compile(m)
+    assert compiled.fixed_params == (["motor.J"] if J_motor == 0 else [])
+    t = np.linspace(0.0, 1.0, 11)
+    res = compiled.simulate(1.0, t=t)
+    a = i * tau / (J_load + i ** 2 * J_motor)
+    close(res["load.phi"], 0.5 * a * t ** 2, what="φ_load = ½·iτ/(J_load + i²J_motor)·t²")
+    close(res["motor.phi"], i * res["load.phi"], what="φ_motor = i·φ_load")

@@ -57,6 +57,17 @@ SOURCES = {
     "Cosine": (lambda: sg.Cosine(amplitude=0.7, f=1.3, phase=-0.2, offset=1.0, startTime=0.25),
                lambda t: 1.0 + _after(t, 0.25, 0.7 * np.cos(TWO_PI * 1.3 * (t - 0.25) - 0.2)),
                (0.25,)),
+    # MSL's continuous = true: before startTime the value the sine starts from, no jump
+    "Sine_continuous": (lambda: sg.Sine(amplitude=1.5, f=0.8, phase=0.4, offset=0.2,
+                                        startTime=0.5, continuous=True),
+                        lambda t: 0.2 + 1.5 * np.where(
+                            t < 0.5, np.sin(0.4), np.sin(TWO_PI * 0.8 * (t - 0.5) + 0.4)),
+                        (0.5,)),
+    "Cosine_continuous": (lambda: sg.Cosine(amplitude=0.7, f=1.3, phase=-0.2, offset=1.0,
+                                            startTime=0.25, continuous=True),
+                          lambda t: 1.0 + 0.7 * np.where(
+                              t < 0.25, np.cos(-0.2), np.cos(TWO_PI * 1.3 * (t - 0.25) - 0.2)),
+                          (0.25,)),
     "ExpSine": (lambda: sg.ExpSine(amplitude=2.0, f=1.5, phase=0.3, damping=0.8, offset=-0.3,
                                    startTime=0.4),
                 lambda t: -0.3 + _after(t, 0.4, 2.0 * np.exp(-0.8 * (t - 0.4))

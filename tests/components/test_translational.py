@@ -606,8 +606,71 @@ def test_speed_sensor_feedback_is_a_damper():
 # =========================================================================================
 # Errors
 # =========================================================================================
+def _series_chain(masses, c=(10.0, 30.0), m_end=2.0):
+    """wall ── spring c[0] ── Mass masses[0] ── spring c[1] ── ... ── Mass m_end."""
+    m = acausal.Model("chain")
+    m.wall = tr.Fixed()
+    prev = m.wall.flange
+    for i, (ci, mi) in enumerate(zip(c, list(masses) + [m_end])):
+        spring, mass = tr.Spring(c=ci), tr.Mass(m=mi)
+        setattr(m, f"s{i}", spring)
+        setattr(m, f"m{i}", mass)
+        m.connect(prev, spring.flange_a)
+        m.connect(spring.flange_b, mass.flange_a)
+        prev = mass.flange_b
+    return m
+
+
+def test_massless_mass_between_springs_is_the_springs_in_series():
+    """MSL allows Mass.m = 0: wall ── c1 ── Mass(m=0) ── c2 ── Mass(m) is one mass on the
+    series spring c = c1·c2/(c1 + c2): s = s0·cos(√(c/m)·t) (closed form, the hand model
+    without the massless mass), and the massless node sits where c1·s_mid = c2·(s − s_mid).
+    Its position is an algebraic variable; m is fixed at 0 in the compiled model."""
+    c1, c2, m_end, s0 = 10.0, 30.0, 2.0, 0.1
+    compiled = acausal.compile(_series_chain([0.0], (c1, c2), m_end))
+    assert compiled.x_names == ["m1.s", "m1.v"] and compiled.z_names == ["m0.s"]
+    assert compiled.fixed_params == ["m0.m"] and "m0.m" not in compiled.param_names
+    t = np.linspace(0.0, 3.0, 151)
+    res = compiled.simulate(3.0, t=t, x0={"m1.s": s0})
+    s = s0 * np.cos(math.sqrt(c1 * c2 / (c1 + c2) / m_end) * t)
+    close(res["m1.s"], s)
+    close(res["m0.s"], c2 / (c1 + c2) * s)
+    close(res["s0.f"], res["s1.f"])                       # no mass: the forces balance
+    with pytest.raises(ParameterError, match=r"'m0\.m' of model 'chain' was fixed at 0 .* "
+                                             r"build it with a value > 0 and compile again"):
+        compiled.simulate(1.0, params={"m0.m": 1.0})
+    massive = acausal.compile(_series_chain([1.0], (c1, c2), m_end))
+    with pytest.raises(ParameterError, match=r"'m0\.m' must be > 0"):
+        massive.simulate(1.0, params={"m0.m": 0.0})       # would need other equations
+
+
+def test_many_massless_masses_batched_are_one_series_spring():
+    """Nine massless masses between ten springs (compiled as one batch of the Mass class):
+    one mass on c/10, s = s0·cos(√(c/(10·m))·t) (closed form)."""
+    c, m_end, s0 = 50.0, 0.5, 0.2
+    compiled = acausal.compile(_series_chain([0.0] * 9, (c,) * 10, m_end))
+    assert compiled.x_names == ["m9.s", "m9.v"] and len(compiled.z_names) == 9
+    t = np.linspace(0.0, 2.0, 101)
+    res = compiled.simulate(2.0, t=t, x0={"m9.s": s0})
+    close(res["m9.s"], s0 * np.cos(math.sqrt(c / 10 / m_end) * t))
+    close(res["m4.s"], 0.5 * s0 * np.cos(math.sqrt(c / 10 / m_end) * t))
+
+
+def test_massless_mass_with_only_a_force_is_singular():
+    """A massless Mass on which only a given force acts has no equation for its motion:
+    the compile names its node."""
+    m = _series_chain([], (1.0,), 1.0)
+    m.tip, m.push, m.k = tr.Mass(m=0.0), tr.Force(), TimeSignal(fn=lambda t: 1.0 + 0 * t)
+    m.connect(m.k.y, m.push.f)
+    m.connect(m.push.flange, m.tip.flange_a)
+    with pytest.raises(acausal.SingularModelError) as err:
+        acausal.compile(m)
+    assert str(err.value).startswith("the massless node(s) tip.s: the forces on it depend "
+                                     "neither on its position nor on its speed")
+
+
 def test_negative_mass_is_a_parameter_error():
-    with pytest.raises(ParameterError, match=r"Mass\.m.*> 0"):
+    with pytest.raises(ParameterError, match=r"Mass\.m.*>= 0"):
         tr.Mass(m=-1.0)
     m = acausal.Model("neg")
     m.src = tr.ConstantForce(f_constant=1.0)

@@ -1,13 +1,16 @@
 """Component and Model: parameters and structural options at construction, naming by
 assignment, ports per instance; connect() and its errors, each naming the parts at fault.
 The library's components serve as ordinary instances here."""
+import numpy as np
 import pytest
 
 import acausal
+from acausal.components import rotational as rot
 from acausal.components import translational as tr
 from acausal.components.translational import Force, Mass, Spring
 from acausal.core import (Component, Input, Model, Output, Parameter, RealInput, RealOutput,
-                          RotationalFlange, TranslationalFlange, connect)
+                          RotationalFlange, StateSelect, TranslationalFlange, Unavailable,
+                          connect)
 from acausal.errors import ParameterError, PortConnectionError
 
 
@@ -38,13 +41,16 @@ def test_unknown_parameter_at_construction():
     assert "s_rel_0" in str(err.value) and "s_rel0" in str(err.value)
 
 
-@pytest.mark.parametrize("value", [0.0, -1.0])
-def test_non_positive_mass_at_construction(value):
-    with pytest.raises(acausal.ParameterError, match=r"\bm\b.*> 0"):
+@pytest.mark.parametrize("value", [-1e-9, -1.0])
+def test_negative_mass_at_construction(value):
+    """MSL's Mass.m has min = 0: a negative mass is refused, m = 0 (a massless flange) is
+    legal (its compile: tests/components/test_translational.py)."""
+    with pytest.raises(acausal.ParameterError, match=r"\bm\b.*>= 0"):
         Mass(m=value)
     mass = Mass()
-    with pytest.raises(acausal.ParameterError, match=r"\bm\b.*> 0"):
+    with pytest.raises(acausal.ParameterError, match=r"\bm\b.*>= 0"):
         mass.m = value
+    assert Mass(m=0.0).m == 0.0
 
 
 def test_non_number_parameter():
@@ -118,6 +124,63 @@ def test_a_component_belongs_to_one_model():
         second.mass = first.mass
     assert str(err.value) == ("component 'mass' already belongs to a model; create a new one "
                               "for 'mass'")
+
+
+def test_an_option_not_available_yet_accepts_only_its_off_value():
+    """MSL options acausal does not implement yet (``Unavailable``) take their "off" value
+    and refuse the other naming what is missing; stateSelect is accepted as a hint."""
+    class Heated(Component):
+        options = {"useHeatPort": Unavailable(False, "the heatPort")}
+
+    assert Heated().useHeatPort is False and Heated.all_options() == {"useHeatPort": False}
+    with pytest.raises(ParameterError) as err:
+        Heated(useHeatPort=True)
+    assert str(err.value) == ("Heated: useHeatPort=True is not available yet (the heatPort); "
+                              "leave useHeatPort=False, the default")
+    with pytest.raises(ParameterError, match="must be True or False"):
+        Heated(useHeatPort="no")
+    for cls in (tr.Damper, tr.SpringDamper, rot.Damper, rot.SpringDamper):
+        assert cls(useHeatPort=False).useHeatPort is False
+        with pytest.raises(ParameterError, match=r"useHeatPort=True is not available yet"):
+            cls(useHeatPort=True)
+    assert rot.Inertia(stateSelect="always").stateSelect is StateSelect.always
+    assert tr.Mass(stateSelect=StateSelect.never).stateSelect is StateSelect.never
+    assert tr.Damper().stateSelect is StateSelect.prefer              # MSL's default there
+
+
+def test_a_component_has_one_name_in_its_model():
+    """Assigning a part a second name would put it in the model twice (its parameters
+    listed twice, an oscillator moving like twice the mass): refused, naming both names.
+    The model is left with the one mass: its period is 2π·sqrt(m/c) (closed form)."""
+    m = Model("osc")
+    m.fixed, m.spring, m.mass = tr.Fixed(), Spring(c=4.0), Mass(m=1.0)
+    with pytest.raises(PortConnectionError) as err:
+        m.other = m.mass
+    assert str(err.value) == ("component 'mass' is already part of this model; assigning it "
+                              "to 'other' too would put it in the model twice: use 'mass' "
+                              "itself, or create a new component for 'other'")
+    m.mass = m.mass                                   # the same name again: nothing changes
+    assert list(m.children) == ["fixed", "spring", "mass"]
+    connect(m.fixed.flange, m.spring.flange_a)
+    connect(m.spring.flange_b, m.mass.flange_a)
+    compiled = acausal.compile(m)
+    assert compiled.param_names.count("mass.m") == 1
+    t = np.linspace(0.0, 2.0, 201)
+    res = compiled.simulate(2.0, t=t, x0={"mass.s": 0.1})
+    np.testing.assert_allclose(res["mass.s"], 0.1 * np.cos(2.0 * t), atol=1e-6,
+                               err_msg="s = s0·cos(√(c/m)·t) with one mass m = 1, c = 4")
+
+
+def test_a_port_has_one_owner():
+    m = Model("m")
+    m.mass = Mass()
+    with pytest.raises(PortConnectionError) as err:
+        m.end = m.mass.flange_b
+    assert str(err.value) == ("port 'mass.flange_b' already belongs to Mass 'mass'; assigning "
+                              "it to 'end' too would give one port two names: use "
+                              "'mass.flange_b' itself (connect it), or create a new port for "
+                              "'end'")
+    assert m.mass.flange_b.path == "mass.flange_b" and "end" not in m.ports
 
 
 # ---- connect --------------------------------------------------------------------------------

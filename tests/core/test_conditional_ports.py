@@ -22,7 +22,7 @@ CASES = [
     (rot.DCMotor, "support", "useSupport", True, False),
     (rot.IdealRollingWheel, "supportR", "useSupportR", True, False),
     (rot.IdealGearR2T, "supportT", "useSupportT", True, False),
-    (P.Revolute, "flange_a", "useFlange", True, False),
+    (P.Revolute, "axis", "useFlange", True, False),
     (P.Prismatic, "support", "useFlange", True, False),
     (P.CutForce, "frame_resolve", "resolveInFrame", "frame_resolve", "world"),
     (P.WorldForce, "frame_resolve", "resolveInFrame", "frame_resolve", "frame_b"),

@@ -39,7 +39,7 @@ class Crane(GantryCrane):
         super().__init__("crane")
         self.cartPosition = tr.PositionSensor()
         self.x = acausal.Output(unit="m", description="cart position")
-        self.connect(self.rail.flange_a, self.cartPosition.flange)
+        self.connect(self.rail.axis, self.cartPosition.flange)
         self.connect(self.cartPosition.s, self.x.u)
 
 

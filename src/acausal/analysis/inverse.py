@@ -25,7 +25,7 @@ def inverse_dynamics(model, t, *, params: dict | None = None, inputs: dict | Non
                      guess: dict | None = None, tol: float = 1e-12) -> Result:
     """Kinematic analysis (see ``kinematic_analysis``) of a model driven by prescribed motions,
     with ``result.drivers``: the cut torque [N.m] / force [N] at each prescribed flange by
-    name (e.g. ``rev1.flange_a.tau``, the torque the drive applies to joint rev1)."""
+    name (e.g. ``rev1.axis.tau``, the torque the drive applies to joint rev1)."""
     res = MotionSolver(model, t, params, inputs, {}, [], guess, tol).run()
     res.drivers = {n: res[n] for n in prescribed_flange_flows(model)}
     return res

@@ -61,7 +61,7 @@ def _compile(model: Model) -> CompiledModel:
     ws.der_table["t"] = 1
     ws.source = flat.signal_source
     ws.components = flat.components
-    params = _declare_parameters(ws, flat.components)
+    params, fixed = _declare_parameters(ws, flat.components)
     with symbolic_parameters(ws.param_symbols):
         for c in flat.components:
             c.structure(StructureBuilder(ws, c))
@@ -77,26 +77,34 @@ def _compile(model: Model) -> CompiledModel:
         run_physics(ws, flat.components)
     ws.p = _stack([s for s, _ in params])
     ws.p_default = [v.start for _, v in params]
-    return _assemble(model, ws, tree, params)
+    return _assemble(model, ws, tree, params, fixed)
 
 
-def _declare_parameters(ws: Workspace, components) -> list[tuple[ca.SX, ScalarVariable]]:
+def _declare_parameters(ws: Workspace, components):
     """A symbol and a record for every scalar parameter (vector parameters by element,
-    ``r[1]``, ``r[2]``); the components' symbols go into ``ws.param_symbols``."""
-    params = []
+    ``r[1]``, ``r[2]``); the components' symbols go into ``ws.param_symbols``. A
+    ``structural_zero`` parameter built with 0 is the constant 0 instead, listed in the
+    second list returned (by name)."""
+    params, fixed = [], []
     for c in components:
         syms = {}
         for pname, par in c.parameters().items():
             value = c._values[pname]
+            name = f"{c.path}.{pname}" if c.path else pname
+            declaration = par.compiled(value)
+            if declaration is None:                       # fixed at 0: a massless part
+                syms[pname] = ca.SX(0.0)
+                fixed.append(name)
+                continue
             elements = []
             for k, ename in enumerate(par.element_names()):
                 s = ca.SX.sym(f"{c.path}.{ename}" if c.path else ename)
                 elements.append(s)
-                params.append((s, _parameter_record(s.name(), par,
+                params.append((s, _parameter_record(s.name(), declaration,
                                                     value if par.size is None else value[k])))
             syms[pname] = elements[0] if par.size is None else _vc(*elements)
         ws.param_symbols[c] = syms
-    return params
+    return params, fixed
 
 
 def _parameter_record(name: str, par: Parameter, default: float) -> ScalarVariable:
@@ -104,7 +112,7 @@ def _parameter_record(name: str, par: Parameter, default: float) -> ScalarVariab
     return ScalarVariable(name, par.unit, par.description, default, min=lower, declaration=par)
 
 
-def _assemble(model, ws: Workspace, tree, params) -> CompiledModel:
+def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledModel:
     t = ws.t
     nq = tree.q.numel()
     eps, epsd, epsdd = (_stack([getattr(f, k) for f in tree.fired])
@@ -214,6 +222,7 @@ def _assemble(model, ws: Workspace, tree, params) -> CompiledModel:
         loop_rows_dropped=[row_names[i] for i in range(phi.numel()) if i not in keep],
         loop_switches=list(range(n_model_params, len(params))),
         loop_mu=motion.loop_mu, loop_nu=motion.loop_nu,
+        fixed_params=fixed,
     )
 
 

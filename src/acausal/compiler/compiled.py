@@ -95,12 +95,15 @@ class CompiledModel:
     loop_switches: list[int] = field(default_factory=list)
     loop_mu: list[int] = field(default_factory=list)
     loop_nu: list[int] = field(default_factory=list)
+    fixed_params: list[str] = field(default_factory=list)
     _cache: dict = field(default_factory=dict, repr=False)
     """``loop_switches``: positions in p of the switches of the loop rows (row order): 1
     enforces row i of Φ, 0 drops it (redundant); simulate() and the FMUs set them at the
     assembled initial configuration (``mobility_at``). ``loop_mu`` / ``loop_nu``: positions
     in z of the multipliers of the stabilized index-2 form that hold Φ = 0 and Φ̇ = 0 (zero
-    on the exact solution)."""
+    on the exact solution). ``fixed_params``: parameters fixed at 0 when compiled (a
+    component built with a ``structural_zero`` parameter at 0, e.g. a massless Mass), not
+    parameters of this model."""
 
     # ---- names ----------------------------------------------------------------------------
     @property
@@ -155,6 +158,11 @@ class CompiledModel:
         values = self.param_defaults
         index = self._index("params")
         for name, v in (overrides or {}).items():
+            if name in self.fixed_params:
+                raise ParameterError(
+                    f"parameter '{name}' of model '{self.name}' was fixed at 0 when it was "
+                    f"compiled: its component was built with 0, which changes the equations "
+                    f"(a massless part); build it with a value > 0 and compile again")
             if name not in index:
                 raise ParameterError(f"model '{self.name}' has no parameter '{name}'"
                                      f"{did_you_mean(name, values)}")

@@ -66,28 +66,26 @@ class Motion:
         return self.alg_vars.numel()
 
 
-def _check_held(names, R0, q, qd, vel_alg, pos_alg) -> None:
-    """Every massless coordinate must be held by something: a damper (its rate enters its
-    force balance) or a spring (its position does). One held by neither — a massless part
-    connected to nothing else, or one a force pushes that nothing balances — has no
-    equation that determines it: a StructureError names it (the solver would fail on a
-    singular Jacobian)."""
-    for ks, v in ((vel_alg, qd), (pos_alg, q)):
-        if not ks:
-            continue
-        J = ca.jacobian(_rows(R0, ks), _rows(v, ks)).sparsity()
-        if ca.sprank(J) < len(ks):
-            col = J.colind()
-            loose = [names[k] for j, k in enumerate(ks) if col[j + 1] == col[j]] \
-                or [names[k] for k in ks]
-            raise SingularModelError(
-                f"the position of the massless node(s) {', '.join(loose)} is not determined: nothing with mass, no spring and no damper holds it (a part "
-                f"connected to nothing, or a force on a massless part that nothing balances); "
-                f"connect it to the rest of the model or give it mass")
-
-
 def _rows(v, ks):
     return v[ks] if ks else ca.SX(0, 1)
+
+
+def _check_massless(tree, R0, vel_alg: list[int], pos_alg: list[int]) -> None:
+    """The massless coordinates' equations (forces in balance) must fix them: a node whose
+    forces depend on neither its position nor its speed (a massless Mass with only a given
+    force on it) is singular, named in a SingularModelError."""
+    order = vel_alg + pos_alg
+    if not order:
+        return
+    J = ca.jacobian(_vc(_rows(R0, vel_alg), _rows(R0, pos_alg)),
+                    _vc(_rows(tree.qd, vel_alg), _rows(tree.q, pos_alg)))
+    if ca.sprank(J) == len(order):
+        return
+    free = [order[i] for i in range(len(order)) if J[i, :].nnz() == 0] or order
+    raise SingularModelError(
+        f"the massless node(s) {', '.join(tree.q_names[k] for k in free)}: the forces on it "
+        f"depend neither on its position nor on its speed (no mass, spring or damper holds "
+        f"it), so nothing fixes its motion; give it a mass, or connect a spring or damper")
 
 
 def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
@@ -161,7 +159,7 @@ def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
     # massless coordinates: algebraic velocity (a damper holds them) or position (springs only)
     vel_alg = [k for k in massless if ca.depends_on(R0[k], qd[k])]
     pos_alg = [k for k in massless if k not in vel_alg]
-    _check_held(tree.q_names, R0, q, qd, vel_alg, pos_alg)
+    _check_massless(tree, R0, vel_alg, pos_alg)
     q_diff = _vc(_rows(q, massive), _rows(q, vel_alg)) if nq else ca.SX(0, 1)
     q_diff_dot = _vc(_rows(qd, massive), _rows(qd, vel_alg)) if nq else ca.SX(0, 1)
     qdd_diff = _rows(qdd_sol, massive) if massive else ca.SX(0, 1)
@@ -185,6 +183,9 @@ def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
         ddR = der_with(dR, ws.der_table)
         J2 = ca.jacobian(ddR, qddP)
         qddP_sol = ca.solve(J2, -ca.substitute(ddR, qddP, ca.SX.zeros(len(pos_alg))))
+        # in terms of the states (a massless Mass records its acceleration): the other
+        # nodes' accelerations and these nodes' rates replaced by their solutions
+        qddP_sol = ca.substitute([qddP_sol], [qdd, qdP], [qdd_sol, qdP_sol])[0]
         sub_from, sub_to = [qdP], [qdP_sol]
         qdd_sol[pos_alg] = qddP_sol
         if ca.depends_on(_vc(qdd_diff, alg_res), qdP):

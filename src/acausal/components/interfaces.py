@@ -20,10 +20,14 @@ from dataclasses import dataclass
 
 import casadi as ca
 
-from ..core import Component, Parameter
+from ..core import Component, Parameter, Unavailable
 
-__all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS", "PartialTwoFlanges",
-           "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
+#: MSL's ``useHeatPort`` (PartialElementaryConditionalHeatPort): a dissipating element's heat
+#: port, only False (MSL's default: the heat goes nowhere) until acausal has a thermal domain.
+USE_HEAT_PORT = Unavailable(False, "the heatPort: acausal has no thermal domain")
+
+__all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS", "USE_HEAT_PORT",
+           "PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
            "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law",
            "Position", "Speed", "Accelerate", "Move", "ConstantSpeed"]
 

@@ -7,8 +7,9 @@ PlanarMechanics' ``constantGravity = {0, -9.81}``); every Body uses the model's 
 Joint coordinates are the generalized coordinates wherever the joint graph is a tree
 (``rev.phi``, ``prism.s``); a Body with no path to the ground gets its frame's x, y, phi as
 coordinates (start values by any recorded name: ``x0={"body.r[1]": 1, "body.v[2]": 0}``).
-Joints can carry a 1-D flange on their axis (``useFlange=True``: flange_a and support), so
-that the rotational and translational libraries drive and load them.
+Joints can carry a 1-D flange on their axis (``useFlange=True``: ``axis`` and ``support``,
+PlanarMechanics 2's names), so that the rotational and translational libraries drive and
+load them.
 
 Names, parameters, defaults and sign conventions follow PlanarMechanics (Parts, Joints,
 Sources, Sensors), so that a PlanarMechanics model translates line by line:
@@ -18,7 +19,8 @@ Sources, Sensors), so that a PlanarMechanics model translates line by line:
 - Joints: Revolute, Prismatic.
 - Sources: WorldForce, RelativeForce, and WorldTorque (after MultiBody.Forces.WorldTorque).
 - Sensors: AbsolutePosition, AbsoluteVelocity, AbsoluteAcceleration, RelativePosition,
-  RelativeVelocity, RelativeAcceleration, Distance, CutForce, CutTorque, CutForceAndTorque.
+  RelativeVelocity, RelativeAcceleration, Distance, CutForce, CutTorque, CutForceAndTorque,
+  Power.
 
 Force elements. PlanarMechanics' ``Spring`` and ``SpringDamper`` are *x/y/phi* elements:
 forces c_x·(Δx − s_relx0), c_y·(Δy − s_rely0) along the world axes (and, for SpringDamper,
@@ -33,11 +35,17 @@ construction, given as the enumeration (``ResolveInFrameAB.world``) or its name
 (``"world"``); ``frame_resolve`` adds the port of that name, which must be connected.
 
 Vector signals are numbered from 1 as in Modelica: ``connect(src.y, wf.force[1])``,
-``sensor.r[3]``.
+``sensor.r[3]``. WorldForce and RelativeForce take the force as ``force[2]`` and the torque
+as a separate input ``torque``, as PlanarMechanics 2 (PlanarMechanics 1 had ``force[3]``).
 
-Not here: visualization parameters (animate, color, ...), stateSelect, enableAssert,
-IdealRolling/slip-based wheels, gear components, QuadraticSpeedDependentForce, the
-prescribed-motion sources. Differences from PlanarMechanics are listed in each docstring.
+MSL options that change nothing here are accepted (``stateSelect``, a hint; Spring's
+``enableAssert``, a warning); those acausal does not implement yet accept only their "off"
+value (``useHeatPort=False``, Damper's ``enableAssert=False``) and refuse the other with a
+ParameterError saying what is missing. Body's ``enableGravity`` is implemented.
+
+Not here: visualization parameters (animate, color, ...), IdealRolling/slip-based wheels,
+gear components, QuadraticSpeedDependentForce, the prescribed-motion sources. Differences
+from PlanarMechanics are listed in each docstring.
 """
 from __future__ import annotations
 
@@ -46,14 +54,16 @@ from enum import Enum
 import casadi as ca
 
 from ..core import (Component, ConditionalPort, Frame, Parameter, PortVector, RealInput,
-                    RealOutput, RotationalFlange, TranslationalFlange, VectorPort)
+                    RealOutput, RotationalFlange, StateSelect, TranslationalFlange,
+                    Unavailable, VectorPort)
 from ..core.component import who
 from ..core.ports import ROTATIONAL, TRANSLATIONAL
 from ..errors import ParameterError
+from .interfaces import USE_HEAT_PORT
 
 __all__ = [
     # types
-    "ResolveInFrameA", "ResolveInFrameB", "ResolveInFrameAB",
+    "ResolveInFrameA", "ResolveInFrameB", "ResolveInFrameAB", "StateSelect",
     # world and parts
     "World", "Fixed", "FixedTranslation", "FixedRotation", "Body",
     "Spring", "Damper", "SpringDamper", "LineSpring", "LineSpringDamper",
@@ -64,7 +74,7 @@ __all__ = [
     # sensors
     "AbsolutePosition", "AbsoluteVelocity", "AbsoluteAcceleration", "RelativePosition",
     "RelativeVelocity", "RelativeAcceleration", "Distance", "CutForce", "CutTorque",
-    "CutForceAndTorque",
+    "CutForceAndTorque", "Power",
     # partials
     "PartialLineForce", "PartialXYCompliant",
 ]
@@ -107,6 +117,17 @@ def _rot_t(phi, v):
     return ca.vertcat(c * v[0] + s * v[1], -s * v[0] + c * v[1])
 
 
+def _direction(c: Component, name: str, example: str) -> ca.SX:
+    """The unit vector of ``c``'s direction parameter ``name`` (v/|v|, MSL's
+    normalizeWithAssert): {0, 0} gives no direction and is refused naming the parameter."""
+    v0 = c._values[name]
+    if v0[0] == 0.0 and v0[1] == 0.0:
+        raise ParameterError(f"{who(c)}: {name} = {{0, 0}} gives no direction; give one, "
+                             f"e.g. {type(c).__name__}({name}={example})")
+    v = getattr(c, name)
+    return v / ca.norm_2(v)
+
+
 def _output_vector(e, ports: PortVector, values) -> None:
     for k, port in enumerate(ports):
         e.output(port, values[k])
@@ -132,12 +153,17 @@ class _Resolving(Component):
 # World and parts
 # =========================================================================================
 class World(Component):
-    """Gravity for every Body of the model: acceleration g [m/s²] along n (unit vector).
+    """Gravity for every Body of the model: acceleration g [m/s²] along n, as MultiBody's
+    World: gravity = g·n/|n| (n need not be a unit vector; n = {0, 0} is refused).
 
     PlanarMechanics' PlanarWorld gives one vector ``constantGravity`` = {0, -9.81}: here
-    g·n with the defaults g = 9.81, n = {0, -1} (MultiBody's World parametrization)."""
+    g·n/|n| with the defaults g = 9.81, n = {0, -1} (MultiBody's World parametrization)."""
     g = Parameter(9.81, "m/s2", "gravity constant", nonnegative=True)
-    n = Parameter((0.0, -1.0), "1", "direction of gravity (normalized)")
+    n = Parameter((0.0, -1.0), "1", "direction of gravity (gravity = g*n/length(n))")
+
+    def gravity(self) -> ca.SX:
+        """The gravity acceleration g·n/|n| [m/s²], resolved in the world frame."""
+        return self.g * _direction(self, "n", "(0, -1)")
 
 
 class Fixed(Component):
@@ -178,8 +204,10 @@ class Body(Component):
 
     Records, as PlanarMechanics: r[1], r[2] [m], v[1], v[2] [m/s], a[1], a[2] [m/s²],
     phi [rad], w [rad/s], z [rad/s²] of frame_a, and f[1], f[2] [N] = frame_a.fx, fy
-    (f + m·g = m·a). Differences from PlanarMechanics: m, I have defaults (1, 0.1); no
-    local gravity parameter g (it is the World's)."""
+    (f + m·g = m·a; f = m·a with ``enableGravity=False``, a body gravity does not act on).
+    ``stateSelect`` is accepted as a hint (StateSelect). Differences from PlanarMechanics:
+    m, I have defaults (1, 0.1); no local gravity parameter g (it is the World's)."""
+    options = {"enableGravity": True, "stateSelect": StateSelect.default}
     m = Parameter(1.0, "kg", "mass of the body", positive=True)
     I = Parameter(0.1, "kg.m2", "inertia of the body with respect to its centre of mass",
                   nonnegative=True)
@@ -189,12 +217,10 @@ class Body(Component):
         s.states(self.frame_a, ("r[1]", "r[2]", "phi"), ("v[1]", "v[2]", "w"))
 
     def physics(self, e):
-        world = e.outer(World)
         # split once: indexing an SX from Python costs as much as an operation
         r, v, a = (ca.vertsplit(x) for x in (e.pos(self.frame_a), e.vel(self.frame_a),
                                              e.acc(self.frame_a)))
-        n = ca.vertsplit(world.n)
-        gx, gy = world.g * n[0], world.g * n[1]
+        gx, gy = ca.vertsplit(e.outer(World).gravity()) if self.enableGravity else (0, 0)
         e.rigid_body(self.frame_a, self.m, self.I)
         e.potential_energy(-self.m * (gx * r[0] + gy * r[1]))
         for k, name in enumerate(("r[1]", "r[2]", "phi")):
@@ -246,7 +272,10 @@ class Spring(PartialXYCompliant):
 
     As in PlanarMechanics, c_phi [N.m/rad] and phi_rel0 [rad] are accepted but exert no
     torque (frame_a.t = frame_b.t = 0); SpringDamper has the rotational part. For a spring
-    acting along the line between the frame origins use LineSpring."""
+    acting along the line between the frame origins use LineSpring. ``enableAssert`` (a
+    warning in PlanarMechanics when the origins coincide, which changes no result here: the
+    law does not divide by the distance) and ``stateSelect`` (StateSelect) are accepted."""
+    options = {"enableAssert": True, "stateSelect": StateSelect.default}
     c_x = Parameter(1.0, "N/m", "spring constant in x dir", nonnegative=True)
     c_y = Parameter(1.0, "N/m", "spring constant in y dir", nonnegative=True)
     c_phi = Parameter(1.0e5, "N.m/rad", "spring constant (no effect, as in PlanarMechanics)",
@@ -269,7 +298,10 @@ class SpringDamper(PartialXYCompliant):
     d_phi = 1 N.m.s/rad (PlanarMechanics' start values).
 
     Records v_relx, v_rely [m/s], w_rel [rad/s], tau [N.m] and lossPower [W] =
-    d_x·v_relx² + d_y·v_rely² + d_phi·w_rel² (PlanarMechanics leaves out the last term)."""
+    d_x·v_relx² + d_y·v_rely² + d_phi·w_rel² (PlanarMechanics leaves out the last term).
+    Options as Spring; ``useHeatPort`` only False (no thermal domain yet)."""
+    options = {"enableAssert": True, "stateSelect": StateSelect.default,
+               "useHeatPort": USE_HEAT_PORT}
     c_x = Parameter(1.0, "N/m", "spring constant in x dir", nonnegative=True)
     c_y = Parameter(1.0, "N/m", "spring constant in y dir", nonnegative=True)
     c_phi = Parameter(1.0e5, "N.m/rad", "spring constant in phi dir", nonnegative=True)
@@ -334,7 +366,14 @@ class Damper(PartialLineForce):
     """PlanarMechanics' linear damper acting as a line force between frame_a and frame_b:
     the force f = −d·v [N] (v = der(length)) acts on the origin of frame_b along the line
     from frame_a to frame_b, −f on frame_a. d [N.s/m], default 1. Records length [m], v,
-    f [N] (PlanarMechanics' sign: f < 0 when the frames separate) and lossPower = −f·v [W]."""
+    f [N] (PlanarMechanics' sign: f < 0 when the frames separate) and lossPower = −f·v [W].
+    ``stateSelect`` is accepted (StateSelect); ``enableAssert`` and ``useHeatPort`` only as
+    False, PlanarMechanics' defaults (no run-time assertions or thermal domain yet)."""
+    options = {"stateSelect": StateSelect.default,
+               "enableAssert": Unavailable(False, "an assertion stopping the simulation when "
+                                                  "the origins come closer than s_small: "
+                                                  "acausal has no run-time assertions"),
+               "useHeatPort": USE_HEAT_PORT}
     d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
 
     def tension(self, length, v):
@@ -381,44 +420,48 @@ class LineSpringDamper(PartialLineForce):
 # =========================================================================================
 # Joints
 # =========================================================================================
-def _drive_flanges(flange_cls: type) -> tuple[ConditionalPort, ConditionalPort]:
-    """A joint's ``flange_a`` and ``support`` of the joint's 1-D domain, if useFlange."""
-    return (ConditionalPort(flange_cls("1-dim. flange that drives the joint"), "useFlange"),
-            ConditionalPort(flange_cls("1-dim. flange of the drive support (fixed in the "
-                                       "world frame, not in the joint)"), "useFlange"))
+def _drive_flanges(flange_cls: type, kind: str) -> tuple[ConditionalPort, ConditionalPort]:
+    """A joint's ``axis`` and ``support`` of the joint's 1-D domain (``kind``), if
+    useFlange."""
+    return (ConditionalPort(flange_cls(f"1-dim. {kind} flange that drives the joint"),
+                            "useFlange"),
+            ConditionalPort(flange_cls(f"1-dim. {kind} flange of the drive support (assumed "
+                                       f"to be fixed in the world frame, NOT in the joint)"),
+                            "useFlange"))
 
 
 class _Joint(Component):
     """A joint between frame_a and frame_b with an optional 1-D drive (``useFlange``):
-    ``flange_a`` follows the joint coordinate and ``support`` is fixed in the world (as in
+    ``axis`` follows the joint coordinate and ``support`` is fixed in the world (as in
     PlanarMechanics, the support is *not* fixed in the joint). Unconnected, the flanges are
     free (no drive force); connect them to the 1-D libraries to drive or load the joint.
-    Each joint declares the two flanges of its domain (``_drive_flanges``)."""
-    options = {"useFlange": False}
+    Each joint declares the two flanges of its domain (``_drive_flanges``).
+    ``stateSelect`` is accepted as a hint (see StateSelect)."""
+    options = {"useFlange": False, "stateSelect": StateSelect.default}
     frame_a = Frame("frame the joint is fixed to")
     frame_b = Frame("frame moved by the joint")
 
     def _link_flange(self, s, node):
-        """flange_a follows the joint coordinate ``node``; support is fixed in the world."""
+        """axis follows the joint coordinate ``node``; support is fixed in the world."""
         if self.useFlange:
-            s.linear({self.flange_a: 1.0, node: -1.0}, 0.0, f"{self.path}: flange_a")
+            s.linear({self.axis: 1.0, node: -1.0}, 0.0, f"{self.path}: axis")
             s.linear({self.support: 1.0}, 0.0, f"{self.path}: support")
 
     def _drive_force(self, e):
-        """The drive force/torque: flange_a's cut flow (0 without flange)."""
-        return e.cut_flow(self.flange_a) if self.useFlange else ca.SX(0)
+        """The drive force/torque: the axis' cut flow (0 without flange)."""
+        return e.cut_flow(self.axis) if self.useFlange else ca.SX(0)
 
 
 class Revolute(_Joint):
     """Revolute joint: frame_b = frame_a rotated by phi [rad] about their common origin.
 
     Coordinate ``phi`` [rad], its rate ``w`` [rad/s], acceleration ``z`` [rad/s²]; t [N.m]
-    the drive torque (= flange_a.tau; 0 without flange). ``useFlange=True`` adds the
-    rotational flange_a (flange_a.phi = phi) and support (support.phi = 0, fixed in the world
-    as in PlanarMechanics): a torque on flange_a acts on frame_b and, opposite, on frame_a.
+    the drive torque (= axis.tau; 0 without flange). ``useFlange=True`` adds the rotational
+    flange ``axis`` (axis.phi = phi) and ``support`` (support.phi = 0, fixed in the world as
+    in PlanarMechanics): a torque on axis acts on frame_b and, opposite, on frame_a.
     """
     frame_b = Frame("frame turned by phi")
-    flange_a, support = _drive_flanges(RotationalFlange)
+    axis, support = _drive_flanges(RotationalFlange, "rotational")
 
     def structure(self, s):
         phi = s.node("phi", ROTATIONAL, velocity="w", acceleration="z")
@@ -426,34 +469,30 @@ class Revolute(_Joint):
         self._link_flange(s, phi)
 
     def physics(self, e):
-        e.variable("t", self._drive_force(e), "N.m", "drive torque (= flange_a.tau)")
+        e.variable("t", self._drive_force(e), "N.m", "drive torque (= axis.tau)")
 
 
 class Prismatic(_Joint):
     """Prismatic joint: frame_b = frame_a translated by s [m] along r (direction of the rod
     in frame_a, normalized here: e = r/|r|); no relative rotation.
 
-    Coordinate ``s`` [m], ``v`` [m/s], ``a`` [m/s²]; f [N] the drive force (= flange_a.f; 0
-    without flange). ``useFlange=True`` adds the translational flange_a (flange_a.s = s) and
-    support (support.s = 0, fixed in the world). Difference from PlanarMechanics: r has the
-    default {1, 0} (PlanarMechanics gives none)."""
+    Coordinate ``s`` [m], ``v`` [m/s], ``a`` [m/s²]; f [N] the drive force (= axis.f; 0
+    without flange). ``useFlange=True`` adds the translational flange ``axis`` (axis.s = s)
+    and ``support`` (support.s = 0, fixed in the world). Difference from PlanarMechanics: r
+    has the default {1, 0} (PlanarMechanics gives none)."""
     r = Parameter((1.0, 0.0), "m", "direction of the rod wrt. body system at phi=0")
     frame_b = Frame("frame moved by s")
-    flange_a, support = _drive_flanges(TranslationalFlange)
+    axis, support = _drive_flanges(TranslationalFlange, "translational")
 
     def structure(self, s):
-        r0 = self._values["r"]
-        if r0[0] == 0.0 and r0[1] == 0.0:
-            raise ParameterError(f"{who(self)}: r = {{0, 0}} gives no direction; give the "
-                                 f"direction of the joint axis, e.g. r=(1, 0)")
-        e = self.r / ca.norm_2(self.r)
+        e = _direction(self, "r", "(1, 0)")
         s_rel = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
         s.prismatic(self.frame_a, self.frame_b, s_rel, e)
         self._link_flange(s, s_rel)
 
     def physics(self, e):
         e.variable("f", self._drive_force(e), "N", "drive force in direction of elongation "
-                                                   "(= flange_a.f)")
+                                                   "(= axis.f)")
 
 
 # =========================================================================================
@@ -461,21 +500,22 @@ class Prismatic(_Joint):
 # =========================================================================================
 class _ForceInput(_Resolving):
     """Input signals force[1], force[2] [N] (x-, y-coordinates, resolved per
-    ``resolveInFrame``) and force[3] [N.m] (torque)."""
+    ``resolveInFrame``) and torque [N.m], as PlanarMechanics 2."""
 
-    force = VectorPort(RealInput, 3, "x-, y-coordinates of force [N] and torque [N.m]")
+    force = VectorPort(RealInput, 2, "force vector [N], resolved in resolveInFrame")
+    torque = RealInput("torque [N.m]")
 
     def _wrench(self, e) -> ca.SX:
         """(fx, fy, t) in world coordinates."""
         F = [e.input(p) for p in self.force]
-        return ca.vertcat(_rot(self._angle(e), ca.vertcat(F[0], F[1])), F[2])
+        return ca.vertcat(_rot(self._angle(e), ca.vertcat(F[0], F[1])), e.input(self.torque))
 
 
 class WorldForce(_ForceInput):
     """External force and torque on frame_b: the input signals force[1], force[2] [N] are the
     x-, y-coordinates of the force, resolved in frame_b (default), the world or
-    frame_resolve (``resolveInFrame``: ResolveInFrameB), force[3] [N.m] the torque:
-    frame_b.f = −(R·force[1:2]), frame_b.t = −force[3] (the force acts on what frame_b is
+    frame_resolve (``resolveInFrame``: ResolveInFrameB), ``torque`` [N.m] the torque:
+    frame_b.f = −(R·force), frame_b.t = −torque (the force acts on what frame_b is
     connected to)."""
     options = {"resolveInFrame": ResolveInFrameB.frame_b}
     frame_b = Frame("frame the force and torque act on", required=True)
@@ -486,8 +526,9 @@ class WorldForce(_ForceInput):
 
 class WorldTorque(Component):
     """External torque ``torque`` [N.m] (input signal, counter-clockwise) on frame_b:
-    frame_b.t = −torque. Not in PlanarMechanics (WorldForce's force[3] is its torque); after
-    MultiBody.Forces.WorldTorque (a planar torque is the same in every frame)."""
+    frame_b.t = −torque. Not in PlanarMechanics (WorldForce has a torque input besides its
+    force); after MultiBody.Forces.WorldTorque (a planar torque is the same in every
+    frame)."""
     torque = RealInput("torque acting on frame_b [N.m]")
     frame_b = Frame("frame the torque acts on", required=True)
 
@@ -499,9 +540,9 @@ class WorldTorque(Component):
 class RelativeForce(_ForceInput):
     """Force and torque between frame_a and frame_b: force[1], force[2] [N] act on frame_b,
     resolved in frame_a (default), frame_b, the world or frame_resolve (``resolveInFrame``:
-    ResolveInFrameAB), force[3] [N.m] is the torque on frame_b; frame_a gets the opposite:
-    frame_b.f = −(R·force[1:2], force[3]) = −frame_a.f. As in PlanarMechanics the moment of
-    the two forces about the origins is not balanced."""
+    ResolveInFrameAB), ``torque`` [N.m] is the torque on frame_b; frame_a gets the opposite:
+    frame_b.f = −(R·force, torque) = −frame_a.f. As in PlanarMechanics the moment of the two
+    forces about the origins is not balanced."""
     options = {"resolveInFrame": ResolveInFrameAB.frame_a}
     frame_a = Frame("frame the reaction acts on", required=True)
     frame_b = Frame("frame the force acts on", required=True)
@@ -623,16 +664,31 @@ class Distance(Component):
         e.output(self.distance, ca.sqrt(d[0] ** 2 + d[1] ** 2))
 
 
-class _CutSensor(Component):
+class _InlineSensor(Component):
     """frame_a and frame_b rigidly joined (same origin and angle): the cut force and torque
-    pass through. ``positiveSign`` (default True) returns frame_a's cut flow, else frame_b's
-    (its negative). Measured values may feed outputs and states, not forces of the model."""
-    options = {"positiveSign": True}
+    pass through. Measured values may feed outputs and states, not forces of the model."""
     frame_a = Frame("coordinate system a", required=True)
     frame_b = Frame("coordinate system b", required=True)
 
     def structure(self, s):
         s.transform(self.frame_a, self.frame_b, (0.0, 0.0), 0.0, f"{self.path}: rigid")
+
+
+class Power(_InlineSensor):
+    """Measures the power flowing from frame_a to frame_b (rigidly joined): output
+    ``power`` [W] = {frame_a.fx, frame_a.fy}·der({frame_a.x, frame_a.y}) +
+    frame_a.t·der(frame_a.phi)."""
+    power = RealOutput("power at frame_a as output signal [W]")
+
+    def physics(self, e):
+        f, v = e.cut_flow(self.frame_a), e.vel(self.frame_a)
+        e.output(self.power, f[0] * v[0] + f[1] * v[1] + f[2] * v[2])
+
+
+class _CutSensor(_InlineSensor):
+    """An inline sensor of the cut force or torque: ``positiveSign`` (default True) returns
+    frame_a's cut flow, else frame_b's (its negative)."""
+    options = {"positiveSign": True}
 
     def _cut(self, e):
         f = e.cut_flow(self.frame_a)

@@ -30,10 +30,10 @@ import math
 import casadi as ca
 
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
-                    RotationalFlange, TranslationalFlange, VectorPort)
+                    RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import ROTATIONAL
 from . import interfaces
-from .interfaces import ROTATIONAL_AXIS, linear_law, quadratic_law
+from .interfaces import ROTATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
 Flange = RotationalFlange
 
@@ -133,7 +133,9 @@ class PartialCompliant(interfaces.PartialCompliant):
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
     """MSL's variant of PartialCompliant with phi_rel, w_rel as preferred states (here the
-    compiler chooses the coordinates); records also a_rel = der(w_rel) [rad/s²]."""
+    compiler chooses the coordinates: ``stateSelect``, default prefer, is a hint, see
+    StateSelect); records also a_rel = der(w_rel) [rad/s²]."""
+    options = {"stateSelect": StateSelect.prefer}
     records_a_rel = True
 
 
@@ -170,11 +172,15 @@ class Fixed(Component):
 
 class Inertia(Component):
     """1-D rotational component with inertia J [kg.m²]; states phi [rad] and w [rad/s];
-    a [rad/s²] recorded. flange_a.phi = flange_b.phi = phi.
+    a [rad/s²] recorded. flange_a.phi = flange_b.phi = phi. ``stateSelect`` is a hint
+    (StateSelect).
 
-    MSL allows J = 0 (min=0); here J must be > 0 (a massless rigid link is a connection).
+    J = 0 is allowed (MSL: min = 0), a massless shaft where something else carries the
+    inertia: as Translational.Mass with m = 0 (J fixed at 0 in the compiled model, its angle
+    algebraic where nothing with inertia is rigidly attached).
     """
-    J = Parameter(1.0, "kg.m2", "moment of inertia", positive=True)
+    options = {"stateSelect": StateSelect.default}
+    J = Parameter(1.0, "kg.m2", "moment of inertia", nonnegative=True, structural_zero=True)
     flange_a = Flange("left flange of shaft")
     flange_b = Flange("right flange of shaft")
     batch_physics = True
@@ -221,7 +227,8 @@ class Spring(PartialCompliant):
 
 class Damper(PartialCompliantWithRelativeStates):
     """Linear 1-D rotational damper: tau = d·w_rel; lossPower = tau·w_rel.
-    d [N.m.s/rad] ≥ 0 (default 0 = MSL start value)."""
+    d [N.m.s/rad] ≥ 0 (default 0 = MSL start value). useHeatPort only False."""
+    options = {"useHeatPort": USE_HEAT_PORT}
     batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
 
@@ -234,7 +241,9 @@ class Damper(PartialCompliantWithRelativeStates):
 
 class SpringDamper(PartialCompliantWithRelativeStates):
     """Linear spring and damper in parallel: tau = c·(phi_rel − phi_rel0) + d·w_rel;
-    lossPower = d·w_rel². Defaults c = 1e5 N.m/rad, d = 0 N.m.s/rad (MSL's start values)."""
+    lossPower = d·w_rel². Defaults c = 1e5 N.m/rad, d = 0 N.m.s/rad (MSL's start values).
+    useHeatPort only False."""
+    options = {"useHeatPort": USE_HEAT_PORT}
     batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)

@@ -63,15 +63,20 @@ class SI2SO(SO):
 
 
 class SignalSource(SO):
-    """A source y = offset + (0 before startTime, else ``signal(time)``).
+    """A source y = offset + (``before()`` before startTime, else ``signal(time)``).
 
-    Subclasses implement ``signal(t)``: the value without offset at time t ≥ startTime [s].
+    Subclasses implement ``signal(t)``: the value without offset at time t ≥ startTime [s],
+    and ``before()`` if it is not 0.
     """
     offset = Parameter(0.0, "", "offset of output signal y")
     startTime = Parameter(0.0, "s", "output y = offset for time < startTime")
 
     def signal(self, t):
         raise NotImplementedError
+
+    def before(self):
+        """The value without offset for time < startTime (0)."""
+        return 0
 
     def events(self) -> list:
         """Times [s] where the signal jumps or kinks, as (time, period or None) pairs; the
@@ -80,7 +85,8 @@ class SignalSource(SO):
 
     def physics(self, e):
         t = e.time
-        e.output(self.y, self.offset + ca.if_else(t < self.startTime, 0, self.signal(t)))
+        e.output(self.y, self.offset + ca.if_else(t < self.startTime, self.before(),
+                                                  self.signal(t)))
         for time, period in self.events():
             e.time_event(time, period)
 
@@ -128,7 +134,10 @@ class Ramp(SignalSource):
 
 
 class Sine(SignalSource):
-    """Sine: y = offset + amplitude·sin(2π·f·(time − startTime) + phase) after startTime."""
+    """Sine: y = offset + amplitude·sin(2π·f·(time − startTime) + phase) after startTime;
+    before it y = offset, or with ``continuous=True`` offset + amplitude·sin(phase) (no
+    jump at startTime)."""
+    options = {"continuous": False}
     amplitude = Parameter(1.0, "", "amplitude of sine wave")
     f = Parameter(1.0, "Hz", "frequency of sine wave")
     phase = Parameter(0.0, "rad", "phase of sine wave")
@@ -136,15 +145,23 @@ class Sine(SignalSource):
     def signal(self, t):
         return self.amplitude * ca.sin(2 * ca.pi * self.f * (t - self.startTime) + self.phase)
 
+    def before(self):
+        return self.amplitude * ca.sin(self.phase) if self.continuous else 0
+
 
 class Cosine(SignalSource):
-    """Cosine: y = offset + amplitude·cos(2π·f·(time − startTime) + phase) after startTime."""
+    """Cosine: y = offset + amplitude·cos(2π·f·(time − startTime) + phase) after startTime;
+    before it y = offset, or with ``continuous=True`` offset + amplitude·cos(phase)."""
+    options = {"continuous": False}
     amplitude = Parameter(1.0, "", "amplitude of cosine wave")
     f = Parameter(1.0, "Hz", "frequency of cosine wave")
     phase = Parameter(0.0, "rad", "phase of cosine wave")
 
     def signal(self, t):
         return self.amplitude * ca.cos(2 * ca.pi * self.f * (t - self.startTime) + self.phase)
+
+    def before(self):
+        return self.amplitude * ca.cos(self.phase) if self.continuous else 0
 
 
 class ExpSine(SignalSource):

@@ -33,10 +33,10 @@ from __future__ import annotations
 import casadi as ca
 
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
-                    TranslationalFlange, VectorPort)
+                    StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import TRANSLATIONAL
 from . import interfaces
-from .interfaces import TRANSLATIONAL_AXIS, linear_law, quadratic_law
+from .interfaces import TRANSLATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
 Flange = TranslationalFlange
 
@@ -102,7 +102,9 @@ class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
     """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states. Here the same
-    as PartialCompliant: the compiler chooses the coordinates."""
+    as PartialCompliant: the compiler chooses the coordinates (``stateSelect``, default
+    prefer, is a hint, see StateSelect)."""
+    options = {"stateSelect": StateSelect.prefer}
 
 
 class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlangeAndSupport2):
@@ -150,10 +152,18 @@ class Mass(PartialRigid):
     """Sliding mass with inertia ``m`` [kg] and length ``L`` [m], without friction.
 
     States s [m] (centre: flange_a.s = s − L/2, flange_b.s = s + L/2) and v [m/s];
-    a [m/s²] recorded; m·a = flange_a.f + flange_b.f. m must be > 0 (MSL: min = 0; a mass of
-    zero is a Rod).
+    a [m/s²] recorded; m·a = flange_a.f + flange_b.f. ``stateSelect`` is a hint
+    (StateSelect).
+
+    m = 0 is allowed (MSL: min = 0), a massless flange where something else carries the
+    inertia: its position is then an algebraic variable of the DAE, fixed by the forces on
+    it (0 = flange_a.f + flange_b.f), and m is fixed at 0 in the compiled model (compile a
+    Mass built with m > 0 to change it); a node on which nothing but given forces act is
+    singular and refused at compile time.
     """
-    m = Parameter(1.0, "kg", "mass of the sliding mass", positive=True)
+    options = {"stateSelect": StateSelect.default}
+    m = Parameter(1.0, "kg", "mass of the sliding mass", nonnegative=True,
+                  structural_zero=True)
     batch_physics = True
 
     def _centre(self, s):
@@ -181,7 +191,8 @@ class Spring(PartialCompliant):
 
 class Damper(PartialCompliantWithRelativeStates):
     """Linear damper: f = d·v_rel; d [N.s/m] ≥ 0 (default 0 = MSL start value).
-    lossPower = f·v_rel [W]."""
+    lossPower = f·v_rel [W]. useHeatPort only False."""
+    options = {"useHeatPort": USE_HEAT_PORT}
     batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.s/m", "damping constant", nonnegative=True)
 
@@ -194,7 +205,9 @@ class Damper(PartialCompliantWithRelativeStates):
 
 class SpringDamper(PartialCompliantWithRelativeStates):
     """Linear spring and damper in parallel: f = c·(s_rel − s_rel0) + d·v_rel;
-    c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL start values). lossPower = d·v_rel² [W]."""
+    c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL start values). lossPower = d·v_rel² [W].
+    useHeatPort only False."""
+    options = {"useHeatPort": USE_HEAT_PORT}
     batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)

@@ -3,7 +3,7 @@
 Nothing here knows the component library or the compiler; its errors are those of
 ``acausal.errors``.
 """
-from .component import Component, ConditionalPort, Model, connect
+from .component import Component, ConditionalPort, Model, StateSelect, Unavailable, connect
 from .interface import Input, Output
 from .parameter import Parameter
 from .ports import (PLANAR, ROTATIONAL, TRANSLATIONAL, Domain, Frame, PhysicalPort, Port,
@@ -11,7 +11,8 @@ from .ports import (PLANAR, ROTATIONAL, TRANSLATIONAL, Domain, Frame, PhysicalPo
                     VectorPort)
 
 __all__ = [
-    "Component", "ConditionalPort", "Model", "connect", "Input", "Output", "Parameter",
+    "Component", "ConditionalPort", "Model", "StateSelect", "Unavailable", "connect", "Input",
+    "Output", "Parameter",
     "Port", "PhysicalPort", "PortVector", "VectorPort", "Domain", "TranslationalFlange",
     "RotationalFlange", "Frame", "RealInput", "RealOutput", "TRANSLATIONAL", "ROTATIONAL", "PLANAR",
 ]

@@ -40,6 +40,29 @@ def _shown(value) -> str:
     return repr(value.value if isinstance(value, Enum) else value)
 
 
+class StateSelect(str, Enum):
+    """Modelica's StateSelect, the priority of a variable as a state, accepted as the option
+    ``stateSelect`` where MSL / PlanarMechanics declare it. In acausal it is a hint and
+    changes nothing: the compiler chooses the coordinates itself (joint coordinates where
+    the joint graph is a tree, one node per rigid cluster), and which coordinates are
+    states does not change the results."""
+    never = "never"
+    avoid = "avoid"
+    default = "default"
+    prefer = "prefer"
+    always = "always"
+
+
+class Unavailable:
+    """An MSL structural option whose other values acausal does not implement yet, declared
+    in ``options`` as ``{"useHeatPort": Unavailable(False, "the heat port (the thermal
+    domain)")}``: its value ``off`` (MSL's default, which changes nothing) is accepted, any
+    other is refused with a ParameterError saying ``what`` is not available yet."""
+
+    def __init__(self, off, what: str):
+        self.off, self.what = off, what
+
+
 class ConditionalPort:
     """A port that exists only when the structural option ``option`` equals ``value``
     (MSL's ``Flange_b support if useSupport``), declared as a class attribute::
@@ -97,8 +120,8 @@ class Component:
         d["_children"] = {}
         d["_ports"] = {}
         kind = type(self).__name__
-        opts = {key: _option(kind, key, default, params.pop(key, default))
-                for key, default in self.all_options().items()}
+        opts = {key: _option(kind, key, spec, params.pop(key, _default(spec)))
+                for key, spec in self._option_specs().items()}
         declared = self.parameters()
         for pname, par in declared.items():
             d["_values"][pname] = par.default
@@ -131,12 +154,18 @@ class Component:
                 d[pname] = PortVector(kind, pname, items)
 
     @classmethod
-    def all_options(cls) -> dict[str, bool | Enum]:
-        """The structural options of this class and its bases, with their defaults."""
-        out: dict[str, bool | Enum] = {}
+    def _option_specs(cls) -> dict:
+        """The ``options`` of this class and its bases, as declared (a subclass's replace its
+        base's)."""
+        out: dict = {}
         for klass in reversed(cls.__mro__):
             out.update(vars(klass).get("options", {}))
         return out
+
+    @classmethod
+    def all_options(cls) -> dict[str, bool | Enum]:
+        """The structural options of this class and its bases, with their defaults."""
+        return {key: _default(spec) for key, spec in cls._option_specs().items()}
 
     @classmethod
     def _declared(cls, types) -> dict:
@@ -185,9 +214,19 @@ class Component:
                                  f"the component is created: "
                                  f"{type(self).__name__}({key}={_shown(value)})")
         if isinstance(value, Port) and not key.startswith("_"):
+            if value.owner is not None and (value.owner is not self or value.name != key):
+                raise PortConnectionError(
+                    f"port '{value.path}' already belongs to {who(value.owner)}; assigning it "
+                    f"to '{_attribute(self, key)}' too would give one port two names: use "
+                    f"'{value.path}' itself (connect it), or create a new port for '{key}'")
             value.owner, value.name = self, key
             self._ports[key] = value
         elif isinstance(value, Component) and not key.startswith("_"):
+            if value._owner is self and value._name != key:
+                raise PortConnectionError(
+                    f"component '{value.path}' is already part of this model; assigning it to "
+                    f"'{_attribute(self, key)}' too would put it in the model twice: use "
+                    f"'{value.path}' itself, or create a new component for '{key}'")
             if value._owner is not None and value._owner is not self:
                 raise PortConnectionError(
                     f"component '{value.path}' already belongs to a model; create a new one "
@@ -208,7 +247,28 @@ class Component:
         """Contribute energies, flows, state derivatives, outputs. Default: none."""
 
 
-def _option(kind: str, key: str, default, value):
+def _attribute(owner: Component, key: str) -> str:
+    """The dotted name an attribute ``key`` of ``owner`` would have."""
+    return f"{owner.path}.{key}" if owner.path else key
+
+
+def _default(spec):
+    """An option's default, from its declaration in ``options``."""
+    return spec.off if isinstance(spec, Unavailable) else spec
+
+
+def _option(kind: str, key: str, spec, value):
+    """An option's value, checked against the type of its default (bool or an Enum) and,
+    for an Unavailable option, refused unless it is the value that changes nothing."""
+    default = _default(spec)
+    value = _typed_option(kind, key, default, value)
+    if isinstance(spec, Unavailable) and value != spec.off:
+        raise ParameterError(f"{kind}: {key}={_shown(value)} is not available yet "
+                             f"({spec.what}); leave {key}={_shown(spec.off)}, the default")
+    return value
+
+
+def _typed_option(kind: str, key: str, default, value):
     """An option's value, checked against the type of its default (bool or an Enum)."""
     if isinstance(default, Enum):
         try:

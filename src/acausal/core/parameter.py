@@ -1,6 +1,7 @@
 """Parameter: a named, documented constant of a component, a CasADi symbol once compiled."""
 from __future__ import annotations
 
+import copy
 from contextlib import contextmanager
 from contextvars import ContextVar
 
@@ -29,8 +30,12 @@ class Parameter:
     ``default`` is the value used when none is given (a number, or a tuple for a vector
     parameter such as a position r: its elements are the parameters ``r[1]``, ``r[2]``);
     ``unit`` is the SI unit (text);
-    ``positive`` requires the value to be > 0 (masses, inertias); ``nonzero`` requires it to be
-    different from 0 (gear ratios, radii).
+    ``positive`` requires the value to be > 0; ``nonnegative`` ≥ 0; ``nonzero`` requires it to
+    be different from 0 (gear ratios, radii). ``structural_zero`` (with nonnegative): the
+    value 0 changes the equations (Mass.m = 0 is a massless flange, MSL's min = 0): a
+    component built with 0 is compiled with the parameter fixed at 0 (the terms it multiplies
+    vanish, so its coordinate becomes an algebraic variable; it is then not a parameter of
+    the compiled model), one built with a value > 0 keeps it > 0 there.
 
     On an instance the attribute reads as the numeric value; while the instance is being
     compiled (``symbolic_parameters``) it reads as the CasADi symbol that stands for it, so
@@ -39,7 +44,8 @@ class Parameter:
     """
 
     def __init__(self, default, unit: str = "", description: str = "", *,
-                 positive: bool = False, nonzero: bool = False, nonnegative: bool = False):
+                 positive: bool = False, nonzero: bool = False, nonnegative: bool = False,
+                 structural_zero: bool = False):
         self.size = None if isinstance(default, (int, float)) else len(default)
         self.default = float(default) if self.size is None else tuple(map(float, default))
         self.unit = unit
@@ -47,6 +53,7 @@ class Parameter:
         self.positive = positive
         self.nonzero = nonzero
         self.nonnegative = nonnegative
+        self.structural_zero = structural_zero
         self.name = ""
 
     def __set_name__(self, owner, name):
@@ -94,6 +101,18 @@ class Parameter:
         set (construction, compile, simulate, FMUs)."""
         name = f"{_label(where)}.{self.name}" + (f"[{element}]" if element else "")
         return checked_value(name, value, self.rule, self.description or self.name, self.unit)
+
+    def compiled(self, value: float) -> "Parameter | None":
+        """The declaration whose rule a compiled model built with ``value`` applies: this
+        one; for a ``structural_zero`` parameter None at 0 (fixed there) and a copy requiring
+        > 0 otherwise (a value of 0 would need other equations: compile again)."""
+        if not self.structural_zero:
+            return self
+        if value == 0.0:
+            return None
+        out = copy.copy(self)
+        out.positive, out.nonnegative = True, False
+        return out
 
     @property
     def rule(self) -> dict[str, bool]:

@@ -9,7 +9,7 @@ vertical, counter-clockwise); input ``F`` [N].
 Components (PlanarMechanics and MSL names):
 
     World  base: Fixed.frame ── rail: Prismatic(useFlange) ── cart: Body (m1, I = 0)
-                                  │ flange_a ← force: Force ← Input F
+                                  │ axis ← force: Force ← Input F
                                   └ frame_b ── hinge: Revolute ── pole: FixedTranslation (0, −l)
                                                                     └ tip: Body (m2, I = 0)
 """
@@ -44,5 +44,5 @@ class CartPole(Model):
                      (self.rail.frame_b, self.hinge.frame_a),
                      (self.hinge.frame_b, self.pole.frame_a),
                      (self.pole.frame_b, self.tip.frame_a),
-                     (self.F.y, self.force.f), (self.force.flange, self.rail.flange_a)]:
+                     (self.F.y, self.force.f), (self.force.flange, self.rail.axis)]:
             self.connect(a, b)

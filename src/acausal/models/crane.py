@@ -10,9 +10,9 @@ counter-clockwise); input ``F`` [N].
 Components (PlanarMechanics and MSL names):
 
     World  base: Fixed.frame ── rail: Prismatic(useFlange) ── cart: Body (m=M, I=0)
-                                   │ flange_a ← railDamper (to rail.support), force ← Input F
+                                   │ axis ← railDamper (to rail.support), force ← Input F
                                    └ frame_b ── hinge: Revolute(useFlange) ── rope: FixedTranslation
-                                                  │ flange_a ← hingeDamper        r = (0, −L)
+                                                  │ axis ← hingeDamper            r = (0, −L)
                                                   └─────────────────────── load: Body (m, I=0)
 """
 from __future__ import annotations
@@ -52,8 +52,8 @@ class GantryCrane(Model):
                      (self.hinge.frame_b, self.rope.frame_a),
                      (self.rope.frame_b, self.load.frame_a),
                      (self.rail.support, self.railDamper.flange_a),
-                     (self.railDamper.flange_b, self.rail.flange_a),
+                     (self.railDamper.flange_b, self.rail.axis),
                      (self.hinge.support, self.hingeDamper.flange_a),
-                     (self.hingeDamper.flange_b, self.hinge.flange_a),
-                     (self.F.y, self.force.f), (self.force.flange, self.rail.flange_a)]:
+                     (self.hingeDamper.flange_b, self.hinge.axis),
+                     (self.F.y, self.force.f), (self.force.flange, self.rail.axis)]:
             self.connect(a, b)

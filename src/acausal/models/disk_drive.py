@@ -11,10 +11,10 @@ the pivot axis, so its mass (``arm.m``) does not enter the equations.
 Components (PlanarMechanics and MSL names):
 
     World(g=0)  base: Fixed.frame ── pivot: Revolute(useFlange) ── arm: Body (I about the pivot)
-                    pivot.flange_a ← pivotDamper (to pivot.support), voiceCoil: Torque ← Input T
+                    pivot.axis ← pivotDamper (to pivot.support), voiceCoil: Torque ← Input T
                     pivot.frame_b ── tip: FixedTranslation r = (L, 0)
                                      ── flexure: Prismatic(r = (0, 1), useFlange) ── head: Body (m)
-                                        flexure.flange_a ← flexureSpring (to flexure.support)
+                                        flexure.axis ← flexureSpring (to flexure.support)
 """
 from __future__ import annotations
 
@@ -59,10 +59,10 @@ class DiskDriveHead(Model):
                      (self.tip.frame_b, self.flexure.frame_a),
                      (self.flexure.frame_b, self.head.frame_a),
                      (self.pivot.support, self.pivotDamper.flange_a),
-                     (self.pivotDamper.flange_b, self.pivot.flange_a),
+                     (self.pivotDamper.flange_b, self.pivot.axis),
                      (self.T.y, self.voiceCoil.tau),
-                     (self.voiceCoil.flange, self.pivot.flange_a),
+                     (self.voiceCoil.flange, self.pivot.axis),
                      (self.voiceCoil.support, self.pivot.support),
                      (self.flexure.support, self.flexureSpring.flange_a),
-                     (self.flexureSpring.flange_b, self.flexure.flange_a)]:
+                     (self.flexureSpring.flange_b, self.flexure.axis)]:
             self.connect(a, b)

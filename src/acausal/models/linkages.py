@@ -107,7 +107,7 @@ class DrivenFourBar(FourBar):
         else:
             self.T, self.drive = Input(unit="N.m", description="crank torque"), rot.Torque()
             self.connect(self.T.y, self.drive.tau)
-        self.connect(self.drive.flange, self.rev1.flange_a)
+        self.connect(self.drive.flange, self.rev1.axis)
 
 
 class SliderCrank(Model):
@@ -140,7 +140,7 @@ class SliderCrank(Model):
             self.tau = Input(unit="N.m", description="torque driving the crank")
             self.motor = rot.Torque()
             self.connect(self.tau.y, self.motor.tau)
-            self.connect(self.motor.flange, self.rev1.flange_a)
+            self.connect(self.motor.flange, self.rev1.axis)
         self.prismatic = Prismatic(r=(1.0, 0.0))
         self.slider = Body(m=m_slider, I=SLIDER_INERTIA)
         self.connect(self.O.frame, self.rev1.frame_a)

@@ -8,7 +8,7 @@ position), φ = ``hinge.phi`` (pendulum angle from the downward vertical, counte
 Components (PlanarMechanics and MSL names):
 
     World  base: Fixed.frame ── rail: Prismatic(useFlange) ── cart: Body (m1, I=0)
-              rail.flange_a ── spring (c = k) ── shaker.flange
+              rail.axis ── spring (c = k) ── shaker.flange
                                                  shaker: Position(exact=True, useSupport=True),
                                                  support on rail.support, s_ref ← u: Sine
               rail.frame_b ── hinge: Revolute ── arm: FixedTranslation r = (0, −l)
@@ -63,7 +63,7 @@ class PendulumOnCart(Model):
         links = [(self.base.frame, self.rail.frame_a), (self.rail.frame_b, self.cart.frame_a),
                  (self.rail.frame_b, self.hinge.frame_a), (self.hinge.frame_b, self.arm.frame_a),
                  (self.arm.frame_b, self.pendulum.frame_a),
-                 (self.spring.flange_b, self.rail.flange_a)]
+                 (self.spring.flange_b, self.rail.axis)]
         if drive == "position":
             self.u = Sine(amplitude=U, f=f)
             self.shaker = tr.Position(exact=True, useSupport=True)
@@ -74,6 +74,6 @@ class PendulumOnCart(Model):
             self.gain = Gain(k=k)
             self.force = tr.Force()
             links += [(self.rail.support, self.spring.flange_a), (self.u.y, self.gain.u),
-                      (self.gain.y, self.force.f), (self.force.flange, self.rail.flange_a)]
+                      (self.gain.y, self.force.f), (self.force.flange, self.rail.axis)]
         for a, b in links:
             self.connect(a, b)
