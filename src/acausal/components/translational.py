@@ -101,8 +101,14 @@ class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
 
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
-    """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states. Here the same
-    as PartialCompliant: the compiler chooses the coordinates."""
+    """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states (here the
+    compiler chooses the coordinates). s_rel has MSL's nominal: s_nominal [m] (default
+    1e-4), the scale of the error control of the state s_rel is (see
+    ``CompiledModel.nominals``). MSL's stateSelect is not here."""
+    s_nominal = Parameter(1e-4, "m", "nominal value of s_rel (used for scaling)")
+
+    def rel_nominal(self):
+        return self.s_nominal
 
 
 class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlangeAndSupport2):
