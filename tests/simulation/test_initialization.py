@@ -81,3 +81,34 @@ def test_random_closable_four_bars_assemble_without_a_guess(seed):
     assert np.max(np.abs(gap)) < 1e-10
     assert abs(pt["rev1.phi"] - theta) < 1e-12
     assert abs(pt["crank.frame_b.x"] - l1 * np.cos(theta)) < 1e-12
+
+
+def _mass_on_spring():
+    """wall at 0.3 m | spring | mass of length 0.2 m: spring.s_rel = mass.s − 0.1 − 0.3."""
+    model = ac.Model("osc")
+    model.wall = tr.Fixed(s0=0.3)
+    model.spring = tr.Spring(c=8.0)
+    model.mass = tr.Mass(m=0.5, L=0.2)
+    model.connect(model.wall.flange, model.spring.flange_a)
+    model.connect(model.spring.flange_b, model.mass.flange_a)
+    return ac.compile(model)
+
+
+def test_a_guess_on_any_variable_moves_the_start_values():
+    """Without constraints the guess on a variable that is no state is met exactly by the
+    state it depends on: spring.s_rel = 0.7 m puts the mass's centre at 0.7 + 0.1 + 0.3."""
+    compiled = _mass_on_spring()
+    res = compiled.simulate(0.01, t=[0.0, 0.01], guess={"spring.s_rel": 0.7},
+                            rtol=1e-10, atol=1e-12)
+    assert abs(res["mass.s"][0] - 1.1) < 1e-12
+    assert abs(res["spring.s_rel"][0] - 0.7) < 1e-12
+
+
+def test_guess_errors_name_the_variable():
+    compiled = _mass_on_spring()
+    with pytest.raises(ac.errors.InitializationError, match="guess: .*spring.s_rell"):
+        compiled.simulate(0.01, guess={"spring.s_rell": 0.7})
+    with pytest.raises(ac.errors.InitializationError, match="guess: 'wall.flange.s' does not"):
+        compiled.simulate(0.01, guess={"wall.flange.s": 0.7})
+    with pytest.raises(ac.errors.InitializationError, match="x0 and guess values conflict"):
+        compiled.simulate(0.01, x0={"mass.s": 1.0}, guess={"spring.s_rel": 0.7})
