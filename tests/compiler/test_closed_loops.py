@@ -428,6 +428,30 @@ def test_four_bar_guess_selects_the_assembly_branch(fb_compiled):
         assert abs(res["rocker.phi"][0] - q[2]) < 1e-10
 
 
+def test_a_guess_on_the_loop_closing_joint_selects_the_branch(fb_compiled):
+    """The crank fixed (x0), one guess on what is no coordinate: the angle of rev4, the joint
+    that closes the loop (rev3.phi − rev1.phi − rev2.phi). From the start values alone
+    assembly lands on the branch −1; the guess, 0.4 rad either side of the closed-form
+    value of either branch, selects that branch."""
+    theta0 = 1.0
+    res = fb_compiled.simulate(0.01, t=np.linspace(0, 0.01, 3), x0={"rev1.phi": theta0},
+                               **SHORT)
+    assert four_bar_branch(res) == -1.0
+    for branch in (1.0, -1.0):
+        q, _ = four_bar_reference(branch).state(theta0)      # absolute θ, β, γ
+        exact = q[2] - q[1]
+        for off in (0.4, -0.4):
+            with pytest.warns(UserWarning, match="close the kinematic loops"):
+                res = fb_compiled.simulate(0.01, t=np.linspace(0, 0.01, 3),
+                                           x0={"rev1.phi": theta0},
+                                           guess={"rev4.phi": exact + off}, **SHORT)
+            assert four_bar_branch(res) == branch
+            assert joint_residual(res, FB_JOINTS)[0] < 1e-10
+            assert abs(res["rev1.phi"][0] - theta0) < 1e-12
+            assert abs(res["rocker.phi"][0] - q[2]) < 1e-10
+            assert abs(res["rev4.phi"][0] - exact) < 1e-10
+
+
 def test_assembly_reports_changed_start_values(fb_compiled):
     """The user is told which values assembly changed (not the ones fixed in x0)."""
     with pytest.warns(UserWarning) as record:

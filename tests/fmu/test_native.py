@@ -206,3 +206,26 @@ def test_redundant_loop_rows_are_switched_off(fmu_dir, kind):
     # the FMU switched off the row simulate() names redundant, and only that one
     off = compiled.loop_rows.index(ref.mobility.redundant[0])
     assert [res[n][0] for n in switches] == [float(i != off) for i in range(len(switches))]
+
+
+def test_nominals_default_to_the_models(fmu_dir):
+    """Without ``nominals`` the FMU's states carry the model's nominals (the disk head's
+    flexure magnitudes, the pivot damper's phi_nominal on the arm's angle); ``nominals``
+    replaces them by name, also through a variable that coincides with a state."""
+    from fmpy import read_model_description
+    compiled = acausal.compile(DiskDriveHead())
+
+    def nominals(path):
+        md = read_model_description(str(path))
+        return {v.name: float(v.nominal) if v.nominal is not None else 1.0
+                for v in md.modelVariables if v.name in compiled.x_names}
+
+    default = compiled.export_fmu(fmu_dir / "disk_nominal.fmu", fmu_type="me")
+    assert nominals(default) == {"pivot.phi": 1e-4, "flexure.s": 1e-6, "pivot.w": 1.0,
+                                 "flexure.v": 1e-2}
+    given = compiled.export_fmu(fmu_dir / "disk_given.fmu", fmu_type="me",
+                                nominals={"pivotDamper.phi_rel": 1e-3, "flexure.v": 1e-3})
+    assert nominals(given) == {"pivot.phi": 1e-3, "flexure.s": 1e-6, "pivot.w": 1.0,
+                               "flexure.v": 1e-3}
+    with pytest.raises(acausal.errors.FmuExportError, match="nominals"):
+        compiled.export_fmu(fmu_dir / "disk_bad.fmu", nominals={"flexure.s": -1.0})

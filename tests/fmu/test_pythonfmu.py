@@ -96,12 +96,12 @@ def run_in_process(compiled, t_final, n, steps=None, **kwargs):
                                  rtol=1e-12, atol=1e-14, **kwargs)
 
 
-def assert_agree(fmu_res, ref, names):
+def assert_agree(fmu_res, ref, names, rtol=RTOL):
     assert np.allclose(fmu_res["time"], ref.t, rtol=0, atol=1e-12)
     for name in names:
         scale = np.max(np.abs(ref[name]))
         err = np.max(np.abs(fmu_res[name] - ref[name]))
-        assert err <= RTOL * scale, \
+        assert err <= rtol * scale, \
             f"{name}: max |FMU − in-process| = {err:.3g} (scale {scale:.3g})"
 
 
@@ -163,17 +163,19 @@ def test_crane(fmus):
 
 def test_disk_drive_head(fmus):
     """Bang-bang voice-coil torque (switch at 1 ms) over 3 ms, 120 communication steps;
-    then a stiffer flexure and a weaker torque."""
+    then a stiffer flexure and a weaker torque. The flexure's deflection (µm) is under the
+    FMU's error control through its nominal: FMU and in-process agree to 1e-7 (without
+    nominals the FMU's absolute tolerance 1e-12 m let flexure.v drift by 1.6e-7)."""
     compiled, path = fmus["disk"]
     names = ["pivot.phi", "flexure.s", "pivot.w", "flexure.v", "head.r[2]"]
     base = {"T": (1e-3, 0.02, -0.02)}
     res, _ = run_fmu(path, 3e-3, 2.5e-5, names, steps=base)
     ref = run_in_process(compiled, 3e-3, 120, base)
-    assert_agree(res, ref, names)
+    assert_agree(res, ref, names, rtol=1e-7)
     alt = {"T": (1e-3, 0.01, -0.01)}
     res2, _ = run_fmu(path, 3e-3, 2.5e-5, names, {"flexureSpring.c": 4e4}, alt)
     ref2 = run_in_process(compiled, 3e-3, 120, alt, params={"flexureSpring.c": 4e4})
-    assert_agree(res2, ref2, names)
+    assert_agree(res2, ref2, names, rtol=1e-7)
     assert changed(res2, res, "pivot.phi") and changed(res2, res, "flexure.s")
 
 

@@ -100,3 +100,34 @@ def test_fast_crank_starts_without_a_guess():
         assert abs(pt[f"b2.v[{k}]"] - pt[f"b3.v[{k}]"]) < 1e-9 * 45.0
     assert abs(pt["b1.v[1]"] + 0.3 * 45.0 * np.sin(1.0)) < 1e-10
     assert abs(pt["b1.v[2]"] - 0.3 * 45.0 * np.cos(1.0)) < 1e-10
+
+
+def _mass_on_spring():
+    """wall at 0.3 m | spring | mass of length 0.2 m: spring.s_rel = mass.s − 0.1 − 0.3."""
+    model = ac.Model("osc")
+    model.wall = tr.Fixed(s0=0.3)
+    model.spring = tr.Spring(c=8.0)
+    model.mass = tr.Mass(m=0.5, L=0.2)
+    model.connect(model.wall.flange, model.spring.flange_a)
+    model.connect(model.spring.flange_b, model.mass.flange_a)
+    return ac.compile(model)
+
+
+def test_a_guess_on_any_variable_moves_the_start_values():
+    """Without constraints the guess on a variable that is no state is met exactly by the
+    state it depends on: spring.s_rel = 0.7 m puts the mass's centre at 0.7 + 0.1 + 0.3."""
+    compiled = _mass_on_spring()
+    res = compiled.simulate(0.01, t=[0.0, 0.01], guess={"spring.s_rel": 0.7},
+                            rtol=1e-10, atol=1e-12)
+    assert abs(res["mass.s"][0] - 1.1) < 1e-12
+    assert abs(res["spring.s_rel"][0] - 0.7) < 1e-12
+
+
+def test_guess_errors_name_the_variable():
+    compiled = _mass_on_spring()
+    with pytest.raises(ac.errors.InitializationError, match="guess: .*spring.s_rell"):
+        compiled.simulate(0.01, guess={"spring.s_rell": 0.7})
+    with pytest.raises(ac.errors.InitializationError, match="guess: 'wall.flange.s' does not"):
+        compiled.simulate(0.01, guess={"wall.flange.s": 0.7})
+    with pytest.raises(ac.errors.InitializationError, match="x0 and guess values conflict"):
+        compiled.simulate(0.01, x0={"mass.s": 1.0}, guess={"spring.s_rel": 0.7})

@@ -9,7 +9,7 @@
    relaxations ε of the tree relations (``lagrange.residuals``);
 5. signals, state derivatives and relaxations are substituted (``resolve``); the loops are
    checked (``loops``) and the equations solved for the accelerations (``motion``);
-6. the DAE, its start values and time events, the recorded variables (``recorded``, built on
+6. the DAE, its start values, nominals and time events, the recorded variables (``recorded``, built on
    first use) are put together into a CompiledModel.
 
 Nothing is written into the components: a component may be compiled into two models, or
@@ -23,10 +23,10 @@ import casadi as ca
 
 from ..core.component import Model
 from ..core.parameter import Parameter, symbolic_parameters
-from ..errors import StructureError
+from ..errors import StructureError, did_you_mean
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
-from .compiled import CompiledModel, ScalarVariable
+from .compiled import CompiledModel, ScalarVariable, coinciding
 from .flatten import flatten
 from .kinematics import Node, build_tree
 from .lagrange import Lagrange, Residuals, residuals
@@ -163,6 +163,11 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         zdot, g_alg, y_out = ca.substitute([zdot, g_alg, y_out], [cut], [cut_values])
     zdot, g_alg, y_out = ca.substitute([zdot, g_alg, y_out], sub_from, sub_to)
 
+    def final(exprs: ca.SX) -> ca.SX:
+        """Expressions of the motion as recorded: in (t, x, z, u, p)."""
+        exprs = resolve([exprs])[0]
+        return ca.substitute([ca.substitute(exprs, cut, cut_values)], sub_from, sub_to)[0]
+
     def recorder():
         """Every potential, velocity, flow, state, variable and signal, by name (built on
         first use: large models need not pay for it to be simulated or exported)."""
@@ -170,9 +175,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         fl, _ = flows()
         names += [n for n, _, _ in fl]
         units += [u for _, _, u in fl]
-        exprs = resolve([_vc(exprs, *[e for _, e, _ in fl])])[0]
-        exprs = ca.substitute([ca.substitute(exprs, cut, cut_values)], sub_from, sub_to)[0]
-        return names, exprs, units
+        return names, final(_vc(exprs, *[e for _, e, _ in fl])), units
 
     # ---- the DAE -------------------------------------------------------------------------
     params = params + [(s, ScalarVariable(s.name(), _ACTIVE.unit, _ACTIVE.description, 1.0,
@@ -198,20 +201,27 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
                              f"(please report)")
     starts = [0.0] * motion.n_x + [i.start for i in ws.states] \
         + [0.0] * motion.n_z + [a.start for a in ws.algebraics]
+    nominal = _parameter_function("nominal", _nominals(model, ws, tree, final, _vc(x, z),
+                                                       _vc(t, x, z, u)), p, "nominals")
+    n0 = [float(v) for v in ca.vertsplit(nominal([v.start for _, v in params]))]
+    n_x, n_z = iter(n0[:x.numel()]), iter(n0[x.numel():])        # at the defaults
     units = _coordinate_units(tree)
     return CompiledModel(
         name=model.name or type(model).__name__, t=t, x=x, z=z, p=p, u=u,
         ode=ode, alg=alg, y=y_out,
-        states=[ScalarVariable(s.name(), units.get(s.name(), "")) for s in
-                ca.vertsplit(_vc(motion.q_diff, motion.qd_diff))]
-        + [ScalarVariable(i.sym.name(), i.unit, i.description) for i in ws.states],
-        algebraics=[ScalarVariable(s.name(), units.get(s.name(), ""))
+        states=[ScalarVariable(s.name(), units.get(s.name(), ""), nominal=float(next(n_x)))
+                for s in ca.vertsplit(_vc(motion.q_diff, motion.qd_diff))]
+        + [ScalarVariable(i.sym.name(), i.unit, i.description, nominal=float(next(n_x)))
+           for i in ws.states],
+        algebraics=[ScalarVariable(s.name(), units.get(s.name(), ""), nominal=float(next(n_z)))
                     for s in ca.vertsplit(motion.alg_vars)]
-        + [ScalarVariable(a.sym.name(), a.unit, a.description) for a in ws.algebraics],
+        + [ScalarVariable(a.sym.name(), a.unit, a.description, nominal=float(next(n_z)))
+           for a in ws.algebraics],
         params=[v for _, v in params],
         inputs=[ScalarVariable(c.path, c.unit, c.description, c.start) for c, _ in ws.inputs],
         outputs=[ScalarVariable(c.path, c.unit, c.description) for c, _ in ws.outputs],
         start=_parameter_function("start", starts, p, "start values"),
+        nominal=nominal,
         events=_events(ws.events, p),
         recorder=recorder,
         lagrange=Lagrange(tree, Residuals(R_T[:nq], R_V[:nq], R_Q[:nq]), phi[keep], t, p, u,
@@ -236,6 +246,35 @@ def _check_declarations(ws: Workspace) -> None:
         raise StructureError(f"{len(ws.algebraics)} algebraic variables but "
                              f"{len(ws.residuals)} residual equations: "
                              f"{', '.join(a.sym.name() for a in ws.algebraics) or 'none'}")
+
+
+def _nominals(model, ws: Workspace, tree, final, w: ca.SX, free: ca.SX) -> list:
+    """The nominal of each of w = [x; z] (numbers or expressions of parameters): 1, or the
+    smallest n/|a| of the variables with a declared nominal n that are a·w_k + b (a, b of
+    parameters: ``coinciding``); the nominals the components declare, replaced by the ones
+    given with their ``nominal={...}`` keyword. See ``CompiledModel.nominals``."""
+    declared = dict(ws.nominals)
+    for c in ws.components:
+        for name, value in c._nominal.items():
+            declared[f"{c.path}.{name}" if c.path else name] = value
+    if not declared:
+        return [1.0] * w.numel()
+    names, exprs, _ = recorded_variables(ws, tree)
+    where = {n: i for i, n in enumerate(names)}
+    unknown = [n for n in declared if n not in where]
+    if unknown:
+        raise StructureError(f"nominal given for '{unknown[0]}', which is no variable of "
+                             f"'{model.name or type(model).__name__}'"
+                             f"{did_you_mean(unknown[0], names)}")
+    rows = final(_vc(*[exprs[where[n]] for n in declared]))
+    out = [None] * w.numel()
+    for v, n in zip(ca.vertsplit(rows), declared.values()):
+        hit = coinciding(v, w, free)
+        if hit is not None:
+            k, a = hit
+            n = n / ca.fabs(a)
+            out[k] = n if out[k] is None else ca.fmin(out[k], n)
+    return [1.0 if v is None else v for v in out]
 
 
 def _coordinate_units(tree) -> dict[str, str]:

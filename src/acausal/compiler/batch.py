@@ -2,10 +2,11 @@
 
 Each SX operation issued from Python costs ~20 µs, so a chain of 10 000 springs spends most of
 its compile time inside the springs' physics(). For classes that declare
-``batch_physics = True`` in their own class body (their physics reads only port motion, parameters and time, and
-writes flows, energies and variables), physics() runs once on stand-in symbols; the result
-becomes a casadi Function, mapped over all instances in one call. The expressions are the
-same as instance by instance. Classes that do anything else fall back to the plain path.
+``batch_physics = True`` in their own class body (their physics reads only port motion,
+parameters and time, and writes flows, energies and variables with their nominals), physics()
+runs once on stand-in symbols; the result becomes a casadi Function, mapped over all
+instances in one call. The expressions are the same as instance by instance. Classes that do
+anything else fall back to the plain path.
 """
 from __future__ import annotations
 
@@ -56,8 +57,10 @@ class _TraceBuilder(PhysicsBuilder):
     def potential_energy(self, V):
         self.out.append(("V", None, ca.SX(V)))
 
-    def variable(self, name, expr, unit="", description=""):
+    def variable(self, name, expr, unit="", description="", nominal=None):
         self.out.append(("var", (name, unit, description), ca.vec(ca.SX(expr))))
+        if nominal is not None:
+            self.out.append(("nominal", name, ca.SX(nominal)))
 
     def _refuse(self, *args, **kwargs):
         raise _NotBatchable
@@ -143,6 +146,9 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
         if kind == "flow":
             for ports, col in zip(all_ports, cols):
                 ws.flows.append((ports[what], col))
+        elif kind == "nominal":
+            for c, col in zip(members, cols):
+                ws.nominals[f"{c.path}.{what}" if c.path else what] = col
         else:
             name, unit, desc = what
             for c, col in zip(members, cols):

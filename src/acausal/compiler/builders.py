@@ -50,6 +50,7 @@ class Workspace:
     potential: list = field(default_factory=list)
     flows: list = field(default_factory=list)               # (port, expr) explicit flows
     variables: list = field(default_factory=list)           # (name, expr, unit)
+    nominals: dict = field(default_factory=dict)            # name -> nominal (number or SX)
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
     state_names: dict = field(default_factory=dict)         # port -> its coordinates' names
     declared: dict = field(default_factory=dict)            # (component, name) -> node / state
@@ -173,15 +174,18 @@ class StructureBuilder(_Base):
         self._ws.declared[key] = handle
 
     def state(self, name: str, start=0.0, unit: str = "", description: str = "",
-              der=None) -> ca.SX:
+              der=None, nominal=None) -> ca.SX:
         """An internal state (a motor current, a controller integral), starting at ``start``
         (a number or an expression of parameters) unless x0 says otherwise. Its derivative is set
         here (required when the state is used in a relation) or later by
-        PhysicsBuilder.derivative."""
+        PhysicsBuilder.derivative. ``nominal``: its magnitude (a number or an expression of
+        parameters; default 1), the scale of its absolute error control."""
         s = ca.SX.sym(self._name(name))
         info = StateInfo(s, _start(start), unit, description, self._owner)
         self._ws.states.append(info)
         self._declare(name, s)
+        if nominal is not None:
+            self._ws.nominals[s.name()] = _start(nominal)
         if der is not None:
             info.der = sx(der)
             self._ws.der_table[s.name()] = info.der
@@ -301,9 +305,14 @@ class PhysicsBuilder(_Base):
         self._ws.signal(port)
         self._ws.signal_expr[port] = sx(expr)
 
-    def variable(self, name: str, expr, unit: str = "", description: str = "") -> None:
-        """Record ``expr`` as ``<component>.<name>`` in results."""
+    def variable(self, name: str, expr, unit: str = "", description: str = "",
+                 nominal=None) -> None:
+        """Record ``expr`` as ``<component>.<name>`` in results. ``nominal``: its magnitude (a
+        number or an expression of parameters), Modelica's ``nominal`` attribute: the scale
+        of the error control of the state it is (``CompiledModel.nominal``)."""
         self._ws.variables.append((self._name(name), sx(expr), unit, description))
+        if nominal is not None:
+            self._ws.nominals[self._name(name)] = _start(nominal)
 
     def outer(self, cls) -> Component:
         """The one component of class ``cls`` in the model (Modelica's inner/outer), e.g. the

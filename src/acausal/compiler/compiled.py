@@ -26,7 +26,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.parameter import checked_value
-from ..errors import ParameterError, VariableNameError, did_you_mean
+from ..errors import ParameterError, SimulationError, VariableNameError, did_you_mean
 from ..numerics import event_times
 from .lagrange import Lagrange
 from .loops import Mobility, mobility
@@ -39,14 +39,16 @@ class ScalarVariable:
     """One scalar of a compiled model: a parameter, input, output, state or algebraic
     variable. ``start`` is a parameter's default or an input's start value (None where
     the model computes it); ``min`` / ``max`` its bounds (a parameter declared positive or
-    nonnegative has min = 0); ``declaration`` the ``Parameter`` whose rule checks a
-    parameter's values."""
+    nonnegative has min = 0); ``nominal`` a state's or algebraic variable's magnitude at the
+    default parameters (``CompiledModel.nominal``; None for the others); ``declaration``
+    the ``Parameter`` whose rule checks a parameter's values."""
     name: str
     unit: str = ""
     description: str = ""
     start: float | None = None
     min: float = -np.inf
     max: float = np.inf
+    nominal: float | None = None
     declaration: object = field(default=None, compare=False, repr=False)
 
     def check(self, value) -> float:
@@ -85,6 +87,7 @@ class CompiledModel:
     inputs: list[ScalarVariable]
     outputs: list[ScalarVariable]
     start: ca.Function      # p -> start values of [x; z]
+    nominal: ca.Function    # p -> nominals of [x; z] (see ``nominals``)
     events: ca.Function     # p -> (times, periods) of time events
     recorder: object        # () -> (names, expressions, units) of every recorded variable
     lagrange: Lagrange
@@ -172,6 +175,52 @@ class CompiledModel:
     def event_times(self, p: np.ndarray, t0: float, t1: float) -> list[float]:
         """Times of the declared time events strictly inside (t0, t1), sorted."""
         return event_times(*self.events(p), t0, t1)
+
+    def nominals(self, p: np.ndarray, overrides: dict | None = None) -> np.ndarray:
+        """The nominal magnitude of every state and algebraic variable ([x; z]) at
+        parameters p: the scale of the integrator's absolute error control, atol·nominal_i
+        (Modelica's ``nominal``; 1 unless declared).
+
+        A variable declared with a nominal n (``e.variable(..., nominal=)``,
+        ``s.state(..., nominal=)``, a component's ``nominal={...}``) gives it to the state
+        or algebraic variable w_k it coincides with: when the variable is a·w_k + b, a and b
+        depending on parameters only (``coinciding``), w_k gets n/|a| — a compliant
+        element's phi_rel is its housing's angle when the other flange is fixed; several
+        such variables on one w_k: the smallest. A variable that is no such function of one
+        state (a spring between two moving inertias: phi_rel = phi_2 − phi_1) leaves the
+        states' nominals as they are. ``overrides`` (name -> value, simulate's ``nominal``)
+        replace the nominal of the state the named variable is or coincides with; a name
+        that coincides with none is an error."""
+        n = np.array(self.nominal(p), dtype=float).ravel()
+        w = ca.vertcat(self.x, self.z)
+        for name, value in (overrides or {}).items():
+            hit = coinciding(self.expression(name), w, self._free())
+            try:
+                value = float(value)
+            except (TypeError, ValueError):
+                value = float("nan")
+            if not 0 < value < np.inf:
+                raise SimulationError(f"nominal['{name}'] must be a finite number > 0, got "
+                                      f"{value!r}")
+            if hit is None:
+                raise SimulationError(
+                    f"nominal: '{name}' is not a state of '{self.name}' nor one state "
+                    f"scaled and offset by parameters, so no state takes its nominal; give "
+                    f"the nominal of a state ({', '.join(self.x_names[:6])}...)")
+            k, a = hit
+            scale = abs(float(ca.Function("a", [self.p], [a])(p)))
+            n[k] = value / scale
+        bad = [f"{name} = {v:g}" for name, v in zip(self.x_names + self.z_names, n)
+               if not 0 < v < np.inf]
+        if bad:
+            raise SimulationError(f"nominals must be finite numbers > 0; at these parameters "
+                                  f"{', '.join(bad[:4])}: check the parameters that set them "
+                                  f"(e.g. phi_nominal, s_nominal)")
+        return n
+
+    def _free(self) -> ca.SX:
+        """The symbols that are not parameters: t, x, z, u."""
+        return ca.vertcat(self.t, self.x, self.z, self.u)
 
     # ---- name resolution -------------------------------------------------------------------
     def _index(self, kind: str) -> dict[str, int]:
@@ -325,3 +374,18 @@ class CompiledModel:
         return (f"<CompiledModel '{self.name}': {len(self.states)} states, "
                 f"{len(self.algebraics)} algebraic, {len(self.params)} parameters, "
                 f"{len(self.inputs)} inputs, {len(self.outputs)} outputs>")
+
+
+def coinciding(v: ca.SX, w: ca.SX, free: ca.SX) -> tuple[int, ca.SX] | None:
+    """(k, a) when the scalar expression v is a·w[k] + b with a, b free of the symbols
+    ``free`` (time, states, algebraic variables, inputs: a and b depend on parameters only),
+    i.e. v coincides with w[k] up to a fixed scale and offset; None otherwise."""
+    J = ca.jacobian(v, w)
+    cols = J.sparsity().get_col()
+    if len(cols) != 1:
+        return None
+    k = cols[0]
+    a = J[0, k]
+    if ca.depends_on(a, free) or ca.depends_on(ca.substitute(v, w[k], 0), free):
+        return None
+    return k, a

@@ -75,8 +75,14 @@ class PartialCompliant(PartialTwoFlanges):
     ``records_a_rel``, as MSL's rotational PartialCompliantWithRelativeStates), and
     ``lossPower`` [W] when ``loss_power`` gives one. The domain names the law
     (``force(s_rel, v_rel)``, ``torque(phi_rel, w_rel)``) and maps ``flange_b_flow`` to it.
+    ``rel_nominal`` gives the relative position's nominal (MSL's
+    PartialCompliantWithRelativeStates: ``s_nominal``, ``phi_nominal``).
     """
     records_a_rel = False
+
+    def rel_nominal(self):
+        """The nominal magnitude of rel_pos [m, rad], or None (none declared)."""
+        return None
 
     def flange_b_flow(self, rel_pos, rel_speed):
         """The flow into flange_b [N, N.m] (flange_a gets the opposite)."""
@@ -93,7 +99,8 @@ class PartialCompliant(PartialTwoFlanges):
         flow = self.flange_b_flow(rel_pos, rel_speed)
         self._apply_opposite_flows(e, flow)
         e.variable(f"{x.s}_rel", rel_pos, x.s_unit,
-                   f"relative {x.position} (= flange_b.{x.s} - flange_a.{x.s})")
+                   f"relative {x.position} (= flange_b.{x.s} - flange_a.{x.s})",
+                   nominal=self.rel_nominal())
         e.variable(f"{x.v}_rel", rel_speed, x.v_unit, f"relative {x.speed} (= der({x.s}_rel))")
         if self.records_a_rel:
             e.variable("a_rel", e.acc(self.flange_b) - e.acc(self.flange_a), x.a_unit,

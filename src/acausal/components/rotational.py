@@ -36,6 +36,7 @@ from . import interfaces
 from .interfaces import ROTATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
 Flange = RotationalFlange
+_EPS = 2.220446049250313e-16      # Modelica.Constants.eps
 
 __all__ = [
     # interfaces
@@ -134,9 +135,19 @@ class PartialCompliant(interfaces.PartialCompliant):
 class PartialCompliantWithRelativeStates(PartialCompliant):
     """MSL's variant of PartialCompliant with phi_rel, w_rel as preferred states (here the
     compiler chooses the coordinates: ``stateSelect``, default prefer, is a hint, see
-    StateSelect); records also a_rel = der(w_rel) [rad/s²]."""
+    StateSelect); records also a_rel = der(w_rel) [rad/s²].
+
+    phi_rel has MSL's nominal: phi_nominal [rad] (default 1e-4; 1 if below machine epsilon),
+    the scale of the error control of the state phi_rel is (e.g. the housing's angle when
+    flange_a is fixed; see ``CompiledModel.nominals``).
+    """
     options = {"stateSelect": StateSelect.prefer}
     records_a_rel = True
+    phi_nominal = Parameter(1e-4, "rad", "nominal value of phi_rel (used for scaling)",
+                            nonnegative=True)
+
+    def rel_nominal(self):
+        return ca.if_else(self.phi_nominal >= _EPS, self.phi_nominal, 1.0)
 
 
 class PartialTorque(PartialElementaryOneFlangeAndSupport2):

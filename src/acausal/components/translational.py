@@ -103,8 +103,14 @@ class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
 class PartialCompliantWithRelativeStates(PartialCompliant):
     """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states. Here the same
     as PartialCompliant: the compiler chooses the coordinates (``stateSelect``, default
-    prefer, is a hint, see StateSelect)."""
+    prefer, is a hint, see StateSelect). s_rel has MSL's nominal: s_nominal [m] (default
+    1e-4), the scale of the error control of the state s_rel is (see
+    ``CompiledModel.nominals``)."""
     options = {"stateSelect": StateSelect.prefer}
+    s_nominal = Parameter(1e-4, "m", "nominal value of s_rel (used for scaling)")
+
+    def rel_nominal(self):
+        return self.s_nominal
 
 
 class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlangeAndSupport2):

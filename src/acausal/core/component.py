@@ -108,6 +108,12 @@ class Component:
     ``self.<name>``, are fixed once the component is built, and decide which
     ``ConditionalPort`` exist. ``required`` names parameters that have no default (MSL
     declares them without a value): they must be given.
+
+    ``nominal={"w_rel": 1e-4}`` sets the nominal magnitude (the scale of the integrator's
+    absolute error control, Modelica's ``w_rel(nominal=1e-4)``) of variables of this
+    component by their names relative to it (``"frame_a.x"``, ``"phi"``); it replaces the
+    nominal the component declares for them (see ``acausal.compiler.CompiledModel.nominal``
+    for how a variable's nominal reaches the states).
     """
     options: dict[str, bool | Enum] = {}
     required: tuple[str, ...] = ()
@@ -122,6 +128,7 @@ class Component:
         kind = type(self).__name__
         opts = {key: _option(kind, key, spec, params.pop(key, _default(spec)))
                 for key, spec in self._option_specs().items()}
+        d["_nominal"] = _nominals(kind, params.pop("nominal", None))
         declared = self.parameters()
         for pname, par in declared.items():
             d["_values"][pname] = par.default
@@ -280,6 +287,26 @@ def _typed_option(kind: str, key: str, default, value):
     if not isinstance(value, bool):
         raise ParameterError(f"{kind}: option '{key}' must be True or False, got {value!r}")
     return value
+
+
+def _nominals(kind: str, given) -> dict[str, float]:
+    """The ``nominal`` keyword: variable name -> a finite number > 0."""
+    if given is None:
+        return {}
+    if not isinstance(given, dict):
+        raise ParameterError(f"{kind}: nominal must be a dict of variable name -> nominal "
+                             f"magnitude, e.g. nominal={{'w_rel': 1e-4}}; got {given!r}")
+    out = {}
+    for name, value in given.items():
+        try:
+            v = float(value)
+        except (TypeError, ValueError):
+            v = float("nan")
+        if not (isinstance(name, str) and v > 0 and v < float("inf")):
+            raise ParameterError(f"{kind}: nominal of '{name}' must be a finite number > 0, "
+                                 f"got {value!r}")
+        out[name] = v
+    return out
 
 
 class Model(Component):

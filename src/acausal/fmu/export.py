@@ -93,7 +93,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..errors import FmuExportError
+from ..errors import AcausalError, FmuExportError
 from .codegen import ModelFunctions
 from .destination import fmu_path, identifier
 from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, fmi3_xml)
@@ -266,8 +266,10 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
                   stop_time: float = 1.0, description: str | None = None,
                   nominals: dict | None = None) -> Path:
     """Write a native FMU of ``compiled`` to ``path`` (a directory gets ``<model>.fmu``).
-    ``nominals``: state name -> nominal magnitude (default 1): the scale of its absolute
-    tolerance, in the importer's solver (``nominal`` attribute) and in the FMU's own."""
+    ``nominals``: state name (or a variable that coincides with one) -> nominal magnitude,
+    replacing the model's (``compiled.nominals`` at the default parameters: 1 unless
+    declared): the scale of its absolute tolerance, in the importer's solver (``nominal``
+    attribute) and in the FMU's own."""
     if fmi_version not in ("2.0", "3.0"):
         raise FmuExportError(f"fmi_version must be '2.0' or '3.0', got {fmi_version!r}")
     if fmu_type not in ("me", "cs", "both"):
@@ -277,12 +279,11 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
     headers = find_fmi_headers(fmi_version)
     cc = find_compiler()
     plat2, plat3, ext = platform_dirs()
-    nominals = dict(nominals or {})
-    bad = [n for n, v in nominals.items() if n not in compiled.x_names or not float(v) > 0]
-    if bad:
-        raise FmuExportError(f"nominals: {bad} are not states of '{compiled.name}' with a "
-                             f"positive value; its states: {compiled.x_names}")
-    nominal = [float(nominals.get(n, 1.0)) for n in compiled.x_names]
+    try:
+        nominal = [float(v) for v in compiled.nominals(compiled.param_vector(), nominals)
+                   [:len(compiled.x_names)]]
+    except AcausalError as e:
+        raise FmuExportError(f"nominals: {e}") from None
     mf = ModelFunctions(compiled)
     variables = fmu_variables(compiled)
     variables += solver_variables(variables[-1].value_reference + 1 if variables else 1)
@@ -313,7 +314,7 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
                 "cs": fmu_type in ("cs", "both"), "sources": c_files,
                 "deps": dependencies(compiled, mf, variables),
                 "loops": mf.nh > 0, "stop_time": stop_time,
-                "nominal": {n: v for n, v in nominals.items()}}
+                "nominal": {n: v for n, v in zip(compiled.x_names, nominal) if v != 1.0}}
         if fmi_version == "2.0":
             (tmp / "modelDescription.xml").write_text(fmi2_xml(info))
         else:

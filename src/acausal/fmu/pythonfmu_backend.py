@@ -32,7 +32,10 @@ step), inputs held constant over each communication step, states settable before
 initialization (a value different from the declared start is held exactly; closed loops are
 assembled around it), outputs, state derivatives and every recorded variable readable;
 get/set/serialize FMU state. The tolerances (``rtol``, ``atol``) are fixed at export: pythonfmu
-does not pass the importer's tolerance to the slave. CasADi re-initializes its integrator at
+does not pass the importer's tolerance to the slave. So are the nominals (the model's at the
+default parameters, ``compiled.nominals``, or ``nominals`` given at export): the integrator
+works on the states divided by them, so that a state's absolute tolerance is atol·nominal,
+as in acausal.simulate. CasADi re-initializes its integrator at
 every call, so every communication step restarts the multistep method from the state reached:
 the defaults (1e-10, 1e-12) are tighter than acausal.simulate's so that a hundred restarts stay
 well inside 1e-6 of the in-process result.
@@ -55,7 +58,7 @@ from pathlib import Path
 
 import casadi as ca
 
-from ..errors import FmuExportError, SimulationError
+from ..errors import AcausalError, FmuExportError, SimulationError
 from .. import numerics
 from ..simulation.initialization import model_equations
 from ..simulation.simulate import integrator_settings
@@ -70,13 +73,15 @@ SOLVERS = ("cvodes", "adams", "idas")
 
 def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "cs",
                      rtol: float = 1e-10, atol: float = 1e-12, solver: str | None = None,
-                     **options) -> Path:
+                     nominals: dict | None = None, **options) -> Path:
     """Write ``compiled`` as an FMI 2.0 co-simulation FMU at ``path`` (a file name, or an
     existing directory: then ``<model>.fmu`` inside it); returns the FMU's path.
 
     rtol, atol  the integrator's tolerances (fixed in the FMU);
     solver      'cvodes' (ODE default: BDF), 'adams' (non-stiff ODE models) or 'idas' (DAE
-                default), as in acausal.simulate.
+                default), as in acausal.simulate;
+    nominals    nominal magnitudes by state name (or a variable that coincides with one),
+                replacing the model's, as simulate's ``nominal``.
     """
     if str(fmi_version) != "2.0":
         raise FmuExportError(f"the pythonfmu backend makes FMI 2.0 FMUs only, not "
@@ -87,7 +92,7 @@ def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str 
                            f"backend='native' for model exchange")
     if options:
         raise FmuExportError(f"unknown option(s) {sorted(options)} for the pythonfmu backend; "
-                           f"it takes rtol, atol and solver")
+                           f"it takes rtol, atol, solver and nominals")
     try:
         from pythonfmu.builder import FmuBuilder
     except ImportError:
@@ -95,7 +100,7 @@ def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str 
                            "pip install pythonfmu (or acausal[fmu])") from None
     path = fmu_path(path, compiled.name)
     ident = identifier(compiled.name)
-    functions, meta = _contents(compiled, ident, rtol, atol, solver)
+    functions, meta = _contents(compiled, ident, rtol, atol, solver, nominals)
     source = TEMPLATE.read_text(encoding="utf-8")
     shared = Path(numerics.__file__).read_text(encoding="utf-8")
     digest = hashlib.sha1((source + shared).encode()).hexdigest()[:10]
@@ -129,13 +134,17 @@ def export_pythonfmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str 
     return path
 
 
-def _contents(compiled, ident, rtol, atol, solver):
+def _contents(compiled, ident, rtol, atol, solver, nominals):
     """The serialized Functions and the JSON metadata of the FMU."""
     c = compiled
     variables = fmu_variables(c)
     has_alg = c.z.numel() > 0
     loops = c.has_loops
-    integrator, deviation = _integrator(c, solver, rtol, atol)
+    try:
+        scale = c.nominals(c.param_vector(), nominals)
+    except AcausalError as e:
+        raise FmuExportError(f"nominals: {e}") from None
+    integrator, deviation = _integrator(c, solver, rtol, atol, scale)
     rec = c.recorded_function
     functions = {
         "integrator": integrator,
@@ -177,6 +186,7 @@ def _contents(compiled, ident, rtol, atol, solver):
         "deviation_form": deviation,
         "init_labels": init_labels,
         "rtol": rtol, "atol": atol,
+        "nominal": [float(v) for v in scale],
     }
     return functions, meta
 
@@ -194,10 +204,12 @@ def _unit(name):
     return {"name": name, "base": base_unit_attributes(name)}
 
 
-def _integrator(c, solver, rtol, atol):
+def _integrator(c, solver, rtol, atol, scale):
     """The model's integrator over one step, in scaled time τ ∈ [0, 1] (t = t0 + h·τ), with
     parameters P = [p; u; t0; h] (closed loops: also [x0; ẋ0], integrating the deviation
-    δ = x − x0 − h·τ·ẋ0, consistent at τ = 0 with ẋ(δ) = 0). Options as in acausal.simulate."""
+    δ = x − x0 − h·τ·ẋ0, consistent at τ = 0 with ẋ(δ) = 0), in the states (or δ) and the
+    algebraic variables divided by their nominals ``scale``. Options as in
+    acausal.simulate."""
     has_alg = c.z.numel() > 0
     solver = solver or ("idas" if has_alg else "cvodes")
     if solver not in SOLVERS:
@@ -212,14 +224,15 @@ def _integrator(c, solver, rtol, atol):
     t0, h = ca.SX.sym("t0"), ca.SX.sym("h")
     P = [c.p, c.u, t0, h]
     t = t0 + h * tau
+    Nx, Nz = ca.DM(scale[:nx]), ca.DM(scale[nx:])
     if loops:
         d, x0, f0 = ca.SX.sym("delta", nx), ca.SX.sym("x0", nx), ca.SX.sym("f0", nx)
         P += [x0, f0]
-        ode, alg = c.f(t, x0 + h * tau * f0 + d, c.z, c.u, c.p)
-        dae = {"x": d, "ode": h * ode - h * f0}
+        ode, alg = c.f(t, x0 + h * tau * f0 + Nx * d, Nz * c.z, c.u, c.p)
+        dae = {"x": d, "ode": (h * ode - h * f0) / Nx}
     else:
-        ode, alg = c.f(t, c.x, c.z, c.u, c.p)
-        dae = {"x": c.x, "ode": h * ode}
+        ode, alg = c.f(t, Nx * c.x, Nz * c.z, c.u, c.p)
+        dae = {"x": c.x, "ode": h * ode / Nx}
     dae.update(t=tau, p=ca.vertcat(*P))
     if has_alg:
         dae.update(z=c.z, alg=alg)

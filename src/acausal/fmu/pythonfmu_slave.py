@@ -63,6 +63,8 @@ class AcausalSlave(Fmi2Slave):
                      f"behave the same: install casadi=={meta['casadi_version']})",
                      Fmi2Status.warning)
         self.nx, self.nz = len(meta["x_names"]), len(meta["z_names"])
+        scale = np.array(meta["nominal"], dtype=float)   # the integrator's [x; z] / scale
+        self.x_scale, self.z_scale = scale[:self.nx], scale[self.nx:]
         self.vars_meta = meta["variables"]
         kinds = {}
         for v in self.vars_meta:
@@ -95,8 +97,9 @@ class AcausalSlave(Fmi2Slave):
         self.by_vr[v["value_reference"]] = v
 
     def to_xml(self, model_options=dict()):
-        """pythonfmu's description plus units, derivative attributes and the complete model
-        structure (outputs, derivatives, initial unknowns), so that it validates."""
+        """pythonfmu's description plus units, derivative and nominal attributes and the
+        complete model structure (outputs, derivatives, initial unknowns), so that it
+        validates."""
         from xml.etree.ElementTree import Element, SubElement
         root = super().to_xml(model_options)
         elements = list(root.findall("ModelVariables/ScalarVariable"))
@@ -110,6 +113,8 @@ class AcausalSlave(Fmi2Slave):
                 real.set("derivative", str(index[v["derivative_of"]]))
             if v["start"] is not None and real.get("start") is not None:
                 real.set("start", repr(float(v["start"])))
+            if v["kind"] == "state" and self.x_scale[v["index"]] != 1.0:
+                real.set("nominal", repr(float(self.x_scale[v["index"]])))
         root.set("variableNamingConvention", self.meta["naming_convention"])
         if self.meta["units"]:
             defs = Element("UnitDefinitions")
@@ -293,6 +298,8 @@ class AcausalSlave(Fmi2Slave):
         return out
 
     def _advance(self, x, z, a, b):
+        """The states and algebraic variables at b from (x, z) at a; the integrator works on
+        them divided by their nominals (x_scale, z_scale)."""
         h = b - a
         if h <= 0:
             return x, z
@@ -300,15 +307,17 @@ class AcausalSlave(Fmi2Slave):
         if self.meta["deviation_form"]:
             f0 = np.asarray(self.fn["f"](a, x, z, self.u, self.p)[0].full(), dtype=float).ravel()
             P += [x, f0]
-            sol = self.fn["integrator"](x0=np.zeros(self.nx), z0=z, p=np.concatenate(P))
-            d = np.asarray(sol["xf"].full(), dtype=float).ravel()
-            return x + h * f0 + d, np.asarray(sol["zf"].full(), dtype=float).ravel()
-        kw = {"x0": x, "p": np.concatenate(P)}
+            sol = self.fn["integrator"](x0=np.zeros(self.nx), z0=z / self.z_scale,
+                                        p=np.concatenate(P))
+            d = np.asarray(sol["xf"].full(), dtype=float).ravel() * self.x_scale
+            zf = np.asarray(sol["zf"].full(), dtype=float).ravel() * self.z_scale
+            return x + h * f0 + d, zf
+        kw = {"x0": x / self.x_scale, "p": np.concatenate(P)}
         if self.nz:
-            kw["z0"] = z
+            kw["z0"] = z / self.z_scale
         sol = self.fn["integrator"](**kw)
-        xf = np.asarray(sol["xf"].full(), dtype=float).ravel()
-        zf = np.asarray(sol["zf"].full(), dtype=float).ravel() if self.nz else z
+        xf = np.asarray(sol["xf"].full(), dtype=float).ravel() * self.x_scale
+        zf = np.asarray(sol["zf"].full(), dtype=float).ravel() * self.z_scale if self.nz else z
         return xf, zf
 
     # ---- FMU state, termination -----------------------------------------------------------

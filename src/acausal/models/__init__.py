@@ -13,6 +13,7 @@ no compiler or simulation imports.
     linkages            FourBar, Parallelogram, DrivenFourBar, SliderCrank, add_link
     pendulums           PendulumChain: N-link planar pendulum
     drivetrains         Drivetrain: DC motor, gear, elastic shaft, fan drum
+    elastic_bearing     ElasticBearing: MSL's gearbox on an elastic bearing (nominals)
     oscillators         Oscillator: mass on a spring and a damper
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
@@ -21,6 +22,7 @@ from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
+from .elastic_bearing import ElasticBearing
 from .linkages import DrivenFourBar, FourBar, Parallelogram, SliderCrank, add_link
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
@@ -28,5 +30,5 @@ from .pendulums import PendulumChain
 
 __all__ = ["CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
-           "FourBar", "Parallelogram", "SliderCrank", "add_link", "Oscillator",
+           "ElasticBearing", "FourBar", "Parallelogram", "SliderCrank", "add_link", "Oscillator",
            "PendulumOnCart", "PendulumChain"]

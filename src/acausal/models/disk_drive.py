@@ -6,7 +6,10 @@ rotational damper c_T; the head (mass m) sits at radius L on a flexible tip that
 δ sideways (perpendicular to the arm, positive towards increasing θ) against a spring k. The
 disk is horizontal: gravity is normal to the plane of motion (World g = 0). Coordinates
 θ = ``pivot.phi``, δ = ``flexure.s``; input ``T`` [N.m]. The arm Body's centre of mass is on
-the pivot axis, so its mass (``arm.m``) does not enter the equations.
+the pivot axis, so its mass (``arm.m``) does not enter the equations. The flexure's
+deflection (a few µm) and its rate (a few cm/s) carry their magnitudes as nominals
+(``flexure.s`` 1e-6 m, ``flexure.v`` 1e-2 m/s): the integrators' absolute tolerance scales
+with them; the pivot damper's phi_rel is the arm's angle, with MSL's phi_nominal 1e-4 rad.
 
 Components (PlanarMechanics and MSL names):
 
@@ -29,6 +32,7 @@ HEAD_MASS = 1.0e-4          # kg
 RADIUS = 0.04               # m
 FLEXURE_STIFFNESS = 1.6e4   # N/m (a lateral mode near 2 kHz)
 PIVOT_DAMPING = 1.0e-6      # N.m.s/rad
+FLEXURE_NOMINAL = (1.0e-6, 1.0e-2)  # m, m/s: magnitudes of the deflection and its rate
 
 
 class DiskDriveHead(Model):
@@ -47,7 +51,8 @@ class DiskDriveHead(Model):
         self.pivot = Revolute(useFlange=True)
         self.arm = Body(m=ARM_MASS, I=I)
         self.tip = FixedTranslation(r=(L, 0.0))
-        self.flexure = Prismatic(r=(0.0, 1.0), useFlange=True)
+        self.flexure = Prismatic(r=(0.0, 1.0), useFlange=True,
+                                 nominal={"s": FLEXURE_NOMINAL[0], "v": FLEXURE_NOMINAL[1]})
         self.head = Body(m=m, I=0.0)
         self.pivotDamper = rot.Damper(d=c_T)
         self.flexureSpring = tr.Spring(c=k)

@@ -3,7 +3,12 @@
 The given values are hard equations v_i(x, z) = value_i; closed loops add Φ = 0 and Φ̇ = 0;
 algebraic equations 0 = alg hold. Among the states that satisfy them, the ones chosen are
 closest (least squares) to the states' start values, algebraic variables being free: each
-iteration projects the start values onto the equations linearized at the current point (exact in one step for 1-D kinematics).
+iteration projects the start values onto the equations linearized at the current point
+(exact in one step for 1-D kinematics). Guessed values (Modelica's start values of variables
+that are not fixed) replace the start values first: a guessed state's start is the guess; a
+guess on any other variable g(x, z) = value (a joint angle that is no coordinate, a port's
+position) moves the start values the least that gives it that value, the given values held,
+so that it pulls the projection towards it as a start value does, without being held.
 The cost grows with the number of equations k (a k × k system), not with the model size.
 """
 from __future__ import annotations
@@ -18,56 +23,76 @@ from ..numerics import ProjectionError, moved_note, project
 def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
                   guess: dict | None = None):
     """(x, z) consistent with ``x0`` (names → values, held exactly) at time t0 with
-    parameters p, closest to the start values, where ``guess`` (state names → values)
-    replaces them. Closed loops are assembled this way: fix the driving joint in x0, guess
-    the others. Warns, naming them, when loop assembly moved states off their guess or start
-    value."""
+    parameters p, closest to the start values, moved first by ``guess`` (names of any
+    variables → values, see the module's docstring). Closed loops are assembled this way:
+    fix the driving joint in x0, guess the other joints (or the joint that closes the loop)
+    on the branch wanted. Warns, naming them, when loop assembly moved states off their
+    guess or start value."""
     w = ca.vertcat(model.x, model.z)
     nx = model.x.numel()
-    hard, labels, targets = [], [], []
     names = model.x_names + model.z_names
-    for name, value in x0.items():
+    given = _rows(model, "x0", x0, w)
+    eqs = [h - v for h, v in zip(given, x0.values())]
+    labels, targets = list(x0), [float(v) for v in x0.values()]
+    more, more_labels = model_equations(model)
+    start = np.array(model.start(p), dtype=float).ravel()
+    guess = dict(guess or {})
+    soft = {n: v for n, v in guess.items() if n not in names}
+    for name, value in guess.items():
+        if name in names:
+            start[names.index(name)] = float(value)
+    wk = start.copy()
+    for name, value in x0.items():          # linearize where the fixed values put the states
+        if name in names:
+            wk[names.index(name)] = float(value)
+    if soft:                                # the start values that give the guessed values
+        rows = eqs + [g - v for g, v in zip(_rows(model, "guess", soft, w), soft.values())]
+        start = wk = _project(model, rows, labels + list(soft),
+                              targets + [float(v) for v in soft.values()], start, wk, nx,
+                              (t0, u0, p), "x0 and guess")
+    if not eqs + more:
+        return start[:nx], start[nx:]
+    wk = _project(model, eqs + more, labels + more_labels, targets, start, wk, nx, (t0, u0, p),
+                  "x0")
+    note = moved_note(names[:nx], start, wk, held=x0) if model.has_loops else None
+    if note:
+        warn_user(note)
+    return wk[:nx], wk[nx:]
+
+
+def _rows(model, what: str, values: dict, w: ca.SX) -> list:
+    """The expressions of the variables named in ``values`` (x0 or guess), each depending
+    on the states; InitializationError naming the first that is unknown or fixed."""
+    rows = []
+    for name in values:
         try:
             ex = model.expression(name)
         except KeyError as e:
-            raise InitializationError(f"x0: {e.args[0]}") from None
+            raise InitializationError(f"{what}: {e.args[0]}") from None
         if not ca.depends_on(ex, w):
-            raise InitializationError(f"x0: '{name}' does not depend on any state (it is fixed "
-                                      f"by the model); remove it from x0")
-        hard.append(ex)
-        labels.append(name)
-        targets.append(float(value))
-    eqs = [h - v for h, v in zip(hard, targets)]
-    more, more_labels = model_equations(model)
-    eqs += more
-    labels += more_labels
-    start = np.array(model.start(p), dtype=float).ravel()
-    for name, value in (guess or {}).items():
-        if name not in names:
-            raise InitializationError(f"guess: '{name}' is not a state of '{model.name}' (its "
-                                      f"states: {', '.join(names[:8])}...)")
-        start[names.index(name)] = float(value)
-    if not eqs:
-        return start[:nx], start[nx:]
+            raise InitializationError(f"{what}: '{name}' does not depend on any state (it is "
+                                      f"fixed by the model); remove it from {what}")
+        rows.append(ex)
+    return rows
+
+
+def _project(model, eqs, labels, targets, start, wk, nx, point, given):
+    """``numerics.project`` of ``start`` onto eqs = 0 (its first len(targets) rows the given
+    values), iterating from wk at point = (t0, u0, p)."""
+    w = ca.vertcat(model.x, model.z)
     H = ca.vertcat(*[ca.vec(e) for e in eqs])
     f = ca.Function("init", [model.t, w, model.u, model.p], [H, ca.jacobian(H, w)])
+    t0, u0, p = point
 
     def equations(wk):
         h, J = f(t0, wk, u0, p)
         return np.array(h, dtype=float).ravel(), np.array(J, dtype=float)
 
-    wk = start.copy()
-    for name, value in x0.items():          # linearize where the fixed values put the states
-        if name in names:
-            wk[names.index(name)] = float(value)
     try:
-        wk = project(equations, start, wk, nx, labels, targets, positions=model.position_states)
+        return project(equations, start, wk, nx, labels, targets, given,
+                       positions=model.position_states)
     except ProjectionError as e:
         raise InitializationError(str(e)) from None
-    note = moved_note(names[:nx], start, wk, held=x0) if model.has_loops else None
-    if note:
-        warn_user(note)
-    return wk[:nx], wk[nx:]
 
 
 def model_equations(model):

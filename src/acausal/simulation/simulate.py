@@ -19,7 +19,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              inputs: dict | None = None, x0: dict | None = None, guess: dict | None = None,
              solver: str | None = None,
              rtol: float = 1e-8, atol: float = 1e-10, max_step: float | None = None,
-             options: dict | None = None) -> Result:
+             nominal: dict | None = None, options: dict | None = None) -> Result:
     """Simulate ``model`` from t = 0 (or t[0]) to ``t_final`` [s].
 
     t        output grid (default: 501 points); params: overrides by dotted name;
@@ -28,8 +28,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              ``acausal.simulation.inputs``);
     x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``),
              held exactly;
-    guess    start values by state name, used where x0 and the constraints leave freedom
-             (closed loops: fix the driver in x0, guess the other joints);
+    guess    start values by the dotted name of any variable, used where x0 and the
+             constraints leave freedom (closed loops: fix the driver in x0, guess the other
+             joints, or a joint angle that is no coordinate, e.g. the loop-closing one);
     solver   'cvodes' (BDF with Newton iterations, for stiff mechanics), 'adams' (cvodes'
              Adams method with functional iteration: no Jacobians, faster for non-stiff models
              such as pendulums and linkages without stiff springs), 'idas' (DAEs: closed loops,
@@ -38,7 +39,13 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              ODEs 'adams' when the spectral radius at the initial state is small against the
              time span (``acausal.simulation.stiffness``), else 'cvodes' — and 'cvodes' again
              should Adams fail or work too hard. ``Result.solver`` says which ran;
-    rtol, atol, max_step: integrator tolerances and step limit.
+    rtol, atol, max_step: integrator tolerances and step limit; the absolute tolerance
+             of a state (or algebraic variable) is atol·nominal (Modelica's nominal: the
+             error control of a state of size 1e-4 needs atol 1e-4 times smaller);
+    nominal  nominal magnitudes by the dotted name of a state or of a variable that
+             coincides with one (``springDamper.w_rel``), replacing the model's
+             (``CompiledModel.nominals``: 1 unless a component declares one, e.g.
+             MSL's phi_nominal of a SpringDamper, or ``nominal={...}`` on a component).
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
@@ -55,6 +62,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     for name, values in (("x0", x0), ("guess", guess)):
         _check_finite(name, values)
     xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess)
+    scale = model.nominals(p, nominal)           # the integrator works on [x; z] / scale
+    nx = model.x.numel()
     mobility = None
     if model.has_loops:                  # enforce the loop rows independent at this assembly
         active, mobility = model.mobility_at(grid[0], xs, zs, u0, p)
@@ -67,6 +76,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, ca.SX(p)])
     rho = None if has_alg or not model.x.numel() else _spectral_radius(model, ode, p, u0, xs,
                                                                          grid[0])
+    ode, alg = scaled(model, ode, alg, scale)
     auto = solver is None
     if auto:
         solver = "idas" if has_alg else (
@@ -93,8 +103,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
 
     def integrate(plugin, opts):
         dae = problem(solver)
-        X = [np.asarray(xs, dtype=float).reshape(-1, 1)]
-        Z = [np.asarray(zs, dtype=float).reshape(-1, 1)]
+        X = [np.asarray(xs, dtype=float).reshape(-1, 1) / scale[:nx, None]]
+        Z = [np.asarray(zs, dtype=float).reshape(-1, 1) / scale[nx:, None]]
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
             return np.zeros((0, grid.size)), np.zeros((0, grid.size))
         x, z = X[0][:, 0], Z[0][:, 0]
@@ -133,7 +143,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             X.append(xf[:, :len(pts)])
             Z.append(zf[:, :len(pts)])
             x, z = xf[:, -1], (zf[:, -1] if has_alg else z)
-        return np.hstack(X), np.hstack(Z)
+        return np.hstack(X) * scale[:nx, None], np.hstack(Z) * scale[nx:, None]
 
     try:
         X, Z = integrate(plugin, opts)
@@ -150,6 +160,19 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
     res.solver = solver
     return res
+
+
+def scaled(model, ode, alg, nominal):
+    """The DAE ẋ = ode, 0 = alg in [x; z] divided by their nominals (x = N_x·x̃,
+    z = N_z·z̃): dx̃/dt = ode/N_x, 0 = alg, with the model's symbols x, z standing for x̃,
+    z̃. The integrator's absolute tolerance atol on x̃_i is atol·nominal_i on x_i (CVODES
+    takes one absolute tolerance only); its relative error test is unchanged."""
+    nx = model.x.numel()
+    if np.all(nominal == 1.0):
+        return ode, alg
+    Nx, Nz = ca.DM(nominal[:nx]), ca.DM(nominal[nx:])
+    ode, alg = ca.substitute([ode, alg], [model.x, model.z], [Nx * model.x, Nz * model.z])
+    return ode / Nx, alg
 
 
 def integrator_settings(model, solver: str, rtol: float, atol: float,
