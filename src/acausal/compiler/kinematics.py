@@ -31,7 +31,8 @@ order and not in another). ``choose_tree`` decides by mass instead:
   deferred (``build_tree``'s ``defer``: it becomes a free root only after the other nodes of
   its rank), which moves the loop's cut to its joint; a deferral that lowers the number of
   massless coordinates is kept, and the search goes on from there (each candidate tried
-  once, in node order).
+  once, the last declared first: where mass leaves a choice, the joints declared first
+  keep their coordinates).
 
 In KinematicLoop (a pendulum hangs from the end of the first of two massless links) this
 cuts the loop at that link's ground joint, so that the path to the pendulum runs through
@@ -40,8 +41,7 @@ crank's or the slider's ground joint, where both ends of the rod move a mass. Wh
 gives every coordinate mass (a massless link between two joints of a loop whose masses sit
 elsewhere), the massless coordinates that remain are dependent coordinates of the loop:
 ``motion.solve_motion`` takes their accelerations from the loop constraints instead of from a
-mass. Either way the motion is the same; the choice (ties go to node order, i.e.
-declaration order) only decides which joints are states.
+mass. Either way the motion is the same; the choice only decides which joints are states.
 """
 from __future__ import annotations
 
@@ -189,9 +189,10 @@ def choose_tree(nodes: list[Node], relations: list, der_table: dict, state_names
     kinetic energy); it is called only if the graph has loops. The tree in declaration order
     is kept when all its coordinates carry mass. Otherwise each coordinate that shares a loop
     row with a massless one is a candidate: deferring it (``build_tree``'s ``defer``) moves
-    the loop's cut to it. Candidates are tried in node order, each once; one that lowers the
-    count of massless coordinates is kept, and the search goes on from that tree until the
-    count is 0 or no candidate is left. The relations keep what the chosen tree fired (it is
+    the loop's cut to it. Candidates are tried each once, from the last declared back (where
+    mass leaves a choice, the joints declared first keep their coordinates, as in the tree of
+    declaration order); one that lowers the count of massless coordinates is kept, and the
+    search goes on from that tree until the count is 0 or no candidate is left. The relations keep what the chosen tree fired (it is
     built last), and ``der_table`` holds its symbols.
     """
     base = dict(der_table)
@@ -202,7 +203,7 @@ def choose_tree(nodes: list[Node], relations: list, der_table: dict, state_names
     count, candidates = _assess(tree, nodes, massive)
     defer, tried = frozenset(), set()
     while count:
-        todo = [c for c in candidates if c not in tried and c not in defer]
+        todo = [c for c in reversed(candidates) if c not in tried and c not in defer]
         if not todo:
             break
         for c in todo:
