@@ -192,8 +192,9 @@ def choose_tree(nodes: list[Node], relations: list, der_table: dict, state_names
     the loop's cut to it. Candidates are tried each once, from the last declared back (where
     mass leaves a choice, the joints declared first keep their coordinates, as in the tree of
     declaration order); one that lowers the count of massless coordinates is kept, and the
-    search goes on from that tree until the count is 0 or no candidate is left. The relations keep what the chosen tree fired (it is
-    built last), and ``der_table`` holds its symbols.
+    search goes on from that tree until the count is 0 or no candidate is left. The
+    relations keep what the chosen tree fired (it is built last), and ``der_table`` holds
+    its symbols.
     """
     base = dict(der_table)
     tree = build_tree(nodes, relations, der_table, state_names)
