@@ -52,8 +52,9 @@ class Motion:
     former) with derivatives ``qdd_diff``; algebraic variables ``alg_vars`` (massless nodes'
     rates or positions, then the loop multipliers μ, ν) with residuals ``alg_res``. ``qdd``
     are all accelerations, ``lam`` the loop multipliers λ (the constraint reactions),
-    ``active`` the switches of the loop rows; ``substitute_from`` → ``substitute_to`` replaces what the solve eliminated
-    (the rates of spring-only massless nodes) in other expressions."""
+    ``active`` the switches of the loop rows; ``substitute_from`` → ``substitute_to``
+    replaces what the solve eliminated (the rates of spring-only massless nodes) in other
+    expressions."""
     method: str
     q_diff: ca.SX
     q_diff_dot: ca.SX
