@@ -3,7 +3,8 @@
 1. flatten (``flatten``); parameters become SX symbols, held in the compile's own workspace
    (``Workspace.param_symbols``, read by the components through ``symbolic_parameters``);
 2. every component declares its structure; kinematic graph and coordinates
-   (``kinematics.build_tree``);
+   (``kinematics.choose_tree``: for a graph with loops, the tree whose coordinates carry
+   mass, from a dry run of the physics with every node free, ``_massive_nodes``);
 3. every component contributes its physics given the motion of its ports (``batch``);
 4. Lagrange's residuals by algorithmic differentiation for the coordinates q and the
    relaxations ε of the tree relations (``lagrange.residuals``);
@@ -28,7 +29,7 @@ from .batch import run_physics
 from .builders import StructureBuilder, Workspace
 from .compiled import CompiledModel, ScalarVariable, coinciding
 from .flatten import flatten
-from .kinematics import Node, build_tree
+from .kinematics import Node, choose_tree
 from .lagrange import Lagrange, Residuals, residuals
 from .loops import analyse_loops
 from .motion import solve_motion
@@ -73,11 +74,52 @@ def _compile(model: Model) -> CompiledModel:
                 ws.node_of[p] = n
         for r in ws.relations:
             r.nodes = [ws.node_of[p] for p in r.ports]
-        tree = build_tree(nodes, ws.relations, ws.der_table, ws.state_names)
+        tree = choose_tree(nodes, ws.relations, ws.der_table, ws.state_names,
+                           lambda: _massive_nodes(flat, ws, len(nodes)))
         run_physics(ws, flat.components)
     ws.p = _stack([s for s, _ in params])
     ws.p_default = [v.start for _, v in params]
     return _assemble(model, ws, tree, params, fixed)
+
+
+def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
+    """Indices of the nodes with mass: those whose velocity enters the kinetic energy.
+
+    A dry run in a workspace of its own: every component declares its structure again
+    (the same nodes, in the same order, as deterministic as the first time), every node gets
+    position, velocity and acceleration symbols of its own, free of any tree, and every
+    component contributes its physics; a node has mass when the kinetic energy is not
+    linear in its velocity. The components keep nothing of it (as of any compile)."""
+    probe = Workspace(t=ws.t)
+    probe.der_table["t"] = 1
+    probe.source, probe.components = ws.source, ws.components
+    probe.param_symbols = dict(ws.param_symbols)
+    for c in flat.components:
+        c.structure(StructureBuilder(probe, c))
+    groups = [list(g) for g in flat.groups] + [[n] for n in probe.internal_nodes]
+    if len(groups) != n_nodes:
+        raise StructureError("internal: a component declared different nodes when asked "
+                             "twice (please report)")
+    vels = []
+    for i, ports in enumerate(groups):
+        node = Node(i, ports)
+        dim = node.domain.dim
+        node.pos, node.vel, node.acc = (ca.SX.sym(f"probe{i}.{k}", dim)
+                                        for k in ("pos", "vel", "acc"))
+        for a, b in ((node.pos, node.vel), (node.vel, node.acc), (node.acc, None)):
+            for k in range(dim):
+                probe.der_table[a[k].name()] = b[k] if b is not None else None
+        for p in ports:
+            probe.node_of[p] = node
+        vels.append(node.vel)
+    run_physics(probe, flat.components)
+    if not probe.kinetic:
+        return set()
+    v = ca.vertcat(*vels)
+    T = ca.sum1(ca.vertcat(*probe.kinetic))
+    hessian = ca.jacobian_sparsity(ca.gradient(T, v), v)
+    owner = [i for i, vel in enumerate(vels) for _ in range(vel.numel())]
+    return {owner[k] for k in hessian.get_triplet()[0]}
 
 
 def _declare_parameters(ws: Workspace, components):

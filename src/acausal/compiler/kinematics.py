@@ -11,6 +11,37 @@ closes a loop and becomes a constraint Φ = 0.
 Every relation that determines a node is relaxed by a virtual coordinate ε (zero in the
 model); the generalized force conjugate to ε is the relation's reaction, from which the flows
 (cut forces, torques) at its ports are recovered.
+
+Where the graph has closed loops, the tree is a choice: the relation that closes a loop
+decides which joints' coordinates the tree keeps. Taking relations in declaration order
+would let that order decide whether the coordinates carry mass (PlanarMechanics'
+KinematicLoop and PistonEngine, whose loops run through massless links, compiled in one
+order and not in another). ``choose_tree`` decides by mass instead:
+
+- which nodes have mass is known from the components' physics, not their structure (a
+  Body's frame, an Inertia's centre, a custom component's kinetic energy), and physics
+  needs the nodes' motion, i.e. a tree. So for a graph with loops the compiler runs the
+  components' physics once more with every node free (``assemble._massive_nodes``: each
+  node its own position, velocity and acceleration symbols) and takes the nodes whose
+  velocity enters the kinetic energy (a non-zero block of ∂²T/∂v²). Models without loops
+  skip this dry run.
+- a coordinate carries mass when some node with mass moves with it (depends on it in the
+  tree). The tree in declaration order is kept when all its coordinates do. Otherwise the
+  coordinates that share a loop row with a massless one are candidates: a candidate is
+  deferred (``build_tree``'s ``defer``: it becomes a free root only after the other nodes of
+  its rank), which moves the loop's cut to its joint; a deferral that lowers the number of
+  massless coordinates is kept, and the search goes on from there (each candidate tried
+  once, the last declared first: where mass leaves a choice, the joints declared first
+  keep their coordinates).
+
+In KinematicLoop (a pendulum hangs from the end of the first of two massless links) this
+cuts the loop at that link's ground joint, so that the path to the pendulum runs through
+every other joint of the loop; in PistonEngine (a slider-crank with a massless rod) at the
+crank's or the slider's ground joint, where both ends of the rod move a mass. Where no tree
+gives every coordinate mass (a massless link between two joints of a loop whose masses sit
+elsewhere), the massless coordinates that remain are dependent coordinates of the loop:
+``motion.solve_motion`` takes their accelerations from the loop constraints instead of from a
+mass. Either way the motion is the same; the choice only decides which joints are states.
 """
 from __future__ import annotations
 
@@ -150,13 +181,73 @@ class Tree:
     loop_rows: list = field(default_factory=list)  # a name for each row of Φ
 
 
+def choose_tree(nodes: list[Node], relations: list, der_table: dict, state_names: dict,
+                massive_nodes) -> Tree:
+    """The tree of ``build_tree`` whose coordinates carry mass, where the loops leave a choice.
+
+    ``massive_nodes()`` gives the indices of the nodes with mass (their velocity enters the
+    kinetic energy); it is called only if the graph has loops. The tree in declaration order
+    is kept when all its coordinates carry mass. Otherwise each coordinate that shares a loop
+    row with a massless one is a candidate: deferring it (``build_tree``'s ``defer``) moves
+    the loop's cut to it. Candidates are tried each once, from the last declared back (where
+    mass leaves a choice, the joints declared first keep their coordinates, as in the tree of
+    declaration order); one that lowers the count of massless coordinates is kept, and the
+    search goes on from that tree until the count is 0 or no candidate is left. The
+    relations keep what the chosen tree fired (it is built last), and ``der_table`` holds
+    its symbols.
+    """
+    base = dict(der_table)
+    tree = build_tree(nodes, relations, der_table, state_names)
+    if not tree.loops:
+        return tree
+    massive = massive_nodes()
+    count, candidates = _assess(tree, nodes, massive)
+    defer, tried = frozenset(), set()
+    while count:
+        todo = [c for c in reversed(candidates) if c not in tried and c not in defer]
+        if not todo:
+            break
+        for c in todo:
+            tried.add(c)
+            trial = build_tree(nodes, relations, dict(base), state_names, defer | {c})
+            trial_count, trial_candidates = _assess(trial, nodes, massive)
+            if trial_count < count:
+                count, candidates, defer = trial_count, trial_candidates, defer | {c}
+                break
+    if tried:                 # the trials left their state in the relations: build the choice
+        der_table.clear()
+        der_table.update(base)
+        tree = build_tree(nodes, relations, der_table, state_names, defer)
+    return tree
+
+
+def _assess(tree: Tree, nodes: list[Node], massive: set[int]) -> tuple[int, list[int]]:
+    """How many of the tree's coordinates move no node with mass, and the free-root nodes
+    (indices, in node order) whose coordinates share a loop row with such a coordinate: the
+    candidates for cutting those loops elsewhere."""
+    nq = tree.q.numel()
+    pos = [n.pos for n in nodes if n.index in massive]
+    moved = set(ca.jacobian_sparsity(ca.vertcat(*pos), tree.q).get_triplet()[1]) \
+        if pos and nq else set()
+    massless = set(range(nq)) - moved
+    if not massless or not tree.loop_residual.numel():
+        return len(massless), []
+    rows, cols = ca.jacobian_sparsity(tree.loop_residual, tree.q).get_triplet()
+    loops = {r for r, k in zip(rows, cols) if k in massless}
+    near = {k for r, k in zip(rows, cols) if r in loops}
+    return len(massless), [n.index for n in nodes
+                           if n.coordinate and any(k in near for k in n.coordinate)]
+
+
 def build_tree(nodes: list[Node], relations: list, der_table: dict,
-               state_names: dict) -> Tree:
+               state_names: dict, defer=frozenset()) -> Tree:
     """Choose coordinates, give every node its position, velocity and acceleration.
 
     ``der_table`` maps symbol names to their time derivatives; it is extended with the
     coordinates and relaxations created here. ``state_names`` maps ports to the names of the
-    coordinates they get if they need free ones (StructureBuilder.states).
+    coordinates they get if they need free ones (StructureBuilder.states). ``defer``: indices
+    of nodes that become free roots only after the other candidates of their rank (so that
+    a relation at such a node closes a loop rather than starting a branch).
     """
     by_node: dict[int, list] = {n.index: [] for n in nodes}
     for r in relations:
@@ -168,7 +259,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     q, qd, qdd, q_names, qd_names = [], [], [], [], []
     fired, lin_loops, nl_loops = [], [], []       # nl_loops: (relation, Φ rows, flows)
     for n in nodes:
-        n.form = None
+        n.form = n.coordinate = None
         n.pos = n.vel = n.acc = None
 
     def known(n: Node) -> bool:
@@ -236,9 +327,12 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
                 grounded.append(new)
     propagate(grounded)
     # free coordinates: joints' and masses' own (internal nodes) first, then ports that name
-    # their coordinates (a free Body), then anything
-    rank = lambda n: (0 if any(isinstance(p, InternalNode) and p.preferred for p in n.ports)  # noqa: E731
-                      else 1 if n.preferred(state_names) else 2)
+    # their coordinates (a free Body), then anything; deferred nodes last within their rank
+    def rank(n: Node) -> tuple:
+        kind = 0 if any(isinstance(p, InternalNode) and p.preferred for p in n.ports) \
+            else 1 if n.preferred(state_names) else 2
+        return kind, n.index in defer
+
     order = sorted(nodes, key=rank)
     for n in order:
         if known(n):

@@ -4,6 +4,18 @@ The accelerations are solved elementwise when the mass matrix is diagonal (1-D c
 the O(N) articulated-body recursion for planar trees of rigid bodies, and by a symbolic solve
 otherwise. Closed loops get multipliers in the stabilized index-2 form of Gear, Gupta and
 Leimkuhler; coordinates without mass become algebraic variables of a semi-explicit DAE.
+
+A coordinate without mass that a loop constraint depends on (a joint between two massless
+links of a loop, where no choice of the tree gives it mass: ``kinematics.choose_tree``) is
+a dependent coordinate of the loop: the constraint rows determine it, not a law of its own.
+It stays with the loop's coordinates: its acceleration comes from the constrained solve
+(its row of the mass matrix is zero, the row Φ̈ = 0 fixes it; the multipliers λ make its
+force balance hold), its position and velocity are held on Φ = 0 and Φ̇ = 0 by the same
+stabilizing multipliers as the others. The constrained solve is regular when every motion
+the loops allow moves some mass; structurally, when the massless coordinates of the loops
+can each be matched to a loop row of its own. A loop whose motion moves no mass along some
+coordinate (a massless mechanism held only by springs and dampers) is refused, naming the
+coordinates.
 """
 from __future__ import annotations
 
@@ -35,13 +47,14 @@ class GGL:
 class Motion:
     """The mechanical part of the DAE, after the accelerations are solved.
 
-    States: ``q_diff`` (coordinates with mass, and massless ones a damper holds) with rates
-    ``q_diff_dot``, and ``qd_diff`` (rates of the coordinates with mass) with derivatives
-    ``qdd_diff``; algebraic variables ``alg_vars`` (massless nodes' rates or positions, then
-    the loop multipliers μ, ν) with residuals ``alg_res``. ``qdd`` are all accelerations,
-    ``lam`` the loop multipliers λ (the constraint reactions), ``active`` the switches of
-    the loop rows; ``substitute_from`` → ``substitute_to`` replaces what the solve eliminated
-    (the rates of spring-only massless nodes) in other expressions."""
+    States: ``q_diff`` (coordinates with mass and the massless ones the loops determine, then
+    massless ones a damper holds) with rates ``q_diff_dot``, and ``qd_diff`` (rates of the
+    former) with derivatives ``qdd_diff``; algebraic variables ``alg_vars`` (massless nodes'
+    rates or positions, then the loop multipliers μ, ν) with residuals ``alg_res``. ``qdd``
+    are all accelerations, ``lam`` the loop multipliers λ (the constraint reactions),
+    ``active`` the switches of the loop rows; ``substitute_from`` → ``substitute_to``
+    replaces what the solve eliminated (the rates of spring-only massless nodes) in other
+    expressions."""
     method: str
     q_diff: ca.SX
     q_diff_dot: ca.SX
@@ -88,6 +101,35 @@ def _check_massless(tree, R0, vel_alg: list[int], pos_alg: list[int]) -> None:
         f"it), so nothing fixes its motion; give it a mass, or connect a spring or damper")
 
 
+def _loop_determined(phi_q: ca.SX, massless: list[int], names: list[str]) -> list[int]:
+    """The massless coordinates that the loop rows enter, each matched (structurally) to a
+    row of its own: the constrained solve determines them. A massless coordinate in a loop
+    that no row is left for moves no mass along a motion the loops allow: refused."""
+    rows_of: dict[int, list[int]] = {}
+    for r, c in zip(*phi_q.sparsity().get_triplet()):
+        rows_of.setdefault(c, []).append(r)
+    entered = [k for k in massless if k in rows_of]
+    owner: dict[int, int] = {}                    # row -> coordinate (augmenting paths)
+
+    def augment(k, seen):
+        for r in rows_of[k]:
+            if r not in seen:
+                seen.add(r)
+                if r not in owner or augment(owner[r], seen):
+                    owner[r] = k
+                    return True
+        return False
+
+    free = [k for k in entered if not augment(k, set())]
+    if free:
+        raise StructureError(
+            f"a closed kinematic loop can move without moving any mass: its coordinates "
+            f"{', '.join(names[k] for k in entered)} carry none, and the loop constraints "
+            f"leave {len(free)} of them free (a massless mechanism held only by springs or "
+            f"dampers is not supported); give a part of the loop mass or inertia")
+    return entered
+
+
 def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
     """The Motion of the residuals ``R_q`` (in q, q̇, q̈ of ``tree``) with loop constraints
     ``phi``; ``bodies`` = (rigid bodies, other kinetic energy) for the recursion."""
@@ -118,11 +160,14 @@ def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
     A_MM = A[massive, massive] if A is not None and massive else ca.SX(0, 0)
     ggl = None
     if nc:
-        if massless:
-            raise StructureError(
-                "a closed kinematic loop together with massless nodes "
-                f"({', '.join(tree.q_names[k] for k in massless)}) is not supported yet; give "
-                "those nodes a mass")
+        # the coordinates the constrained solve covers: those with mass, and the massless ones
+        # that the loop rows determine (the others are held by their own forces, below)
+        phi_q = ca.jacobian(phi, q)
+        in_loop = _loop_determined(phi_q, massless, tree.q_names)
+        massless = [k for k in massless if k not in in_loop]
+        solved = sorted(massive + in_loop)
+        qdM = _rows(qd, solved)
+        A_MM = A[solved, solved]
         # accelerations and multipliers from [M Φ_qᵀ; Φ_q 0][q̈; λ] = [−R0; −γ], γ = Φ̈ at
         # q̈ = 0; the positions and velocities are then held on Φ = 0 and Φ̇ = 0 exactly (to
         # the solver's Newton tolerance) by the stabilized index-2 form (GGL). Unlike
@@ -130,19 +175,23 @@ def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
         # partitioning it needs no choice of independent coordinates. Rows found redundant
         # at the assembled initial configuration are switched off by their entry of
         # ``active`` (0): then λ, μ, ν of that row are 0 and its equation drops.
-        phi_q = ca.jacobian(phi, q)
+        phi_s = phi_q[:, solved]
         # (the rates of prescribed motion in Φ bring back signal placeholders: resolved)
         phid = der_with(phi, ws.der_table)
         gamma = ca.substitute(der_with(phid, ws.der_table), qdd, ca.SX.zeros(nq))
         phid, gamma = resolve([phid, gamma])
         active = ca.SX.sym("loops.active", nc)
         on, off = ca.diag(active), ca.diag(1 - active)
-        KKT = ca.blockcat([[A_MM, ca.mtimes(phi_q.T, on)], [ca.mtimes(on, phi_q), off]])
-        sol = ca.solve(KKT, _vc(-R0, -active * gamma))
-        qdd_sol, lam = sol[:nq], sol[nq:]
+        KKT = ca.blockcat([[A_MM, ca.mtimes(phi_s.T, on)], [ca.mtimes(on, phi_s), off]])
+        sol = ca.solve(KKT, _vc(-_rows(R0, solved), -active * gamma))
+        ns = len(solved)
+        qdd_sol = ca.SX.zeros(nq)
+        qdd_sol[solved] = sol[:ns]
+        lam = sol[ns:]
         mu, nu = ca.SX.sym("loops.mu", nc), ca.SX.sym("loops.nu", nc)
-        ggl = GGL(mu, nu, ca.mtimes(phi_q.T, active * mu), ca.mtimes(phi_q.T, active * nu),
+        ggl = GGL(mu, nu, ca.mtimes(phi_s.T, active * mu), ca.mtimes(phi_s.T, active * nu),
                   active * phi + (1 - active) * mu, active * phid + (1 - active) * nu)
+        massive = solved
         method = "constrained (KKT) solve"
     else:
         lam = active = ca.SX(0, 1)
@@ -167,7 +216,7 @@ def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
     alg_res = _vc(_rows(R0, vel_alg), _rows(R0, pos_alg))
     n_node = alg_vars.numel()
     if ggl is not None:
-        q_diff_dot = q_diff_dot + ggl.dq
+        q_diff_dot = q_diff_dot + _vc(ggl.dq, ca.SX.zeros(len(vel_alg)))
         qdd_diff = qdd_diff + ggl.dv
         alg_vars = _vc(alg_vars, ggl.mu, ggl.nu)
         alg_res = _vc(alg_res, ggl.phi, ggl.phid)

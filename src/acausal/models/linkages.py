@@ -1,16 +1,28 @@
 """Planar linkages with closed kinematic loops: the four-bar (crank-rocker), its parallelogram
-and double-parallelogram variants, the four-bar with a driven crank, and the slider-crank.
+and double-parallelogram variants, the four-bar with a driven crank, the slider-crank, and
+PlanarMechanics' two examples whose loops run through massless links, KinematicLoop and
+PistonEngine.
 
-Every link is a bar (two FixedTranslations) with a Body at its middle, a slender rod
-(I = m L²/12): ``add_link``. The compiler takes the tree joints' angles as coordinates and
-keeps the joint that closes a loop as constraint rows Φ(q) = 0.
+Every link of the first ones is a bar (two FixedTranslations) with a Body at its middle, a
+slender rod (I = m L²/12): ``add_link``. The compiler takes the tree joints' angles as
+coordinates and keeps the joint that closes a loop as constraint rows Φ(q) = 0.
+
+KinematicLoop and PistonEngine are PlanarMechanics' examples line by line (component names,
+parameters, connections); their links are massless FixedTranslations, so which joint the
+compiler cuts decides whether the tree's coordinates carry mass. ``order`` permutes the
+order in which their components are declared (tests check that the results do not depend
+on it).
 """
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from ..components import rotational as rot
 from ..components import signals as sig
+from ..components import translational as tr
 from ..components.planar import Body, Fixed, FixedTranslation, Prismatic, Revolute, World
 from ..core import Input, Model
+from ..errors import StructureError
 
 FOUR_BAR_LENGTHS = (1.0, 0.3, 1.0, 0.8)      # m: ground L0, crank L1, coupler L2, rocker L3
 FOUR_BAR_MASSES = (0.5, 1.0, 0.8)            # kg: crank, coupler, rocker
@@ -151,3 +163,121 @@ class SliderCrank(Model):
         self.connect(self.track.frame, self.prismatic.frame_a)
         self.connect(self.prismatic.frame_b, self.slider.frame_a)
         self.connect(self.rev3.frame_b, self.slider.frame_a)
+
+
+# ---- PlanarMechanics.Examples: loops through massless links --------------------------------
+def _declare(model: Model, parts: dict, order) -> None:
+    """Add ``parts`` (name -> component, in PlanarMechanics' declaration order) to ``model``
+    in ``order``: None (PlanarMechanics' order), "reversed", or every name in some order."""
+    names = list(parts)
+    if order is None:
+        chosen = names
+    elif isinstance(order, str):
+        if order != "reversed":
+            raise StructureError(f"{type(model).__name__}: order is None, 'reversed' or a "
+                                 f"permutation of {names}, got {order!r}")
+        chosen = names[::-1]
+    else:
+        chosen = list(order)
+        if sorted(chosen) != sorted(names):
+            raise StructureError(f"{type(model).__name__}: order must name each of {names} "
+                                 f"once, got {chosen}")
+    for name in chosen:
+        setattr(model, name, parts[name])
+
+
+class KinematicLoop(Model):
+    """PlanarMechanics.Examples.KinematicLoop: a triangle of two massless links of 0.5 m and a
+    prismatic base, held by a 1-D spring-damper on the prismatic joint, with a pendulum (a
+    Body, m = 1 kg, I = 0.1 kg.m², on a massless rod of 0.6 m) hanging from the apex.
+
+        fixed ── revolute1 ── fixedTranslation1 (0, −0.5) ── revolute2 ──┐  (apex)
+          └──── prismatic1 (s) ── revolute3 ── fixedTranslation2 (0, −0.5) ┘
+        apex ── revolute4 ── fixedTranslation3 (0, −0.6) ── body
+        fixed1D ── springDamper1D (c = 20 N/m, d = 4 N.s/m, s_rel0 = 0.4 m) ── prismatic1.axis
+
+    2 degrees of freedom (Gruebler 3·5 − 2·6 − 1·1, the 1-D flange and spring count nothing):
+    the loop's and the pendulum's. PlanarMechanics' initial values: prismatic1.s = 0.4 m,
+    prismatic1.v = 0, revolute4.phi = −0.698 rad, revolute4.w = 0 (fixed); revolute1.phi
+    starts at asin(0.4) (the apex below the base). The loop has no mass of its own: only the
+    pendulum's motion, through the apex, gives it inertia. Its reference results are
+    revolute1.phi, revolute1.w, revolute4.phi, revolute4.w over 6 s.
+
+    order: the declaration order of the components (see ``_declare``): None,
+    "reversed" or a permutation of ``KinematicLoop.COMPONENTS``."""
+
+    COMPONENTS = ("revolute1", "revolute3", "revolute2", "revolute4", "prismatic1",
+                  "springDamper1D", "body", "fixedTranslation1", "fixedTranslation2",
+                  "fixedTranslation3", "fixed", "fixed1D", "planarWorld")
+    X0 = {"prismatic1.s": 0.4, "prismatic1.v": 0.0, "revolute4.phi": -0.69813170079773,
+          "revolute4.w": 0.0}
+    STOP_TIME = 6.0
+
+    def __init__(self, name: str = "kinematic_loop", order: Sequence[str] | str | None = None):
+        super().__init__(name)
+        parts = dict(
+            revolute1=Revolute(), revolute3=Revolute(), revolute2=Revolute(),
+            revolute4=Revolute(), prismatic1=Prismatic(r=(1.0, 0.0), useFlange=True),
+            springDamper1D=tr.SpringDamper(c=20.0, d=4.0, s_rel0=0.4),
+            body=Body(m=1.0, I=0.1),
+            fixedTranslation1=FixedTranslation(r=(0.0, -0.5)),
+            fixedTranslation2=FixedTranslation(r=(0.0, -0.5)),
+            fixedTranslation3=FixedTranslation(r=(0.0, -0.6)),
+            fixed=Fixed(), fixed1D=tr.Fixed(), planarWorld=World())
+        _declare(self, parts, order)
+        c = self.connect
+        c(self.fixedTranslation1.frame_a, self.revolute1.frame_b)
+        c(self.fixedTranslation2.frame_a, self.revolute3.frame_b)
+        c(self.revolute2.frame_a, self.fixedTranslation1.frame_b)
+        c(self.revolute2.frame_b, self.fixedTranslation2.frame_b)
+        c(self.fixedTranslation3.frame_a, self.revolute4.frame_b)
+        c(self.revolute1.frame_a, self.fixed.frame)
+        c(self.fixed1D.flange, self.springDamper1D.flange_a)
+        c(self.revolute4.frame_a, self.fixedTranslation1.frame_b)
+        c(self.body.frame_a, self.fixedTranslation3.frame_b)
+        c(self.prismatic1.frame_a, self.fixed.frame)
+        c(self.springDamper1D.flange_b, self.prismatic1.axis)
+        c(self.prismatic1.frame_b, self.revolute3.frame_a)
+
+
+class PistonEngine(Model):
+    """PlanarMechanics.Examples.PistonEngine: a slider-crank whose connecting rod has no body.
+
+        fixed ── revoluteDrive ── fixedTranslationDisc (0.3, 0) ── revoluteDisc ── pistonRod
+        (bodyDrive, m = 1 kg, I = 0.1 kg.m², on the crank's axis)      (0.8, 0), massless
+        fixed1 ── prismatic (along x) ── bodyPiston (m = 3 kg, I = 0.1) ── revolutePiston ┘
+
+    1 degree of freedom. PlanarMechanics' initial values: revoluteDrive.phi = 0,
+    revoluteDrive.w = −2.5 rad/s (fixed); the piston then sits 1.1 m right of the crank's axis
+    (prismatic.s = −1.1 m, the rod along +x: revoluteDisc.phi = 0, the start value). Gravity
+    (−y) does no work: the piston runs along x and the crank's body sits on its axis. Its
+    reference results are revoluteDrive.phi and revoluteDrive.w over 10 s.
+
+    order: the declaration order of the components (see ``_declare``): None,
+    "reversed" or a permutation of ``PistonEngine.COMPONENTS``."""
+
+    COMPONENTS = ("bodyDrive", "revoluteDrive", "fixedTranslationDisc", "fixed", "prismatic",
+                  "fixed1", "revoluteDisc", "pistonRod", "bodyPiston", "revolutePiston",
+                  "planarWorld")
+    X0 = {"revoluteDrive.phi": 0.0, "revoluteDrive.w": -2.5}
+    STOP_TIME = 10.0
+
+    def __init__(self, name: str = "piston_engine", order: Sequence[str] | str | None = None):
+        super().__init__(name)
+        parts = dict(
+            bodyDrive=Body(m=1.0, I=0.1), revoluteDrive=Revolute(),
+            fixedTranslationDisc=FixedTranslation(r=(0.3, 0.0)), fixed=Fixed(),
+            prismatic=Prismatic(r=(1.0, 0.0)), fixed1=Fixed(), revoluteDisc=Revolute(),
+            pistonRod=FixedTranslation(r=(0.8, 0.0)), bodyPiston=Body(m=3.0, I=0.1),
+            revolutePiston=Revolute(), planarWorld=World())
+        _declare(self, parts, order)
+        c = self.connect
+        c(self.fixed.frame, self.revoluteDrive.frame_a)
+        c(self.revoluteDrive.frame_b, self.fixedTranslationDisc.frame_a)
+        c(self.fixed1.frame, self.prismatic.frame_b)
+        c(self.fixedTranslationDisc.frame_b, self.revoluteDisc.frame_a)
+        c(self.bodyDrive.frame_a, self.revoluteDrive.frame_b)
+        c(self.revoluteDisc.frame_b, self.pistonRod.frame_a)
+        c(self.revolutePiston.frame_b, self.pistonRod.frame_b)
+        c(self.prismatic.frame_a, self.revolutePiston.frame_a)
+        c(self.prismatic.frame_a, self.bodyPiston.frame_a)
