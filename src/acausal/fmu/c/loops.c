@@ -70,7 +70,6 @@ static int project(ac_inst *m, double *x, const double *target, const double *D,
     }
     if (con_norm(m, x) > 1e3 * tol + 1e-10) return AC_ERROR;
     ac_invalidate(m);
-    m->d.n_projections++;
     return AC_OK;
 }
 
