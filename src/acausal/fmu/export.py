@@ -190,13 +190,15 @@ def vr_table(compiled, variables: list[FmuVariable], fmi_version: str):
 def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: list[float],
                   fmi_version: str) -> dict[str, str]:
     """model.h (the sizes of the model and its tables' declarations) and model_data.c (the
-    tables: value references, defaults, parameter flags, names)."""
+    tables: value references, defaults, parameter flags, the loop-row switches, the
+    coordinates' positions in x, names)."""
     sz = mf.sizes()
     kind, index = vr_table(compiled, variables, fmi_version)
     sizes = [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
              ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
-             ("NEV", mf.nev), ("NVR", len(kind)), ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]),
-             ("SZ_IW", sz["iw"]), ("SZ_W", sz["w"])]
+             ("NPOS", len(compiled.position_states)), ("NEV", mf.nev), ("NVR", len(kind)),
+             ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
+             ("SZ_W", sz["w"])]
     # the Parameter's flags, checked by the runtime as Parameter.check_scalar does
     rules = [v.declaration.rule for v in compiled.params]
     flags = [(1 if r["positive"] else 0) | (2 if r["nonnegative"] else 0)
@@ -207,6 +209,8 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
               _c_arr("double", "AC_P_DEFAULT", compiled.param_vector(),
                      lambda v: repr(float(v))),
               _c_arr("int", "AC_SWITCH", compiled.loop_switches, str),
+              _c_arr("int", "AC_POSITIONS", compiled.position_states, str),
+              _c_arr("char *", "AC_H_NAMES", mf.h_names, _c_str),
               _c_arr("unsigned char", "AC_P_FLAGS", flags, str),
               _c_arr("char *", "AC_P_NAMES", compiled.param_names, _c_str),
               _c_arr("double", "AC_U_START", [float(v) for v in compiled.input_start]),
