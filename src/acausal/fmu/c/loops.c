@@ -202,13 +202,13 @@ static int select_loop_rows(ac_inst *m) {
     return AC_OK;
 }
 
-/* ", "-separated into buf: the names of the rows of H from `first` whose scaled residual (as
- * evaluated last) exceeds 1e-10 */
-static void unsatisfied(const ac_loop_work *l, int first, char *buf, size_t size) {
+/* ", "-separated into buf: the names of the rows first..last-1 of H whose scaled residual
+ * (as evaluated last) exceeds 1e-10 */
+static void unsatisfied(const ac_loop_work *l, int first, int last, char *buf, size_t size) {
     size_t n = 0;
     int i;
     buf[0] = '\0';
-    for (i = first; i < AC_NH && n < size; i++)
+    for (i = first; i < last && n < size; i++)
         if (!(fabs(l->H[i]) / l->s[i] <= 1e-10))
             n += snprintf(buf + n, size - n, "%s%s", n ? ", " : "", AC_H_NAMES[i]);
 }
@@ -231,8 +231,8 @@ static void held(const ac_inst *m, int positions_only, char *buf, size_t size) {
                           m->d.x[k]);
 }
 
-/* The error of an assembly that failed, naming the part at fault. `rows`: the rows the
- * first attempt left unsatisfied (a compromise between all of them). The positions alone
+/* The error of an assembly that failed, naming the part at fault. `velocity_rows`: the
+ * velocity constraints the first attempt left unsatisfied. The positions alone
  * (Φ, the first half of H) are assembled from the start values as above: if they close,
  * the speeds set contradict the velocity constraints Φ̇ = 0, which are linear in the
  * speeds; if not, the positions set or the parameters contradict Φ = 0. */
@@ -251,10 +251,11 @@ static int failed(ac_inst *m, double scale, const char *velocity_rows) {
         held(m, 0, given, sizeof(given));
         return ERR("initialization: the kinematic loops cannot be closed: their positions "
                    "close but the speeds cannot satisfy %s; check the start values set "
-                   "(%s): the loop leaves fewer speeds free; set fewer of them, or consistent ones",
+                   "(%s): the loop leaves fewer speeds free; set fewer of them, or "
+                   "consistent ones",
                    velocity_rows[0] ? velocity_rows : "the loop velocity constraints", given);
     }
-    unsatisfied(l, 0, rows, sizeof(rows));
+    unsatisfied(l, 0, AC_NH / 2, rows, sizeof(rows));
     if (!rows[0]) snprintf(rows, sizeof(rows), "the loop constraints, not finite");
     held(m, 1, given, sizeof(given));
     return ERR("initialization: the kinematic loops cannot be closed (not satisfied: %s); "
@@ -294,7 +295,7 @@ int ac_assemble_loops(ac_inst *m) {
             ac_invalidate(m);
             return select_loop_rows(m);
         }
-        if (attempt == 0) unsatisfied(l, AC_NH / 2, velocity_rows, sizeof(velocity_rows));
+        if (attempt == 0) unsatisfied(l, AC_NH / 2, AC_NH, velocity_rows, sizeof(velocity_rows));
     }
     return failed(m, scale, velocity_rows);
 }
