@@ -25,6 +25,8 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
+from ..simulation.initialization import model_equations
+
 FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
              "ac_events")
 
@@ -56,6 +58,8 @@ class ModelFunctions:
         self.ny, self.nrec, self.nh = y.numel(), rec.numel(), H.numel()
         phi_q = nol(c.lagrange.phi_q) if loop else ca.SX(0, 1)
         self.nphi, self.nq = phi_q.shape if loop else (0, 0)
+        # the rows of H (μ's then ν's: Φ then Φ̇), named as simulate() names them
+        self.h_names = model_equations(c)[1][:self.nh]
         ev_t, ev_p = c.events(p)
         self.nev = ev_t.numel()
 

@@ -7,8 +7,9 @@ What the FMU contains
   from ``sources/``: the generated model functions (``model_functions.c``), the model's sizes
   and tables (``model.h``, ``model_data.c``), the shared runtime (``c/`` in this package:
   ``instance.c`` the instance, its variables and life cycle; ``equations.c`` evaluation and
-  Newton for algebraic variables; ``loops.c`` loop projection; ``solver.c`` the RODAS4
-  co-simulation solver; ``linalg.c`` dense LU) and the FMI adapter (``fmi2.c`` or
+  Newton for algebraic variables; ``loops.c`` loop assembly and projection; ``solver.c`` the
+  RODAS4 co-simulation solver; ``linalg.c`` dense LU, Householder QR and minimum-norm least
+  squares) and the FMI adapter (``fmi2.c`` or
   ``fmi3.c``). FMI 2 lists the sources in modelDescription.xml, FMI 3 in
   ``sources/buildDescription.xml``; to rebuild elsewhere compile them with the standard FMI
   headers on the include path and link with ``-lm``.
@@ -25,8 +26,8 @@ Closed loops (the compiler's stabilized GGL form, multipliers μ = ν = 0 on the
 are presented with μ = ν = 0, i.e. the accelerations of the KKT solve; the constraints
 Φ = 0, Φ̇ = 0 are kept by projection: ``completedIntegratorStep`` asks for an event when
 max(|Φ|, |Φ̇|) exceeds 1e-3·``solver.rtol`` and the event update projects the states onto
-the constraints (closest point in the Euclidean norm of the states, Gauss–Newton, reporting
-``valuesOfContinuousStatesChanged``). Time events (steps, ramps, pulses) are reported as
+the constraints (the closest point in the Euclidean norm of the states, by the assembly's
+projection steps below, reporting ``valuesOfContinuousStatesChanged``). Time events (steps, ramps, pulses) are reported as
 ``nextEventTime``. There are no state events (no event indicators).
 
 Co-simulation
@@ -52,11 +53,15 @@ with an error).
 Initialization
 --------------
 Start values of the states follow the parameters (``compiled.start(p)``) unless the importer
-set them. Closed loops are assembled in exitInitializationMode like ``simulate()`` does: the
-states the importer set are held, the others move the least (Gauss–Newton on Φ = 0, Φ̇ = 0,
-steps limited to 0.3 per state; a start at a singular configuration, such as a linkage with
-every joint at 0, is retried from a few deterministic perturbations, the same as simulate()'s,
-so both reach the same assembly). Then the loop-row switches ``loops.active_i``
+set them. Closed loops are assembled in exitInitializationMode by ``simulate()``'s algorithm
+(acausal.numerics.project, in C in loops.c), so both reach the same assembly: the states the
+importer set are held, the others move the least from their start values (projections onto
+Φ = 0, Φ̇ = 0 linearized, rows scaled by their gradients, minimum-norm steps from orthogonal
+factorizations; steps limited to 0.3 on the coordinates only, speeds never held back; a
+Levenberg–Marquardt descent when the projection stalls at a singular configuration, such as
+a linkage with every joint at 0; then the same deterministic restarts). A failure names the
+constraints not satisfied and whether the positions or the speeds set are at fault. Then the
+loop-row switches ``loops.active_i``
 (calculatedParameters) are set at the assembled configuration as ``simulate()`` sets them:
 rows that add nothing to the rank of Φ_q there are off (a redundant link).
 
@@ -190,13 +195,15 @@ def vr_table(compiled, variables: list[FmuVariable], fmi_version: str):
 def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: list[float],
                   fmi_version: str) -> dict[str, str]:
     """model.h (the sizes of the model and its tables' declarations) and model_data.c (the
-    tables: value references, defaults, parameter flags, names)."""
+    tables: value references, defaults, parameter flags, the loop-row switches, the
+    coordinates' positions in x, names)."""
     sz = mf.sizes()
     kind, index = vr_table(compiled, variables, fmi_version)
     sizes = [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
              ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
-             ("NEV", mf.nev), ("NVR", len(kind)), ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]),
-             ("SZ_IW", sz["iw"]), ("SZ_W", sz["w"])]
+             ("NPOS", len(compiled.position_states)), ("NEV", mf.nev), ("NVR", len(kind)),
+             ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
+             ("SZ_W", sz["w"])]
     # the Parameter's flags, checked by the runtime as Parameter.check_scalar does
     rules = [v.declaration.rule for v in compiled.params]
     flags = [(1 if r["positive"] else 0) | (2 if r["nonnegative"] else 0)
@@ -207,6 +214,8 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
               _c_arr("double", "AC_P_DEFAULT", compiled.param_vector(),
                      lambda v: repr(float(v))),
               _c_arr("int", "AC_SWITCH", compiled.loop_switches, str),
+              _c_arr("int", "AC_POSITIONS", compiled.position_states, str),
+              _c_arr("char *", "AC_H_NAMES", mf.h_names, _c_str),
               _c_arr("unsigned char", "AC_P_FLAGS", flags, str),
               _c_arr("char *", "AC_P_NAMES", compiled.param_names, _c_str),
               _c_arr("double", "AC_U_START", [float(v) for v in compiled.input_start]),

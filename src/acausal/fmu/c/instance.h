@@ -44,7 +44,6 @@ typedef struct {
     double next_event;                  /* next time event (HUGE_VAL: none) */
     int mode;
     int initialized;
-    long n_steps, n_rejected, n_projections;
 } ac_data;
 
 struct ac_inst;

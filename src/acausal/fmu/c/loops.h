@@ -1,21 +1,48 @@
-/* Closed kinematic loops: the states kept on the constraints H = [Φ; Φ̇] = 0 by projection
- * (Gauss–Newton, the iteration of acausal.numerics.project), the assembly at
- * initialization and the choice of the loop rows to enforce (loops.active_i). Without loops
+/* Closed kinematic loops: the states kept on the constraints H = [Φ; Φ̇] = 0, the assembly at
+ * initialization and the choice of the loop rows to enforce (loops.active_i). The assembly is
+ * acausal.numerics.project's algorithm, so that the FMU and simulate() reach the same
+ * configuration from the same start values:
+ *   - each step is the one onto the equations linearized at the current point that moves the
+ *     free states least from their start values (exact in one step when they are linear, as
+ *     the velocity constraints are in the speeds), every row of H scaled by its gradient's
+ *     size; a minimum-norm least-squares solution from orthogonal factorizations
+ *     (ac_min_norm_lstsq), well conditioned where normal equations would square the
+ *     condition, and exact on redundant rows (rank-truncated like numpy's lstsq);
+ *   - a step moves no position (the coordinates, AC_POSITIONS) by more than 0.3, so that a
+ *     guess keeps a linkage on its branch; speeds are never held back;
+ *   - should the projection stall (a singular configuration), a Levenberg–Marquardt descent
+ *     on the row-scaled residual takes over, its damped steps −Jᵀ(J Jᵀ + μI)⁻¹ h computed as
+ *     the least-squares solution of [J; √μ I] d = [−h; 0] (the same factorization, no
+ *     squared condition), and the projection resumes;
+ *   - then restarts from deterministic perturbations of the free states (numerics.project's
+ *     seed sequence);
+ *   - converged when every row of H, over its gradient's size, is below 1e-10·(1 + max |start|).
+ * The states the importer set are held (not unknowns). Drift (model exchange, co-simulation)
+ * is projected by the same steps, from the states as they are, unlimited. Without loops
  * (AC_NH = 0) every function here does nothing and succeeds. */
 #ifndef AC_LOOPS_H
 #define AC_LOOPS_H
 
 #include "model.h"
 
+#define AC_NLS (AC_NH + AC_NX)        /* rows of the largest least-squares problem */
+
 typedef struct {
-    double H[AC_D(AC_NH)], Hx[AC_D(AC_NH * AC_NX)], A[AC_D(AC_NH * AC_NH)];
-    double lam[AC_D(AC_NH)], xs[AC_D(AC_NX)];
-    int piv[AC_D(AC_NH)];
+    double H[AC_D(AC_NH)], Hx[AC_D(AC_NH * AC_NX)];   /* H, ∂H/∂x at the last point evaluated */
+    double s[AC_D(AC_NH)];                             /* their rows' scales */
+    double target[AC_D(AC_NX)];                        /* the states a projection stays near */
+    double d[AC_D(AC_NX)], trial[AC_D(AC_NX)];         /* a step; the point it leads to */
+    double at[AC_D(AC_NX * AC_NLS)], b[AC_D(AC_NLS)], e[AC_D(AC_NX)];  /* least squares */
+    double work[AC_D(AC_NLS * AC_NX + 2 * AC_NX + AC_NLS)];
+    int perm[AC_D(AC_NLS)];
+    int free[AC_D(AC_NX)], nfree;                      /* the states that move */
+    int nrows;                                         /* the rows of H in use */
 } ac_loop_work;
 
 struct ac_inst;
 /* initialization: close the loops from the start values (the states the importer set are
- * held) and switch off the rows redundant at the assembled configuration */
+ * held) and switch off the rows redundant at the assembled configuration; on failure the
+ * message names the rows of H that cannot be satisfied and the start values set */
 int ac_assemble_loops(struct ac_inst *m);
 /* max |H| above the drift threshold 1e-3·rtol (model exchange: ask for an event) */
 int ac_drift_exceeded(struct ac_inst *m);

@@ -103,7 +103,6 @@ static int integrate(ac_inst *m, double t1) {
             return ERR("co-simulation solver: step size too small at t = %.17g", t);
         st = rodas_step(m, t, hs);
         if (st != AC_OK) {     /* a stage failed: shrink and retry */
-            m->d.n_rejected++;
             h = 0.25 * hs;
             rejected = 1;
             continue;
@@ -118,14 +117,12 @@ static int integrate(ac_inst *m, double t1) {
             t = last ? t1 : t + hs;
             m->d.t = t;
             ac_invalidate(m);
-            m->d.n_steps++;
             if (ac_keep_loops_closed(m, 1e-3, NULL)) return AC_ERROR;
             if (rejected && fac > 1.0) fac = 1.0;
             rejected = 0;
             if (last) { if (hs * fac > h) h = hs * fac; }
             else h = hs * fac;
         } else {
-            m->d.n_rejected++;
             rejected = 1;
             h = hs * fac;
         }
