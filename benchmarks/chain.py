@@ -80,7 +80,7 @@ def acausal_integrator_only(compiled):
     F = ca.integrator("acausal", "cvodes", dae, GRID[0], GRID[1:],
                       {"abstol": ATOL, "reltol": RTOL, "max_num_steps": 100000})
     t1 = time.perf_counter()
-    F(x0=np.zeros(compiled.x.numel()))
+    _run_and_read(F, x0=np.zeros(compiled.x.numel()))
     t2 = time.perf_counter()
     return t1 - t0, t2 - t1
 
@@ -147,6 +147,12 @@ def _simulate_and_read(compiled, n):
     return res, acausal_final_state(res, n)
 
 
+def _run_and_read(F, **args) -> dict:
+    sol = F(**args)
+    sol["xf"] = sol["xf"].full()
+    return sol
+
+
 def bench(n: int, repeat: int, explicit: bool) -> dict:
     r = {"N": n}
     gc.collect()
@@ -156,8 +162,12 @@ def bench(n: int, repeat: int, explicit: bool) -> dict:
     t0 = time.perf_counter()
     compiled = acausal.compile(model)
     r["ac_compile"] = time.perf_counter() - t0
-    # simulate() and reading the trajectories of every mass (Result evaluates its recorded
-    # variables on first access, so the read is part of the cost)
+    # simulate() and reading the trajectories of every mass (states are read directly; other
+    # recorded variables would be built on first access): the first call after compile, what
+    # a user waits for, and the best of the repeats
+    t0 = time.perf_counter()
+    _simulate_and_read(compiled, n)
+    r["ac_first"] = time.perf_counter() - t0
     r["ac_sim"], (res, x_ac) = best_of(lambda: _simulate_and_read(compiled, n), repeat)
     create, run = zip(*[acausal_integrator_only(compiled) for _ in range(repeat)])
     r["ac_int_create"], r["ac_int_run"] = min(create), min(run)
@@ -165,11 +175,12 @@ def bench(n: int, repeat: int, explicit: bool) -> dict:
     t0 = time.perf_counter()
     F, _ = build_casadi(n)
     r["ca_build"] = time.perf_counter() - t0
-    r["ca_sim"], sol = best_of(lambda: F(x0=np.zeros(2 * n)), repeat)
-    x_ca = sol["xf"].full()[:, -1]
+    # the run and its trajectories as numpy arrays (what simulate() hands the user)
+    r["ca_sim"], sol = best_of(lambda: _run_and_read(F, x0=np.zeros(2 * n)), repeat)
+    x_ca = sol["xf"][:, -1]
     Fp, p_val = build_casadi(n, symbolic=True)
-    r["cap_sim"], sol = best_of(lambda: Fp(x0=np.zeros(2 * n), p=p_val), repeat)
-    r["ac_vs_cap"] = np.max(np.abs(sol["xf"].full()[:, -1] - x_ca))
+    r["cap_sim"], sol = best_of(lambda: _run_and_read(Fp, x0=np.zeros(2 * n), p=p_val), repeat)
+    r["ac_vs_cap"] = np.max(np.abs(sol["xf"][:, -1] - x_ca))
 
     r["bdf"], x_bdf = min((run_scipy(n, "BDF") for _ in range(repeat)), key=lambda a: a[0])
     if explicit:
@@ -213,18 +224,21 @@ def main(argv=None):
 
     print(f"\nchain of N masses and springs, {T_FINAL:g} s, rtol {RTOL:g}, atol {ATOL:g}, "
           f"{len(GRID)}-point grid; wall-clock times [s] (simulations: best of {args.repeat})")
-    print_table(["N", "build", "compile", "simulate()", "int.create", "int.run", "CasADi bld",
-            "CasADi run", "sim ratio", "run ratio", "CasADi(p)", "run/(p)"],
-           [[r["N"], r["ac_build"], r["ac_compile"], r["ac_sim"], r["ac_int_create"],
-             r["ac_int_run"], r["ca_build"], r["ca_sim"],
-             r["ac_sim"] / (r["ca_build"] + r["ca_sim"]), r["ac_int_run"] / r["ca_sim"],
-             r["cap_sim"], r["ac_int_run"] / r["cap_sim"]]
-            for r in rows], "{:10.4g}")
+    print_table(["N", "build", "compile", "1st sim()", "simulate()", "int.create", "int.run",
+                 "CasADi bld", "CasADi run", "1st ratio", "sim ratio", "run ratio", "CasADi(p)",
+                 "run/(p)"],
+                [[r["N"], r["ac_build"], r["ac_compile"], r["ac_first"], r["ac_sim"],
+                  r["ac_int_create"], r["ac_int_run"], r["ca_build"], r["ca_sim"],
+                  r["ac_first"] / (r["ca_build"] + r["ca_sim"]),
+                  r["ac_sim"] / (r["ca_build"] + r["ca_sim"]), r["ac_int_run"] / r["ca_sim"],
+                  r["cap_sim"], r["ac_int_run"] / r["cap_sim"]]
+                 for r in rows], "{:10.4g}")
     print("  build, compile, simulate(): acausal (simulate() creates its integrator, computes "
-          "initial values\n  and every recorded variable); int.create / int.run: a cvodes "
-          "integrator on acausal's DAE alone;\n  CasADi bld / run: the hand-written SX model "
-          "(expressions + integrator creation / the run).\n  sim ratio = simulate() / (CasADi "
-          "bld + run); run ratio = int.run / CasADi run.\n  CasADi(p): run of the hand-written "
+          "initial values\n  and reads every mass's trajectory); 1st sim(): the first call "
+          "after compile; int.create / int.run:\n  a cvodes integrator on acausal's DAE alone; "
+          "CasADi bld / run: the hand-written SX model\n  (expressions + integrator creation / "
+          "the run). 1st ratio, sim ratio = 1st sim(), simulate() / (CasADi\n  bld + run); run "
+          "ratio = int.run / CasADi run. CasADi(p): run of the hand-written "
           "model with every parameter symbolic, as acausal keeps them;\n  run/(p) = int.run / "
           "CasADi(p)")
     head = ["N", "scipy BDF", "BDF/CasADi"]
@@ -265,11 +279,14 @@ def main(argv=None):
         else:
             print(f"  compile N={n}: not run (target < {TARGETS[key]:g} s)")
     for r in rows:
+        if r["N"] not in (1000, 10000):
+            continue
+        first = r["ac_first"] / (r["ca_build"] + r["ca_sim"])
         ratio = r["ac_sim"] / (r["ca_build"] + r["ca_sim"])
-        run_ratio = r["ac_int_run"] / r["ca_sim"]
-        ok = "met" if ratio <= TARGETS["sim_ratio"] else "NOT met"
-        print(f"  simulation N={r['N']}: simulate()/CasADi = {ratio:.2f}, run alone "
-              f"{run_ratio:.2f} (target <= {TARGETS['sim_ratio']}x) -> {ok}")
+        ok = "met" if first <= TARGETS["sim_ratio"] else "NOT met"
+        print(f"  simulation N={r['N']}: first simulate()/CasADi = {first:.2f} (best "
+              f"{ratio:.2f}, run alone {r['ac_int_run'] / r['ca_sim']:.2f}; target <= "
+              f"{TARGETS['sim_ratio']}x) -> {ok}")
 
 
 if __name__ == "__main__":

@@ -22,6 +22,7 @@ a model names it; ``connect(a, b)`` joins two ports acausally.
 from __future__ import annotations
 
 import copy
+import functools
 from enum import Enum
 
 from ..errors import DisabledPortError, ParameterError, PortConnectionError
@@ -178,12 +179,7 @@ class Component:
     def _declared(cls, types) -> dict:
         """Class attributes that are instances of ``types``, by name, in declaration order
         (base classes first; a subclass's declaration replaces its base's)."""
-        out = {}
-        for klass in reversed(cls.__mro__):
-            for n, v in vars(klass).items():
-                if isinstance(v, types):
-                    out[n] = v
-        return out
+        return dict(_class_declarations(cls, types))
 
     # ---- naming ------------------------------------------------------------------------
     @classmethod
@@ -375,3 +371,14 @@ def _common_model(a: Port, b: Port) -> Model:
     raise PortConnectionError(
         f"'{a.path}' and '{b.path}' are not in one model: assign both components to "
         f"attributes of the same Model before connecting them")
+
+
+@functools.cache
+def _class_declarations(cls, types) -> dict:
+    """``Component._declared``, once per class (a model has many instances of a class)."""
+    out = {}
+    for klass in reversed(cls.__mro__):
+        for n, v in vars(klass).items():
+            if isinstance(v, types):
+                out[n] = v
+    return out

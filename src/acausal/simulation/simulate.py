@@ -74,10 +74,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     # same folded arithmetic as a hand-written model with numbers (changing a parameter
     # rebuilds only the integrator, never the model)
     ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, ca.SX(p)])
-    rho = None if has_alg or not model.x.numel() else _spectral_radius(model, ode, p, u0, xs,
-                                                                         grid[0])
-    ode, alg = scaled(model, ode, alg, scale)
     auto = solver is None
+    rho = None if has_alg or not model.x.numel() else _check_start(model, ode, p, u0, xs,
+                                                                     grid[0], estimate=auto)
+    ode, alg = scaled(model, ode, alg, scale)
     if auto:
         solver = "idas" if has_alg else (
             "cvodes" if rho is not None and is_stiff(rho, grid[0], grid[-1]) else "adams")
@@ -253,18 +253,22 @@ def _check_finite(what: str, values: dict | None) -> None:
             raise SimulationError(f"{what}['{name}'] must be a finite number, got {v!r}")
 
 
-def _spectral_radius(model, ode, p, u0, xs, t0) -> float:
-    """ρ of the ODE at its initial state, once per model and operating point; the start is
-    checked first: equations that are not finite there are diagnosed, not integrated."""
+def _check_start(model, ode, p, u0, xs, t0, estimate: bool) -> float | None:
+    """The ODE's equations at its initial state, checked finite (diagnosed, not integrated,
+    otherwise); with ``estimate``, its spectral radius ρ there (for the solver's choice),
+    once per model and operating point."""
     key = ("rho", p.tobytes(), u0.tobytes(), np.asarray(xs, float).tobytes(), float(t0))
     cache = model._cache.setdefault("stiffness", {})
-    if key not in cache:
-        f = ca.Function("ode", [model.x, model.t], [ode])
-        x0 = np.asarray(xs, dtype=float).ravel()
-        fx0 = np.asarray(f(x0, t0), dtype=float).ravel()
-        if not np.all(np.isfinite(fx0)):
-            raise SimulationError(_not_finite(model, x0, fx0, p, u0, t0))
-        cache[key] = spectral_radius(f, x0, t0, fx0)
+    if key in cache:
+        return cache[key]
+    f = ca.Function("ode", [model.x, model.t], [ode])
+    x0 = np.asarray(xs, dtype=float).ravel()
+    fx0 = np.asarray(f(x0, t0), dtype=float).ravel()
+    if not np.all(np.isfinite(fx0)):
+        raise SimulationError(_not_finite(model, x0, fx0, p, u0, t0))
+    if not estimate:
+        return None
+    cache[key] = spectral_radius(f, x0, t0, fx0)
     return cache[key]
 
 
