@@ -1,4 +1,4 @@
-"""Hard-disk read/write head, the worked case of DESIGN.md, built from planar and 1-D components.
+"""Hard-disk read/write head, a worked case of machine-dynamics courses, built from planar and 1-D components.
 
 The actuator arm (inertia I about its fixed pivot) is turned by the voice-coil torque T(t)
 against a rotational damper c_T; the head (mass m) sits at radius L on a flexible tip that
@@ -35,7 +35,7 @@ T0, T_SEEK = 0.02, 2.0e-3   # N.m, s: T = T0 sin(2π t/T_SEEK) for t < T_SEEK
 
 
 def closed_form(q, qd, I, m, L, k, c_T):
-    """DESIGN.md's pieces for q = [θ, δ]: M, C, K, gravity, coriolis, B."""
+    """The textbook's pieces for q = [θ, δ]: M, C, K, gravity, coriolis, B."""
     d, thd, dd = q[1], qd[0], qd[1]
     return {"M": np.array([[I + m * (L ** 2 + d ** 2), m * L], [m * L, m]]),
             "C": np.diag([c_T, 0.0]), "K": np.diag([0.0, k]), "gravity": np.zeros(2),

@@ -47,7 +47,8 @@ def main():
 
     md = read_model_description(str(path))
     vr = {v.name: v.valueReference for v in md.modelVariables}
-    plant = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(path)),
+    unzipped = extract(str(path), os.path.join(workdir, "fmu"))
+    plant = FMU2Slave(guid=md.guid, unzipDirectory=unzipped,
                       modelIdentifier=md.coSimulation.modelIdentifier, instanceName="crane")
     plant.instantiate()
     plant.setupExperiment(tolerance=1e-8, startTime=0.0)

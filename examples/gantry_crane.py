@@ -1,4 +1,4 @@
-"""Gantry crane, the worked case of DESIGN.md, built from planar and 1-D components.
+"""Gantry crane, a worked case of machine-dynamics courses, built from planar and 1-D components.
 
 A cart (mass M) runs on a horizontal rail with a viscous damper c to the ground and is pushed
 by a force F(t); a load (point mass m) hangs on a rope of length L from a hinge on the cart,
@@ -33,7 +33,7 @@ F0 = 8.0                                         # N, force amplitude
 
 
 def closed_form(q, qd, M, m, L, c, c_T, g):
-    """DESIGN.md's pieces for q = [x, θ]: M, C, K, gravity, coriolis, B."""
+    """The textbook's pieces for q = [x, θ]: M, C, K, gravity, coriolis, B."""
     th, thd = q[1], qd[1]
     return {"M": np.array([[M + m, m * L * np.cos(th)], [m * L * np.cos(th), m * L ** 2]]),
             "C": np.diag([c, c_T]), "K": np.zeros((2, 2)),

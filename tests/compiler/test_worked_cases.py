@@ -1,13 +1,13 @@
-"""The worked cases of DESIGN.md (gantry crane, hard-disk head, pendulum on a spring-mounted
+"""The worked cases of machine-dynamics courses (gantry crane, hard-disk head, pendulum on a spring-mounted
 cart), built from planar and 1-D components in acausal.models, against their closed forms.
 
-1. compiled.lagrange's M, C, K, gravity, coriolis, B and Q_rest equal DESIGN's formulas at 25
+1. compiled.lagrange's M, C, K, gravity, coriolis, B and Q_rest equal the textbook formulas at 25
    random states and parameter sets (parameters through compiled.param_vector) to 1e-12, and
    so do the accelerations of the compiled ODE right-hand side (to 1e-10 relative);
 2. simulations with forcing equal hand-written CasADi ODEs of the closed forms (cvodes,
    rtol 1e-12) to 1e-7.
 
-Coordinate maps, DESIGN → compiled (same sign: the checks below would fail otherwise):
+Coordinate maps, textbook → compiled (same sign: the checks below would fail otherwise):
     gantry crane     x = rail.s      θ = hinge.phi   (θ from the downward vertical, CCW)
     hard-disk head   θ = pivot.phi   δ = flexure.s   (δ along the arm's normal, towards +θ)
     pendulum on cart x = rail.s      φ = hinge.phi   (φ from the downward vertical, CCW)
@@ -28,12 +28,12 @@ SIM = dict(rtol=1e-10, atol=1e-12)            # compiled model's integrator
 HAND = {"reltol": 1e-12, "abstol": 1e-14}     # hand-written model's cvodes
 SIM_TOL = 1e-7
 
-CRANE_MAP = ("rail.s", "hinge.phi")           # DESIGN's [x, θ]
-DISK_MAP = ("pivot.phi", "flexure.s")         # DESIGN's [θ, δ]
-CART_MAP = ("rail.s", "hinge.phi")            # DESIGN's [x, φ]
+CRANE_MAP = ("rail.s", "hinge.phi")           # the textbook's [x, θ]
+DISK_MAP = ("pivot.phi", "flexure.s")         # the textbook's [θ, δ]
+CART_MAP = ("rail.s", "hinge.phi")            # the textbook's [x, φ]
 
 
-# ---- closed forms (DESIGN.md), all in DESIGN's coordinates ----------------------------------
+# ---- closed forms, all in the textbook's coordinates ---------------------------------------
 def crane_closed(q, qd, u, t, P):
     """Gantry crane, q = [x, θ], u = [F]: M q'' + C q' + K q = grav + nonlin + B u + Q_rest."""
     M, m, L, c, cT, g = P["M"], P["m"], P["L"], P["c"], P["c_T"], P["g"]
@@ -61,7 +61,7 @@ def sine_u(t, P):
 
 
 def cart_closed(q, qd, u, t, P, drive="position"):
-    """Pendulum on a spring-mounted cart, q = [x, φ]; DESIGN's two equations written as
+    """Pendulum on a spring-mounted cart, q = [x, φ]; the textbook's two equations written as
     M q'' + K q = gravity + coriolis + (k u(t) as Q_rest, or B u with the model Input u)."""
     m1, m2, l, JS, k, g = P["m1"], P["m2"], P["l"], P["J_S"], P["k"], P["g"]
     ph, phd = q[1], qd[1]
@@ -76,7 +76,7 @@ def cart_closed(q, qd, u, t, P, drive="position"):
     return out
 
 
-# ---- parameters: DESIGN's symbols → the models' dotted parameter names ----------------------
+# ---- parameters: the textbook's symbols → the models' dotted parameter names ----------------------
 def crane_params(P):
     return {"cart.m": P["M"], "load.m": P["m"], "rope.r[2]": -P["L"], "railDamper.d": P["c"],
             "hingeDamper.d": P["c_T"], "world.g": P["g"]}
@@ -115,14 +115,14 @@ def random_cart(rng):
 
 # ---- helpers ---------------------------------------------------------------------------------
 def _perm(compiled, cmap):
-    """Index of each DESIGN coordinate among the compiled ones (by name)."""
+    """Index of each textbook coordinate among the compiled ones (by name)."""
     names = compiled.lagrange.q_names
     assert sorted(names) == sorted(cmap), f"coordinates {names}, expected {cmap}"
     return [names.index(n) for n in cmap]
 
 
 def _compiled_pieces(compiled, cmap, q, qd, u, t, p):
-    """lagrange's pieces at DESIGN's (q, qd), rearranged into DESIGN's coordinate order."""
+    """lagrange's pieces at the textbook's (q, qd), rearranged into the textbook's coordinate order."""
     idx = _perm(compiled, cmap)
     qc, qdc = np.zeros(len(q)), np.zeros(len(q))
     qc[idx], qdc[idx] = q, qd
@@ -148,7 +148,7 @@ def _num(x):
 
 
 def _compiled_acc(compiled, cmap, q, qd, u, t, p):
-    """q'' of the compiled ODE right-hand side, in DESIGN's coordinate order."""
+    """q'' of the compiled ODE right-hand side, in the textbook's coordinate order."""
     x = np.zeros(len(compiled.x_names))
     vel = [compiled.lagrange.qd_names[compiled.lagrange.q_names.index(n)] for n in cmap]
     for n, qi in zip(cmap, q):
@@ -187,7 +187,7 @@ def check_exact(compiled, cmap, closed, to_params, draw, seed, n_u, rand_q, rand
 
 
 def hand_ode(closed, P, u_of_t, grid, q0, qd0):
-    """DESIGN's equations as a CasADi SX ODE in [q; q'], integrated with cvodes."""
+    """The textbook equations as a CasADi SX ODE in [q; q'], integrated with cvodes."""
     q, qd, t = ca.SX.sym("q", 2), ca.SX.sym("qd", 2), ca.SX.sym("t")
     u = u_of_t(t)
     pc = closed(q, qd, u, t, P)

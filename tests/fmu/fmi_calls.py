@@ -3,6 +3,8 @@ initialize, get and set reals, state derivatives — the same for FMI 2.0 and 3.
 from __future__ import annotations
 
 import ctypes
+import tempfile
+from pathlib import Path
 
 import numpy as np
 from fmpy import extract, read_model_description
@@ -10,12 +12,18 @@ from fmpy.fmi2 import FMU2Model, FMU2Slave
 from fmpy.fmi3 import FMU3Model, FMU3Slave
 
 
+def unzipped(path) -> str:
+    """The FMU at ``path`` extracted next to it (inside the test's temporary directory, which
+    pytest cleans up; fmpy's default would leave a directory in /tmp per call)."""
+    return extract(str(path), unzipdir=tempfile.mkdtemp(dir=Path(path).parent))
+
+
 def instance(path, cs=False, **kw):
     md = read_model_description(str(path))
     cls = {("2.0", False): FMU2Model, ("2.0", True): FMU2Slave, ("3.0", False): FMU3Model,
            ("3.0", True): FMU3Slave}[(md.fmiVersion, cs)]
     ident = (md.coSimulation if cs else md.modelExchange).modelIdentifier
-    fmu = cls(guid=md.guid, unzipDirectory=extract(str(path)), modelIdentifier=ident,
+    fmu = cls(guid=md.guid, unzipDirectory=unzipped(path), modelIdentifier=ident,
               instanceName="test")
     fmu.instantiate(**kw)
     vr = {v.name: v.valueReference for v in md.modelVariables}

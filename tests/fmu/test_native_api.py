@@ -1,6 +1,6 @@
 """Native FMU through fmpy's low-level API: the derivatives against the crane's closed form
-(DESIGN.md), a massless node solved inside the FMU (algebraic variable) with a model output
-and its ModelStructure, FMU state get/set/serialize round trips, directional derivatives
+(the textbook's), a massless node solved inside the FMU (algebraic variable) with a model
+output and its ModelStructure, FMU state get/set/serialize round trips, directional derivatives
 against finite differences, errors as FMI statuses with logged messages, the sources in the
 FMU rebuilding the binary, and a clear error without a C compiler.
 """
@@ -27,7 +27,7 @@ from fmi_calls import derivatives, get_real, init, instance, set_real   # noqa: 
 
 
 def crane_closed_form(q, qd, M, m, L, c, c_T, g):
-    """DESIGN.md's gantry crane for q = [x, θ]: M, C, gravity, coriolis, B (numpy)."""
+    """The textbook's gantry crane for q = [x, θ]: M, C, gravity, coriolis, B (numpy)."""
     th, thd = q[1], qd[1]
     return {"M": np.array([[M + m, m * L * np.cos(th)], [m * L * np.cos(th), m * L ** 2]]),
             "C": np.diag([c, c_T]), "gravity": np.array([0.0, -m * g * L * np.sin(th)]),
@@ -70,7 +70,7 @@ def fmus(fmu_dir):
 
 @pytest.mark.parametrize("version", ["2.0", "3.0"])
 def test_derivatives_are_the_closed_form(fmus, version):
-    """ẋ of the crane FMU = [q̇; M⁻¹(B F − C q̇ + gravity + coriolis)] from DESIGN.md's M(q)."""
+    """ẋ of the crane FMU = [q̇; M⁻¹(B F − C q̇ + gravity + coriolis)] from the textbook's M(q)."""
     fmu, vr, md = instance(fmus[("crane", version)])
     init(fmu, md, {"load.m": 3.0}, vr)
     fmu.enterContinuousTimeMode()

@@ -19,14 +19,14 @@ import numpy as np
 import pytest
 
 fmpy = pytest.importorskip("fmpy")
-from fmpy import extract, read_model_description                  # noqa: E402
+from fmpy import read_model_description                           # noqa: E402
 from fmpy.fmi1 import FMICallException                            # noqa: E402
 
 import acausal                                                    # noqa: E402
 from acausal.errors import ParameterError                          # noqa: E402
 from acausal.fmu.export import find_fmi_headers, platform_dirs    # noqa: E402
 from acausal.models import Drivetrain, FourBar, GantryCrane       # noqa: E402
-from fmi_calls import derivatives, get_real, init, instance, set_real   # noqa: E402
+from fmi_calls import derivatives, get_real, init, instance, set_real, unzipped  # noqa: E402
 
 VERSIONS = ("2.0", "3.0")
 RTOL = 1e-6            # test_native.py's agreement with compiled.simulate
@@ -208,7 +208,7 @@ def fmi_functions(version: str) -> list[str]:
 def test_null_instance_is_an_error(fmus, version):
     """Every FMI function that takes an instance answers a NULL one with fmiError (x86-64:
     the instance is the first integer argument; the others are zeros, never reached)."""
-    d = Path(extract(str(fmus["crane", version])))
+    d = Path(unzipped(fmus["crane", version]))
     md = read_model_description(str(d))
     plat = platform_dirs()[0 if version == "2.0" else 1]
     lib = ctypes.CDLL(str(d / "binaries" / plat / (md.coSimulation.modelIdentifier

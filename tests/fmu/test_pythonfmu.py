@@ -251,7 +251,7 @@ def test_errors_are_statuses_with_messages(fmus):
     assert res["rail.s"][1] == pytest.approx(1.0 * 0.01 ** 2 / (2 * 5.0), rel=1e-3)
 
 
-def test_fmu_state_get_set(fmus):
+def test_fmu_state_get_set(fmus, tmp_path):
     """fmi2GetFMUstate / SetFMUstate / serialization: stepping again from a saved state gives
     the same result."""
     from fmpy import extract
@@ -260,7 +260,7 @@ def test_fmu_state_get_set(fmus):
     md = read_model_description(str(path))
     assert md.coSimulation.canGetAndSetFMUstate and md.coSimulation.canSerializeFMUstate
     vr = {v.name: v.valueReference for v in md.modelVariables}
-    unzipped = extract(str(path))
+    unzipped = extract(str(path), unzipdir=str(tmp_path / "unzipped"))
     fmu = FMU2Slave(guid=md.guid, unzipDirectory=unzipped,
                     modelIdentifier=md.coSimulation.modelIdentifier, instanceName="crane")
     fmu.instantiate()

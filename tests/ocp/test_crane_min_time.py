@@ -3,7 +3,7 @@ free final time: minimize T with |F| ≤ F_max, from rest at x = 0 to rest at x 
 rope vertical.
 
 References independent of acausal: the optimal piecewise-constant force replayed through
-scipy's solve_ivp on DESIGN.md's closed-form crane equations (M(q) q̈ + C q̇ = gravity +
+scipy's solve_ivp on the textbook's closed-form crane equations (M(q) q̈ + C q̇ = gravity +
 coriolis + [F, 0]) brings the load to rest at the target (to 1e-6: the transcription's
 error) and follows the optimized nodes (to 1e-6); the minimum time exceeds the rigid
 transfer's 2·sqrt(D (M + m) / F_max); the force is bang-bang. Collocation and multiple
@@ -41,7 +41,7 @@ def rigid_bound() -> float:
 
 def closed_form_rhs(t, y, F, M=crane.CART_MASS, m=crane.LOAD_MASS, L=crane.ROPE,
                     c=crane.RAIL_DAMPING, cT=crane.HINGE_DAMPING, g=9.81):
-    """DESIGN.md's gantry crane, y = [x, θ, ẋ, θ̇]."""
+    """the textbook's gantry crane, y = [x, θ, ẋ, θ̇]."""
     th, xd, thd = y[1], y[2], y[3]
     Mq = np.array([[M + m, m * L * np.cos(th)], [m * L * np.cos(th), m * L ** 2]])
     rhs = np.array([F + m * L * np.sin(th) * thd ** 2 - c * xd, -m * g * L * np.sin(th) - cT * thd])

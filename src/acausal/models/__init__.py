@@ -10,7 +10,8 @@ no compiler or simulation imports.
     disk_drive          DiskDriveHead: actuator arm with a flexible tip (input T)
     pendulum_on_cart    PendulumOnCart: pendulum on a spring-mounted, base-excited cart
     cartpole            CartPole: cart with a pole on a hinge (input F)
-    linkages            FourBar, Parallelogram, DrivenFourBar, SliderCrank, add_link
+    linkages            FourBar, Parallelogram, DrivenFourBar, SliderCrank, add_link;
+                        KinematicLoop, PistonEngine (PlanarMechanics' examples)
     pendulums           PendulumChain: N-link planar pendulum
     drivetrains         Drivetrain: DC motor, gear, elastic shaft, fan drum
     elastic_bearing     ElasticBearing: MSL's gearbox on an elastic bearing (nominals)
@@ -23,12 +24,13 @@ from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_mod
 from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
 from .elastic_bearing import ElasticBearing
-from .linkages import DrivenFourBar, FourBar, Parallelogram, SliderCrank, add_link
+from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
+                       SliderCrank, add_link)
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
 
 __all__ = ["CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
-           "ElasticBearing", "FourBar", "Parallelogram", "SliderCrank", "add_link", "Oscillator",
-           "PendulumOnCart", "PendulumChain"]
+           "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
+           "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain"]

@@ -1,4 +1,4 @@
-"""Gantry crane, the worked case of DESIGN.md: a cart on a damped rail with a load hanging from
+"""Gantry crane, a worked case of machine-dynamics courses: a cart on a damped rail with a load hanging from
 it on a rope.
 
 A cart (mass M) runs on a horizontal rail with a viscous damper c to the ground and is pushed

@@ -1,4 +1,4 @@
-"""Hard-disk read/write head, the worked case of DESIGN.md: an actuator arm on a pivot with a
+"""Hard-disk read/write head, a worked case of machine-dynamics courses: an actuator arm on a pivot with a
 laterally flexible tip carrying the head.
 
 The arm (inertia I about its fixed pivot) is turned by the voice-coil torque T(t) against a

@@ -1,4 +1,4 @@
-"""Pendulum on a spring-mounted cart, the worked case of DESIGN.md.
+"""Pendulum on a spring-mounted cart, a worked case of machine-dynamics courses.
 
 A cart (mass m1) on a horizontal rail is tied by a spring k to a point whose position u(t) is
 prescribed; a pendulum (mass m2, inertia J_S about its centre of mass at distance l from the
