@@ -17,8 +17,9 @@ or the slider's ground joint), whatever the order: the script compiles the model
 PlanarMechanics' order and reversed, prints the coordinates each got, simulates 10 s from
 PlanarMechanics' initial values (revoluteDrive.phi = 0, w = −2.5 rad/s), and reports the
 crank's motion, the energy (gravity does no work here, so ½·I·w² + ½·m·v² stays constant)
-and the difference between the two orders. With $ACAUSAL_REFERENCE_RESULTS pointing at a
-copy of PlanarMechanics_ReferenceResults it compares with Dymola's result too. It saves
+and the difference between the two orders. With $ACAUSAL_REFERENCE_RESULTS naming the
+directory that holds a copy of PlanarMechanics_ReferenceResults (as the tests take it) it
+compares with Dymola's result too. It saves
 ``piston_engine.png`` (in $ACAUSAL_OUT, default the current directory).
 """
 from __future__ import annotations
@@ -51,8 +52,8 @@ def run(order):
 def reference():
     """Dymola's result (time, revoluteDrive.phi, revoluteDrive.w), if at hand."""
     root = os.environ.get("ACAUSAL_REFERENCE_RESULTS")
-    path = os.path.join(root or "", "PlanarMechanics", "Examples", "PistonEngine",
-                        "PistonEngine.csv")
+    path = os.path.join(root or "", "PlanarMechanics_ReferenceResults", "PlanarMechanics",
+                        "Examples", "PistonEngine", "PistonEngine.csv")
     if not root or not os.path.isfile(path):
         return None
     data = np.genfromtxt(path, delimiter=",", names=True)
