@@ -215,7 +215,7 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     qdd_pin = pin.aba(pmodel, pdata, y[:n], y[n:], tau)
     r["dev_ac"] = np.max(np.abs(qdd_ac - qdd_pin)) / max(1.0, np.max(np.abs(qdd_pin)))
     r["ac_rhs_py"] = per_call(lambda: rhs(t, x, z, u, p))
-    r["ac_rhs_native"] = mapped_per_eval(rhs, [x, u, p, z, t])
+    r["ac_rhs_native"] = mapped_per_eval(rhs, [t, x, z, u, p])
     folded = ca.Function("folded", [compiled.x],
                          [ca.substitute(compiled.ode, compiled.p, ca.SX(p))])
     r["ac_folded_instr"] = folded.n_instructions()
