@@ -72,6 +72,18 @@ class Resolved:
 
 @dataclass
 class CompiledModel:
+    """A model compiled into CasADi symbols and expressions (see the module docstring):
+    symbols t, x, z, p, u; the DAE ``ode``, ``alg``; outputs ``y``; the variables as
+    ``ScalarVariable`` records; Functions of parameters for start values, nominals and time
+    events; the recorded variables (built on first use); ``lagrange``.
+
+    ``loop_switches``: positions in p of the switches of the loop rows (row order): 1
+    enforces row i of Φ, 0 drops it (redundant); simulate() and the FMUs set them at the
+    assembled initial configuration (``mobility_at``). ``loop_mu`` / ``loop_nu``: positions
+    in z of the multipliers of the stabilized index-2 form that hold Φ = 0 and Φ̇ = 0 (zero
+    on the exact solution). ``fixed_params``: parameters fixed at 0 when compiled (a
+    component built with a ``structural_zero`` parameter at 0, e.g. a massless Mass), not
+    parameters of this model."""
     name: str
     t: ca.SX
     x: ca.SX
@@ -100,13 +112,6 @@ class CompiledModel:
     loop_nu: list[int] = field(default_factory=list)
     fixed_params: list[str] = field(default_factory=list)
     _cache: dict = field(default_factory=dict, repr=False)
-    """``loop_switches``: positions in p of the switches of the loop rows (row order): 1
-    enforces row i of Φ, 0 drops it (redundant); simulate() and the FMUs set them at the
-    assembled initial configuration (``mobility_at``). ``loop_mu`` / ``loop_nu``: positions
-    in z of the multipliers of the stabilized index-2 form that hold Φ = 0 and Φ̇ = 0 (zero
-    on the exact solution). ``fixed_params``: parameters fixed at 0 when compiled (a
-    component built with a ``structural_zero`` parameter at 0, e.g. a massless Mass), not
-    parameters of this model."""
 
     # ---- names ----------------------------------------------------------------------------
     @property
