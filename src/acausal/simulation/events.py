@@ -12,10 +12,11 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    secant steps safeguarded by bisection, until the bracket is shorter than
    ``EVENT_TOL``·max(1, |t|); every indicator that changed sign over that last bracket crossed
    at the event (simultaneous events), the bracket's end is the event's left limit;
-3. at the event instant: the reinits of the crossed indicators (in their direction), then the
-   event iteration: all modes updated together from the present ones, the algebraic variables
-   solved in between, until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine);
-   the integrator restarts from there, the right limit;
+3. at the event instant: the reinits of the crossed indicators (in their direction, their
+   values at the left limit), then the event iteration on the reinitialized states: all
+   modes updated together from the present ones, the algebraic variables solved in between,
+   until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine); the integrator
+   restarts from there, the right limit;
 4. time events (declared, input jumps) are restarts as without modes; the event iteration
    runs there and at the start too, so that the modes start consistent.
 
@@ -56,6 +57,10 @@ class EventSimulation:
         self.model, self.p, self.plugin = model, np.asarray(p, dtype=float), plugin
         self.opts = dict(opts)
         self.nx, self.has_alg = model.x.numel(), model.z.numel() > 0
+        if self.has_alg:
+            # the integrator restarts at every event with z consistent but not its rate:
+            # the algebraic variables (index 1: functions of x) stay out of the error test
+            self.opts.setdefault("suppress_algebraic", True)
         self.Nx, self.Nz = scale[:self.nx], scale[self.nx:]
         d = model.p[model.mode_params] if model.mode_params else ca.SX(0, 1)
         self.dae = {"x": model.x, "t": model.t, "ode": ode, "p": d}
@@ -109,7 +114,7 @@ class EventSimulation:
             z = z - np.linalg.lstsq(J, r, rcond=None)[0]
         raise SimulationError(f"the algebraic equations of '{self.model.name}' have no "
                               f"solution at t = {t:g} s with the modes "
-                              f"{dict(zip(self.mode_names, d))}: check the equations the "
+                              f"{self._modes(d)}: check the equations the "
                               f"components give for these modes")
 
     # ---- integration ---------------------------------------------------------------------
@@ -122,7 +127,7 @@ class EventSimulation:
         except RuntimeError as e:
             raise SimulationError(f"integration of '{self.model.name}' failed after "
                                   f"t = {t0:g} s with the modes "
-                                  f"{dict(zip(self.mode_names, d))}: {short_error(e)}") from None
+                                  f"{self._modes(d)}: {short_error(e)}") from None
         X = np.array(sol["xf"], dtype=float) * self.Nx[:, None]
         Z = np.array(sol["zf"], dtype=float) * self.Nz[:, None] if self.has_alg \
             else np.zeros((0, len(times)))
@@ -165,45 +170,50 @@ class EventSimulation:
         return hi_t, hi_x, hi_z, hi_g
 
     def event(self, t, x, z, d, crossed: dict):
-        """The event at t from the left limit (x, z, d): reinits of the ``crossed``
-        indicators (index -> direction), then the event iteration. Returns the right limit
-        (x, z, d) and logs the event."""
-        u_p = self.point(t, x, z, d)
-        _, values = self.update(*u_p)
-        values = np.array(values, dtype=float).ravel()
+        """The event at t from the left limit (x, z, d): the reinits of the ``crossed``
+        indicators (index -> direction), their values at the left limit, then the event
+        iteration on the reinitialized states (a friction element's velocity, set to 0 when
+        it sticks, is 0 for its mode machine). Returns the right limit (x, z, d) and logs the
+        event."""
+        values = np.array(self.update(*self.point(t, x, z, d))[1], dtype=float).ravel()
         x_new = np.array(x, dtype=float)
         reinit = {}
         for j, r in enumerate(self.reinits):
             if r.indicator in crossed and r.direction in (0, crossed[r.indicator]):
-                name = self.model.x_names[r.state]
-                reinit[name] = (float(x_new[r.state]), float(values[j]))
+                reinit[self.model.x_names[r.state]] = (float(x_new[r.state]), float(values[j]))
                 x_new[r.state] = values[j]
-        seen = [tuple(d)]
-        d_new = np.array(d, dtype=float)
-        for _ in range(MAX_ITERATIONS):
-            z = self.consistent_z(t, x_new, z, d_new)
-            nxt = np.round(np.array(self.update(*self.point(t, x_new, z, d_new))[0],
-                                    dtype=float).ravel())
-            if np.array_equal(nxt, d_new):
-                break
-            d_new = nxt
-            seen.append(tuple(d_new))
-        else:
-            moving = {self.mode_owner[k] for k in range(len(d)) if
-                      len({s[k] for s in seen[-10:]}) > 1}
-            raise SimulationError(
-                f"event iteration at t = {t:g} s does not settle: the modes of "
-                f"{', '.join(sorted(moving))} keep changing ({MAX_ITERATIONS} rounds); check "
-                f"their mode_update for a cycle")
-        self._check_values(t, d_new)
+        z, d_new = self.iterate(t, x_new, z, np.array(d, dtype=float))
         changed = {n: (float(a), float(b)) for n, a, b in zip(self.mode_names, d, d_new)
                    if a != b}
         for k, direction in crossed.items():
-            self.log.append(Event(t, self.owner[k], self.names[k], direction, changed, reinit))
+            self.log.append(Event(float(t), self.owner[k], self.names[k], direction, changed,
+                                  reinit))
         if not crossed and (changed or reinit):
             owners = sorted({self.mode_owner[self.mode_names.index(n)] for n in changed})
-            self.log.append(Event(t, ", ".join(owners), "", 0, changed, reinit))
+            self.log.append(Event(float(t), ", ".join(owners), "", 0, changed, reinit))
         return x_new, z, d_new
+
+    def iterate(self, t, x, z, d):
+        """The event iteration at (t, x): every mode updated from the present ones, the
+        algebraic variables solved for them, until no mode changes: (z, d)."""
+        seen = [tuple(d)]
+        for _ in range(MAX_ITERATIONS):
+            z = self.consistent_z(t, x, z, d)
+            nxt = np.round(np.array(self.update(*self.point(t, x, z, d))[0],
+                                    dtype=float).ravel())
+            if np.array_equal(nxt, d):
+                self._check_values(t, d)
+                return z, d
+            d = nxt
+            seen.append(tuple(d))
+        moving = {self.mode_owner[k] for k in range(len(d)) if len({s[k] for s in seen}) > 1}
+        raise SimulationError(
+            f"event iteration at t = {t:g} s does not settle: the modes of "
+            f"{', '.join(sorted(moving))} keep changing ({MAX_ITERATIONS} rounds: "
+            f"{' -> '.join(str(s) for s in seen[-4:])}); check their mode_update for a cycle")
+
+    def _modes(self, d) -> dict:
+        return {n: float(v) for n, v in zip(self.mode_names, d)}
 
     def _check_values(self, t, d):
         for name, v, owner in zip(self.mode_names, d, self.mode_owner):
