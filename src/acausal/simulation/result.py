@@ -23,7 +23,7 @@ class Event:
 
     def __str__(self):
         what = f"{self.indicator} {'falls' if self.direction < 0 else 'rises'} through 0" \
-            if self.indicator else "time event"
+            if self.indicator else "modes updated (start or time event)"
         changes = [f"{n}: {a:g} -> {b:g}" for n, (a, b) in {**self.modes, **self.reinit}.items()]
         return f"t = {self.time:.12g} s: {what}" + (f"; {', '.join(changes)}" if changes else "")
 

@@ -47,6 +47,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              coincides with one (``springDamper.w_rel``), replacing the model's
              (``CompiledModel.nominals``: 1 unless a component declares one, e.g.
              MSL's phi_nominal of a SpringDamper, or ``nominal={...}`` on a component).
+
+    A model with state events or discrete modes (components' ``indicator``, ``mode``,
+    ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
+    ODEs, IDAS for DAEs); the Result then has the event log ``events`` and both limits at
+    every event (its time twice in ``t``); the modes' start values are read from ``params``.
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
