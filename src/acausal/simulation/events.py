@@ -15,8 +15,9 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
 3. at the event instant: the reinits of the crossed indicators (in their direction, their
    values at the left limit), then the event iteration on the reinitialized states: all
    modes updated together from the present ones, the algebraic variables solved in between,
-   until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine); the integrator
-   restarts from there, the right limit;
+   until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine); in closed loops
+   the states are projected onto the loop constraints and their rates (the reinitialized
+   ones held); the integrator restarts from there, the right limit;
 4. time events (declared, input jumps) are restarts as without modes; the event iteration
    runs there and at the start too, so that the modes start consistent.
 
@@ -34,6 +35,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before, short_error
+from .initialization import model_equations
 from .result import Event
 
 CHECKS = 4                 # indicator checks per output interval
@@ -73,7 +75,13 @@ class EventSimulation:
         if self.has_alg:
             scaled.update(z=model.z, alg=ca.substitute(alg, *at))
         local = {k: v for k, v in self.opts.items() if k != "max_step_size"}
-        self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
+        self.loops = model.has_loops
+        if self.loops:      # IDAS is given consistent derivatives at each start (simulate)
+            self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
+            rows = model_equations(model)[0][1]                  # Φ̇ along the motion
+            self.speeds = model.function("speeds", [rows, ca.jacobian(rows, model.x)])
+        else:
+            self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
         self.u = ca.Function("u", [model.t], [u_expr])
         self.g = model.indicator_function
         self.update = model.event_update_function
@@ -101,17 +109,35 @@ class EventSimulation:
     def indicators(self, t, x, z, d) -> np.ndarray:
         return np.array(self.g(*self.point(t, x, z, d)), dtype=float).ravel()
 
+    def consistent(self, t, x, z, d, held: dict):
+        """(x, z) consistent at t with modes d: in closed loops the speeds moved the least
+        onto the loop velocity constraints Φ̇ = 0, the positions and the ``held`` states
+        (reinitialized ones, name -> value) kept, and the loops' multipliers 0 (their value
+        on the exact solution); the algebraic variables solving alg = 0 (Newton from z)."""
+        if self.loops:
+            x = np.array(x, dtype=float)
+            keep = set(self.model.position_states) | {self.model.x_names.index(n) for n in held}
+            free = [k for k in range(self.nx) if k not in keep]
+            r, J = (np.array(v, dtype=float) for v in self.speeds(*self.point(t, x, z, d)))
+            x[free] -= np.linalg.lstsq(J[:, free], r.ravel(), rcond=None)[0]
+            z = np.array(z, dtype=float)
+            z[self.model.loop_multipliers] = 0.0
+        return x, self.consistent_z(t, x, z, d)
+
     def consistent_z(self, t, x, z, d) -> np.ndarray:
-        """The algebraic variables solving alg = 0 at (t, x) with modes d (Newton from z)."""
+        """The algebraic variables solving alg = 0 at (t, x) with modes d (Newton from z;
+        the rows no algebraic variable enters, a closed loop's Φ = 0 and Φ̇ = 0, are the
+        states' business)."""
         if not self.has_alg:
             return z
         z = np.array(z, dtype=float)
         for _ in range(50):
             r, J = self.newton(*self.point(t, x, z, d))
             r, J = np.array(r, dtype=float).ravel(), np.array(J, dtype=float)
-            if np.max(np.abs(r), initial=0.0) <= 1e-12 * (1 + np.abs(z).max(initial=0.0)):
+            rows = np.any(J != 0, axis=1)
+            if np.max(np.abs(r[rows]), initial=0.0) <= 1e-12 * (1 + np.abs(z).max(initial=0.0)):
                 return z
-            z = z - np.linalg.lstsq(J, r, rcond=None)[0]
+            z = z - np.linalg.lstsq(J[rows], r[rows], rcond=None)[0]
         raise SimulationError(f"the algebraic equations of '{self.model.name}' have no "
                               f"solution at t = {t:g} s with the modes "
                               f"{self._modes(d)}: check the equations the "
@@ -122,7 +148,7 @@ class EventSimulation:
         """(x, z) at each of ``times`` (> t0) from (t0, x, z) with modes d, unscaled."""
         try:
             F = ca.integrator("segment", self.plugin, self.dae, float(t0), list(times),
-                              self.opts)
+                              self._start_options(t0, x, z, d, times[-1]))
             sol = F(x0=x / self.Nx, z0=z / self.Nz, p=d)
         except RuntimeError as e:
             raise SimulationError(f"integration of '{self.model.name}' failed after "
@@ -133,8 +159,21 @@ class EventSimulation:
             else np.zeros((0, len(times)))
         return X, Z
 
+    def _start_options(self, t0, x, z, d, t1) -> dict:
+        """The integrator's options; closed loops: with the derivatives at the start and a
+        first step, as simulate() gives them (IDAS's own initialization is off there)."""
+        if not self.loops:
+            return self.opts
+        xdot = np.array(self.xdot(x / self.Nx, z / self.Nz, t0, d), dtype=float).ravel()
+        step0 = max(1e-6 * (t1 - t0), 1e-13 * max(1.0, abs(t0)))    # resolvable at t0
+        return dict(self.opts, init_xdot=list(xdot), step0=step0)
+
     def state_at(self, t0, x, z, d, t):
-        """(x, z) at t from (t0, x, z), by the normalized integrator (t − t0 may be tiny)."""
+        """(x, z) at t from (t0, x, z), by the normalized integrator (t − t0 may be tiny);
+        closed loops: by an integrator from t0 to t."""
+        if self.loops:
+            X, Z = self.integrate(t0, [t], x, z, d)
+            return X[:, 0], Z[:, 0]
         sol = self.step(x0=x / self.Nx, z0=z / self.Nz, p=np.concatenate([[t0, t - t0], d]))
         xf = np.array(sol["xf"], dtype=float).ravel() * self.Nx
         zf = np.array(sol["zf"], dtype=float).ravel() * self.Nz if self.has_alg else z
@@ -182,7 +221,8 @@ class EventSimulation:
             if r.indicator in crossed and r.direction in (0, crossed[r.indicator]):
                 reinit[self.model.x_names[r.state]] = (float(x_new[r.state]), float(values[j]))
                 x_new[r.state] = values[j]
-        z, d_new = self.iterate(t, x_new, z, np.array(d, dtype=float))
+        held = {name: after for name, (_, after) in reinit.items()}
+        x_new, z, d_new = self.iterate(t, x_new, z, np.array(d, dtype=float), held)
         changed = {n: (float(a), float(b)) for n, a, b in zip(self.mode_names, d, d_new)
                    if a != b}
         for k, direction in crossed.items():
@@ -193,17 +233,18 @@ class EventSimulation:
             self.log.append(Event(float(t), ", ".join(owners), "", 0, changed, reinit))
         return x_new, z, d_new
 
-    def iterate(self, t, x, z, d):
+    def iterate(self, t, x, z, d, held: dict):
         """The event iteration at (t, x): every mode updated from the present ones, the
-        algebraic variables solved for them, until no mode changes: (z, d)."""
+        algebraic variables solved for them (``consistent``, ``held`` states kept), until no
+        mode changes: (x, z, d)."""
         seen = [tuple(d)]
         for _ in range(MAX_ITERATIONS):
-            z = self.consistent_z(t, x, z, d)
+            x, z = self.consistent(t, x, z, d, held)
             nxt = np.round(np.array(self.update(*self.point(t, x, z, d))[0],
                                     dtype=float).ravel())
             if np.array_equal(nxt, d):
                 self._check_values(t, d)
-                return z, d
+                return x, z, d
             d = nxt
             seen.append(tuple(d))
         moving = {self.mode_owner[k] for k in range(len(d)) if len({s[k] for s in seen}) > 1}
@@ -227,7 +268,6 @@ class EventSimulation:
         limits at events (T repeats their time), D the modes per column."""
         t = float(grid[0])
         d = self.p[self.model.mode_params]
-        z = self.consistent_z(t, x, z, d) if self.has_alg else z
         x, z, d = self.event(t, x, z, d, {})
         cols = [(t, x, z, d)]
         sides = side(self.indicators(t, x, z, d), np.ones(len(self.names)))

@@ -157,7 +157,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
 
     if model.has_events:
         return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
-                            signals, solver)
+                            signals, solver, mobility)
     try:
         X, Z = integrate(plugin, opts)
     except SimulationError:
@@ -176,11 +176,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
 
 
 def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, signals,
-                 solver) -> Result:
+                 solver, mobility) -> Result:
     """simulate() of a model with state events or modes (``events``)."""
-    if model.has_loops:
-        raise SimulationError(f"model '{model.name}' has closed kinematic loops and state "
-                              f"events; events in closed loops are not supported yet")
     time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
         e for s in signals for e in s.events if grid[0] < e < grid[-1]))
     run = EventSimulation(model, ode, alg, p, u_expr, scale, plugin, opts)
@@ -192,7 +189,7 @@ def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, 
     P[model.mode_params] = D
     res = Result(model, T, X, Z, U, P)
     res.events = run.log
-    res.mobility = None
+    res.mobility = mobility
     res.solver = solver
     return res
 
