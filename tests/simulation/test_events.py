@@ -238,6 +238,7 @@ class Stop(Component):
         e.reinit(w, -self.e * w, when="gap", direction=-1)
 
 
+@pytest.mark.filterwarnings("ignore:initial values changed to close")
 def test_closed_loop_elastic_stop_retraces_its_path():
     """The four-bar (a closed loop, IDAS) released at rest with its crank at 1.2 rad swings
     down onto an elastic stop at 0.5 rad. Reference: the same four-bar without the stop,
