@@ -12,7 +12,7 @@ from acausal.components.signals import Ramp
 from acausal.components.translational import ConstantForce, Force, ForceStep, Mass
 from acausal.core import Component, Parameter, RotationalFlange, TranslationalFlange
 from acausal.errors import SimulationError, StructureError
-from acausal.models import BouncingBall, FourBar
+from acausal.models import BouncingBall, Floor, FourBar
 
 G, E, H0 = 9.81, 0.8, 1.0
 
@@ -70,6 +70,32 @@ def test_bouncing_ball_left_and_right_limits_and_heights(ball):
     for k in range(5):                                  # the result's highest point between
         inside = (ball.t > tk[k]) & (ball.t < tk[k + 1])
         assert ball["ball.s"][inside].max() <= (E * vk[k]) ** 2 / (2 * G) + 1e-8
+
+
+def test_simultaneous_impacts_are_one_event():
+    """Two balls dropped together from H0 onto floors of their own (one with e, the other
+    with e/2) hit at the same instant: one event, both indicators crossed, both speeds
+    reinitialized; the second ball's next impact follows the closed form with e/2."""
+    model = acausal.Model("two_balls")
+    for k, e in ((1, E), (2, E / 2)):
+        setattr(model, f"ball{k}", Mass(m=1.0))
+        setattr(model, f"gravity{k}", ConstantForce(f_constant=-G))
+        setattr(model, f"floor{k}", Floor(e=e))
+        ball = getattr(model, f"ball{k}")
+        model.connect(getattr(model, f"gravity{k}").flange, ball.flange_a)
+        model.connect(getattr(model, f"floor{k}").flange, ball.flange_a)
+    res = acausal.compile(model).simulate(
+        1.0, x0={"ball1.s": H0, "ball1.v": 0.0, "ball2.s": H0, "ball2.v": 0.0},
+        rtol=1e-10, atol=1e-12)
+    falls = [ev for ev in res.events if ev.direction < 0]
+    t_1, v_1 = np.sqrt(2 * H0 / G), np.sqrt(2 * G * H0)
+    first = [ev for ev in falls if abs(ev.time - t_1) < 1e-9]
+    assert {ev.component for ev in first} == {"floor1", "floor2"}
+    assert len({ev.time for ev in first}) == 1                 # one instant, one restart
+    assert first[0].reinit == {"ball1.v": pytest.approx((-v_1, E * v_1), rel=1e-8),
+                               "ball2.v": pytest.approx((-v_1, E / 2 * v_1), rel=1e-8)}
+    second = next(ev for ev in falls if ev.component == "floor2" and ev.time > t_1 + 1e-6)
+    assert second.time == pytest.approx(t_1 + 2 * (E / 2) * v_1 / G, abs=1e-9)
 
 
 class CoulombFriction(Component):
