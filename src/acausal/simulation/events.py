@@ -5,8 +5,9 @@ in one direction only with CVODES and not at all with IDAS (casadi/casadi#4393),
 are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) alike:
 
 1. between events the model is integrated with the modes d as the integrator's parameters,
-   its outputs at the output grid and ``CHECKS`` points per output interval, where every
-   indicator's sign is checked (a pair of crossings closer than that is not seen);
+   its outputs at the output grid and at checks between (``CHECKS`` per output interval, at
+   least ``CHECKS_PER_RUN`` in all), where every indicator's sign is checked (a pair of
+   crossings closer than that is not seen);
 2. a sign change between two checks is located by re-integrating from the earlier check
    (one integrator on the normalized time τ ∈ [0, 1], the duration a parameter, built once),
    secant steps safeguarded by bisection, until the bracket is shorter than
@@ -38,7 +39,8 @@ from ..numerics import just_before, short_error
 from .initialization import model_equations
 from .result import Event
 
-CHECKS = 4                 # indicator checks per output interval
+CHECKS = 4                 # indicator checks per output interval, and at least
+CHECKS_PER_RUN = 2000      # this many over the simulated time (coarse output grids)
 EVENT_TOL = 1e-12          # event location: the bracket's width over max(1, |t|) [s]
 MAX_ITERATIONS = 50        # event iteration: rounds of mode updates at one instant
 CHATTER_EVENTS = 100       # this many state events ...
@@ -334,12 +336,15 @@ class EventSimulation:
 
 
 def _checks(grid, t, end) -> list[float]:
-    """The output times in (t, end] and CHECKS points per output interval between them."""
+    """The output times in (t, end] and checks between them: CHECKS per output interval,
+    none further apart than 1/CHECKS_PER_RUN of the simulated time."""
     pts = [float(v) for v in grid if t < v <= end]
     if not pts or pts[-1] != end:
         pts.append(float(end))
+    spacing = (grid[-1] - grid[0]) / CHECKS_PER_RUN
     out, a = [], t
     for b in pts:
-        out += list(np.linspace(a, b, CHECKS + 1)[1:-1]) + [b]
+        n = max(CHECKS, int(np.ceil((b - a) / spacing)))
+        out += list(np.linspace(a, b, n + 1)[1:-1]) + [b]
         a = b
     return out
