@@ -22,6 +22,8 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
 4. time events (declared, input jumps) are restarts as without modes; the event iteration
    runs there and at the start too, so that the modes start consistent.
 
+A crossing that can change nothing (a model without modes, no reinit of that indicator in
+that direction: a ball leaving the floor) is no event: not located, not logged.
 ``CHATTER_EVENTS`` state events within ``CHATTER_SPAN`` of the simulated time is chattering:
 a SimulationError naming the component whose indicators fired the most. Every event is
 logged (``Result.events``), and the left and right limits at an event are both kept in the
@@ -255,6 +257,16 @@ class EventSimulation:
             f"{', '.join(sorted(moving))} keep changing ({MAX_ITERATIONS} rounds: "
             f"{' -> '.join(str(s) for s in seen[-4:])}); check their mode_update for a cycle")
 
+    def _inert(self, new, sides) -> bool:
+        """Whether crossings from ``sides`` to ``new`` change nothing, and so are no event: no
+        modes in the model, and no reinit of these indicators in these directions (a ball
+        leaving the floor)."""
+        if self.mode_names:
+            return False
+        crossed = {k: new[k] for k in np.flatnonzero(new != sides)}
+        return not any(r.indicator in crossed and r.direction in (0, crossed[r.indicator])
+                       for r in self.reinits)
+
     def _modes(self, d) -> dict:
         return {n: float(v) for n, v in zip(self.mode_names, d)}
 
@@ -283,9 +295,11 @@ class EventSimulation:
                 X, Z = self.integrate(t, times, x, z, d)
                 prev = (t, x, z)
                 for i, tt in enumerate(times):
-                    g = self.indicators(tt, X[:, i], Z[:, i], d)
-                    if np.any(side(g, sides) != sides):
-                        break
+                    new = side(self.indicators(tt, X[:, i], Z[:, i], d), sides)
+                    if np.any(new != sides):
+                        if not self._inert(new, sides):
+                            break
+                        sides = new
                     if tt in grid:
                         cols.append((tt, X[:, i], Z[:, i], d))
                     prev = (tt, X[:, i], Z[:, i])
