@@ -9,7 +9,8 @@ holds every import to it):
     facade.py       acausal.compile and the calls on its result (simulate, export_fmu,
                     mobility): the top, importing any layer, imported by none
     analysis/ fmu/ ocp/   what is asked of a compiled model (siblings: none imports another)
-    simulation/     CasADi integrators, inputs, initial values, solver choice, Result
+    simulation/     CasADi integrators, inputs, initial values, solver choice, state events
+                    (events.py: location, event iteration of the modes, reinit), Result
     compiler/       model -> CompiledModel, the seam every layer above uses (compiled.py:
                     records of the variables, name resolution, Functions in the order
                     (t, x, z, u, p))

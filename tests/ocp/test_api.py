@@ -86,3 +86,11 @@ def test_free_final_time_with_a_cost_on_time_and_effort(osc):
     assert sol.T == pytest.approx((np.pi / 2 + np.arctan(zeta / np.sqrt(1 - zeta ** 2))) / wd,
                                   rel=1e-8)
     assert isinstance(ocp.T, ca.MX)
+
+
+def test_a_model_with_events_is_refused():
+    """The transcriptions know no events: a model with some is an error naming the
+    components, not a problem that ignores them."""
+    from acausal.models import BouncingBall
+    with pytest.raises(OCPError, match="events or modes.*floor"):
+        OCP(acausal.compile(BouncingBall()), N=10, T=1.0)

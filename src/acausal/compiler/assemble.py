@@ -27,7 +27,7 @@ from ..core.parameter import Parameter, symbolic_parameters
 from ..errors import StructureError, did_you_mean
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
-from .compiled import CompiledModel, ScalarVariable, coinciding
+from .compiled import CompiledModel, Reinit, ScalarVariable, StateEvents, coinciding
 from .flatten import flatten
 from .kinematics import Node, choose_tree
 from .lagrange import Lagrange, Residuals, residuals
@@ -224,6 +224,8 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
                                           min=0.0, declaration=_ACTIVE))
                        for s in ca.vertsplit(motion.active)]
     n_model_params = len(params) - motion.active.numel()
+    n_before_modes = len(params)
+    params = params + [(m.sym, _mode_record(m)) for m in ws.modes]
     z_states = _stack([i.sym for i in ws.states])
     u = _stack([s for _, s in ws.inputs])
     p = _stack([s for s, _ in params])
@@ -236,8 +238,12 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     ode = _vc(motion.q_diff_dot, motion.qdd_diff, zdot)
     z = _vc(motion.alg_vars, _stack([a.sym for a in ws.algebraics]))
     alg = _vc(motion.alg_res, g_alg)
-    resolve.check([ode, alg, y_out])
-    check = ca.Function("check", [t, x, z, u, p], [ode, alg, y_out], {"allow_free": True})
+    events = _state_events(ws, final, x, _vc(t, x, z, u))
+    resolve.check([ode, alg, y_out, events.indicator, events.mode_update,
+                   events.reinit_values])
+    check = ca.Function("check", [t, x, z, u, p], [ode, alg, y_out, events.indicator,
+                                                    events.mode_update, events.reinit_values],
+                        {"allow_free": True})
     if check.has_free():
         raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
                              f"(please report)")
@@ -275,7 +281,49 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         loop_switches=list(range(n_model_params, len(params))),
         loop_mu=motion.loop_mu, loop_nu=motion.loop_nu,
         fixed_params=fixed,
+        mode_params=list(range(n_before_modes, len(params))),
+        state_events=events,
     )
+
+
+def _mode_record(m) -> ScalarVariable:
+    what = m.description or "discrete mode"
+    declaration = Parameter(float(m.start), "1", f"{what}; its start value here, changed only "
+                                                 f"at events")
+    return ScalarVariable(m.sym.name(), "1", declaration.description, float(m.start),
+                          declaration=declaration, component=m.owner.path)
+
+
+def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX) -> StateEvents:
+    """The indicators, mode updates (a mode without one keeps its value) and reinits of the
+    components, in (t, x, z, u, p); a reinit's variable resolved to the state it is."""
+    indicators = [ScalarVariable(f"{o.path}.{n}" if o.path else n, unit, descr, component=o.path)
+                  for o, n, _, unit, descr in ws.indicators]
+    index = {(o, n): i for i, (o, n, *_) in enumerate(ws.indicators)}
+    g, upd, values = (final(_stack(v)) if v else ca.SX(0, 1) for v in (
+        [e for *_, e, _, _ in ws.indicators],
+        [m.update if m.update is not None else m.sym for m in ws.modes],
+        [ex for _, _, ex, _, _ in ws.reinits]))
+    rows = []
+    for (owner, variable, _, when, direction), value in zip(ws.reinits, ca.vertsplit(values)):
+        where = f"{type(owner).__name__} '{owner.path}'"
+        if (owner, when) not in index:
+            mine = [n for o, n, *_ in ws.indicators if o is owner]
+            raise StructureError(f"{where}: reinit when '{when}', which is no indicator of it "
+                                 f"(its indicators: {', '.join(mine) or 'none'}); declare it "
+                                 f"with e.indicator")
+        v = final(variable)
+        hit = coinciding(v, x, free)
+        if hit is None:
+            raise StructureError(f"{where}: reinit of '{variable}', which is not a state (nor "
+                                 f"one state scaled and offset by parameters); reinit a state "
+                                 f"or the velocity of a flange that has one")
+        k, a = hit
+        rows.append(Reinit(k, index[(owner, when)], direction,
+                           (value - ca.substitute(v, x[k], 0)) / a))
+    reinit_values = _stack([r.value for r in rows])
+    values = {m.sym.name(): m.values for m in ws.modes if m.values is not None}
+    return StateEvents(indicators, g, upd, rows, reinit_values, values)
 
 
 def _check_declarations(ws: Workspace) -> None:

@@ -30,6 +30,17 @@ class StateInfo:
 
 
 @dataclass
+class ModeInfo:
+    """A discrete variable (Modelica's Integer or Boolean mode): constant between events."""
+    sym: ca.SX
+    start: int
+    values: tuple | None
+    description: str
+    owner: Component
+    update: ca.SX | None = None
+
+
+@dataclass
 class Workspace:
     """Everything components declare, collected for the assembly."""
     t: ca.SX
@@ -56,6 +67,9 @@ class Workspace:
     declared: dict = field(default_factory=dict)            # (component, name) -> node / state
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
     events: list = field(default_factory=list)              # (time, period) of time events
+    modes: list[ModeInfo] = field(default_factory=list)
+    indicators: list = field(default_factory=list)          # (owner, name, expr, unit, descr.)
+    reinits: list = field(default_factory=list)             # (owner, variable, expr, when, dir.)
     components: list = field(default_factory=list)          # all of them, flattened
     param_symbols: dict = field(default_factory=dict)       # component -> {name: SX}
     p: object = None                                        # parameter symbols, stacked
@@ -195,6 +209,25 @@ class StructureBuilder(_Base):
             info.placeholder = d
         return s
 
+    def mode(self, name: str, start: int = 0, values=None, description: str = "") -> ca.SX:
+        """A discrete variable (Modelica's Integer or Boolean ``mode``; Booleans are 0 / 1),
+        starting at ``start``, constant between events: the equations may switch on it
+        (``casadi.if_else``). It changes only at events, to the value its
+        ``PhysicsBuilder.mode_update`` gives; ``values``: the values it may take (checked),
+        e.g. MSL's friction modes (-1, 0, 1): backward, stuck, forward. Compiled, it is
+        appended to the parameters (``CompiledModel.mode_params``)."""
+        start = int(start)
+        if values is not None:
+            values = tuple(int(v) for v in values)
+            if start not in values:
+                raise StructureError(f"{type(self._owner).__name__} '{self._owner.path}': mode "
+                                     f"'{name}' starts at {start}, not one of its values "
+                                     f"{values}")
+        m = ca.SX.sym(self._name(name))
+        self._ws.modes.append(ModeInfo(m, start, values, description, self._owner))
+        self._declare(name, m)
+        return m
+
     def algebraic(self, name: str, start=0.0, unit: str = "",
                   description: str = "") -> ca.SX:
         """An algebraic variable, fixed by a residual equation given in physics."""
@@ -216,6 +249,10 @@ class PhysicsBuilder(_Base):
         """The symbol of the state (or algebraic variable) this component declared as
         ``name`` in structure()."""
         return self._declared(name, "state")
+
+    def mode(self, name: str) -> ca.SX:
+        """The symbol of the mode this component declared as ``name`` in structure()."""
+        return self._declared(name, "mode")
 
     def _declared(self, name: str, what: str):
         try:
@@ -294,6 +331,46 @@ class PhysicsBuilder(_Base):
         both numbers or expressions of parameters: the integrator is restarted there instead
         of stepping across the jump."""
         self._ws.events.append((sx(time), sx(period) if period is not None else ca.SX(0)))
+
+    def indicator(self, name: str, expr, unit: str = "", description: str = "") -> None:
+        """A zero-crossing function ``<component>.<name>`` [unit]: a state event happens
+        wherever ``expr`` (of time, motion, states, algebraic variables, inputs, parameters and
+        modes) changes sign, in either direction. The simulator locates the crossing in time,
+        stops there and runs the event iteration: every ``mode_update`` and the ``reinit`` of
+        this indicator. Write it continuous between events (switch it with the modes: an
+        indicator that means nothing in a mode may be a constant there)."""
+        if any(o is self._owner and n == name for o, n, *_ in self._ws.indicators):
+            raise StructureError(f"{type(self._owner).__name__} '{self._owner.path}' declares "
+                                 f"indicator '{name}' twice")
+        self._ws.indicators.append((self._owner, name, sx(expr), unit, description))
+
+    def mode_update(self, mode: ca.SX, expr) -> None:
+        """The value ``mode`` takes at every event (state or time event): ``expr``, of the
+        motion, states, algebraic variables, inputs, parameters and the modes. In ``expr`` the
+        modes are their values before the update (Modelica's ``pre(mode)``). At an event all
+        modes are updated together, again and again, until none changes (the event iteration,
+        as MSL's friction elements; the algebraic variables solved in between)."""
+        info = next((m for m in self._ws.modes if m.sym is mode and m.owner is self._owner),
+                    None)
+        if info is None:
+            raise StructureError(f"{self._owner.path}: mode_update() of a symbol that is not a "
+                                 f"mode this component declared in structure()")
+        if info.update is not None:
+            raise StructureError(f"{self._owner.path}: mode_update of '{mode.name()}' given "
+                                 f"twice")
+        info.update = sx(expr)
+
+    def reinit(self, variable, expr, when: str, direction: int = 0) -> None:
+        """Modelica's ``when ... then reinit(variable, expr)``: when this component's
+        indicator ``when`` crosses zero in ``direction`` (−1: from positive to negative, 1:
+        from negative to positive, 0: either), the state ``variable`` (a state, or a
+        variable that is one state scaled and offset by parameters: ``e.vel(flange)``) jumps
+        to ``expr``, evaluated at the event's left limit (every value in it is its ``pre``),
+        in the variable's units."""
+        if direction not in (-1, 0, 1):
+            raise StructureError(f"{self._owner.path}: reinit direction must be -1, 0 or 1, "
+                                 f"got {direction!r}")
+        self._ws.reinits.append((self._owner, sx(variable), sx(expr), when, direction))
 
     def residual(self, expr) -> None:
         """Add an equation expr = 0 (for algebraic variables)."""

@@ -11,6 +11,13 @@ gravity, Coriolis, input matrix, Φ(q) for loops.
 
 Every Function of the seam takes its arguments in one order, **(t, x, z, u, p)**: time,
 states, algebraic variables, inputs, parameters (``function`` builds more of them).
+
+Discrete modes (``StructureBuilder.mode``: Integer / Boolean variables constant between
+events) are appended to the parameters: p = [parameters of the components; loop switches;
+modes d], ``mode_params`` their positions in p, so every Function sees the modes as
+parameters and the argument order stays. ``state_events`` holds the zero-crossing
+indicators, the modes' updates and the reinits, as expressions in (t, x, z, u, p);
+``indicator_function`` and ``event_update_function`` are their Functions.
 Names are resolved here once (``variable``, ``expression``): simulation, analysis, ocp and
 fmu ask the seam what a name is.
 
@@ -50,6 +57,7 @@ class ScalarVariable:
     max: float = np.inf
     nominal: float | None = None
     declaration: object = field(default=None, compare=False, repr=False)
+    component: str = ""      # the owning component's path (modes, indicators)
 
     def check(self, value) -> float:
         """A parameter value as float, checked by its declaration's rule (ParameterError
@@ -70,6 +78,33 @@ class Resolved:
     unit: str
 
 
+@dataclass(frozen=True)
+class Reinit:
+    """``when`` indicator ``indicator`` crosses zero in ``direction`` (−1 falling, 1 rising,
+    0 either): state ``state`` (its index in x) jumps to ``value`` (in (t, x, z, u, p), at the
+    event's left limit)."""
+    state: int
+    indicator: int
+    direction: int
+    value: ca.SX
+
+
+@dataclass
+class StateEvents:
+    """What happens at state events: the indicators (records named
+    ``<component>.<indicator>``, ``component`` their owner) and their expressions
+    ``indicator``; the new value of every mode (``mode_update``, in mode order: the mode
+    itself where the component gives no update); the reinits and their values stacked
+    (``reinit_values``); ``mode_values``: the values each mode may take, by name (modes
+    declared with ``values``)."""
+    indicators: list = field(default_factory=list)
+    indicator: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
+    mode_update: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
+    reinits: list = field(default_factory=list)
+    reinit_values: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
+    mode_values: dict = field(default_factory=dict)
+
+
 @dataclass
 class CompiledModel:
     """A model compiled into CasADi symbols and expressions (see the module docstring):
@@ -83,7 +118,9 @@ class CompiledModel:
     in z of the multipliers of the stabilized index-2 form that hold Φ = 0 and Φ̇ = 0 (zero
     on the exact solution). ``fixed_params``: parameters fixed at 0 when compiled (a
     component built with a ``structural_zero`` parameter at 0, e.g. a massless Mass), not
-    parameters of this model."""
+    parameters of this model. ``mode_params``: positions in p of the discrete modes (last in
+    p; their records in ``params`` hold their start values, ``component`` their owner).
+    ``state_events``: indicators, mode updates and reinits (see ``StateEvents``)."""
     name: str
     t: ca.SX
     x: ca.SX
@@ -111,6 +148,8 @@ class CompiledModel:
     loop_mu: list[int] = field(default_factory=list)
     loop_nu: list[int] = field(default_factory=list)
     fixed_params: list[str] = field(default_factory=list)
+    mode_params: list[int] = field(default_factory=list)
+    state_events: StateEvents = field(default_factory=StateEvents)
     _cache: dict = field(default_factory=dict, repr=False)
 
     # ---- names ----------------------------------------------------------------------------
@@ -155,6 +194,34 @@ class CompiledModel:
         angles, not rates or internal states)."""
         index = self._index("states")
         return [index[n] for n in self.lagrange.q_names if n in index]
+
+    @property
+    def modes(self) -> list[ScalarVariable]:
+        """The discrete modes, in the order of ``mode_params`` (their start values: ``start``)."""
+        return [self.params[i] for i in self.mode_params]
+
+    @property
+    def has_events(self) -> bool:
+        """Whether the model has state events (indicators) or modes to update."""
+        return bool(self.state_events.indicators or self.mode_params)
+
+    @property
+    def indicator_function(self) -> ca.Function:
+        """Function (t, x, z, u, p) -> g, the indicators (``state_events.indicators``)."""
+        if "g" not in self._cache:
+            self._cache["g"] = self.function("indicators", [self.state_events.indicator], ["g"])
+        return self._cache["g"]
+
+    @property
+    def event_update_function(self) -> ca.Function:
+        """Function (t, x, z, u, p) -> (modes, reinit): the modes' new values given their
+        present ones in p, and the value of every reinit (``state_events.reinits``)."""
+        if "update" not in self._cache:
+            ev = self.state_events
+            self._cache["update"] = self.function("event_update",
+                                                  [ev.mode_update, ev.reinit_values],
+                                                  ["modes", "reinit"])
+        return self._cache["update"]
 
     @property
     def loop_multipliers(self) -> list[int]:

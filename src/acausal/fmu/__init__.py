@@ -26,6 +26,11 @@ def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None
     options      native: ``stop_time`` [s] of the DefaultExperiment (default 1), ``description``.
     Returns the Path of the written .fmu.
     """
+    if compiled.has_events:
+        owners = sorted({v.component for v in compiled.state_events.indicators + compiled.modes})
+        raise FmuExportError(f"model '{compiled.name}' has state events or modes (of "
+                             f"{', '.join(owners)}); FMUs of such models are not made yet: "
+                             f"their events would be ignored")
     if backend == "native":
         from .export import export_native
         try:

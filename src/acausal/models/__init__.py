@@ -16,8 +16,10 @@ no compiler or simulation imports.
     drivetrains         Drivetrain: DC motor, gear, elastic shaft, fan drum
     elastic_bearing     ElasticBearing: MSL's gearbox on an elastic bearing (nominals)
     oscillators         Oscillator: mass on a spring and a damper
+    bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
+from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
@@ -30,7 +32,7 @@ from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
 
-__all__ = ["CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
+__all__ = ["BouncingBall", "Floor", "CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
            "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
            "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain"]

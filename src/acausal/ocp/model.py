@@ -23,6 +23,12 @@ class ModelView:
     """
 
     def __init__(self, compiled, params: dict | None = None, free=()):
+        if compiled.has_events:
+            owners = sorted({v.component for v in
+                             compiled.state_events.indicators + compiled.modes})
+            raise OCPError(f"model '{compiled.name}' has state events or modes (of "
+                           f"{', '.join(owners)}); optimal control of such models is not "
+                           f"supported yet: the transcription would ignore their events")
         self.compiled = compiled
         self.p_values = compiled.param_vector(params)
         self.free = list(free)

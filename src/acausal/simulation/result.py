@@ -1,9 +1,31 @@
 """Result: the simulated trajectories of every variable, by dotted name."""
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+
 import numpy as np
 
 from ..errors import VariableNameError
+
+
+@dataclass(frozen=True)
+class Event:
+    """One entry of a Result's event log: at ``time`` [s], ``component``'s ``indicator``
+    crossed zero in ``direction`` (−1 falling, 1 rising; for a time event or the start,
+    indicator "" and direction 0); ``modes``: every mode that changed, name -> (before,
+    after); ``reinit``: every state reinitialized, name -> (before, after)."""
+    time: float
+    component: str
+    indicator: str
+    direction: int
+    modes: dict = field(default_factory=dict)
+    reinit: dict = field(default_factory=dict)
+
+    def __str__(self):
+        what = f"{self.indicator} {'falls' if self.direction < 0 else 'rises'} through 0" \
+            if self.indicator else "modes updated (start or time event)"
+        changes = [f"{n}: {a:g} -> {b:g}" for n, (a, b) in {**self.modes, **self.reinit}.items()]
+        return f"t = {self.time:.12g} s: {what}" + (f"; {', '.join(changes)}" if changes else "")
 
 
 class Result:
@@ -15,6 +37,10 @@ class Result:
     other symbols are read directly; the recorded variables (port positions and flows,
     sensor signals, components' variables) are built and evaluated on first use, so that a
     run whose states alone are read pays nothing for them.
+
+    A model with events: ``events`` is the event log (``Event``s in time order), the modes
+    are read like any variable (``res["block.mode"]``), and at each event the time appears
+    twice in ``t``: the left limit, then the right limit.
     """
 
     def __init__(self, model, t, X, Z, U, P):
@@ -27,6 +53,7 @@ class Result:
         self._params = np.asarray(P, dtype=float).reshape(len(model.params), -1)
         self._values = None
         self._units = None
+        self.events: list[Event] = []
 
     @property
     def names(self) -> list[str]:
@@ -59,7 +86,8 @@ class Result:
         if kind == "time":
             return self.t
         if kind == "parameter":
-            return np.full(self.t.size, self._params[index, 0])
+            row = self._params[index]
+            return row.copy() if row.size == self.t.size else np.full(self.t.size, row[0])
         source = {"state": self._states, "algebraic": self._algebraics,
                   "input": self._inputs}.get(kind)
         if source is not None:

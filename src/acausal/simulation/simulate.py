@@ -7,6 +7,7 @@ import numpy as np
 from ..errors import SimulationError
 from ..numerics import just_before
 from .diagnosis import failure_message
+from .events import EventSimulation
 from .initialization import initial_state
 from .inputs import input_signal
 from .result import Result
@@ -46,6 +47,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              coincides with one (``springDamper.w_rel``), replacing the model's
              (``CompiledModel.nominals``: 1 unless a component declares one, e.g.
              MSL's phi_nominal of a SpringDamper, or ``nominal={...}`` on a component).
+
+    A model with state events or discrete modes (components' ``indicator``, ``mode``,
+    ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
+    ODEs, IDAS for DAEs); the Result then has the event log ``events`` and both limits at
+    every event (its time twice in ``t``); the modes' start values are read from ``params``.
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
@@ -72,15 +78,19 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     has_alg = model.z.numel() > 0
     # inputs become expressions of time, parameters their values: the integrator sees the
     # same folded arithmetic as a hand-written model with numbers (changing a parameter
-    # rebuilds only the integrator, never the model)
-    ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, ca.SX(p)])
+    # rebuilds only the integrator, never the model); modes stay symbols, the integrator's
+    # parameters, changed at events
+    values = ca.SX(p)
+    values[model.mode_params] = model.p[model.mode_params]
+    ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, values])
     auto = solver is None
-    rho = None if has_alg or not model.x.numel() else _check_start(model, ode, p, u0, xs,
-                                                                     grid[0], estimate=auto)
+    rho = None if has_alg or not model.x.numel() else _check_start(
+        model, ca.substitute(ode, model.p, ca.SX(p)), p, u0, xs, grid[0], estimate=auto)
     ode, alg = scaled(model, ode, alg, scale)
     if auto:
         solver = "idas" if has_alg else (
-            "cvodes" if rho is not None and is_stiff(rho, grid[0], grid[-1]) else "adams")
+            "cvodes" if rho is not None and (model.has_events or is_stiff(rho, grid[0], grid[-1]))
+            else "adams")
     plugin, opts, loops = integrator_settings(model, solver, rtol, atol, max_step)
     if auto and solver == "adams" and rho is not None:   # too much work: BDF takes over
         opts["max_num_steps"] = adams_step_budget(rho, float(np.max(np.diff(grid))))
@@ -145,6 +155,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             x, z = xf[:, -1], (zf[:, -1] if has_alg else z)
         return np.hstack(X) * scale[:nx, None], np.hstack(Z) * scale[nx:, None]
 
+    if model.has_events:
+        return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
+                            signals, solver, mobility)
     try:
         X, Z = integrate(plugin, opts)
     except SimulationError:
@@ -158,6 +171,25 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if model.u.numel() else np.zeros((0, grid.size))
     res = Result(model, grid, X, Z, U, p)
     res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
+    res.solver = solver
+    return res
+
+
+def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, signals,
+                 solver, mobility) -> Result:
+    """simulate() of a model with state events or modes (``events``)."""
+    time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
+        e for s in signals for e in s.events if grid[0] < e < grid[-1]))
+    run = EventSimulation(model, ode, alg, p, u_expr, scale, plugin, opts)
+    T, X, Z, D = run.run(grid, np.asarray(xs, dtype=float).ravel(),
+                         np.asarray(zs, dtype=float).ravel(), time_events)
+    U = np.array(ca.Function("u", [model.t], [u_expr]).map(T.size)(T.reshape(1, -1))) \
+        if model.u.numel() else np.zeros((0, T.size))
+    P = np.tile(p.reshape(-1, 1), (1, T.size))
+    P[model.mode_params] = D
+    res = Result(model, T, X, Z, U, P)
+    res.events = run.log
+    res.mobility = mobility
     res.solver = solver
     return res
 

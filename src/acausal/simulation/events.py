@@ -1,0 +1,364 @@
+"""State events and discrete modes: integration from event to event.
+
+CasADi's own event support (3.8: a ``zero`` expression with a ``transition`` Function) fires
+in one direction only with CVODES and not at all with IDAS (casadi/casadi#4393), so events
+are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) alike:
+
+1. between events the model is integrated with the modes d as the integrator's parameters,
+   its outputs at the output grid and at checks between (``CHECKS`` per output interval, at
+   least ``CHECKS_PER_RUN`` in all), where every indicator's sign is checked (a pair of
+   crossings closer than that is not seen);
+2. a sign change between two checks is located by re-integrating from the earlier check
+   (one integrator on the normalized time τ ∈ [0, 1], the duration a parameter, built once),
+   secant steps safeguarded by bisection, until the bracket is shorter than
+   ``EVENT_TOL``·max(1, |t|); every indicator that changed sign over that last bracket crossed
+   at the event (simultaneous events), the bracket's end is the event's left limit;
+3. at the event instant: the reinits of the crossed indicators (in their direction, their
+   values at the left limit), then the event iteration on the reinitialized states: all
+   modes updated together from the present ones, the algebraic variables solved in between,
+   until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine); in closed loops
+   the states are projected onto the loop constraints and their rates (the reinitialized
+   ones held); the integrator restarts from there, the right limit;
+4. time events (declared, input jumps) are restarts as without modes; the event iteration
+   runs there and at the start too, so that the modes start consistent.
+
+A crossing that can change nothing (a model without modes, no reinit of that indicator in
+that direction: a ball leaving the floor) is no event: not located, not logged.
+``CHATTER_EVENTS`` state events within ``CHATTER_SPAN`` of the simulated time is chattering:
+a SimulationError naming the component whose indicators fired the most. Every event is
+logged (``Result.events``), and the left and right limits at an event are both kept in the
+Result (its time appears twice).
+"""
+from __future__ import annotations
+
+from collections import deque
+
+import casadi as ca
+import numpy as np
+
+from ..errors import SimulationError
+from ..numerics import just_before, short_error
+from .initialization import model_equations
+from .result import Event
+
+CHECKS = 4                 # indicator checks per output interval, and at least
+CHECKS_PER_RUN = 2000      # this many over the simulated time (coarse output grids)
+EVENT_TOL = 1e-12          # event location: the bracket's width over max(1, |t|) [s]
+MAX_ITERATIONS = 50        # event iteration: rounds of mode updates at one instant
+CHATTER_EVENTS = 100       # this many state events ...
+CHATTER_SPAN = 1e-6        # ... within this fraction of the simulated time: chattering
+
+
+def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
+    """The sign of each indicator; where it is exactly 0, the side it was on ``before``."""
+    s = np.sign(g)
+    return np.where(s == 0, before, s)
+
+
+class EventSimulation:
+    """Integration of ``model`` (an ODE/DAE whose ``ode``/``alg`` are scaled by ``scale``
+    and have the modes as free symbols, every other parameter a number) with its events."""
+
+    def __init__(self, model, ode, alg, p, u_expr, scale, plugin, opts):
+        self.model, self.p, self.plugin = model, np.asarray(p, dtype=float), plugin
+        self.opts = dict(opts)
+        self.nx, self.has_alg = model.x.numel(), model.z.numel() > 0
+        if self.has_alg:
+            # the integrator restarts at every event with z consistent but not its rate:
+            # the algebraic variables (index 1: functions of x) stay out of the error test
+            self.opts.setdefault("suppress_algebraic", True)
+        self.Nx, self.Nz = scale[:self.nx], scale[self.nx:]
+        d = model.p[model.mode_params] if model.mode_params else ca.SX(0, 1)
+        self.dae = {"x": model.x, "t": model.t, "ode": ode, "p": d}
+        if self.has_alg:
+            self.dae.update(z=model.z, alg=alg)
+        t0, h, tau = ca.SX.sym("t0"), ca.SX.sym("h"), ca.SX.sym("tau")
+        at = model.t, t0 + h * tau
+        scaled = {"x": model.x, "t": tau, "p": ca.vertcat(t0, h, d),
+                  "ode": h * ca.substitute(ode, *at)}
+        if self.has_alg:
+            scaled.update(z=model.z, alg=ca.substitute(alg, *at))
+        local = {k: v for k, v in self.opts.items() if k != "max_step_size"}
+        self.loops = model.has_loops
+        if self.loops:      # IDAS is given consistent derivatives at each start (simulate)
+            self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
+            rows = model_equations(model)[0][1]                  # Φ̇ along the motion
+            self.speeds = model.function("speeds", [rows, ca.jacobian(rows, model.x)])
+        else:
+            self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
+        self.u = ca.Function("u", [model.t], [u_expr])
+        self.g = model.indicator_function
+        self.update = model.event_update_function
+        self.reinits = model.state_events.reinits
+        self.owner = [v.component for v in model.state_events.indicators]
+        self.names = [v.name for v in model.state_events.indicators]
+        self.mode_names = [v.name for v in model.modes]
+        self.mode_owner = [v.component for v in model.modes]
+        self.allowed = model.state_events.mode_values
+        if self.has_alg:
+            z, alg_full = model.z, model.alg
+            self.newton = model.function("newton", [alg_full, ca.jacobian(alg_full, z)])
+        self.log: list[Event] = []
+
+    # ---- evaluation at a point -----------------------------------------------------------
+    def params(self, d) -> np.ndarray:
+        p = self.p.copy()
+        p[self.model.mode_params] = d
+        return p
+
+    def point(self, t, x, z, d):
+        """The arguments (t, x, z, u, p) of the seam's Functions."""
+        return t, x, z, np.array(self.u(t), dtype=float).ravel(), self.params(d)
+
+    def indicators(self, t, x, z, d) -> np.ndarray:
+        return np.array(self.g(*self.point(t, x, z, d)), dtype=float).ravel()
+
+    def consistent(self, t, x, z, d, held: dict):
+        """(x, z) consistent at t with modes d: in closed loops the speeds moved the least
+        onto the loop velocity constraints Φ̇ = 0, the positions and the ``held`` states
+        (reinitialized ones, name -> value) kept, and the loops' multipliers 0 (their value
+        on the exact solution); the algebraic variables solving alg = 0 (Newton from z)."""
+        if self.loops:
+            x = np.array(x, dtype=float)
+            keep = set(self.model.position_states) | {self.model.x_names.index(n) for n in held}
+            free = [k for k in range(self.nx) if k not in keep]
+            r, J = (np.array(v, dtype=float) for v in self.speeds(*self.point(t, x, z, d)))
+            x[free] -= np.linalg.lstsq(J[:, free], r.ravel(), rcond=None)[0]
+            z = np.array(z, dtype=float)
+            z[self.model.loop_multipliers] = 0.0
+        return x, self.consistent_z(t, x, z, d)
+
+    def consistent_z(self, t, x, z, d) -> np.ndarray:
+        """The algebraic variables solving alg = 0 at (t, x) with modes d (Newton from z;
+        the rows no algebraic variable enters, a closed loop's Φ = 0 and Φ̇ = 0, are the
+        states' business)."""
+        if not self.has_alg:
+            return z
+        z = np.array(z, dtype=float)
+        for _ in range(50):
+            r, J = self.newton(*self.point(t, x, z, d))
+            r, J = np.array(r, dtype=float).ravel(), np.array(J, dtype=float)
+            rows = np.any(J != 0, axis=1)
+            if np.max(np.abs(r[rows]), initial=0.0) <= 1e-12 * (1 + np.abs(z).max(initial=0.0)):
+                return z
+            z = z - np.linalg.lstsq(J[rows], r[rows], rcond=None)[0]
+        raise SimulationError(f"the algebraic equations of '{self.model.name}' have no "
+                              f"solution at t = {t:g} s with the modes "
+                              f"{self._modes(d)}: check the equations the "
+                              f"components give for these modes")
+
+    # ---- integration ---------------------------------------------------------------------
+    def integrate(self, t0, times, x, z, d):
+        """(x, z) at each of ``times`` (> t0) from (t0, x, z) with modes d, unscaled."""
+        try:
+            F = ca.integrator("segment", self.plugin, self.dae, float(t0), list(times),
+                              self._start_options(t0, x, z, d, times[-1]))
+            sol = F(x0=x / self.Nx, z0=z / self.Nz, p=d)
+        except RuntimeError as e:
+            raise SimulationError(f"integration of '{self.model.name}' failed after "
+                                  f"t = {t0:g} s with the modes "
+                                  f"{self._modes(d)}: {short_error(e)}") from None
+        X = np.array(sol["xf"], dtype=float) * self.Nx[:, None]
+        Z = np.array(sol["zf"], dtype=float) * self.Nz[:, None] if self.has_alg \
+            else np.zeros((0, len(times)))
+        return X, Z
+
+    def _start_options(self, t0, x, z, d, t1) -> dict:
+        """The integrator's options; closed loops: with the derivatives at the start and a
+        first step, as simulate() gives them (IDAS's own initialization is off there)."""
+        if not self.loops:
+            return self.opts
+        xdot = np.array(self.xdot(x / self.Nx, z / self.Nz, t0, d), dtype=float).ravel()
+        step0 = max(1e-6 * (t1 - t0), 1e-13 * max(1.0, abs(t0)))    # resolvable at t0
+        return dict(self.opts, init_xdot=list(xdot), step0=step0)
+
+    def state_at(self, t0, x, z, d, t):
+        """(x, z) at t from (t0, x, z), by the normalized integrator (t − t0 may be tiny);
+        closed loops: by an integrator from t0 to t."""
+        if self.loops:
+            X, Z = self.integrate(t0, [t], x, z, d)
+            return X[:, 0], Z[:, 0]
+        sol = self.step(x0=x / self.Nx, z0=z / self.Nz, p=np.concatenate([[t0, t - t0], d]))
+        xf = np.array(sol["xf"], dtype=float).ravel() * self.Nx
+        zf = np.array(sol["zf"], dtype=float).ravel() * self.Nz if self.has_alg else z
+        return xf, zf
+
+    # ---- events --------------------------------------------------------------------------
+    def locate(self, t0, x0, z0, d, sides, t1):
+        """The first crossing in (t0, t1] (some indicator off its ``sides`` at t1): (t, x, z,
+        indicators) at the bracket's end after it, the event's left limit."""
+        lo_t, lo_g = t0, self.indicators(t0, x0, z0, d)
+        hi_t = t1
+        hi_x, hi_z = self.state_at(t0, x0, z0, d, t1)
+        hi_g = self.indicators(t1, hi_x, hi_z, d)
+        tol = EVENT_TOL * max(1.0, abs(t1))
+        widths = [hi_t - lo_t]
+        while hi_t - lo_t > tol:
+            crossed = side(hi_g, sides) != sides
+            slow = len(widths) > 2 and widths[-1] > 0.5 * widths[-3]
+            if slow:
+                t = 0.5 * (lo_t + hi_t)
+            else:                          # the earliest secant estimate among the crossed
+                a, b = lo_g[crossed], hi_g[crossed]
+                frac = np.min(np.clip(a / np.where(a == b, 1.0, a - b), 0.0, 1.0))
+                t = lo_t + frac * (hi_t - lo_t)
+            t = min(max(t, lo_t + 0.25 * tol), hi_t - 0.25 * tol)
+            x, z = self.state_at(t0, x0, z0, d, t)
+            g = self.indicators(t, x, z, d)
+            if np.any(side(g, sides) != sides):
+                hi_t, hi_x, hi_z, hi_g = t, x, z, g
+            else:
+                lo_t, lo_g = t, g
+            widths.append(hi_t - lo_t)
+        return hi_t, hi_x, hi_z, hi_g
+
+    def event(self, t, x, z, d, crossed: dict):
+        """The event at t from the left limit (x, z, d): the reinits of the ``crossed``
+        indicators (index -> direction), their values at the left limit, then the event
+        iteration on the reinitialized states (a friction element's velocity, set to 0 when
+        it sticks, is 0 for its mode machine). Returns the right limit (x, z, d) and logs the
+        event."""
+        values = np.array(self.update(*self.point(t, x, z, d))[1], dtype=float).ravel()
+        x_new = np.array(x, dtype=float)
+        reinit = {}
+        for j, r in enumerate(self.reinits):
+            if r.indicator in crossed and r.direction in (0, crossed[r.indicator]):
+                reinit[self.model.x_names[r.state]] = (float(x_new[r.state]), float(values[j]))
+                x_new[r.state] = values[j]
+        held = {name: after for name, (_, after) in reinit.items()}
+        x_new, z, d_new = self.iterate(t, x_new, z, np.array(d, dtype=float), held)
+        changed = {n: (float(a), float(b)) for n, a, b in zip(self.mode_names, d, d_new)
+                   if a != b}
+        for k, direction in crossed.items():
+            self.log.append(Event(float(t), self.owner[k], self.names[k], direction, changed,
+                                  reinit))
+        if not crossed and (changed or reinit):
+            owners = sorted({self.mode_owner[self.mode_names.index(n)] for n in changed})
+            self.log.append(Event(float(t), ", ".join(owners), "", 0, changed, reinit))
+        return x_new, z, d_new
+
+    def iterate(self, t, x, z, d, held: dict):
+        """The event iteration at (t, x): every mode updated from the present ones, the
+        algebraic variables solved for them (``consistent``, ``held`` states kept), until no
+        mode changes: (x, z, d)."""
+        seen = [tuple(d)]
+        for _ in range(MAX_ITERATIONS):
+            x, z = self.consistent(t, x, z, d, held)
+            nxt = np.round(np.array(self.update(*self.point(t, x, z, d))[0],
+                                    dtype=float).ravel())
+            if np.array_equal(nxt, d):
+                self._check_values(t, d)
+                return x, z, d
+            d = nxt
+            seen.append(tuple(d))
+        moving = {self.mode_owner[k] for k in range(len(d)) if len({s[k] for s in seen}) > 1}
+        raise SimulationError(
+            f"event iteration at t = {t:g} s does not settle: the modes of "
+            f"{', '.join(sorted(moving))} keep changing ({MAX_ITERATIONS} rounds: "
+            f"{' -> '.join(str(s) for s in seen[-4:])}); check their mode_update for a cycle")
+
+    def _inert(self, new, sides) -> bool:
+        """Whether crossings from ``sides`` to ``new`` change nothing, and so are no event: no
+        modes in the model, and no reinit of these indicators in these directions (a ball
+        leaving the floor)."""
+        if self.mode_names:
+            return False
+        crossed = {k: new[k] for k in np.flatnonzero(new != sides)}
+        return not any(r.indicator in crossed and r.direction in (0, crossed[r.indicator])
+                       for r in self.reinits)
+
+    def _modes(self, d) -> dict:
+        return {n: float(v) for n, v in zip(self.mode_names, d)}
+
+    def _check_values(self, t, d):
+        for name, v, owner in zip(self.mode_names, d, self.mode_owner):
+            allowed = self.allowed.get(name)
+            if allowed is not None and int(v) not in allowed:
+                raise SimulationError(f"at t = {t:g} s the mode_update of '{owner}' gives "
+                                      f"{name} = {v:g}, not one of its values {allowed}")
+
+    def run(self, grid, x, z, time_events):
+        """Integrate over ``grid`` from (x, z) at grid[0]: (T, X, Z, D) with the left and right
+        limits at events (T repeats their time), D the modes per column."""
+        t = float(grid[0])
+        d = self.p[self.model.mode_params]
+        x, z, d = self.event(t, x, z, d, {})
+        cols = [(t, x, z, d)]
+        sides = side(self.indicators(t, x, z, d), np.ones(len(self.names)))
+        recent = deque(maxlen=CHATTER_EVENTS)
+        span = CHATTER_SPAN * (grid[-1] - grid[0])
+        stops = sorted(set(time_events)) + [float(grid[-1])]
+        for stop in stops:
+            while t < stop:
+                end = stop if stop == grid[-1] else just_before(stop)
+                times = _checks(grid, t, end)
+                X, Z = self.integrate(t, times, x, z, d)
+                prev = (t, x, z)
+                for i, tt in enumerate(times):
+                    new = side(self.indicators(tt, X[:, i], Z[:, i], d), sides)
+                    if np.any(new != sides):
+                        if not self._inert(new, sides):
+                            break
+                        sides = new
+                    if tt in grid:
+                        cols.append((tt, X[:, i], Z[:, i], d))
+                    prev = (tt, X[:, i], Z[:, i])
+                else:
+                    t, x, z = end, X[:, -1], Z[:, -1]
+                    break
+                te, xe, ze, ge = self.locate(*prev, d, sides, tt)
+                new = side(ge, sides)
+                crossed = {k: int(new[k]) for k in np.flatnonzero(new != sides)}
+                cols.append((te, xe, ze, d))
+                x, z, d = self.event(te, xe, ze, d, crossed)
+                cols.append((te, x, z, d))
+                t = te
+                sides = side(self.indicators(t, x, z, d), new)
+                recent.extend((te, k) for k in crossed)
+                self._chattering(recent, span)
+            if stop != grid[-1]:               # a time event: restart at it
+                t = stop
+                g = self.indicators(t, x, z, d)
+                new = side(g, sides)
+                crossed = {k: int(new[k]) for k in np.flatnonzero(new != sides)}
+                n_log = len(self.log)
+                x1, z1, d1 = self.event(t, x, z, d, crossed)
+                if len(self.log) > n_log:
+                    cols.append((t, x, z, d))
+                x, z, d = x1, z1, d1
+                if t in grid or len(self.log) > n_log:
+                    cols.append((t, x, z, d))
+                sides = side(self.indicators(t, x, z, d), new)
+        T = np.array([c[0] for c in cols])
+        return (T, *(np.column_stack([np.asarray(c[k], dtype=float).reshape(-1) for c in cols])
+                     .reshape(-1, len(cols)) for k in (1, 2, 3)))
+
+    def _chattering(self, recent: deque, span: float):
+        if len(recent) < CHATTER_EVENTS or recent[-1][0] - recent[0][0] > span:
+            return
+        counts = {}
+        for _, k in recent:
+            counts[self.owner[k]] = counts.get(self.owner[k], 0) + 1
+        worst = max(counts, key=counts.get)
+        names = sorted({self.names[k] for _, k in recent if self.owner[k] == worst})
+        raise SimulationError(
+            f"chattering: {len(recent)} events within {recent[-1][0] - recent[0][0]:.3g} s "
+            f"after t = {recent[0][0]:.9g} s, {counts[worst]} of them of component '{worst}' "
+            f"(indicators {', '.join(names)}): its modes switch back and forth without end "
+            f"(an ideal relay, a sliding mode, a Zeno accumulation of impacts); give it a mode "
+            f"that holds at the switching surface (a stuck mode) or end the simulation before")
+
+
+def _checks(grid, t, end) -> list[float]:
+    """The output times in (t, end] and checks between them: CHECKS per output interval,
+    none further apart than 1/CHECKS_PER_RUN of the simulated time."""
+    pts = [float(v) for v in grid if t < v <= end]
+    if not pts or pts[-1] != end:
+        pts.append(float(end))
+    spacing = (grid[-1] - grid[0]) / CHECKS_PER_RUN
+    out, a = [], t
+    for b in pts:
+        n = max(CHECKS, int(np.ceil((b - a) / spacing)))
+        out += list(np.linspace(a, b, n + 1)[1:-1]) + [b]
+        a = b
+    return out
