@@ -27,11 +27,13 @@ mechanical part; a purely algebraic loop is reported by the compiler as an error
 from __future__ import annotations
 
 import math
+from enum import Enum
 
 import casadi as ca
 import numpy as np
 
-from ..core import Component, Parameter, RealInput, RealOutput, VectorPort
+from ..core import Component, Parameter, RealInput, RealOutput, Unavailable, VectorPort
+from ..core.component import who
 from ..errors import ParameterError
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
@@ -40,6 +42,7 @@ EPS = 1e-15
 __all__ = [
     "SO", "SISO", "SI2SO", "SignalSource",
     "Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid", "TimeTable",
+    "CombiTimeTable", "Smoothness", "Extrapolation", "TimeEvents",
     "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
     "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID",
 ]
@@ -239,17 +242,135 @@ class Trapezoid(_Periodic):
         return [self.rising, t_w, t_w + self.falling]
 
 
+class Smoothness(str, Enum):
+    """Modelica.Blocks.Types.Smoothness: how a table is interpolated."""
+    LinearSegments = "LinearSegments"
+    ContinuousDerivative = "ContinuousDerivative"
+    ConstantSegments = "ConstantSegments"
+    MonotoneContinuousDerivative1 = "MonotoneContinuousDerivative1"
+    MonotoneContinuousDerivative2 = "MonotoneContinuousDerivative2"
+    ModifiedContinuousDerivative = "ModifiedContinuousDerivative"
+
+
+class Extrapolation(str, Enum):
+    """Modelica.Blocks.Types.Extrapolation: a table's value outside its time range."""
+    HoldLastPoint = "HoldLastPoint"
+    LastTwoPoints = "LastTwoPoints"
+    Periodic = "Periodic"
+    NoExtrapolation = "NoExtrapolation"
+
+
+class TimeEvents(str, Enum):
+    """Modelica.Blocks.Types.TimeEvents: where a table restarts the integrator."""
+    Always = "Always"
+    AtDiscontinuities = "AtDiscontinuities"
+    NoTimeEvents = "NoTimeEvents"
+
+
+def _table_values(tau, tab: np.ndarray, smoothness: Smoothness,
+                  extrapolation: Extrapolation) -> list:
+    """The columns 2.. of table ``tab`` (rows [time, values...]) at table time ``tau``, one
+    expression per column. Linear segments are CasADi linear interpolants (a binary search,
+    not one branch per row), one per piece between repeated times (a jump: the later row
+    holds from that time on); constant segments give the row at or before tau."""
+    times, vals = tab[:, 0], tab[:, 1:]
+    n, m = vals.shape
+    if n == 1:
+        return [ca.SX(v) for v in vals[0]]
+    t_min, t_max = times[0], times[-1]
+    if extrapolation is Extrapolation.HoldLastPoint:
+        tau = ca.fmin(ca.fmax(tau, t_min), t_max)
+    elif extrapolation is Extrapolation.Periodic:
+        period = t_max - t_min
+        tau = tau - period * ca.floor((tau - t_min) / period)
+    if smoothness is Smoothness.ConstantSegments:
+        out = [ca.pw_const(tau, ca.DM(times[1:]), ca.DM(vals[:, j])) for j in range(m)]
+    else:
+        cuts = [0] + [i for i in range(1, n) if times[i] == times[i - 1]] + [n]
+        pieces = [(a, b) for a, b in zip(cuts[:-1], cuts[1:]) if b - a > 1 or b == n]
+
+        def piece(a, b):
+            if b - a == 1:                      # a last row of its own: held
+                return ca.SX(ca.DM(vals[a]))
+            f = ca.interpolant("table", "linear", [times[a:b]], vals[a:b].ravel())
+            return f(tau)
+
+        a, b = pieces[-1]
+        expr = piece(a, b)
+        for a, b in reversed(pieces[:-1]):
+            expr = ca.if_else(tau < times[b], piece(a, b), expr)
+        out = [expr[j] for j in range(m)]
+    if extrapolation is Extrapolation.NoExtrapolation:
+        outside = ca.logic_or(tau < t_min, tau > t_max)
+        out = [ca.if_else(outside, np.nan, y) for y in out]
+    return out
+
+
+def _table_events(tab: np.ndarray, smoothness: Smoothness, extrapolation: Extrapolation,
+                  timeEvents: TimeEvents) -> list:
+    """Table times where the interpolated signal restarts the integrator, as (time, period
+    or None) pairs in table time: every row with ``Always`` or constant segments, repeated
+    times with ``AtDiscontinuities`` (and the wrap of a periodic table)."""
+    times = tab[:, 0]
+    if tab.shape[0] == 1 or timeEvents is TimeEvents.NoTimeEvents:
+        return []
+    periodic = extrapolation is Extrapolation.Periodic
+    period = times[-1] - times[0] if periodic else None
+    if smoothness is Smoothness.ConstantSegments:
+        rows = times[1:]
+    elif timeEvents is TimeEvents.Always:
+        rows = times[1:-1]
+    else:
+        rows = times[1:][times[1:] == times[:-1]]
+    rows = set(map(float, rows)) | ({float(times[-1])} if periodic else set())
+    return [(tk, period) for tk in sorted(rows)]
+
+
+def _check_table(table, kind: str, first_at_zero: bool) -> np.ndarray:
+    if table is None:
+        raise ParameterError(f"{kind}: no table given; pass table=[[t0, y0], [t1, y1], ...]")
+    try:
+        tab = np.array(table, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{kind}: table must be numbers in rows [time, value, ...], got "
+                             f"{table!r}") from None
+    if tab.ndim == 1 and tab.size >= 2:
+        tab = tab.reshape(1, -1)
+    if tab.ndim != 2 or tab.shape[1] < 2 or tab.shape[0] < 1:
+        raise ParameterError(f"{kind}: table must have rows [time, value, ...] (shape (n, 2) "
+                             f"or wider), got shape {tab.shape}")
+    if not np.all(np.isfinite(tab)):
+        raise ParameterError(f"{kind}: table contains non-finite values")
+    if tab.shape[0] > 1:
+        if first_at_zero and tab[0, 0] != 0.0:
+            raise ParameterError(f"{kind}: the first point in time has to be 0, but is "
+                                 f"table[1,1] = {tab[0, 0]}; shift the table with shiftTime")
+        if np.any(np.diff(tab[:, 0]) < 0):
+            raise ParameterError(f"{kind}: the times (first column) must be non-decreasing")
+        if np.any((tab[2:, 0] == tab[1:-1, 0]) & (tab[1:-1, 0] == tab[:-2, 0])):
+            raise ParameterError(f"{kind}: a time appears more than twice in the table; a "
+                                 f"jump is two rows with the same time")
+        if tab[0, 0] == tab[-1, 0]:
+            raise ParameterError(f"{kind}: the table spans no time (first time = last time)")
+    return tab
+
+
 class TimeTable(SignalSource):
     """Linear interpolation in a table of [time, value] rows (MSL Sources.TimeTable).
 
     ``table`` (constructor argument, an (n, 2) array-like): times in the first column,
     non-decreasing, the first one 0 when n > 1; a time given twice is a jump (the later row
-    holds from that time on). For time ≥ startTime the output is
+    holds from that time on). For time ≥ startTime [s] the output is
     ``offset + interp((time − shiftTime)/timeScale)``, extrapolated through the first or
     last two rows outside the table; before startTime it is ``offset``; a one-row table gives
     its value. ``shiftTime`` [s] defaults to startTime (the MSL binding: the table then
     follows startTime, also when startTime is changed at simulation time); giving it at
-    construction makes it a parameter of its own.
+    construction makes it a parameter of its own; timeScale [s] is the time unit of the
+    first column.
+
+    The table is a CasADi linear interpolant: the integrator restarts only at jumps
+    (repeated times), not at every row. The table is fixed when the model is compiled
+    (offset, startTime, shiftTime and timeScale are parameters).
     """
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
 
@@ -264,34 +385,27 @@ class TimeTable(SignalSource):
         if shiftTime is not None:
             params["shiftTime"] = shiftTime
         super().__init__(name, **params)
-        self.__dict__["table"] = _check_table(table)
+        tab = _check_table(table, "TimeTable", first_at_zero=True)
+        if tab.shape[1] != 2:
+            raise ParameterError(f"TimeTable: table must have rows [time, value] (shape "
+                                 f"(n, 2)), got shape {tab.shape}; CombiTimeTable takes "
+                                 f"several columns")
+        self.__dict__["table"] = tab
 
     def _shift(self):
         return self.startTime
 
     def signal(self, t):
-        tab = self.table
         tau = (t - self._shift()) / self.timeScale
-        n = tab.shape[0]
-        if n == 1:
-            return ca.SX(tab[0, 1])
-
-        def piece(j):      # MSL: interval [j-1, j]; a zero-length one gives the value of row j
-            t0, y0 = tab[j - 1]
-            t1, y1 = tab[j]
-            if t1 - t0 <= 100 * EPS * abs(t1):
-                return ca.SX(y1)
-            return y0 + (y1 - y0) / (t1 - t0) * (tau - t0)
-
-        expr = piece(n - 1)
-        for j in range(n - 2, 0, -1):
-            expr = ca.if_else(tau < tab[j, 0], piece(j), expr)
-        return expr
+        return _table_values(tau, self.table, Smoothness.LinearSegments,
+                             Extrapolation.LastTwoPoints)[0]
 
     def events(self):
         shift = self._shift()
-        return [(self.startTime, None)] + [(shift + self.timeScale * float(tk), None)
-                                           for tk in self.table[1:-1, 0]]
+        return [(self.startTime, None)] + [
+            (shift + self.timeScale * tk, None) for tk, _ in _table_events(
+                self.table, Smoothness.LinearSegments, Extrapolation.LastTwoPoints,
+                TimeEvents.AtDiscontinuities)]
 
 
 class _ShiftedTimeTable(TimeTable):
@@ -305,28 +419,111 @@ class _ShiftedTimeTable(TimeTable):
 _ShiftedTimeTable.__name__ = "TimeTable"        # what messages and repr call it
 
 
-def _check_table(table) -> np.ndarray:
-    if table is None:
-        raise ParameterError("TimeTable: no table given; pass table=[[t0, y0], [t1, y1], ...]")
-    try:
-        tab = np.array(table, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(f"TimeTable: table must be numbers in rows [time, value], got "
-                             f"{table!r}") from None
-    if tab.ndim == 1 and tab.size == 2:
-        tab = tab.reshape(1, 2)
-    if tab.ndim != 2 or tab.shape[1] != 2 or tab.shape[0] < 1:
-        raise ParameterError(f"TimeTable: table must have rows [time, value] (shape (n, 2)), "
-                             f"got shape {tab.shape}")
-    if not np.all(np.isfinite(tab)):
-        raise ParameterError("TimeTable: table contains non-finite values")
-    if tab.shape[0] > 1:
-        if tab[0, 0] != 0.0:
-            raise ParameterError(f"TimeTable: the first point in time has to be 0, but is "
-                                 f"table[1,1] = {tab[0, 0]}; shift the table with shiftTime")
-        if np.any(np.diff(tab[:, 0]) < 0):
-            raise ParameterError("TimeTable: the times (first column) must be non-decreasing")
-    return tab
+class CombiTimeTable(Component):
+    """Table look-up in time with several output columns (MSL Sources.CombiTimeTable).
+
+    Constructor arguments (fixed when the model is compiled): ``table`` (rows [time, values
+    ...], times non-decreasing; a time given twice is a jump), ``columns`` (the table
+    columns to output, numbered from 1 as in Modelica, time being column 1; default
+    2..ncols), the options ``smoothness`` (LinearSegments, ConstantSegments: the row at or
+    before the time), ``extrapolation`` (HoldLastPoint, LastTwoPoints, Periodic,
+    NoExtrapolation) and ``timeEvents``.
+
+    Parameters: ``offset[i]`` (one per output; ``offset=c`` or ``offset=[...]`` at
+    construction), startTime [s] (y = offset before it), ``shiftTime`` [s] (defaults to
+    startTime, as MSL's binding; given, it is a parameter of its own) and timeScale [s] (the
+    time unit of the first column). For time ≥ startTime:
+    ``y[i] = offset[i] + table value of columns[i] at (time − shiftTime)/timeScale``.
+    Outputs ``y[1]`` .. ``y[nout]``.
+
+    MSL differences: the default ``timeEvents`` is AtDiscontinuities (MSL: Always, an event
+    at every row): linear segments restart the integrator only at repeated times (and at the
+    wrap of a periodic table), constant segments at every row. NoExtrapolation gives NaN
+    outside the table's times (MSL stops the simulation with an error). With constant
+    segments LastTwoPoints holds the first/last value. The spline smoothness options, tables
+    on files and verbose extrapolation are not available.
+    """
+    options = {"smoothness": Smoothness.LinearSegments,
+               "extrapolation": Extrapolation.LastTwoPoints,
+               "timeEvents": TimeEvents.AtDiscontinuities,
+               "tableOnFile": Unavailable(False, "tables read from files"),
+               "verboseExtrapolation": Unavailable(False, "warnings outside the table")}
+    startTime = Parameter(0.0, "s", "output = offset for time < startTime")
+    timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None, **params):
+        if cls is CombiTimeTable:
+            tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
+            cls = CombiTimeTable._variant(len(_columns(tab, columns)), shiftTime is not None)
+        return super().__new__(cls)
+
+    @staticmethod
+    def _variant(nout: int, shifted: bool) -> type:
+        key = (nout, shifted)
+        if key not in CombiTimeTable._classes:
+            attrs = {"__doc__": CombiTimeTable.__doc__, "__module__": __name__,
+                     "__qualname__": "CombiTimeTable", "_nout": nout,
+                     "offset": Parameter((0.0,) * nout, "", "offsets of output signals"),
+                     "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+            if shifted:
+                attrs["shiftTime"] = Parameter(0.0, "s", "shift time of first table column")
+            CombiTimeTable._classes[key] = type("CombiTimeTable", (CombiTimeTable,), attrs)
+        return CombiTimeTable._classes[key]
+
+    def __init__(self, name: str | None = None, *, table=None, columns=None, shiftTime=None,
+                 offset=0.0, **params):
+        if name is not None and not isinstance(name, str):
+            raise ParameterError("CombiTimeTable: give the table by keyword, "
+                                 "CombiTimeTable(table=...)")
+        if shiftTime is not None:
+            params["shiftTime"] = shiftTime
+        offsets = np.atleast_1d(np.asarray(offset, dtype=object)).ravel()
+        if offsets.size not in (1, self._nout):
+            raise ParameterError(f"CombiTimeTable: offset has {offsets.size} elements but "
+                                 f"there are {self._nout} outputs (give 1 or {self._nout})")
+        params["offset"] = tuple(offsets) * (self._nout // offsets.size)
+        super().__init__(name, **params)
+        if self.smoothness not in (Smoothness.LinearSegments, Smoothness.ConstantSegments):
+            raise ParameterError(f"{who(self)}: smoothness={self.smoothness.value} (a spline) "
+                                 f"is not available; use LinearSegments or ConstantSegments")
+        tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
+        self.__dict__["table"] = tab[:, [0] + [c - 1 for c in _columns(tab, columns)]]
+
+    @property
+    def nout(self) -> int:
+        return self._nout
+
+    def __reduce_ex__(self, protocol):          # the class is made per nout: rebuild it so
+        return _new_combi, (self._nout, "shiftTime" in self.parameters()), self.__dict__
+
+    def physics(self, e):
+        t = e.time
+        shift = self.shiftTime if "shiftTime" in self.parameters() else self.startTime
+        tau = (t - shift) / self.timeScale
+        values = _table_values(tau, self.table, self.smoothness, self.extrapolation)
+        for i, (port, y) in enumerate(zip(self.y, values)):
+            e.output(port, self.offset[i] + ca.if_else(t < self.startTime, 0, y))
+        e.time_event(self.startTime)
+        for tk, period in _table_events(self.table, self.smoothness, self.extrapolation,
+                                        self.timeEvents):
+            e.time_event(shift + self.timeScale * tk,
+                         None if period is None else self.timeScale * period)
+
+
+def _new_combi(nout: int, shifted: bool) -> CombiTimeTable:
+    return object.__new__(CombiTimeTable._variant(nout, shifted))
+
+
+def _columns(tab: np.ndarray, columns) -> list[int]:
+    """The selected table columns (numbered from 1, time being column 1), checked."""
+    ncol = tab.shape[1]
+    cols = list(range(2, ncol + 1)) if columns is None else list(np.atleast_1d(columns))
+    if not cols or any(isinstance(c, (bool, np.bool_)) or not isinstance(c, (int, np.integer))
+                       or not 2 <= c <= ncol for c in cols):
+        raise ParameterError(f"CombiTimeTable: columns must be integers in 2..{ncol} (the "
+                             f"table's value columns; column 1 is time), got {columns!r}")
+    return [int(c) for c in cols]
 
 
 # ---- math (Modelica.Blocks.Math) ---------------------------------------------------------------
