@@ -15,11 +15,13 @@ nothing else fixes the state). Other initial values are given at simulation time
 dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}`` (MSL's
 ``Init.InitialOutput``). Steady-state initialization is not provided.
 
-Sources are expressions of time built with CasADi functions (``if_else``, ``floor``), so they
-are exact, differentiable where the MSL signal is, and usable inside optimal control
-problems. Discontinuous sources (Step, Pulse, TimeTable jumps) generate no solver events:
-the variable-step integrator resolves the jump by reducing its step; give ``max_step`` to
-``simulate`` if a pulse is shorter than the steps the integrator would otherwise take.
+Sources are expressions of time built with CasADi functions (``if_else``, ``floor``,
+``interpolant``), so they are exact, differentiable where the MSL signal is, and usable
+inside optimal control problems. Discontinuous sources (Step, Pulse, table jumps) declare
+time events: the integrator restarts there. The nonlinear blocks (Limiter, DeadZone,
+LimPID's limiter) generate no events: the variable-step integrator resolves their kinks by
+reducing its step; give ``max_step`` to ``simulate`` if a system rests (no error for the
+step control to see) until a short pulse or an excursion out of a dead zone.
 
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.
@@ -32,7 +34,8 @@ from enum import Enum
 import casadi as ca
 import numpy as np
 
-from ..core import Component, Parameter, RealInput, RealOutput, Unavailable, VectorPort
+from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput, Unavailable,
+                    VectorPort)
 from ..core.component import who
 from ..errors import ParameterError
 
@@ -44,7 +47,9 @@ __all__ = [
     "Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid", "TimeTable",
     "CombiTimeTable", "Smoothness", "Extrapolation", "TimeEvents",
     "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
-    "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID",
+    "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID", "LimPID",
+    "SimpleController", "Init",
+    "Limiter", "VariableLimiter", "DeadZone", "LimiterHomotopy", "VariableLimiterHomotopy",
 ]
 
 
@@ -643,6 +648,128 @@ def _new_sum(nin: int) -> Sum:
     return object.__new__(Sum._with_inputs(nin))
 
 
+# ---- nonlinear (Modelica.Blocks.Nonlinear) -----------------------------------------------------
+class LimiterHomotopy(str, Enum):
+    """Modelica.Blocks.Types.LimiterHomotopy (accepted; it changes nothing here)."""
+    NoHomotopy = "NoHomotopy"
+    Linear = "Linear"
+    UpperLimit = "UpperLimit"
+    LowerLimit = "LowerLimit"
+
+
+class VariableLimiterHomotopy(str, Enum):
+    """Modelica.Blocks.Types.VariableLimiterHomotopy (accepted; it changes nothing here)."""
+    NoHomotopy = "NoHomotopy"
+    Linear = "Linear"
+    Fixed = "Fixed"
+
+
+def _limit(u, lower, upper):
+    """MSL's ``if u > upper then upper else if u < lower then lower else u``."""
+    return ca.if_else(u > upper, upper, ca.if_else(u < lower, lower, u))
+
+
+def _check_limits(block, upper: str, lower: str) -> None:
+    """A ParameterError when the values at construction have lower > upper (MSL's assert)."""
+    hi, lo = getattr(block, upper), getattr(block, lower)
+    if hi < lo:
+        raise ParameterError(f"{who(block)}: limits must be consistent, but {upper} (= {hi}) "
+                             f"< {lower} (= {lo})")
+
+
+class Limiter(SISO):
+    """Limit the range of a signal: y = uMax if u > uMax, uMin if u < uMin, else u
+    (MSL Nonlinear.Limiter).
+
+    Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding: it follows
+    uMax, also at simulation time, unless given at construction, which makes it a parameter
+    of its own). Options ``strict`` and ``homotopyType`` are accepted.
+
+    MSL differences: no events at the limits whatever ``strict`` (MSL's strict=true,
+    ``noEvent``); the integrator's step control resolves the kinks. ``homotopyType``
+    changes nothing (the initialization solves the actual model).
+    """
+    options = {"strict": False, "homotopyType": LimiterHomotopy.Linear}
+    required = ("uMax",)
+    uMax = Parameter(1.0, "", "upper limits of input signals")
+
+    def __new__(cls, name=None, **params):
+        return super().__new__(_LimiterUMin if cls is Limiter and "uMin" in params else cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _check_limits(self, "uMax", "uMin")
+
+    @property
+    def uMin(self):
+        """Lower limits of input signals: −uMax (MSL's binding)."""
+        return -self.uMax
+
+    def physics(self, e):
+        e.output(self.y, _limit(e.input(self.u), self.uMin, self.uMax))
+
+
+class _LimiterUMin(Limiter):
+    """Limiter with uMin given at construction: a parameter of its own."""
+    uMin = Parameter(-1.0, "", "lower limits of input signals")
+
+
+_LimiterUMin.__name__ = "Limiter"
+
+
+class VariableLimiter(SISO):
+    """Limit the range of a signal with variable limits: y = limit1 if u > limit1, limit2 if
+    u < limit2, else u (MSL Nonlinear.VariableLimiter). Inputs ``u``, ``limit1`` (maximum),
+    ``limit2`` (minimum).
+
+    MSL differences: no events at the limits whatever ``strict``; ``homotopyType`` changes
+    nothing (and its ySimplified is not declared); MSL's run-time assert limit1 ≥ limit2 is
+    not checked.
+    """
+    options = {"strict": False, "homotopyType": VariableLimiterHomotopy.Linear}
+    limit1 = RealInput("connector of Real input signal used as maximum of input u")
+    limit2 = RealInput("connector of Real input signal used as minimum of input u")
+
+    def physics(self, e):
+        e.output(self.y, _limit(e.input(self.u), e.input(self.limit2), e.input(self.limit1)))
+
+
+class DeadZone(SISO):
+    """Region of zero output: y = u − uMax if u > uMax, u − uMin if u < uMin, else 0
+    (MSL Nonlinear.DeadZone).
+
+    Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding, as for
+    Limiter). MSL differences: no events at the zone's edges.
+    """
+    required = ("uMax",)
+    uMax = Parameter(1.0, "", "upper limits of dead zones")
+
+    def __new__(cls, name=None, **params):
+        return super().__new__(_DeadZoneUMin if cls is DeadZone and "uMin" in params else cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _check_limits(self, "uMax", "uMin")
+
+    @property
+    def uMin(self):
+        """Lower limits of dead zones: −uMax (MSL's binding)."""
+        return -self.uMax
+
+    def physics(self, e):
+        u = e.input(self.u)
+        e.output(self.y, ca.if_else(u > self.uMax, u - self.uMax,
+                                    ca.if_else(u < self.uMin, u - self.uMin, 0)))
+
+
+class _DeadZoneUMin(DeadZone):
+    """DeadZone with uMin given at construction: a parameter of its own."""
+    uMin = Parameter(-1.0, "", "lower limits of dead zones")
+
+
+_DeadZoneUMin.__name__ = "DeadZone"
+
+
 # ---- continuous (Modelica.Blocks.Continuous) ----------------------------------------------------
 def _approx_derivative(u, x, k, T):
     """MSL Continuous.Derivative, k·s/(T·s + 1): (der(x), y); both 0 when |k| < eps."""
@@ -771,3 +898,133 @@ class PID(_StartValues, SISO):
         e.variable("P.y", u, description="proportional part")
         e.variable("D.y", d_y, description="derivative part")
         e.output(self.y, self.k * (u + xi + d_y))
+
+
+class SimpleController(str, Enum):
+    """Modelica.Blocks.Types.SimpleController: the parts of LimPID."""
+    P = "P"
+    PI = "PI"
+    PD = "PD"
+    PID = "PID"
+
+
+class Init(str, Enum):
+    """Modelica.Blocks.Types.Init: how a block's states are initialized."""
+    NoInit = "NoInit"
+    SteadyState = "SteadyState"
+    InitialState = "InitialState"
+    InitialOutput = "InitialOutput"
+
+
+class LimPID(_StartValues, Component):
+    """P, PI, PD or PID controller with limited output, anti-windup, set-point weighting and
+    optional feed-forward (MSL Continuous.LimPID), the equations of its internal blocks::
+
+        controlError = u_s − u_m
+        P.y  = wp·u_s − u_m
+        D:   der(D.x) = (wd·u_s − u_m − D.x)/Tf,  D.y = (Td/Tf)·(wd·u_s − u_m − D.x),
+             Tf = max(Td/Nd, 1e-14)   (D.y = 0, der(D.x) = 0 when Td < eps)
+        I:   der(I.y) = (u_s − u_m + (y − limiter.u)/(k·Ni))/Ti
+        limiter.u = k·(P.y + I.y + D.y) + kFF·u_ff
+        y = limiter.u clamped to [yMin, yMax]
+
+    Inputs ``u_s`` (set point), ``u_m`` (measurement), ``u_ff`` (feed-forward, with
+    ``withFeedForward=True``); output ``y``. Options: ``controllerType`` (P, PI, PD, PID:
+    without I or D part the state and its terms are absent), ``withFeedForward``,
+    ``initType``, ``strict``, ``homotopyType``.
+
+    Parameters: k [1] (non-zero), Ti [s] (> 0), Td [s] (≥ 0), yMax (required, as in MSL),
+    yMin (default −yMax, MSL's binding: follows yMax unless given at construction), wp, wd
+    [1] (set-point weights), Ni [1] (Ni·Ti is the anti-windup time constant), Nd [1] (the
+    higher, the more ideal the derivative), kFF [1]. Start values (constructor arguments):
+    xi_start (I.y), xd_start (D.x). Recorded: controlError, P.y, D.y, limiter.u.
+
+    MSL differences: initType InitialState and NoInit start the states at xi_start,
+    xd_start; SteadyState and InitialOutput are not available (give x0 at simulation
+    time). The limiter generates no events (as with strict=true); homotopyType changes
+    nothing (the initialization solves the actual model).
+    """
+    _starts = ("xi_start", "xd_start")
+    options = {"controllerType": SimpleController.PID, "withFeedForward": False,
+               "initType": Init.InitialState, "strict": False,
+               "homotopyType": LimiterHomotopy.Linear}
+    required = ("yMax",)
+    u_s = RealInput("connector of setpoint input signal")
+    u_m = RealInput("connector of measurement input signal")
+    y = RealOutput("connector of actuator output signal")
+    u_ff = ConditionalPort(RealInput("optional connector of feed-forward input signal"),
+                           "withFeedForward")
+    k = Parameter(1.0, "1", "gain of controller, must be non-zero", nonzero=True)
+    Ti = Parameter(0.5, "s", "time constant of Integrator block", positive=True)
+    Td = Parameter(0.1, "s", "time constant of Derivative block", nonnegative=True)
+    yMax = Parameter(1.0, "", "upper limit of output")
+    wp = Parameter(1.0, "1", "set-point weight for Proportional block (0..1)",
+                   nonnegative=True)
+    wd = Parameter(0.0, "1", "set-point weight for Derivative block (0..1)", nonnegative=True)
+    Ni = Parameter(0.9, "1", "Ni*Ti is time constant of anti-windup compensation",
+                   positive=True)
+    Nd = Parameter(10.0, "1", "the higher Nd, the more ideal the derivative block",
+                   positive=True)
+    kFF = Parameter(1.0, "1", "gain of feed-forward input")
+
+    def __new__(cls, name=None, **params):
+        return super().__new__(_LimPIDyMin if cls is LimPID and "yMin" in params else cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if self.initType in (Init.SteadyState, Init.InitialOutput):
+            raise ParameterError(
+                f"{who(self)}: initType={self.initType.value} is not available; the states "
+                f"start at xi_start and xd_start (InitialState); other initial values are "
+                f"given at simulation time, x0={{'<name>.I.y': ...}}")
+        _check_limits(self, "yMax", "yMin")
+
+    @property
+    def yMin(self):
+        """Lower limit of output: −yMax (MSL's binding)."""
+        return -self.yMax
+
+    @property
+    def _with_I(self) -> bool:
+        return self.controllerType in (SimpleController.PI, SimpleController.PID)
+
+    @property
+    def _with_D(self) -> bool:
+        return self.controllerType in (SimpleController.PD, SimpleController.PID)
+
+    def structure(self, s):
+        if self._with_I:
+            s.state("I.y", self.xi_start, description="integral part (state)")
+        if self._with_D:
+            s.state("D.x", self.xd_start, description="state of derivative block")
+
+    def physics(self, e):
+        u_s, u_m = e.input(self.u_s), e.input(self.u_m)
+        p_y = self.wp * u_s - u_m
+        d_y = 0
+        if self._with_D:
+            xd = e.state("D.x")
+            xd_dot, d_y = _approx_derivative(self.wd * u_s - u_m, xd, self.Td,
+                                             ca.fmax(self.Td / self.Nd, 1e-14))
+            e.derivative(xd, xd_dot)
+        i_y = e.state("I.y") if self._with_I else 0
+        u_ff = e.input(self.u_ff) if self.withFeedForward else 0
+        lim_u = self.k * (p_y + i_y + d_y) + self.kFF * u_ff
+        y = _limit(lim_u, self.yMin, self.yMax)
+        if self._with_I:
+            track = (y - lim_u) / (self.k * self.Ni)
+            e.derivative(i_y, (u_s - u_m + track) / self.Ti)
+        e.variable("controlError", u_s - u_m, description="control error (set point - "
+                                                           "measurement)")
+        e.variable("P.y", p_y, description="proportional part")
+        e.variable("D.y", d_y, description="derivative part")
+        e.variable("limiter.u", lim_u, description="controller output before the limiter")
+        e.output(self.y, y)
+
+
+class _LimPIDyMin(LimPID):
+    """LimPID with yMin given at construction: a parameter of its own."""
+    yMin = Parameter(-1.0, "", "lower limit of output")
+
+
+_LimPIDyMin.__name__ = "LimPID"
