@@ -15,11 +15,13 @@ nothing else fixes the state). Other initial values are given at simulation time
 dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}`` (MSL's
 ``Init.InitialOutput``). Steady-state initialization is not provided.
 
-Sources are expressions of time built with CasADi functions (``if_else``, ``floor``), so they
-are exact, differentiable where the MSL signal is, and usable inside optimal control
-problems. Discontinuous sources (Step, Pulse, TimeTable jumps) generate no solver events:
-the variable-step integrator resolves the jump by reducing its step; give ``max_step`` to
-``simulate`` if a pulse is shorter than the steps the integrator would otherwise take.
+Sources are expressions of time built with CasADi functions (``if_else``, ``floor``,
+``interpolant``), so they are exact, differentiable where the MSL signal is, and usable
+inside optimal control problems. Discontinuous sources (Step, Pulse, table jumps) declare
+time events: the integrator restarts there. The nonlinear blocks (Limiter, DeadZone,
+LimPID's limiter) generate no events: the variable-step integrator resolves their kinks by
+reducing its step; give ``max_step`` to ``simulate`` if a system rests (no error for the
+step control to see) until a short pulse or an excursion out of a dead zone.
 
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.
@@ -27,11 +29,14 @@ mechanical part; a purely algebraic loop is reported by the compiler as an error
 from __future__ import annotations
 
 import math
+from enum import Enum
 
 import casadi as ca
 import numpy as np
 
-from ..core import Component, Parameter, RealInput, RealOutput, VectorPort
+from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput, Unavailable,
+                    VectorPort)
+from ..core.component import who
 from ..errors import ParameterError
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
@@ -40,8 +45,11 @@ EPS = 1e-15
 __all__ = [
     "SO", "SISO", "SI2SO", "SignalSource",
     "Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid", "TimeTable",
+    "CombiTimeTable", "Smoothness", "Extrapolation", "TimeEvents",
     "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
-    "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID",
+    "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID", "LimPID",
+    "SimpleController", "Init",
+    "Limiter", "VariableLimiter", "DeadZone", "LimiterHomotopy", "VariableLimiterHomotopy",
 ]
 
 
@@ -239,17 +247,135 @@ class Trapezoid(_Periodic):
         return [self.rising, t_w, t_w + self.falling]
 
 
+class Smoothness(str, Enum):
+    """Modelica.Blocks.Types.Smoothness: how a table is interpolated."""
+    LinearSegments = "LinearSegments"
+    ContinuousDerivative = "ContinuousDerivative"
+    ConstantSegments = "ConstantSegments"
+    MonotoneContinuousDerivative1 = "MonotoneContinuousDerivative1"
+    MonotoneContinuousDerivative2 = "MonotoneContinuousDerivative2"
+    ModifiedContinuousDerivative = "ModifiedContinuousDerivative"
+
+
+class Extrapolation(str, Enum):
+    """Modelica.Blocks.Types.Extrapolation: a table's value outside its time range."""
+    HoldLastPoint = "HoldLastPoint"
+    LastTwoPoints = "LastTwoPoints"
+    Periodic = "Periodic"
+    NoExtrapolation = "NoExtrapolation"
+
+
+class TimeEvents(str, Enum):
+    """Modelica.Blocks.Types.TimeEvents: where a table restarts the integrator."""
+    Always = "Always"
+    AtDiscontinuities = "AtDiscontinuities"
+    NoTimeEvents = "NoTimeEvents"
+
+
+def _table_values(tau, tab: np.ndarray, smoothness: Smoothness,
+                  extrapolation: Extrapolation) -> list:
+    """The columns 2.. of table ``tab`` (rows [time, values...]) at table time ``tau``, one
+    expression per column. Linear segments are CasADi linear interpolants (a binary search,
+    not one branch per row), one per piece between repeated times (a jump: the later row
+    holds from that time on); constant segments give the row at or before tau."""
+    times, vals = tab[:, 0], tab[:, 1:]
+    n, m = vals.shape
+    if n == 1:
+        return [ca.SX(v) for v in vals[0]]
+    t_min, t_max = times[0], times[-1]
+    if extrapolation is Extrapolation.HoldLastPoint:
+        tau = ca.fmin(ca.fmax(tau, t_min), t_max)
+    elif extrapolation is Extrapolation.Periodic:
+        period = t_max - t_min
+        tau = tau - period * ca.floor((tau - t_min) / period)
+    if smoothness is Smoothness.ConstantSegments:
+        out = [ca.pw_const(tau, ca.DM(times[1:]), ca.DM(vals[:, j])) for j in range(m)]
+    else:
+        cuts = [0] + [i for i in range(1, n) if times[i] == times[i - 1]] + [n]
+        pieces = [(a, b) for a, b in zip(cuts[:-1], cuts[1:]) if b - a > 1 or b == n]
+
+        def piece(a, b):
+            if b - a == 1:                      # a last row of its own: held
+                return ca.SX(ca.DM(vals[a]))
+            f = ca.interpolant("table", "linear", [times[a:b]], vals[a:b].ravel())
+            return f(tau)
+
+        a, b = pieces[-1]
+        expr = piece(a, b)
+        for a, b in reversed(pieces[:-1]):
+            expr = ca.if_else(tau < times[b], piece(a, b), expr)
+        out = [expr[j] for j in range(m)]
+    if extrapolation is Extrapolation.NoExtrapolation:
+        outside = ca.logic_or(tau < t_min, tau > t_max)
+        out = [ca.if_else(outside, np.nan, y) for y in out]
+    return out
+
+
+def _table_events(tab: np.ndarray, smoothness: Smoothness, extrapolation: Extrapolation,
+                  timeEvents: TimeEvents) -> list:
+    """Table times where the interpolated signal restarts the integrator, as (time, period
+    or None) pairs in table time: every row with ``Always`` or constant segments, repeated
+    times with ``AtDiscontinuities`` (and the wrap of a periodic table)."""
+    times = tab[:, 0]
+    if tab.shape[0] == 1 or timeEvents is TimeEvents.NoTimeEvents:
+        return []
+    periodic = extrapolation is Extrapolation.Periodic
+    period = times[-1] - times[0] if periodic else None
+    if smoothness is Smoothness.ConstantSegments:
+        rows = times[1:]
+    elif timeEvents is TimeEvents.Always:
+        rows = times[1:-1]
+    else:
+        rows = times[1:][times[1:] == times[:-1]]
+    rows = set(map(float, rows)) | ({float(times[-1])} if periodic else set())
+    return [(tk, period) for tk in sorted(rows)]
+
+
+def _check_table(table, kind: str, first_at_zero: bool) -> np.ndarray:
+    if table is None:
+        raise ParameterError(f"{kind}: no table given; pass table=[[t0, y0], [t1, y1], ...]")
+    try:
+        tab = np.array(table, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{kind}: table must be numbers in rows [time, value, ...], got "
+                             f"{table!r}") from None
+    if tab.ndim == 1 and tab.size >= 2:
+        tab = tab.reshape(1, -1)
+    if tab.ndim != 2 or tab.shape[1] < 2 or tab.shape[0] < 1:
+        raise ParameterError(f"{kind}: table must have rows [time, value, ...] (shape (n, 2) "
+                             f"or wider), got shape {tab.shape}")
+    if not np.all(np.isfinite(tab)):
+        raise ParameterError(f"{kind}: table contains non-finite values")
+    if tab.shape[0] > 1:
+        if first_at_zero and tab[0, 0] != 0.0:
+            raise ParameterError(f"{kind}: the first point in time has to be 0, but is "
+                                 f"table[1,1] = {tab[0, 0]}; shift the table with shiftTime")
+        if np.any(np.diff(tab[:, 0]) < 0):
+            raise ParameterError(f"{kind}: the times (first column) must be non-decreasing")
+        if np.any((tab[2:, 0] == tab[1:-1, 0]) & (tab[1:-1, 0] == tab[:-2, 0])):
+            raise ParameterError(f"{kind}: a time appears more than twice in the table; a "
+                                 f"jump is two rows with the same time")
+        if tab[0, 0] == tab[-1, 0]:
+            raise ParameterError(f"{kind}: the table spans no time (first time = last time)")
+    return tab
+
+
 class TimeTable(SignalSource):
     """Linear interpolation in a table of [time, value] rows (MSL Sources.TimeTable).
 
     ``table`` (constructor argument, an (n, 2) array-like): times in the first column,
     non-decreasing, the first one 0 when n > 1; a time given twice is a jump (the later row
-    holds from that time on). For time ≥ startTime the output is
+    holds from that time on). For time ≥ startTime [s] the output is
     ``offset + interp((time − shiftTime)/timeScale)``, extrapolated through the first or
     last two rows outside the table; before startTime it is ``offset``; a one-row table gives
     its value. ``shiftTime`` [s] defaults to startTime (the MSL binding: the table then
     follows startTime, also when startTime is changed at simulation time); giving it at
-    construction makes it a parameter of its own.
+    construction makes it a parameter of its own; timeScale [s] is the time unit of the
+    first column.
+
+    The table is a CasADi linear interpolant: the integrator restarts only at jumps
+    (repeated times), not at every row. The table is fixed when the model is compiled
+    (offset, startTime, shiftTime and timeScale are parameters).
     """
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
 
@@ -264,34 +390,27 @@ class TimeTable(SignalSource):
         if shiftTime is not None:
             params["shiftTime"] = shiftTime
         super().__init__(name, **params)
-        self.__dict__["table"] = _check_table(table)
+        tab = _check_table(table, "TimeTable", first_at_zero=True)
+        if tab.shape[1] != 2:
+            raise ParameterError(f"TimeTable: table must have rows [time, value] (shape "
+                                 f"(n, 2)), got shape {tab.shape}; CombiTimeTable takes "
+                                 f"several columns")
+        self.__dict__["table"] = tab
 
     def _shift(self):
         return self.startTime
 
     def signal(self, t):
-        tab = self.table
         tau = (t - self._shift()) / self.timeScale
-        n = tab.shape[0]
-        if n == 1:
-            return ca.SX(tab[0, 1])
-
-        def piece(j):      # MSL: interval [j-1, j]; a zero-length one gives the value of row j
-            t0, y0 = tab[j - 1]
-            t1, y1 = tab[j]
-            if t1 - t0 <= 100 * EPS * abs(t1):
-                return ca.SX(y1)
-            return y0 + (y1 - y0) / (t1 - t0) * (tau - t0)
-
-        expr = piece(n - 1)
-        for j in range(n - 2, 0, -1):
-            expr = ca.if_else(tau < tab[j, 0], piece(j), expr)
-        return expr
+        return _table_values(tau, self.table, Smoothness.LinearSegments,
+                             Extrapolation.LastTwoPoints)[0]
 
     def events(self):
         shift = self._shift()
-        return [(self.startTime, None)] + [(shift + self.timeScale * float(tk), None)
-                                           for tk in self.table[1:-1, 0]]
+        return [(self.startTime, None)] + [
+            (shift + self.timeScale * tk, None) for tk, _ in _table_events(
+                self.table, Smoothness.LinearSegments, Extrapolation.LastTwoPoints,
+                TimeEvents.AtDiscontinuities)]
 
 
 class _ShiftedTimeTable(TimeTable):
@@ -305,28 +424,111 @@ class _ShiftedTimeTable(TimeTable):
 _ShiftedTimeTable.__name__ = "TimeTable"        # what messages and repr call it
 
 
-def _check_table(table) -> np.ndarray:
-    if table is None:
-        raise ParameterError("TimeTable: no table given; pass table=[[t0, y0], [t1, y1], ...]")
-    try:
-        tab = np.array(table, dtype=float)
-    except (TypeError, ValueError):
-        raise ParameterError(f"TimeTable: table must be numbers in rows [time, value], got "
-                             f"{table!r}") from None
-    if tab.ndim == 1 and tab.size == 2:
-        tab = tab.reshape(1, 2)
-    if tab.ndim != 2 or tab.shape[1] != 2 or tab.shape[0] < 1:
-        raise ParameterError(f"TimeTable: table must have rows [time, value] (shape (n, 2)), "
-                             f"got shape {tab.shape}")
-    if not np.all(np.isfinite(tab)):
-        raise ParameterError("TimeTable: table contains non-finite values")
-    if tab.shape[0] > 1:
-        if tab[0, 0] != 0.0:
-            raise ParameterError(f"TimeTable: the first point in time has to be 0, but is "
-                                 f"table[1,1] = {tab[0, 0]}; shift the table with shiftTime")
-        if np.any(np.diff(tab[:, 0]) < 0):
-            raise ParameterError("TimeTable: the times (first column) must be non-decreasing")
-    return tab
+class CombiTimeTable(Component):
+    """Table look-up in time with several output columns (MSL Sources.CombiTimeTable).
+
+    Constructor arguments (fixed when the model is compiled): ``table`` (rows [time, values
+    ...], times non-decreasing; a time given twice is a jump), ``columns`` (the table
+    columns to output, numbered from 1 as in Modelica, time being column 1; default
+    2..ncols), the options ``smoothness`` (LinearSegments, ConstantSegments: the row at or
+    before the time), ``extrapolation`` (HoldLastPoint, LastTwoPoints, Periodic,
+    NoExtrapolation) and ``timeEvents``.
+
+    Parameters: ``offset[i]`` (one per output; ``offset=c`` or ``offset=[...]`` at
+    construction), startTime [s] (y = offset before it), ``shiftTime`` [s] (defaults to
+    startTime, as MSL's binding; given, it is a parameter of its own) and timeScale [s] (the
+    time unit of the first column). For time ≥ startTime:
+    ``y[i] = offset[i] + table value of columns[i] at (time − shiftTime)/timeScale``.
+    Outputs ``y[1]`` .. ``y[nout]``.
+
+    MSL differences: the default ``timeEvents`` is AtDiscontinuities (MSL: Always, an event
+    at every row): linear segments restart the integrator only at repeated times (and at the
+    wrap of a periodic table), constant segments at every row. NoExtrapolation gives NaN
+    outside the table's times (MSL stops the simulation with an error). With constant
+    segments LastTwoPoints holds the first/last value. The spline smoothness options, tables
+    on files and verbose extrapolation are not available.
+    """
+    options = {"smoothness": Smoothness.LinearSegments,
+               "extrapolation": Extrapolation.LastTwoPoints,
+               "timeEvents": TimeEvents.AtDiscontinuities,
+               "tableOnFile": Unavailable(False, "tables read from files"),
+               "verboseExtrapolation": Unavailable(False, "warnings outside the table")}
+    startTime = Parameter(0.0, "s", "output = offset for time < startTime")
+    timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None, **params):
+        if cls is CombiTimeTable:
+            tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
+            cls = CombiTimeTable._variant(len(_columns(tab, columns)), shiftTime is not None)
+        return super().__new__(cls)
+
+    @staticmethod
+    def _variant(nout: int, shifted: bool) -> type:
+        key = (nout, shifted)
+        if key not in CombiTimeTable._classes:
+            attrs = {"__doc__": CombiTimeTable.__doc__, "__module__": __name__,
+                     "__qualname__": "CombiTimeTable", "_nout": nout,
+                     "offset": Parameter((0.0,) * nout, "", "offsets of output signals"),
+                     "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+            if shifted:
+                attrs["shiftTime"] = Parameter(0.0, "s", "shift time of first table column")
+            CombiTimeTable._classes[key] = type("CombiTimeTable", (CombiTimeTable,), attrs)
+        return CombiTimeTable._classes[key]
+
+    def __init__(self, name: str | None = None, *, table=None, columns=None, shiftTime=None,
+                 offset=0.0, **params):
+        if name is not None and not isinstance(name, str):
+            raise ParameterError("CombiTimeTable: give the table by keyword, "
+                                 "CombiTimeTable(table=...)")
+        if shiftTime is not None:
+            params["shiftTime"] = shiftTime
+        offsets = np.atleast_1d(np.asarray(offset, dtype=object)).ravel()
+        if offsets.size not in (1, self._nout):
+            raise ParameterError(f"CombiTimeTable: offset has {offsets.size} elements but "
+                                 f"there are {self._nout} outputs (give 1 or {self._nout})")
+        params["offset"] = tuple(offsets) * (self._nout // offsets.size)
+        super().__init__(name, **params)
+        if self.smoothness not in (Smoothness.LinearSegments, Smoothness.ConstantSegments):
+            raise ParameterError(f"{who(self)}: smoothness={self.smoothness.value} (a spline) "
+                                 f"is not available; use LinearSegments or ConstantSegments")
+        tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
+        self.__dict__["table"] = tab[:, [0] + [c - 1 for c in _columns(tab, columns)]]
+
+    @property
+    def nout(self) -> int:
+        return self._nout
+
+    def __reduce_ex__(self, protocol):          # the class is made per nout: rebuild it so
+        return _new_combi, (self._nout, "shiftTime" in self.parameters()), self.__dict__
+
+    def physics(self, e):
+        t = e.time
+        shift = self.shiftTime if "shiftTime" in self.parameters() else self.startTime
+        tau = (t - shift) / self.timeScale
+        values = _table_values(tau, self.table, self.smoothness, self.extrapolation)
+        for i, (port, y) in enumerate(zip(self.y, values)):
+            e.output(port, self.offset[i] + ca.if_else(t < self.startTime, 0, y))
+        e.time_event(self.startTime)
+        for tk, period in _table_events(self.table, self.smoothness, self.extrapolation,
+                                        self.timeEvents):
+            e.time_event(shift + self.timeScale * tk,
+                         None if period is None else self.timeScale * period)
+
+
+def _new_combi(nout: int, shifted: bool) -> CombiTimeTable:
+    return object.__new__(CombiTimeTable._variant(nout, shifted))
+
+
+def _columns(tab: np.ndarray, columns) -> list[int]:
+    """The selected table columns (numbered from 1, time being column 1), checked."""
+    ncol = tab.shape[1]
+    cols = list(range(2, ncol + 1)) if columns is None else list(np.atleast_1d(columns))
+    if not cols or any(isinstance(c, (bool, np.bool_)) or not isinstance(c, (int, np.integer))
+                       or not 2 <= c <= ncol for c in cols):
+        raise ParameterError(f"CombiTimeTable: columns must be integers in 2..{ncol} (the "
+                             f"table's value columns; column 1 is time), got {columns!r}")
+    return [int(c) for c in cols]
 
 
 # ---- math (Modelica.Blocks.Math) ---------------------------------------------------------------
@@ -444,6 +646,128 @@ class Sum(SO):
 
 def _new_sum(nin: int) -> Sum:
     return object.__new__(Sum._with_inputs(nin))
+
+
+# ---- nonlinear (Modelica.Blocks.Nonlinear) -----------------------------------------------------
+class LimiterHomotopy(str, Enum):
+    """Modelica.Blocks.Types.LimiterHomotopy (accepted; it changes nothing here)."""
+    NoHomotopy = "NoHomotopy"
+    Linear = "Linear"
+    UpperLimit = "UpperLimit"
+    LowerLimit = "LowerLimit"
+
+
+class VariableLimiterHomotopy(str, Enum):
+    """Modelica.Blocks.Types.VariableLimiterHomotopy (accepted; it changes nothing here)."""
+    NoHomotopy = "NoHomotopy"
+    Linear = "Linear"
+    Fixed = "Fixed"
+
+
+def _limit(u, lower, upper):
+    """MSL's ``if u > upper then upper else if u < lower then lower else u``."""
+    return ca.if_else(u > upper, upper, ca.if_else(u < lower, lower, u))
+
+
+def _check_limits(block, upper: str, lower: str) -> None:
+    """A ParameterError when the values at construction have lower > upper (MSL's assert)."""
+    hi, lo = getattr(block, upper), getattr(block, lower)
+    if hi < lo:
+        raise ParameterError(f"{who(block)}: limits must be consistent, but {upper} (= {hi}) "
+                             f"< {lower} (= {lo})")
+
+
+class Limiter(SISO):
+    """Limit the range of a signal: y = uMax if u > uMax, uMin if u < uMin, else u
+    (MSL Nonlinear.Limiter).
+
+    Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding: it follows
+    uMax, also at simulation time, unless given at construction, which makes it a parameter
+    of its own). Options ``strict`` and ``homotopyType`` are accepted.
+
+    MSL differences: no events at the limits whatever ``strict`` (MSL's strict=true,
+    ``noEvent``); the integrator's step control resolves the kinks. ``homotopyType``
+    changes nothing (the initialization solves the actual model).
+    """
+    options = {"strict": False, "homotopyType": LimiterHomotopy.Linear}
+    required = ("uMax",)
+    uMax = Parameter(1.0, "", "upper limits of input signals")
+
+    def __new__(cls, name=None, **params):
+        return super().__new__(_LimiterUMin if cls is Limiter and "uMin" in params else cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _check_limits(self, "uMax", "uMin")
+
+    @property
+    def uMin(self):
+        """Lower limits of input signals: −uMax (MSL's binding)."""
+        return -self.uMax
+
+    def physics(self, e):
+        e.output(self.y, _limit(e.input(self.u), self.uMin, self.uMax))
+
+
+class _LimiterUMin(Limiter):
+    """Limiter with uMin given at construction: a parameter of its own."""
+    uMin = Parameter(-1.0, "", "lower limits of input signals")
+
+
+_LimiterUMin.__name__ = "Limiter"
+
+
+class VariableLimiter(SISO):
+    """Limit the range of a signal with variable limits: y = limit1 if u > limit1, limit2 if
+    u < limit2, else u (MSL Nonlinear.VariableLimiter). Inputs ``u``, ``limit1`` (maximum),
+    ``limit2`` (minimum).
+
+    MSL differences: no events at the limits whatever ``strict``; ``homotopyType`` changes
+    nothing (and its ySimplified is not declared); MSL's run-time assert limit1 ≥ limit2 is
+    not checked.
+    """
+    options = {"strict": False, "homotopyType": VariableLimiterHomotopy.Linear}
+    limit1 = RealInput("connector of Real input signal used as maximum of input u")
+    limit2 = RealInput("connector of Real input signal used as minimum of input u")
+
+    def physics(self, e):
+        e.output(self.y, _limit(e.input(self.u), e.input(self.limit2), e.input(self.limit1)))
+
+
+class DeadZone(SISO):
+    """Region of zero output: y = u − uMax if u > uMax, u − uMin if u < uMin, else 0
+    (MSL Nonlinear.DeadZone).
+
+    Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding, as for
+    Limiter). MSL differences: no events at the zone's edges.
+    """
+    required = ("uMax",)
+    uMax = Parameter(1.0, "", "upper limits of dead zones")
+
+    def __new__(cls, name=None, **params):
+        return super().__new__(_DeadZoneUMin if cls is DeadZone and "uMin" in params else cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _check_limits(self, "uMax", "uMin")
+
+    @property
+    def uMin(self):
+        """Lower limits of dead zones: −uMax (MSL's binding)."""
+        return -self.uMax
+
+    def physics(self, e):
+        u = e.input(self.u)
+        e.output(self.y, ca.if_else(u > self.uMax, u - self.uMax,
+                                    ca.if_else(u < self.uMin, u - self.uMin, 0)))
+
+
+class _DeadZoneUMin(DeadZone):
+    """DeadZone with uMin given at construction: a parameter of its own."""
+    uMin = Parameter(-1.0, "", "lower limits of dead zones")
+
+
+_DeadZoneUMin.__name__ = "DeadZone"
 
 
 # ---- continuous (Modelica.Blocks.Continuous) ----------------------------------------------------
@@ -574,3 +898,133 @@ class PID(_StartValues, SISO):
         e.variable("P.y", u, description="proportional part")
         e.variable("D.y", d_y, description="derivative part")
         e.output(self.y, self.k * (u + xi + d_y))
+
+
+class SimpleController(str, Enum):
+    """Modelica.Blocks.Types.SimpleController: the parts of LimPID."""
+    P = "P"
+    PI = "PI"
+    PD = "PD"
+    PID = "PID"
+
+
+class Init(str, Enum):
+    """Modelica.Blocks.Types.Init: how a block's states are initialized."""
+    NoInit = "NoInit"
+    SteadyState = "SteadyState"
+    InitialState = "InitialState"
+    InitialOutput = "InitialOutput"
+
+
+class LimPID(_StartValues, Component):
+    """P, PI, PD or PID controller with limited output, anti-windup, set-point weighting and
+    optional feed-forward (MSL Continuous.LimPID), the equations of its internal blocks::
+
+        controlError = u_s − u_m
+        P.y  = wp·u_s − u_m
+        D:   der(D.x) = (wd·u_s − u_m − D.x)/Tf,  D.y = (Td/Tf)·(wd·u_s − u_m − D.x),
+             Tf = max(Td/Nd, 1e-14)   (D.y = 0, der(D.x) = 0 when Td < eps)
+        I:   der(I.y) = (u_s − u_m + (y − limiter.u)/(k·Ni))/Ti
+        limiter.u = k·(P.y + I.y + D.y) + kFF·u_ff
+        y = limiter.u clamped to [yMin, yMax]
+
+    Inputs ``u_s`` (set point), ``u_m`` (measurement), ``u_ff`` (feed-forward, with
+    ``withFeedForward=True``); output ``y``. Options: ``controllerType`` (P, PI, PD, PID:
+    without I or D part the state and its terms are absent), ``withFeedForward``,
+    ``initType``, ``strict``, ``homotopyType``.
+
+    Parameters: k [1] (non-zero), Ti [s] (> 0), Td [s] (≥ 0), yMax (required, as in MSL),
+    yMin (default −yMax, MSL's binding: follows yMax unless given at construction), wp, wd
+    [1] (set-point weights), Ni [1] (Ni·Ti is the anti-windup time constant), Nd [1] (the
+    higher, the more ideal the derivative), kFF [1]. Start values (constructor arguments):
+    xi_start (I.y), xd_start (D.x). Recorded: controlError, P.y, D.y, limiter.u.
+
+    MSL differences: initType InitialState and NoInit start the states at xi_start,
+    xd_start; SteadyState and InitialOutput are not available (give x0 at simulation
+    time). The limiter generates no events (as with strict=true); homotopyType changes
+    nothing (the initialization solves the actual model).
+    """
+    _starts = ("xi_start", "xd_start")
+    options = {"controllerType": SimpleController.PID, "withFeedForward": False,
+               "initType": Init.InitialState, "strict": False,
+               "homotopyType": LimiterHomotopy.Linear}
+    required = ("yMax",)
+    u_s = RealInput("connector of setpoint input signal")
+    u_m = RealInput("connector of measurement input signal")
+    y = RealOutput("connector of actuator output signal")
+    u_ff = ConditionalPort(RealInput("optional connector of feed-forward input signal"),
+                           "withFeedForward")
+    k = Parameter(1.0, "1", "gain of controller, must be non-zero", nonzero=True)
+    Ti = Parameter(0.5, "s", "time constant of Integrator block", positive=True)
+    Td = Parameter(0.1, "s", "time constant of Derivative block", nonnegative=True)
+    yMax = Parameter(1.0, "", "upper limit of output")
+    wp = Parameter(1.0, "1", "set-point weight for Proportional block (0..1)",
+                   nonnegative=True)
+    wd = Parameter(0.0, "1", "set-point weight for Derivative block (0..1)", nonnegative=True)
+    Ni = Parameter(0.9, "1", "Ni*Ti is time constant of anti-windup compensation",
+                   positive=True)
+    Nd = Parameter(10.0, "1", "the higher Nd, the more ideal the derivative block",
+                   positive=True)
+    kFF = Parameter(1.0, "1", "gain of feed-forward input")
+
+    def __new__(cls, name=None, **params):
+        return super().__new__(_LimPIDyMin if cls is LimPID and "yMin" in params else cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if self.initType in (Init.SteadyState, Init.InitialOutput):
+            raise ParameterError(
+                f"{who(self)}: initType={self.initType.value} is not available; the states "
+                f"start at xi_start and xd_start (InitialState); other initial values are "
+                f"given at simulation time, x0={{'<name>.I.y': ...}}")
+        _check_limits(self, "yMax", "yMin")
+
+    @property
+    def yMin(self):
+        """Lower limit of output: −yMax (MSL's binding)."""
+        return -self.yMax
+
+    @property
+    def _with_I(self) -> bool:
+        return self.controllerType in (SimpleController.PI, SimpleController.PID)
+
+    @property
+    def _with_D(self) -> bool:
+        return self.controllerType in (SimpleController.PD, SimpleController.PID)
+
+    def structure(self, s):
+        if self._with_I:
+            s.state("I.y", self.xi_start, description="integral part (state)")
+        if self._with_D:
+            s.state("D.x", self.xd_start, description="state of derivative block")
+
+    def physics(self, e):
+        u_s, u_m = e.input(self.u_s), e.input(self.u_m)
+        p_y = self.wp * u_s - u_m
+        d_y = 0
+        if self._with_D:
+            xd = e.state("D.x")
+            xd_dot, d_y = _approx_derivative(self.wd * u_s - u_m, xd, self.Td,
+                                             ca.fmax(self.Td / self.Nd, 1e-14))
+            e.derivative(xd, xd_dot)
+        i_y = e.state("I.y") if self._with_I else 0
+        u_ff = e.input(self.u_ff) if self.withFeedForward else 0
+        lim_u = self.k * (p_y + i_y + d_y) + self.kFF * u_ff
+        y = _limit(lim_u, self.yMin, self.yMax)
+        if self._with_I:
+            track = (y - lim_u) / (self.k * self.Ni)
+            e.derivative(i_y, (u_s - u_m + track) / self.Ti)
+        e.variable("controlError", u_s - u_m, description="control error (set point - "
+                                                           "measurement)")
+        e.variable("P.y", p_y, description="proportional part")
+        e.variable("D.y", d_y, description="derivative part")
+        e.variable("limiter.u", lim_u, description="controller output before the limiter")
+        e.output(self.y, y)
+
+
+class _LimPIDyMin(LimPID):
+    """LimPID with yMin given at construction: a parameter of its own."""
+    yMin = Parameter(-1.0, "", "lower limit of output")
+
+
+_LimPIDyMin.__name__ = "LimPID"
