@@ -23,7 +23,6 @@ import os
 
 import numpy as np
 
-import acausal
 from acausal.models.linkages import (SLIDER_CRANK_LENGTHS, SLIDER_CRANK_MASSES, SLIDER_INERTIA,
                                     SliderCrank)
 from four_bar import energy, simulate_assembled      # the linkage examples' shared pieces
