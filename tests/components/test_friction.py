@@ -187,3 +187,71 @@ def test_clutch_is_free_without_normal_force():
     assert np.all(res["clutch.mode"] == 2) and np.all(res["clutch.free"] == 1)
     assert np.abs(res["a.w"] - 10.0).max() < 1e-9 and np.abs(res["b.w"]).max() < 1e-12
     assert np.abs(res["clutch.tau"]).max() == 0.0
+
+
+# ---- translational -----------------------------------------------------------------------
+M, F0 = 2.0, 1.0
+
+
+def block(push, friction):
+    model = acausal.Model("block")
+    model.mass = tr.Mass(m=M)
+    model.friction = friction
+    model.push = push
+    model.connect(model.mass.flange_b, model.friction.flange_a)
+    model.connect(model.push.flange, model.mass.flange_a)
+    return model
+
+
+def test_support_friction_below_breakaway_stays_at_rest():
+    model = block(tr.ConstantForce(f_constant=1.4), tr.SupportFriction(f_pos=[[0, F0]],
+                                                                       peak=PEAK))
+    res = acausal.compile(model).simulate(10.0)
+    assert [ev.modes for ev in res.events] == [{"friction.mode": (3.0, 0.0)}]
+    assert np.abs(res["mass.v"]).max() <= 1e-12 and np.abs(res["mass.s"]).max() <= 1e-12
+    assert np.allclose(res["friction.f"], 1.4, atol=1e-12)
+    assert np.all(res["friction.f0_max"] == PEAK * F0)
+
+
+def test_support_friction_slides_to_a_stop_with_constant_deceleration():
+    """From v0 = 1 m/s backward, no push: v = −v0 + F0/M·t until t = M·v0/F0, then stuck."""
+    model = block(tr.ConstantForce(f_constant=0.0), tr.SupportFriction(f_pos=[[0, F0]],
+                                                                       peak=PEAK))
+    res = acausal.compile(model).simulate(4.0, x0={"mass.v": -1.0}, **TOL)
+    start, stop = res.events
+    assert start.modes == {"friction.mode": (3.0, -1.0)}
+    t_stop = M * 1.0 / F0
+    assert stop.time == pytest.approx(t_stop, abs=1e-9)
+    assert stop.modes == {"friction.mode": (-1.0, 0.0)}
+    right = np.flatnonzero(res.t == stop.time)[-1]
+    assert np.abs(res["mass.v"][right:]).max() <= 1e-12
+    t = res.t[:right]
+    assert np.abs(res["mass.v"][:right] - (-1.0 + F0 / M * t)).max() < 1e-9
+    s_stop = -t_stop + 0.5 * F0 / M * t_stop ** 2
+    assert np.abs(res["mass.s"][right:] - s_stop).max() < 1e-9
+    assert np.allclose(res["friction.f"][:right], -F0, atol=1e-12)   # backward: f = -f_pos(0)
+    assert np.allclose(res["friction.v"], res["mass.v"], atol=0)
+
+
+def test_translational_brake_is_free_then_brakes_after_a_step_of_the_normal_force():
+    """Coasting at v0 with f_normalized = 0 (free, f = 0) until t1, then fn = fn_max:
+    v = v0 − mu·fn/M·(t − t1) until it stops at t1 + M·v0/(mu·fn)."""
+    v0, t1 = 2.0, 1.0
+    model = block(tr.ConstantForce(f_constant=0.0), tr.Brake(fn_max=FN, mu_pos=[[0, MU]]))
+    model.step = Step(height=1.0, startTime=t1)
+    model.connect(model.step.y, model.friction.f_normalized)
+    res = acausal.compile(model).simulate(3.0, x0={"mass.v": v0}, **TOL)
+    free, engaged, stop = res.events
+    assert free.modes == {"friction.mode": (3.0, 2.0)}
+    assert engaged.time == t1 and engaged.modes == {"friction.mode": (2.0, 1.0)}
+    t_stop = t1 + M * v0 / (MU * FN)
+    assert stop.time == pytest.approx(t_stop, abs=1e-9)
+    t, v = res.t, res["mass.v"]
+    ref = np.where(t < t1, v0, np.maximum(v0 - MU * FN / M * (t - t1), 0.0))
+    right = np.flatnonzero(t == stop.time)[-1]
+    assert np.abs(v[right:]).max() <= 1e-12
+    assert np.abs(v - ref).max() < 1e-9
+    coasting = t < t1
+    assert np.all(res["friction.free"][coasting] == 1) and \
+        np.all(res["friction.f"][coasting] == 0.0)
+    assert np.all(res["friction.mode"][coasting] == 2)
