@@ -121,12 +121,15 @@ def test_bearing_friction_breaks_away_at_peak_on_a_ramp(sign):
     model.ramp = Ramp(height=sign * 4.0, duration=4.0)              # k = 1 N.m/s
     model.connect(model.ramp.y, model.drive.tau)
     res = acausal.compile(model).simulate(4.0, **TOL)
-    start, breakaway = res.events
+    start, breakaway, moving = res.events
     t_b = PEAK * TAU0
-    mode = 1.0 if sign > 0 else -1.0
+    mode, flag = (1.0, "bearing.startForward") if sign > 0 else (-1.0, "bearing.startBackward")
     assert breakaway.time == pytest.approx(t_b, abs=1e-9)
     assert breakaway.indicator == "bearing.breakaway"
-    assert breakaway.modes == {"bearing.mode": (0.0, mode)}
+    assert breakaway.modes == {"bearing.mode": (0.0, mode), flag: (0.0, 1.0)}
+    assert breakaway.reinit["fly.w"][1] == 0.0                     # at rest exactly
+    assert (moving.indicator, moving.modes) == ("bearing.start", {flag: (1.0, 0.0)})
+    assert moving.time - breakaway.time < 1e-6
     t = res.t
     w = np.where(t > t_b, (0.5 * (t ** 2 - t_b ** 2) - TAU0 * (t - t_b)) / J, 0.0)
     assert np.abs(res["fly.w"] - sign * w).max() < 1e-9
@@ -255,3 +258,4 @@ def test_translational_brake_is_free_then_brakes_after_a_step_of_the_normal_forc
     assert np.all(res["friction.free"][coasting] == 1) and \
         np.all(res["friction.f"][coasting] == 0.0)
     assert np.all(res["friction.mode"][coasting] == 2)
+

@@ -9,13 +9,16 @@ Free = 2 (the element is not active, e.g. a brake without normal force), Forward
 friction torque ``tau`` [N.m] (``f`` [N]) is an algebraic variable fixed by the mode:
 stuck, a_relfric = 0 (tau is the torque that holds the surfaces together); forward, the
 sliding characteristic tau = F(w_relfric); backward, tau = −F(−w_relfric); free, tau = 0.
-Events: ``sliding`` (the relative speed falling through 0 while sliding: it is reinitialized
-to 0 exactly), ``breakaway`` (tau0_max − |tau| falling through 0 while stuck), ``fn`` (the
-normal force crossing 0, for elements that can be free). At every event the mode is updated
-as MSL does, with its startForward/startBackward collapsed into the update: a stuck element
-slides forward when the torque that holds it exceeds tau0_max (backward below −tau0_max), a
-sliding element that reaches w_relfric = 0 keeps sliding only if its acceleration there (with
-the sliding friction tau0) keeps its direction, and sticks otherwise.
+Events: ``sliding`` (the relative speed falling through 0 while sliding), ``breakaway``
+(tau0_max − |tau| falling through 0 while stuck), both setting the relative speed to 0
+exactly (the stuck element's speed drifts by the integrator's tolerance otherwise), ``start``
+(the relative speed leaving 0 after breaking away), ``fn`` (the
+normal force crossing 0, for elements that can be free). At every event the modes are updated
+as MSL does: a stuck element slides forward when the torque that holds it exceeds tau0_max
+(backward below −tau0_max; ``startForward``/``startBackward``, Boolean modes, are set then and
+cleared at the next event), a sliding element that reaches w_relfric = 0 keeps sliding only
+if its acceleration there (with the sliding friction tau0) keeps its direction or it has
+just broken away, and sticks otherwise.
 
 The characteristic tables (``tau_pos``, ``f_pos``, ``mu_pos``: rows [speed ≥ 0, value]) are
 interpolated linearly and extrapolated through the last two rows (MSL's CombiTable1D with
@@ -115,38 +118,55 @@ class PartialFriction(Component):
         s.mode("mode", UNKNOWN, values=MODES,
                description="mode of friction (-1: backward sliding, 0: stuck, 1: forward "
                            "sliding, 2: inactive, 3: unknown)")
+        s.mode("startForward", 0, values=(0, 1),
+               description=f"= true, if {x.v}_relfric=0 and start of forward sliding")
+        s.mode("startBackward", 0, values=(0, 1),
+               description=f"= true, if {x.v}_relfric=0 and start of backward sliding")
         s.algebraic(x.f, unit=x.f_unit, description=f"friction {x.flow}")
 
     def physics(self, e):
         x = self.axis
         mode, tau = e.mode("mode"), e.state(x.f)
+        start_fwd, start_bwd = e.mode("startForward"), e.mode("startBackward")
         w, a = self._relfric(e)
         tau0 = self._sliding(e, 0.0)
         tau0_max = self.peak * tau0
         free = self._free(e)
         free = ca.SX(0) if free is None else free
+        fwd = ca.logic_or(mode == FORWARD, start_fwd)
+        bwd = ca.logic_or(mode == BACKWARD, start_bwd)
         forward, backward = tau - self._sliding(e, w), tau + self._sliding(e, -w)
         by_sign = ca.if_else(w > 0, forward, ca.if_else(w < 0, backward, a))
-        e.residual(ca.if_else(free, tau, ca.if_else(
-            mode == STUCK, a, ca.if_else(mode == FORWARD, forward, ca.if_else(
-                mode == BACKWARD, backward, by_sign)))))
+        e.residual(ca.if_else(free, tau, ca.if_else(fwd, forward, ca.if_else(
+            bwd, backward, ca.if_else(mode == STUCK, a, by_sign)))))
         self._apply(e, tau)
 
         locked = ca.logic_and(ca.logic_not(free), mode == STUCK)
-        e.indicator("sliding", ca.if_else(mode == FORWARD, w, ca.if_else(mode == BACKWARD,
-                                                                           -w, 1.0)),
-                    x.v_unit, f"relative {x.speed} while sliding, in its direction")
+        e.indicator("sliding", ca.if_else(fwd, w, ca.if_else(bwd, -w, 1.0)), x.v_unit,
+                    f"relative {x.speed} while sliding, in its direction")
         e.indicator("breakaway", ca.if_else(locked, tau0_max - ca.fabs(tau), 1.0), x.f_unit,
                     f"{x.f}0_max - |{x.f}| while stuck")
+        e.indicator("start", ca.if_else(start_fwd, w, ca.if_else(start_bwd, -w, -1.0)),
+                    x.v_unit, f"relative {x.speed} after breaking away, in its direction")
         state, zero = self._stop(e)
         e.reinit(state, zero, when="sliding", direction=-1)
+        e.reinit(state, zero, when="breakaway", direction=-1)      # at rest exactly
 
-        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
-        from_stuck = ca.if_else(w != 0, sign_w, ca.if_else(
-            tau > tau0_max, FORWARD, ca.if_else(tau < -tau0_max, BACKWARD, STUCK)))
+        # startForward: broken away from stuck (the torque that held it beyond tau0_max),
+        # kept while w_relfric = 0, so that sliding that starts with an acceleration ~0
+        # (peak = 1) does not fall back to stuck; cleared at the event of indicator "start",
+        # w_relfric leaving 0 (MSL: mode becomes Forward when w_relfric > 0)
         small = self._small()
-        keeps_forward = ca.logic_or(w > 0, ca.logic_and(w == 0, a > 0))
-        keeps_backward = ca.logic_or(w < 0, ca.logic_and(w == 0, a < 0))
+        breaks_fwd = ca.logic_and(mode == STUCK, tau > tau0_max)
+        breaks_bwd = ca.logic_and(mode == STUCK, tau < -tau0_max)
+        e.mode_update(start_fwd, ca.logic_and(ca.logic_not(free), ca.logic_or(breaks_fwd, ca.logic_and(
+            start_fwd, ca.logic_and(mode == FORWARD, w == 0)))))
+        e.mode_update(start_bwd, ca.logic_and(ca.logic_not(free), ca.logic_or(breaks_bwd, ca.logic_and(
+            start_bwd, ca.logic_and(mode == BACKWARD, w == 0)))))
+        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
+        from_stuck = ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD, STUCK))
+        keeps_forward = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
+        keeps_backward = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
         from_forward = ca.if_else(keeps_forward, FORWARD, ca.if_else(w < -small, BACKWARD,
                                                                       STUCK))
         from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,
@@ -155,7 +175,6 @@ class PartialFriction(Component):
             mode == STUCK, from_stuck, ca.if_else(mode == FORWARD, from_forward, ca.if_else(
                 mode == BACKWARD, from_backward, sign_w)))))
 
-        start = ca.logic_and(w == 0, ca.logic_not(locked))
         e.variable(f"{x.v}_relfric", w, x.v_unit,
                    f"relative {x.speed} between frictional surfaces")
         e.variable("a_relfric", a, x.a_unit,
@@ -166,15 +185,10 @@ class PartialFriction(Component):
                    f"maximum friction {x.flow} for {x.v}_relfric=0 and locked")
         e.variable("free", free, "", "= true, if frictional element is not active")
         e.variable("locked", locked, "", f"= true, if {x.v}_relfric=0 and not sliding")
-        e.variable("startForward", ca.logic_and(start, mode == FORWARD), "",
-                   f"= true, if {x.v}_relfric=0 and start of forward sliding")
-        e.variable("startBackward", ca.logic_and(start, mode == BACKWARD), "",
-                   f"= true, if {x.v}_relfric=0 and start of backward sliding")
         e.variable("sa", ca.if_else(locked, tau, ca.if_else(free, a, ca.if_else(
-            mode == FORWARD, a + tau0_max, ca.if_else(mode == BACKWARD, a - tau0_max, a)))),
+            fwd, a + tau0_max, ca.if_else(bwd, a - tau0_max, a)))),
             "1", f"path parameter of friction characteristic {x.f} = f(a_relfric)")
         e.variable("lossPower", tau * w, "W", "loss power leaving component via heatPort")
-
 
 class SupportedFriction(PartialFriction):
     """Friction of the rigidly joined flanges (flange_b = flange_a) against the support
