@@ -94,6 +94,21 @@ def test_brake_friction_work_and_kinetic_energy_keep_the_initial_energy(braked):
     assert np.allclose(loss, tau * braked["fly.w"], atol=1e-12)
 
 
+
+def test_brake_on_a_fixed_support_takes_the_reaction():
+    """useSupport=True, the support fixed: the same stop time; support.tau = −tau (MSL)."""
+    model = acausal.Model("supported")
+    model.fly, model.fixed = rot.Inertia(J=J), rot.Fixed()
+    model.brake = rot.Brake(fn_max=FN, mu_pos=[[0.0, MU]], useSupport=True)
+    model.on = Constant(k=1.0)
+    model.connect(model.fly.flange_b, model.brake.flange_a)
+    model.connect(model.brake.support, model.fixed.flange)
+    model.connect(model.on.y, model.brake.f_normalized)
+    res = acausal.compile(model).simulate(2.0, x0={"fly.w": W0}, **TOL)
+    assert res.events[-1].time == pytest.approx(J * W0 / (MU * FN), abs=1e-9)
+    assert np.allclose(res["brake.support.tau"], -res["brake.tau"], atol=1e-12)
+    assert res["brake.support.tau"][0] == pytest.approx(-MU * FN)
+
 TAU0, PEAK = 1.0, 1.5
 
 
