@@ -21,7 +21,8 @@ The equations shared with the translational library are written once in ``interf
 classes here declare MSL's connectors and names on top of them.
 
 Differences from MSL, by necessity of a Python library, are listed in each docstring.
-Friction, backlash, clutches and stops (non-smooth elements) are not here yet.
+Coulomb friction (BearingFriction, Brake, Clutch) has MSL's mode machine on state events
+(see ``friction``); backlash and stops are not here yet.
 """
 from __future__ import annotations
 
@@ -32,7 +33,7 @@ import casadi as ca
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
                     RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import ROTATIONAL
-from . import interfaces
+from . import friction, interfaces
 from .interfaces import ROTATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
 Flange = RotationalFlange
@@ -43,10 +44,10 @@ __all__ = [
     "PartialTwoFlanges", "PartialElementaryOneFlangeAndSupport2",
     "PartialElementaryTwoFlangesAndSupport2", "PartialElementaryRotationalToTranslational",
     "PartialCompliant", "PartialCompliantWithRelativeStates", "PartialTorque",
-    "PartialAbsoluteSensor", "PartialRelativeSensor",
+    "PartialAbsoluteSensor", "PartialRelativeSensor", "PartialFriction",
     # components
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
-    "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T",
+    "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
     # sources
     "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "TorqueStep", "Position", "Speed", "Accelerate", "Move",
@@ -168,6 +169,17 @@ class PartialTorque(PartialElementaryOneFlangeAndSupport2):
         self._record_relative(e, "s", "v")
         e.variable("tau", tau, "N.m", "accelerating torque acting at flange (= -flange.tau)")
 
+
+
+class PartialFriction(friction.PartialFriction):
+    """Coulomb friction with MSL's mode machine (Rotational.Interfaces.PartialFriction; see
+    ``acausal.components.friction``): w_relfric [rad/s], a_relfric [rad/s²], tau0, tau0_max
+    [N.m], mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction torque tau
+    [N.m] an algebraic variable."""
+    axis = ROTATIONAL_AXIS
+    w_small = Parameter(1.0e10, "rad/s", "relative angular velocity near to zero if jumps due "
+                                         "to a reinit(..) of the velocity can occur",
+                        positive=True)
 
 # =========================================================================================
 # Components
@@ -328,6 +340,66 @@ class IdealGearR2T(PartialElementaryRotationalToTranslational):
     def structure(self, s):
         self._declare(s, 1.0, -self.ratio, f"{self.path}: phi = ratio*s")
 
+
+
+class BearingFriction(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
+                      friction.TableFriction, PartialFriction):
+    """Coulomb friction in bearings: flange_b.phi = flange_a.phi, the friction torque tau
+    [N.m] against the support, tau_pos(w) [N.m] when sliding forward (w ≥ 0, a table
+    constructor keyword of rows [w, tau], default [[0, 1]]), up to tau0_max = peak·tau_pos(0)
+    when stuck. Records phi, w, a relative to the support. useHeatPort only False."""
+    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    table_name = "tau_pos"
+    table_default = ((0.0, 1.0),)
+
+
+class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
+            friction.NormalForceFriction, PartialFriction):
+    """Brake based on Coulomb friction: flange_b.phi = flange_a.phi, the brake torque tau
+    [N.m] against the support, mu·cgeo·fn when sliding, fn = fn_max·f_normalized [N];
+    ``mu_pos`` (constructor keyword, rows [w, mu], default [[0, 0.5]]); free (mode 2, tau = 0)
+    when fn ≤ 0. fn_max defaults to 1 N (MSL's start value). useHeatPort only False."""
+    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
+                               "assumption", nonnegative=True)
+    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
+    f_normalized = RealInput("normalized force signal 0..1 (normal force = "
+                             "fn_max*f_normalized; brake is active if > 0)")
+
+
+class Clutch(PartialCompliantWithRelativeStates, friction.NormalForceFriction,
+             PartialFriction):
+    """Clutch based on Coulomb friction between flange_a and flange_b: w_relfric = w_rel =
+    der(flange_b.phi − flange_a.phi), tau = flange_b.tau = −flange_a.tau [N.m], mu·cgeo·fn
+    when sliding, fn = fn_max·f_normalized [N]; ``mu_pos`` (constructor keyword, rows
+    [w_rel, mu], default [[0, 0.5]]); free (disengaged, mode 2) when fn ≤ 0. Records phi_rel,
+    w_rel, a_rel. When it sticks, flange_b's speed is set to flange_a's: flange_b's speed must
+    be a state. useHeatPort only False."""
+    options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
+    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
+                               "assumption", nonnegative=True)
+    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
+    f_normalized = RealInput("normalized force signal 0..1 (normal force = "
+                             "fn_max*f_normalized; clutch is engaged if > 0)")
+
+    def _relfric(self, e):
+        return (e.vel(self.flange_b) - e.vel(self.flange_a),
+                e.acc(self.flange_b) - e.acc(self.flange_a))
+
+    def _apply(self, e, tau) -> None:
+        self._apply_opposite_flows(e, tau)
+
+    def _stop(self, e):
+        return e.vel(self.flange_b), e.vel(self.flange_a)
+
+    def physics(self, e):
+        friction.NormalForceFriction.physics(self, e)
+        w_rel, a_rel = self._relfric(e)
+        e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad",
+                   "relative rotation angle (= flange_b.phi - flange_a.phi)",
+                   nominal=self.rel_nominal())
+        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))")
+        e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
 
 # =========================================================================================
 # Sources

@@ -23,9 +23,10 @@ receives the reaction force (support.f = −flange.f).
 The equations shared with the rotational library are written once in ``interfaces``; the
 classes here declare MSL's connectors and names on top of them.
 
-Not here (non-smooth, later): ElastoGap, friction (SupportFriction, Brake,
-MassWithStopAndFriction), SignForce, InverseSpeedDependentForce, EddyCurrentForce; nor the
-adaptors, InitializeFlange, RelativeStates, Vehicle. Differences from MSL are listed in each
+Coulomb friction (SupportFriction, Brake) has MSL's mode machine on state events (see
+``friction``). Not here yet: ElastoGap, MassWithStopAndFriction, SignForce,
+InverseSpeedDependentForce, EddyCurrentForce; nor the adaptors, InitializeFlange,
+RelativeStates, Vehicle. Differences from MSL are listed in each
 docstring.
 """
 from __future__ import annotations
@@ -35,7 +36,7 @@ import casadi as ca
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
                     StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import TRANSLATIONAL
-from . import interfaces
+from . import friction, interfaces
 from .interfaces import TRANSLATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
 Flange = TranslationalFlange
@@ -44,9 +45,10 @@ __all__ = [
     # interfaces
     "PartialTwoFlanges", "PartialRigid", "PartialCompliant",
     "PartialCompliantWithRelativeStates", "PartialElementaryOneFlangeAndSupport2",
-    "PartialForce", "PartialAbsoluteSensor", "PartialRelativeSensor",
+    "PartialElementaryTwoFlangesAndSupport2", "PartialFriction", "PartialForce",
+    "PartialAbsoluteSensor", "PartialRelativeSensor",
     # components
-    "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper",
+    "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "SupportFriction", "Brake",
     # sources
     "Force", "Force2", "ConstantForce", "ForceStep", "LinearSpeedDependentForce",
     "QuadraticSpeedDependentForce", "Position", "Speed", "Accelerate", "Move",
@@ -124,6 +126,22 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
     support = ConditionalPort(Flange("support/housing of component", required=True),
                               "useSupport")
 
+
+
+class PartialElementaryTwoFlangesAndSupport2(PartialTwoFlanges,
+                                             interfaces.PartialElementaryTwoFlangesAndSupport2):
+    """``flange_a``, ``flange_b`` and, with ``useSupport=True``, a ``support`` flange."""
+    support = ConditionalPort(Flange("support/housing of component", required=True),
+                              "useSupport")
+
+
+class PartialFriction(friction.PartialFriction):
+    """Coulomb friction with MSL's mode machine (Translational.Interfaces.PartialFriction;
+    see ``acausal.components.friction``): v_relfric [m/s], a_relfric [m/s²], f0, f0_max [N],
+    mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction force f [N] an
+    algebraic variable."""
+    axis = TRANSLATIONAL_AXIS
+    v_small = Parameter(1e-3, "m/s", "relative velocity near to zero", positive=True)
 
 class PartialForce(PartialElementaryOneFlangeAndSupport2):
     """A force law on ``flange`` (relative to the support). MSL's variable ``f`` = flange.f
@@ -225,6 +243,31 @@ class SpringDamper(PartialCompliantWithRelativeStates):
     def loss_power(self, s_rel, v_rel, f):
         return self.d * v_rel ** 2
 
+
+
+class SupportFriction(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
+                      friction.TableFriction, PartialFriction):
+    """Coulomb friction in the support: flange_b.s = flange_a.s, the friction force f [N]
+    against the support, f_pos(v) [N] when sliding forward (v ≥ 0, a table constructor
+    keyword of rows [v, f], default [[0, 1]]), up to f0_max = peak·f_pos(0) when stuck.
+    Records s, v, a relative to the support. useHeatPort only False."""
+    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    table_name = "f_pos"
+    table_default = ((0.0, 1.0),)
+
+
+class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
+            friction.NormalForceFriction, PartialFriction):
+    """Brake based on Coulomb friction: flange_b.s = flange_a.s, the brake force f [N]
+    against the support, mu·cgeo·fn when sliding, fn = fn_max·f_normalized [N]; ``mu_pos``
+    (constructor keyword, rows [v, mu], default [[0, 0.5]]); free (mode 2, f = 0) when
+    fn ≤ 0. fn_max defaults to 1 N (MSL's start value). useHeatPort only False."""
+    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
+                               "assumption", nonnegative=True)
+    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
+    f_normalized = RealInput("normalized force signal 0..1 (normal force = "
+                             "fn_max*f_normalized; brake is active if > 0)")
 
 # =========================================================================================
 # Sources

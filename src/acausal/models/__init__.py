@@ -17,6 +17,7 @@ no compiler or simulation imports.
     elastic_bearing     ElasticBearing: MSL's gearbox on an elastic bearing (nominals)
     oscillators         Oscillator: mass on a spring and a damper
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
+    friction            RotationalFriction: MSL's drive train with a clutch and a brake
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -26,6 +27,7 @@ from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_mod
 from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
 from .elastic_bearing import ElasticBearing
+from .friction import RotationalFriction
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .oscillators import Oscillator
@@ -35,4 +37,5 @@ from .pendulums import PendulumChain
 __all__ = ["BouncingBall", "Floor", "CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
            "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
-           "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain"]
+           "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain",
+           "RotationalFriction"]

@@ -1,0 +1,257 @@
+"""Coulomb friction with stuck and sliding modes, shared by the translational and rotational
+libraries, after MSL 4.1's ``Rotational.Interfaces.PartialFriction`` and
+``Translational.Interfaces.PartialFriction``; written once over the domain's ``Axis``
+(rotational names below, translational ones in brackets: v_relfric, f0, f0_max, v_small).
+
+The mode machine is MSL's, with MSL's encoding of ``mode``: Unknown = 3 (the start value),
+Free = 2 (the element is not active, e.g. a brake without normal force), Forward = 1
+(w_relfric > 0), Stuck = 0, Backward = −1 (w_relfric < 0). On the state-event engine the
+friction torque ``tau`` [N.m] (``f`` [N]) is an algebraic variable fixed by the mode:
+stuck, a_relfric = 0 (tau is the torque that holds the surfaces together); forward, the
+sliding characteristic tau = F(w_relfric); backward, tau = −F(−w_relfric); free, tau = 0.
+Events: ``sliding`` (the relative speed falling through 0 while sliding), ``breakaway``
+(tau0_max − |tau| falling through 0 while stuck), both setting the relative speed to 0
+exactly (the stuck element's speed drifts by the integrator's tolerance otherwise), ``start``
+(the relative speed leaving 0 after breaking away), ``fn`` (the
+normal force crossing 0, for elements that can be free). At every event the modes are updated
+as MSL does: a stuck element slides forward when the torque that holds it exceeds tau0_max
+(backward below −tau0_max; ``startForward``/``startBackward``, Boolean modes, are set then and
+cleared at the next event), a sliding element that reaches w_relfric = 0 keeps sliding only
+if its acceleration there (with the sliding friction tau0) keeps its direction or it has
+just broken away, and sticks otherwise.
+
+The characteristic tables (``tau_pos``, ``f_pos``, ``mu_pos``: rows [speed ≥ 0, value]) are
+interpolated linearly and extrapolated through the last two rows (MSL's CombiTable1D with
+Smoothness.LinearSegments and Extrapolation.LastTwoPoints, the only smoothness here).
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from ..core import Component, Parameter
+from ..errors import ParameterError
+from .interfaces import Axis
+
+UNKNOWN, FREE, FORWARD, STUCK, BACKWARD = 3, 2, 1, 0, -1
+MODES = (BACKWARD, STUCK, FORWARD, FREE, UNKNOWN)
+
+
+def check_table(table, name: str, where: str) -> np.ndarray:
+    """A characteristic table as an (n, 2) float array with n ≥ 1 and strictly increasing,
+    nonnegative speeds in the first column, or a ParameterError naming ``where.name``."""
+    try:
+        tab = np.array(table, dtype=float).reshape(-1, 2) if np.size(table) % 2 == 0 \
+            else None
+    except (TypeError, ValueError):
+        tab = None
+    if tab is None or tab.shape[0] < 1 or not np.all(np.isfinite(tab)):
+        raise ParameterError(f"parameter '{where}.{name}' must be a table of rows "
+                             f"[speed, value] (finite numbers), got {table!r}")
+    if tab[0, 0] < 0 or np.any(np.diff(tab[:, 0]) <= 0):
+        raise ParameterError(f"parameter '{where}.{name}': its first column (the speed, >= 0) "
+                             f"must be strictly increasing from a value >= 0, got "
+                             f"{tab[:, 0].tolist()}")
+    return tab
+
+
+def table_value(tab: np.ndarray, x):
+    """Linear interpolation in ``tab`` at x, extrapolated through the first or last two rows
+    (MSL's CombiTable1D, LinearSegments, LastTwoPoints); a one-row table is constant."""
+    if tab.shape[0] == 1:
+        return ca.SX(tab[0, 1]) + 0 * x
+    slopes = np.diff(tab[:, 1]) / np.diff(tab[:, 0])
+    y = tab[0, 1] + slopes[0] * (x - tab[0, 0])
+    for k in range(1, len(slopes)):
+        y += (slopes[k] - slopes[k - 1]) * ca.fmax(x - tab[k, 0], 0.0)
+    return y
+
+
+class PartialFriction(Component):
+    """Coulomb friction between two surfaces with MSL's mode machine (see the module).
+
+    A subclass names its table (``table_name``, a constructor keyword with MSL's default
+    ``table_default``) and gives: ``_relfric(e)`` the relative speed and acceleration of the
+    surfaces; ``_sliding(e, w)`` the forward sliding friction at speed w ≥ 0 (tau_pos(w), or
+    mu_pos(w)·cgeo·fn); ``_free(e)`` whether the element is inactive (an expression, or None:
+    never); ``_apply(e, tau)`` the flows; ``_stop(e)`` the state its relative speed is and
+    the value that makes it 0 (reinit when it sticks). Records w_relfric, a_relfric, tau0,
+    tau0_max, free, sa, locked, startForward, startBackward, lossPower [W] and the mode.
+    """
+    axis: Axis
+    table_name = ""
+    table_default = ((0.0, 1.0),)
+    peak = Parameter(1.0, "1", "peak for maximum friction at w == 0 (tau0_max = peak*tau0)")
+
+    def __init__(self, name: str | None = None, **params):
+        table = params.pop(self.table_name, self.table_default)
+        super().__init__(name, **params)
+        kind = type(self).__name__
+        if self.peak < 1:
+            raise ParameterError(f"parameter '{kind}.peak' must be >= 1 (MSL: min = 1), got "
+                                 f"{self.peak}")
+        self.__dict__["table"] = check_table(table, self.table_name, kind)
+
+    def _small(self):
+        """MSL's w_small [rad/s] (v_small [m/s])."""
+        return getattr(self, f"{self.axis.v}_small")
+
+    # ---- what a subclass gives -----------------------------------------------------------
+    def _relfric(self, e):
+        raise NotImplementedError
+
+    def _sliding(self, e, w):
+        raise NotImplementedError
+
+    def _free(self, e):
+        return None
+
+    def _apply(self, e, tau) -> None:
+        raise NotImplementedError
+
+    def _stop(self, e):
+        raise NotImplementedError
+
+    # ---- the mode machine ----------------------------------------------------------------
+    def structure(self, s):
+        x = self.axis
+        s.mode("mode", UNKNOWN, values=MODES,
+               description="mode of friction (-1: backward sliding, 0: stuck, 1: forward "
+                           "sliding, 2: inactive, 3: unknown)")
+        s.mode("startForward", 0, values=(0, 1),
+               description=f"= true, if {x.v}_relfric=0 and start of forward sliding")
+        s.mode("startBackward", 0, values=(0, 1),
+               description=f"= true, if {x.v}_relfric=0 and start of backward sliding")
+        s.algebraic(x.f, unit=x.f_unit, description=f"friction {x.flow}")
+
+    def physics(self, e):
+        x = self.axis
+        mode, tau = e.mode("mode"), e.state(x.f)
+        start_fwd, start_bwd = e.mode("startForward"), e.mode("startBackward")
+        w, a = self._relfric(e)
+        tau0 = self._sliding(e, 0.0)
+        tau0_max = self.peak * tau0
+        free = self._free(e)
+        free = ca.SX(0) if free is None else free
+        fwd = ca.logic_or(mode == FORWARD, start_fwd)
+        bwd = ca.logic_or(mode == BACKWARD, start_bwd)
+        forward, backward = tau - self._sliding(e, w), tau + self._sliding(e, -w)
+        by_sign = ca.if_else(w > 0, forward, ca.if_else(w < 0, backward, a))
+        e.residual(ca.if_else(free, tau, ca.if_else(fwd, forward, ca.if_else(
+            bwd, backward, ca.if_else(mode == STUCK, a, by_sign)))))
+        self._apply(e, tau)
+
+        locked = ca.logic_and(ca.logic_not(free), mode == STUCK)
+        e.indicator("sliding", ca.if_else(fwd, w, ca.if_else(bwd, -w, 1.0)), x.v_unit,
+                    f"relative {x.speed} while sliding, in its direction")
+        e.indicator("breakaway", ca.if_else(locked, tau0_max - ca.fabs(tau), 1.0), x.f_unit,
+                    f"{x.f}0_max - |{x.f}| while stuck")
+        e.indicator("start", ca.if_else(start_fwd, w, ca.if_else(start_bwd, -w, -1.0)),
+                    x.v_unit, f"relative {x.speed} after breaking away, in its direction")
+        state, zero = self._stop(e)
+        e.reinit(state, zero, when="sliding", direction=-1)
+        e.reinit(state, zero, when="breakaway", direction=-1)      # at rest exactly
+
+        # startForward: broken away from stuck (the torque that held it beyond tau0_max),
+        # kept while w_relfric = 0, so that sliding that starts with an acceleration ~0
+        # (peak = 1) does not fall back to stuck; cleared at the event of indicator "start",
+        # w_relfric leaving 0 (MSL: mode becomes Forward when w_relfric > 0)
+        small = self._small()
+        breaks_fwd = ca.logic_and(mode == STUCK, tau > tau0_max)
+        breaks_bwd = ca.logic_and(mode == STUCK, tau < -tau0_max)
+        e.mode_update(start_fwd, ca.logic_and(ca.logic_not(free), ca.logic_or(breaks_fwd, ca.logic_and(
+            start_fwd, ca.logic_and(mode == FORWARD, w == 0)))))
+        e.mode_update(start_bwd, ca.logic_and(ca.logic_not(free), ca.logic_or(breaks_bwd, ca.logic_and(
+            start_bwd, ca.logic_and(mode == BACKWARD, w == 0)))))
+        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
+        from_stuck = ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD, STUCK))
+        keeps_forward = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
+        keeps_backward = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
+        from_forward = ca.if_else(keeps_forward, FORWARD, ca.if_else(w < -small, BACKWARD,
+                                                                      STUCK))
+        from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,
+                                                                         STUCK))
+        e.mode_update(mode, ca.if_else(free, FREE, ca.if_else(
+            mode == STUCK, from_stuck, ca.if_else(mode == FORWARD, from_forward, ca.if_else(
+                mode == BACKWARD, from_backward, sign_w)))))
+
+        e.variable(f"{x.v}_relfric", w, x.v_unit,
+                   f"relative {x.speed} between frictional surfaces")
+        e.variable("a_relfric", a, x.a_unit,
+                   f"relative {x.acceleration} between frictional surfaces")
+        e.variable(f"{x.f}0", tau0, x.f_unit,
+                   f"friction {x.flow} for {x.v}_relfric=0 and forward sliding")
+        e.variable(f"{x.f}0_max", tau0_max, x.f_unit,
+                   f"maximum friction {x.flow} for {x.v}_relfric=0 and locked")
+        e.variable("free", free, "", "= true, if frictional element is not active")
+        e.variable("locked", locked, "", f"= true, if {x.v}_relfric=0 and not sliding")
+        e.variable("sa", ca.if_else(locked, tau, ca.if_else(free, a, ca.if_else(
+            fwd, a + tau0_max, ca.if_else(bwd, a - tau0_max, a)))),
+            "1", f"path parameter of friction characteristic {x.f} = f(a_relfric)")
+        e.variable("lossPower", tau * w, "W", "loss power leaving component via heatPort")
+
+class SupportedFriction(PartialFriction):
+    """Friction of the rigidly joined flanges (flange_b = flange_a) against the support
+    (MSL's BearingFriction, SupportFriction, Brake): w_relfric = der(flange_a − support);
+    flange_a.tau + flange_b.tau = tau, support.tau = −tau. Records phi, w, a (s, v, a)."""
+
+    def structure(self, s):
+        s.linear({self.flange_b: 1.0, self.flange_a: -1.0}, 0.0,
+                 f"{self.path}: flange_b = flange_a")
+        super().structure(s)
+
+    def _relfric(self, e):
+        return self._rel_speed(e, self.flange_a), self._rel_acc(e, self.flange_a)
+
+    def _apply(self, e, tau) -> None:
+        e.flow(self.flange_a, tau)
+        if self.useSupport:
+            e.flow(self.support, -tau)
+
+    def _stop(self, e):
+        return e.vel(self.flange_a), e.vel(self.support) if self.useSupport else 0.0
+
+    def physics(self, e):
+        super().physics(e)
+        x = self.axis
+        e.variable(x.s, self._rel_position(e, self.flange_a), x.s_unit,
+                   f"{x.position} of flange_a and flange_b with respect to support")
+        e.variable(x.v, self._rel_speed(e, self.flange_a), x.v_unit,
+                   f"{x.speed} of flange_a and flange_b with respect to support")
+        e.variable("a", self._rel_acc(e, self.flange_a), x.a_unit,
+                   f"{x.acceleration} of flange_a and flange_b with respect to support")
+
+
+class TableFriction(PartialFriction):
+    """The sliding friction is the table itself (tau_pos, f_pos): MSL's BearingFriction and
+    SupportFriction."""
+
+    def _sliding(self, e, w):
+        return table_value(self.table, w)
+
+
+class NormalForceFriction(PartialFriction):
+    """Friction of a normal force fn = fn_max·f_normalized [N] (input, 0..1) with the
+    coefficient mu_pos(w) [1] and the geometry constant cgeo: sliding friction
+    mu·cgeo·fn; free (inactive, mode 2) when fn ≤ 0. MSL's Brake and Clutch. Records fn and
+    mu (signed as the friction), indicator ``fn``."""
+    table_name = "mu_pos"
+    table_default = ((0.0, 0.5),)
+
+    def _fn(self, e):
+        return self.fn_max * e.input(self.f_normalized)
+
+    def _sliding(self, e, w):
+        return table_value(self.table, w) * self.cgeo * self._fn(e)
+
+    def _free(self, e):
+        return self._fn(e) <= 0
+
+    def physics(self, e):
+        super().physics(e)
+        fn, mode = self._fn(e), e.mode("mode")
+        w = self._relfric(e)[0]
+        e.indicator("fn", fn, "N", "normal force")
+        e.variable("fn", fn, "N", "normal force (= fn_max*f_normalized)")
+        e.variable("mu", ca.if_else(mode == BACKWARD, -table_value(self.table, -w),
+                                    table_value(self.table, w)), "1", "friction coefficient")
