@@ -275,9 +275,10 @@ def test_unclosable_loop_is_an_error(fmu_dir, capsys):
     """A four-bar whose rocker cannot reach the coupler fails in exitInitializationMode with
     fmi2Error and a logged message, not a crash."""
     path = acausal.compile(FourBar()).export_fmu(fmu_dir / "four_bar.fmu")
-    with pytest.raises(FMICallException, match="ExitInitializationMode"):
-        simulate_fmu(str(path), stop_time=1.0, start_values={"rev1.phi": 1.0,
-                                                             "rocker_b.r[1]": 5.0})
+    unzipped = extract(str(path), unzipdir=str(fmu_dir / "four_bar"))   # fmpy leaves its own
+    with pytest.raises(FMICallException, match="ExitInitializationMode"):  # copy on errors
+        simulate_fmu(unzipped, stop_time=1.0, start_values={"rev1.phi": 1.0,
+                                                            "rocker_b.r[1]": 5.0})
     assert "kinematic loops cannot be closed" in capsys.readouterr().out
 
 
