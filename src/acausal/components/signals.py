@@ -677,7 +677,39 @@ def _check_limits(block, upper: str, lower: str) -> None:
                              f"< {lower} (= {lo})")
 
 
-class Limiter(SISO):
+class _SymmetricLimits(SISO):
+    """MSL's ``uMax`` (required) and ``uMin`` bound to −uMax: uMin follows uMax, also at
+    simulation time, unless it is given at construction, which makes it a parameter of its
+    own (the class ``_own_uMin`` derives). Limits with uMax < uMin are refused."""
+    required = ("uMax",)
+    _with_uMin: type | None = None
+
+    def __new__(cls, name=None, **params):
+        own = cls.__dict__.get("_with_uMin") if "uMin" in params else None
+        return super().__new__(own or cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _check_limits(self, "uMax", "uMin")
+
+    @property
+    def uMin(self):
+        """The lower limit: −uMax (MSL's binding)."""
+        return -self.uMax
+
+
+def _own_uMin(cls, description: str) -> type:
+    """The variant of ``cls`` (a _SymmetricLimits) whose uMin is a parameter of its own,
+    made when uMin is given at construction; it shows the MSL class's name."""
+    variant = type(cls.__name__, (cls,), {
+        "__doc__": f"{cls.__name__} with uMin given at construction: a parameter of its own.",
+        "__module__": cls.__module__, "__qualname__": f"_{cls.__name__}UMin",
+        "uMin": Parameter(-1.0, "", description)})
+    cls._with_uMin = variant
+    return variant
+
+
+class Limiter(_SymmetricLimits):
     """Limit the range of a signal: y = uMax if u > uMax, uMin if u < uMin, else u
     (MSL Nonlinear.Limiter).
 
@@ -690,31 +722,13 @@ class Limiter(SISO):
     changes nothing (the initialization solves the actual model).
     """
     options = {"strict": False, "homotopyType": LimiterHomotopy.Linear}
-    required = ("uMax",)
     uMax = Parameter(1.0, "", "upper limits of input signals")
-
-    def __new__(cls, name=None, **params):
-        return super().__new__(_LimiterUMin if cls is Limiter and "uMin" in params else cls)
-
-    def __init__(self, name: str | None = None, **params):
-        super().__init__(name, **params)
-        _check_limits(self, "uMax", "uMin")
-
-    @property
-    def uMin(self):
-        """Lower limits of input signals: −uMax (MSL's binding)."""
-        return -self.uMax
 
     def physics(self, e):
         e.output(self.y, _limit(e.input(self.u), self.uMin, self.uMax))
 
 
-class _LimiterUMin(Limiter):
-    """Limiter with uMin given at construction: a parameter of its own."""
-    uMin = Parameter(-1.0, "", "lower limits of input signals")
-
-
-_LimiterUMin.__name__ = "Limiter"
+_LimiterUMin = _own_uMin(Limiter, "lower limits of input signals")
 
 
 class VariableLimiter(SISO):
@@ -734,27 +748,14 @@ class VariableLimiter(SISO):
         e.output(self.y, _limit(e.input(self.u), e.input(self.limit2), e.input(self.limit1)))
 
 
-class DeadZone(SISO):
+class DeadZone(_SymmetricLimits):
     """Region of zero output: y = u − uMax if u > uMax, u − uMin if u < uMin, else 0
     (MSL Nonlinear.DeadZone).
 
     Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding, as for
     Limiter). MSL differences: no events at the zone's edges.
     """
-    required = ("uMax",)
     uMax = Parameter(1.0, "", "upper limits of dead zones")
-
-    def __new__(cls, name=None, **params):
-        return super().__new__(_DeadZoneUMin if cls is DeadZone and "uMin" in params else cls)
-
-    def __init__(self, name: str | None = None, **params):
-        super().__init__(name, **params)
-        _check_limits(self, "uMax", "uMin")
-
-    @property
-    def uMin(self):
-        """Lower limits of dead zones: −uMax (MSL's binding)."""
-        return -self.uMax
 
     def physics(self, e):
         u = e.input(self.u)
@@ -762,12 +763,7 @@ class DeadZone(SISO):
                                     ca.if_else(u < self.uMin, u - self.uMin, 0)))
 
 
-class _DeadZoneUMin(DeadZone):
-    """DeadZone with uMin given at construction: a parameter of its own."""
-    uMin = Parameter(-1.0, "", "lower limits of dead zones")
-
-
-_DeadZoneUMin.__name__ = "DeadZone"
+_DeadZoneUMin = _own_uMin(DeadZone, "lower limits of dead zones")
 
 
 # ---- continuous (Modelica.Blocks.Continuous) ----------------------------------------------------
