@@ -237,6 +237,9 @@ class NormalForceFriction(PartialFriction):
     mu (signed as the friction), indicator ``fn``."""
     table_name = "mu_pos"
     table_default = ((0.0, 0.5),)
+    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
+                               "assumption", nonnegative=True)
+    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
 
     def _fn(self, e):
         return self.fn_max * e.input(self.f_normalized)

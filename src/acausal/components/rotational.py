@@ -360,9 +360,6 @@ class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
     ``mu_pos`` (constructor keyword, rows [w, mu], default [[0, 0.5]]); free (mode 2, tau = 0)
     when fn ≤ 0. fn_max defaults to 1 N (MSL's start value). useHeatPort only False."""
     options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
-    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
-                               "assumption", nonnegative=True)
-    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
     f_normalized = RealInput("normalized force signal 0..1 (normal force = "
                              "fn_max*f_normalized; brake is active if > 0)")
 
@@ -376,9 +373,6 @@ class Clutch(PartialCompliantWithRelativeStates, friction.NormalForceFriction,
     w_rel, a_rel. When it sticks, flange_b's speed is set to flange_a's: flange_b's speed must
     be a state. useHeatPort only False."""
     options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
-    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
-                               "assumption", nonnegative=True)
-    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
     f_normalized = RealInput("normalized force signal 0..1 (normal force = "
                              "fn_max*f_normalized; clutch is engaged if > 0)")
 

@@ -263,9 +263,6 @@ class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
     (constructor keyword, rows [v, mu], default [[0, 0.5]]); free (mode 2, f = 0) when
     fn ≤ 0. fn_max defaults to 1 N (MSL's start value). useHeatPort only False."""
     options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
-    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
-                               "assumption", nonnegative=True)
-    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
     f_normalized = RealInput("normalized force signal 0..1 (normal force = "
                              "fn_max*f_normalized; brake is active if > 0)")
 
