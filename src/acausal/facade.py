@@ -45,9 +45,12 @@ class CompiledModel(compiler.CompiledModel):
         return self.mobility_at(t0, x, z, u0, p)[1]
 
 
-def compile(model: Model) -> CompiledModel:
-    """Compile ``model`` into a CompiledModel: the CasADi equations of motion by name."""
-    return CompiledModel.wrap(compiler.compile(model))
+def compile(model: Model, smooth: bool = False) -> CompiledModel:
+    """Compile ``model`` into a CompiledModel: the CasADi equations of motion by name.
+    ``smooth=True``: every component with events in its smooth form (a regularization with
+    a named parameter instead of modes and events; what gradient-based optimal control
+    needs)."""
+    return CompiledModel.wrap(compiler.compile(model, smooth))
 
 
 __all__ = ["compile", "CompiledModel"]

@@ -45,20 +45,21 @@ def _stack(items) -> ca.SX:
     return _vc(*items) if items else ca.SX(0, 1)
 
 
-def compile(model: Model) -> CompiledModel:
-    """Compile ``model`` into a CompiledModel."""
+def compile(model: Model, smooth: bool = False) -> CompiledModel:
+    """Compile ``model`` into a CompiledModel; ``smooth``: every component with events in its
+    smooth form (see ``PhysicsBuilder.smooth``)."""
     gc_was_enabled = gc.isenabled()
     gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
     try:
-        return _compile(model)
+        return _compile(model, smooth)
     finally:
         if gc_was_enabled:
             gc.enable()
 
 
-def _compile(model: Model) -> CompiledModel:
+def _compile(model: Model, smooth: bool) -> CompiledModel:
     flat = flatten(model)
-    ws = Workspace(t=ca.SX.sym("t"))
+    ws = Workspace(t=ca.SX.sym("t"), smooth=bool(smooth))
     ws.der_table["t"] = 1
     ws.source = flat.signal_source
     ws.components = flat.components
@@ -90,7 +91,7 @@ def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
     position, velocity and acceleration symbols of its own, free of any tree, and every
     component contributes its physics; a node has mass when the kinetic energy is not
     linear in its velocity. The components keep nothing of it (as of any compile)."""
-    probe = Workspace(t=ws.t)
+    probe = Workspace(t=ws.t, smooth=ws.smooth)
     probe.der_table["t"] = 1
     probe.source, probe.components = ws.source, ws.components
     probe.param_symbols = dict(ws.param_symbols)
@@ -283,6 +284,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         fixed_params=fixed,
         mode_params=list(range(n_before_modes, len(params))),
         state_events=events,
+        smooth=ws.smooth,
     )
 
 

@@ -44,6 +44,7 @@ class ModeInfo:
 class Workspace:
     """Everything components declare, collected for the assembly."""
     t: ca.SX
+    smooth: bool = False                                    # components in smooth form
     der_table: dict = field(default_factory=dict)
     relations: list = field(default_factory=list)
     internal_nodes: list = field(default_factory=list)
@@ -102,6 +103,15 @@ def _start(value):
 class _Base:
     def __init__(self, ws: Workspace, owner: Component):
         self._ws, self._owner = ws, owner
+
+    @property
+    def smooth(self) -> bool:
+        """Whether the model is compiled in smooth form (``compile(model, smooth=True)``, what
+        gradient-based optimal control needs): a component with events or modes then
+        declares none and writes its nonsmooth law as a regularization with a named
+        parameter (e.g. friction tau0·tanh(w/w_smooth)), documenting its error against the
+        exact form."""
+        return self._ws.smooth
 
     @property
     def time(self) -> ca.SX:

@@ -120,7 +120,8 @@ class CompiledModel:
     component built with a ``structural_zero`` parameter at 0, e.g. a massless Mass), not
     parameters of this model. ``mode_params``: positions in p of the discrete modes (last in
     p; their records in ``params`` hold their start values, ``component`` their owner).
-    ``state_events``: indicators, mode updates and reinits (see ``StateEvents``)."""
+    ``state_events``: indicators, mode updates and reinits (see ``StateEvents``).
+    ``smooth``: compiled in smooth form (``compile(model, smooth=True)``)."""
     name: str
     t: ca.SX
     x: ca.SX
@@ -150,6 +151,7 @@ class CompiledModel:
     fixed_params: list[str] = field(default_factory=list)
     mode_params: list[int] = field(default_factory=list)
     state_events: StateEvents = field(default_factory=StateEvents)
+    smooth: bool = False    # compiled in smooth form (no events; see PhysicsBuilder.smooth)
     _cache: dict = field(default_factory=dict, repr=False)
 
     # ---- names ----------------------------------------------------------------------------
