@@ -102,7 +102,8 @@ class CoulombFriction(Component):
     """Coulomb friction of a body on the ground with MSL's mode encoding (PartialFriction:
     −1 backward, 0 stuck, 1 forward): sliding force F_c [N] against the motion, breakaway
     force F_0 [N]; the friction force on the body f [N] is an algebraic variable (stuck: the
-    force that holds the body). Its speed is set to 0 when it sticks."""
+    force that holds the body). Its speed is set to 0 when it sticks and when it breaks
+    away (it rests up to the integrator's roundoff, whose sign must not decide)."""
     F_c = Parameter(1.0, "N", "sliding friction force")
     F_0 = Parameter(1.5, "N", "breakaway force")
     flange = TranslationalFlange("the sliding body")
@@ -123,6 +124,7 @@ class CoulombFriction(Component):
         keeps = ca.logic_or(mode * v > 0, ca.logic_and(v == 0, mode * a > 0))
         e.mode_update(mode, ca.if_else(mode == 0, stuck, ca.if_else(keeps, mode, 0)))
         e.reinit(v, 0, when="v", direction=-1)
+        e.reinit(v, 0, when="breakaway", direction=-1)    # at rest exactly (not roundoff)
 
 
 M, F_C, F_0 = 2.0, 1.0, 1.5

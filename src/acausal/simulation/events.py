@@ -7,7 +7,11 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
 1. between events the model is integrated with the modes d as the integrator's parameters,
    its outputs at the output grid and at checks between (``CHECKS`` per output interval, at
    least ``CHECKS_PER_RUN`` in all), where every indicator's sign is checked (a pair of
-   crossings closer than that is not seen);
+   crossings closer than that is not seen); after an event over a window of checks (twice
+   the last gap between events, at least ``FIRST_WINDOW``), integrated again from the
+   event over twice as many while none happens (up to ``MAX_WINDOW``, then continued from
+   the window's end): little is integrated past the next event and thrown away, and the
+   integrator is seldom restarted between events (a restart costs accuracy);
 2. a sign change between two checks is located by re-integrating from the earlier check
    (one integrator on the normalized time τ ∈ [0, 1], the duration a parameter, built once),
    secant steps safeguarded by bisection, until the bracket is shorter than
@@ -45,6 +49,8 @@ CHECKS = 4                 # indicator checks per output interval, and at least
 CHECKS_PER_RUN = 2000      # this many over the simulated time (coarse output grids)
 EVENT_TOL = 1e-12          # event location: the bracket's width over max(1, |t|) [s]
 MAX_ITERATIONS = 50        # event iteration: rounds of mode updates at one instant
+FIRST_WINDOW = 2 * CHECKS  # checks integrated at once after an event (at least) ...
+MAX_WINDOW = 512           # ... doubled while none happens, up to this many
 CHATTER_EVENTS = 100       # this many state events ...
 CHATTER_SPAN = 1e-6        # ... within this fraction of the simulated time: chattering
 
@@ -65,8 +71,12 @@ class EventSimulation:
         self.nx, self.has_alg = model.x.numel(), model.z.numel() > 0
         if self.has_alg:
             # the integrator restarts at every event with z consistent but not its rate:
-            # the algebraic variables (index 1: functions of x) stay out of the error test
+            # the algebraic variables (index 1: functions of x) stay out of the error test;
+            # the start is consistent (``consistent``), so IDAS's own initial-value search
+            # is replaced by the known derivatives (it fails on a start that is consistent
+            # already, e.g. every friction element stuck: IDA_LINESEARCH_FAIL)
             self.opts.setdefault("suppress_algebraic", True)
+            self.opts["calc_ic"] = False
         self.Nx, self.Nz = scale[:self.nx], scale[self.nx:]
         d = model.p[model.mode_params] if model.mode_params else ca.SX(0, 1)
         self.dae = {"x": model.x, "t": model.t, "ode": ode, "p": d}
@@ -78,15 +88,17 @@ class EventSimulation:
                   "ode": h * ca.substitute(ode, *at)}
         if self.has_alg:
             scaled.update(z=model.z, alg=ca.substitute(alg, *at))
-        local = {k: v for k, v in self.opts.items() if k != "max_step_size"}
+        local = {k: v for k, v in self.opts.items() if k not in ("max_step_size", "calc_ic")}
         self.loops = model.has_loops
-        if self.loops:      # IDAS is given consistent derivatives at each start (simulate)
+        if self.has_alg:    # IDAS is given consistent derivatives at each start
             self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
+        if self.loops:
             rows = model_equations(model)[0][1]                  # Φ̇ along the motion
             self.speeds = model.function("speeds", [rows, ca.jacobian(rows, model.x)])
         else:
             self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
         self.u = ca.Function("u", [model.t], [u_expr])
+        self._g_map, self._u_map = {}, {}
         self.g = model.indicator_function
         self.update = model.event_update_function
         self.reinits = model.state_events.reinits
@@ -106,12 +118,26 @@ class EventSimulation:
         p[self.model.mode_params] = d
         return p
 
+    def u_map(self, n: int) -> ca.Function:
+        if n not in self._u_map:
+            self._u_map[n] = self.u.map(n)
+        return self._u_map[n]
+
     def point(self, t, x, z, d):
         """The arguments (t, x, z, u, p) of the seam's Functions."""
         return t, x, z, np.array(self.u(t), dtype=float).ravel(), self.params(d)
 
     def indicators(self, t, x, z, d) -> np.ndarray:
         return np.array(self.g(*self.point(t, x, z, d)), dtype=float).ravel()
+
+    def indicators_along(self, times, X, Z, d) -> np.ndarray:
+        """The indicators at each of ``times`` (columns of X, Z), in one call."""
+        n = len(times)
+        if n not in self._g_map:
+            self._g_map[n] = self.g.map(n)
+        T = np.asarray(times, dtype=float).reshape(1, -1)
+        U = np.array(self.u_map(n)(T), dtype=float)
+        return self._g_map[n](T, X, Z, U, self.params(d)).full()
 
     def consistent(self, t, x, z, d, held: dict):
         """(x, z) consistent at t with modes d: in closed loops the speeds moved the least
@@ -164,9 +190,9 @@ class EventSimulation:
         return X, Z
 
     def _start_options(self, t0, x, z, d, t1) -> dict:
-        """The integrator's options; closed loops: with the derivatives at the start and a
-        first step, as simulate() gives them (IDAS's own initialization is off there)."""
-        if not self.loops:
+        """The integrator's options; DAEs: with the derivatives at the start and a first
+        step, as simulate() gives them for closed loops (IDAS's own initialization is off)."""
+        if not self.has_alg:
             return self.opts
         xdot = np.array(self.xdot(x / self.Nx, z / self.Nz, t0, d), dtype=float).ravel()
         step0 = max(1e-6 * (t1 - t0), 1e-13 * max(1.0, abs(t0)))    # resolvable at t0
@@ -257,6 +283,17 @@ class EventSimulation:
             f"{', '.join(sorted(moving))} keep changing ({MAX_ITERATIONS} rounds: "
             f"{' -> '.join(str(s) for s in seen[-4:])}); check their mode_update for a cycle")
 
+    def _first_event(self, G, sides):
+        """(the first column of the indicators G off ``sides`` that is an event, or None;
+        the sides just before it, inert crossings taken)."""
+        for i in range(G.shape[1]):
+            new = side(G[:, i], sides)
+            if np.any(new != sides):
+                if not self._inert(new, sides):
+                    return i, sides
+                sides = new
+        return None, sides
+
     def _inert(self, new, sides) -> bool:
         """Whether crossings from ``sides`` to ``new`` change nothing, and so are no event: no
         modes in the model, and no reinit of these indicators in these directions (a ball
@@ -288,25 +325,25 @@ class EventSimulation:
         recent = deque(maxlen=CHATTER_EVENTS)
         span = CHATTER_SPAN * (grid[-1] - grid[0])
         stops = sorted(set(time_events)) + [float(grid[-1])]
+        window = FIRST_WINDOW
         for stop in stops:
-            while t < stop:
-                end = stop if stop == grid[-1] else just_before(stop)
-                times = _checks(grid, t, end)
+            end = stop if stop == grid[-1] else just_before(stop)
+            while t < end:
+                times = _checks(grid, t, end, window)
                 X, Z = self.integrate(t, times, x, z, d)
-                prev = (t, x, z)
-                for i, tt in enumerate(times):
-                    new = side(self.indicators(tt, X[:, i], Z[:, i], d), sides)
-                    if np.any(new != sides):
-                        if not self._inert(new, sides):
-                            break
-                        sides = new
-                    if tt in grid:
-                        cols.append((tt, X[:, i], Z[:, i], d))
-                    prev = (tt, X[:, i], Z[:, i])
-                else:
-                    t, x, z = end, X[:, -1], Z[:, -1]
-                    break
-                te, xe, ze, ge = self.locate(*prev, d, sides, tt)
+                i, after = self._first_event(self.indicators_along(times, X, Z, d), sides)
+                if i is None and times[-1] != end and window < MAX_WINDOW:
+                    window *= 2         # again from t, further (no restart mid-way)
+                    continue
+                cols += [(tt, X[:, k], Z[:, k], d) for k, tt in
+                         enumerate(times[:len(times) if i is None else i]) if tt in grid]
+                sides = after
+                if i is None:
+                    t, x, z = times[-1], X[:, -1], Z[:, -1]
+                    continue
+                window = max(FIRST_WINDOW, 2 * (i + 1))
+                prev = (times[i - 1], X[:, i - 1], Z[:, i - 1]) if i else (t, x, z)
+                te, xe, ze, ge = self.locate(*prev, d, sides, times[i])
                 new = side(ge, sides)
                 crossed = {k: int(new[k]) for k in np.flatnonzero(new != sides)}
                 cols.append((te, xe, ze, d))
@@ -349,16 +386,19 @@ class EventSimulation:
             f"that holds at the switching surface (a stuck mode) or end the simulation before")
 
 
-def _checks(grid, t, end) -> list[float]:
-    """The output times in (t, end] and checks between them: CHECKS per output interval,
-    none further apart than 1/CHECKS_PER_RUN of the simulated time."""
-    pts = [float(v) for v in grid if t < v <= end]
-    if not pts or pts[-1] != end:
-        pts.append(float(end))
+def _checks(grid, t, end, limit: int) -> list[float]:
+    """The output times in (t, end], end itself, and checks between them: CHECKS per output
+    interval, none further apart than 1/CHECKS_PER_RUN of the simulated time; the first
+    ``limit`` of them."""
     spacing = (grid[-1] - grid[0]) / CHECKS_PER_RUN
+    stops = grid[(grid > t) & (grid <= end)][:limit]
+    if not len(stops) or stops[-1] != end:
+        stops = np.append(stops, end)
     out, a = [], t
-    for b in pts:
+    for b in stops:
+        if len(out) >= limit:
+            break
         n = max(CHECKS, int(np.ceil((b - a) / spacing)))
-        out += list(np.linspace(a, b, n + 1)[1:-1]) + [b]
+        out += list(np.linspace(a, b, n + 1)[1:-1]) + [float(b)]
         a = b
-    return out
+    return out[:limit]
