@@ -47,6 +47,12 @@ def _spring_mass_reference(force, breaks):
     return out
 
 
+def _on_grid(res, name):
+    """``res[name]`` at the output grid T (a result with events also holds the event
+    instants)."""
+    return res[name][np.isin(res.t, T)]
+
+
 def _driven(block, sources: dict):
     """sources (input name -> source block) -> block -> Force on a mass on a spring."""
     m = Model("driven")
@@ -88,15 +94,15 @@ def test_static_nonlinearity_drives_a_mass_on_a_spring(kind, kwargs, params, lo,
     law = limiter_law if kind == "Limiter" else deadzone_law
     c = acausal.compile(_driven(getattr(sg, kind)(**kwargs), {"u": sg.Sine(amplitude=A,
                                                                            f=F_HZ)}))
-    # at rest inside the dead zone the integrator sees no error and would step over the
-    # first pulse: a step limit, as for the pulses of a Pulse source
-    max_step = 0.05 if kind == "DeadZone" else None
-    res = c.simulate(T_END, t=T, params=params, max_step=max_step, **SIM)
-    np.testing.assert_allclose(res["blk.y"], law(_u(T), lo, hi), rtol=0, atol=1e-12)
+    # state events at the kinks: no step limit, even while at rest inside the dead zone
+    res = c.simulate(T_END, t=T, params=params, **SIM)
+    np.testing.assert_allclose(_on_grid(res, "blk.y"), law(_u(T), lo, hi), rtol=0, atol=1e-12)
     breaks = _roots(lambda t: _u(t) - hi, T_END) + _roots(lambda t: _u(t) - lo, T_END)
     ref = _spring_mass_reference(lambda t: float(law(_u(t), lo, hi)), breaks)
-    np.testing.assert_allclose(res["mass.s"], ref, rtol=0, atol=1e-7)     # kinks, no events
-    assert c.event_times(c.param_vector(params), 0.0, T_END) == []      # no events
+    np.testing.assert_allclose(_on_grid(res, "mass.s"), ref, rtol=0, atol=1e-7)
+    assert c.event_times(c.param_vector(params), 0.0, T_END) == []      # no time events
+    events = sorted(ev.time for ev in res.events if ev.component == "blk")
+    np.testing.assert_allclose(events, sorted(breaks), rtol=0, atol=1e-9)   # at the kinks
 
 
 def test_variable_limiter_drives_a_mass_on_a_spring():
@@ -108,10 +114,13 @@ def test_variable_limiter_drives_a_mass_on_a_spring():
     res = acausal.compile(_driven(blk, src)).simulate(T_END, t=T, **SIM)
     hi = lambda t: 0.5 + 0.8 * t                                        # noqa: E731
     lo = lambda t: -1.0 + 0.3 * np.sin(3 * t)                           # noqa: E731
-    np.testing.assert_allclose(res["blk.y"], limiter_law(_u(T), lo(T), hi(T)), atol=1e-12)
+    np.testing.assert_allclose(_on_grid(res, "blk.y"), limiter_law(_u(T), lo(T), hi(T)),
+                               atol=1e-12)
     breaks = _roots(lambda t: _u(t) - hi(t), T_END) + _roots(lambda t: _u(t) - lo(t), T_END)
     ref = _spring_mass_reference(lambda t: float(limiter_law(_u(t), lo(t), hi(t))), breaks)
-    np.testing.assert_allclose(res["mass.s"], ref, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(_on_grid(res, "mass.s"), ref, rtol=0, atol=1e-8)
+    events = sorted(ev.time for ev in res.events if ev.component == "blk")
+    np.testing.assert_allclose(events, sorted(breaks), rtol=0, atol=1e-9)
 
 
 def test_limits_are_checked_and_required():

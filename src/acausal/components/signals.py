@@ -18,10 +18,13 @@ dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}`` (MSL's
 Sources are expressions of time built with CasADi functions (``if_else``, ``floor``,
 ``interpolant``), so they are exact, differentiable where the MSL signal is, and usable
 inside optimal control problems. Discontinuous sources (Step, Pulse, table jumps) declare
-time events: the integrator restarts there. The nonlinear blocks (Limiter, DeadZone,
-LimPID's limiter) generate no events: the variable-step integrator resolves their kinks by
-reducing its step; give ``max_step`` to ``simulate`` if a system rests (no error for the
-step control to see) until a short pulse or an excursion out of a dead zone.
+time events: the integrator restarts there. Limiter, VariableLimiter and DeadZone generate
+state events at their kinks (MSL's default strict=false), so the simulator locates where the
+input reaches a limit; compiled with ``smooth=True`` their corners are rounded over a named
+width ``u_smooth`` (see Limiter). LimPID's limiter generates no events: the variable-step
+integrator resolves its kink by reducing its step. Blocks with Boolean signals (relations,
+Switch, Hysteresis, logical blocks) are in ``acausal.components.logical``, sampled-data
+blocks (Sampler, ZeroOrderHold, UnitDelay) in ``acausal.components.discrete``.
 
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.
@@ -677,7 +680,49 @@ def _check_limits(block, upper: str, lower: str) -> None:
                              f"< {lower} (= {lo})")
 
 
-class _SymmetricLimits(SISO):
+def _smooth_max(a, b, width):
+    """max(a, b) with a rounded corner: (a + b + sqrt((a − b)² + width²))/2, above max(a, b)
+    by at most width/2 (at a = b), by width²/(4|a − b|) far from it."""
+    return (a + b + ca.sqrt((a - b) ** 2 + width ** 2)) / 2
+
+
+def _smooth_min(a, b, width):
+    """min(a, b) with a rounded corner, below it by at most width/2 (see _smooth_max)."""
+    return (a + b - ca.sqrt((a - b) ** 2 + width ** 2)) / 2
+
+
+class _Limiting(SISO):
+    """A block that limits u to [lower, upper] (``limited``), as MSL's limiters: ``if u >
+    upper then upper else if u < lower then lower else u``; events and smooth form as the
+    Limiter's docstring says."""
+    u_smooth = Parameter(1e-3, "", "smooth form only: width over which the corners at the "
+                                   "limits are rounded (error <= u_smooth/2)", positive=True)
+
+    def _events(self) -> bool:
+        return not getattr(self, "strict", False)
+
+    def structure(self, s):
+        if self._events() and not s.smooth:
+            s.mode("region", 0, values=(-1, 0, 1),
+                   description="branch of the limiter: 1 if u > upper limit, -1 if u < lower "
+                               "limit, 0 between")
+
+    def limited(self, e, u, lower, upper):
+        """u limited to [lower, upper], and the events that go with it (class docstring)."""
+        if e.smooth:
+            return _smooth_min(_smooth_max(u, lower, self.u_smooth), upper, self.u_smooth)
+        if not self._events():
+            return _limit(u, lower, upper)
+        region = e.mode("region")
+        e.mode_update(region, ca.if_else(u > upper, 1, ca.if_else(u < lower, -1, 0)))
+        e.indicator("upper", ca.if_else(region == 1, u - upper, upper - u), "",
+                    "distance of u from the upper limit, positive while the region holds")
+        e.indicator("lower", ca.if_else(region == -1, lower - u, u - lower), "",
+                    "distance of u from the lower limit, positive while the region holds")
+        return ca.if_else(region == 1, upper, ca.if_else(region == -1, lower, u))
+
+
+class _SymmetricLimits(_Limiting):
     """MSL's ``uMax`` (required) and ``uMin`` bound to −uMax: uMin follows uMax, also at
     simulation time, unless it is given at construction, which makes it a parameter of its
     own (the class ``_own_uMin`` derives). Limits with uMax < uMin are refused."""
@@ -715,37 +760,49 @@ class Limiter(_SymmetricLimits):
 
     Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding: it follows
     uMax, also at simulation time, unless given at construction, which makes it a parameter
-    of its own). Options ``strict`` and ``homotopyType`` are accepted.
+    of its own); u_smooth (smooth form only). Options ``strict`` (False: state events at
+    the limits, the mode ``region``; True: none, MSL's noEvent) and ``homotopyType``
+    (accepted; it changes nothing: the initialization solves the actual model).
 
-    MSL differences: no events at the limits whatever ``strict`` (MSL's strict=true,
-    ``noEvent``); the integrator's step control resolves the kinks. ``homotopyType``
-    changes nothing (the initialization solves the actual model).
+    With events (MSL's default, strict=false): the relations are discrete, as a Modelica
+    tool makes them: the mode ``region`` (1: u > upper, −1: u < lower, 0: between) says
+    which branch holds between events, and the indicators ``upper`` and ``lower`` (the
+    distance of u from each limit, positive while the region holds) make the simulator
+    locate where u reaches a limit, so a kink is never stepped across, nor missed by an
+    integrator that rests (no step limit needed). With ``strict=True`` (MSL's noEvent) the
+    plain expression, no events: the integrator's step control resolves the kinks.
+
+    Smooth form (``compile(model, smooth=True)``): the corners rounded over ``u_smooth``,
+    y = smooth_min(smooth_max(u, lower), upper) with smooth_max(a, b) = (a + b +
+    sqrt((a − b)² + u_smooth²))/2; its error |y − y_exact| ≤ u_smooth/2, reached at the
+    limits, decaying as u_smooth²/(4·d) at a distance d from the nearer one.
     """
     options = {"strict": False, "homotopyType": LimiterHomotopy.Linear}
     uMax = Parameter(1.0, "", "upper limits of input signals")
 
     def physics(self, e):
-        e.output(self.y, _limit(e.input(self.u), self.uMin, self.uMax))
+        e.output(self.y, self.limited(e, e.input(self.u), self.uMin, self.uMax))
 
 
 _LimiterUMin = _own_uMin(Limiter, "lower limits of input signals")
 
 
-class VariableLimiter(SISO):
+class VariableLimiter(_Limiting):
     """Limit the range of a signal with variable limits: y = limit1 if u > limit1, limit2 if
     u < limit2, else u (MSL Nonlinear.VariableLimiter). Inputs ``u``, ``limit1`` (maximum),
-    ``limit2`` (minimum).
+    ``limit2`` (minimum). Options ``strict`` (events as Limiter's) and ``homotopyType``;
+    u_smooth (smooth form only). Events and smooth form: as Limiter's.
 
-    MSL differences: no events at the limits whatever ``strict``; ``homotopyType`` changes
-    nothing (and its ySimplified is not declared); MSL's run-time assert limit1 ≥ limit2 is
-    not checked.
+    MSL differences: ``homotopyType`` changes nothing (and its ySimplified is not
+    declared); MSL's run-time assert limit1 ≥ limit2 is not checked.
     """
     options = {"strict": False, "homotopyType": VariableLimiterHomotopy.Linear}
     limit1 = RealInput("connector of Real input signal used as maximum of input u")
     limit2 = RealInput("connector of Real input signal used as minimum of input u")
 
     def physics(self, e):
-        e.output(self.y, _limit(e.input(self.u), e.input(self.limit2), e.input(self.limit1)))
+        e.output(self.y, self.limited(e, e.input(self.u), e.input(self.limit2),
+                                      e.input(self.limit1)))
 
 
 class DeadZone(_SymmetricLimits):
@@ -753,14 +810,15 @@ class DeadZone(_SymmetricLimits):
     (MSL Nonlinear.DeadZone).
 
     Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding, as for
-    Limiter). MSL differences: no events at the zone's edges.
+    Limiter); u_smooth (smooth form only). y = u − (u limited to [uMin, uMax]), with the
+    state events at the zone's edges (mode ``region``) and the smooth form of Limiter
+    (the same error bound u_smooth/2).
     """
     uMax = Parameter(1.0, "", "upper limits of dead zones")
 
     def physics(self, e):
         u = e.input(self.u)
-        e.output(self.y, ca.if_else(u > self.uMax, u - self.uMax,
-                                    ca.if_else(u < self.uMin, u - self.uMin, 0)))
+        e.output(self.y, u - self.limited(e, u, self.uMin, self.uMax))
 
 
 _DeadZoneUMin = _own_uMin(DeadZone, "lower limits of dead zones")
