@@ -307,6 +307,22 @@ def test_zero_order_hold_of_a_ramp_is_an_exact_staircase():
     assert np.all(res["zoh.sampleTrigger"] == 0)
 
 
+def test_two_sample_rates_tick_together_at_common_instants():
+    """Sampler every 0.1 s into a ZeroOrderHold every 0.3 s: at 0.3·k (3·0.1 s in floating
+    point differs from 0.3 s) both sample at one instant, so the hold takes ramp(0.3 k)."""
+    m = Model("two_rates")
+    m.ramp = sg.Ramp(height=1.0, duration=10.0)
+    m.fast, m.slow = dc.Sampler(samplePeriod=0.1), dc.ZeroOrderHold(samplePeriod=0.3)
+    res = acausal.compile(_wire(m, [(m.ramp.y, m.fast.u), (m.fast.y, m.slow.u)])).simulate(
+        2.0, **SIM)
+    tk = 0.3 * np.arange(7)
+    np.testing.assert_allclose(res["slow.y"][_right_limits(res, tk, tol=1e-12)], 0.1 * tk,
+                               rtol=0, atol=1e-14)
+    slow = [ev.time for ev in res.events if "slow" in ev.component]
+    assert len(slow) == 6 and all("fast" in ev.component for ev in res.events if ev.time > 0
+                                  and "slow" in ev.component)
+
+
 M, C, D, K, R, TS = 1.0, 4.0, 0.5, 12.0, 1.0, 0.1
 
 

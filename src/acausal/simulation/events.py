@@ -24,7 +24,8 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    a sample trigger (``StructureBuilder.sample``, Modelica's ``sample(start, period)``) the
    trigger is true through the event iteration, so sampled values (discrete Real
    variables, never rounded) take their new values and a chain of them settles; then the
-   iteration runs once more with the trigger false.
+   iteration runs once more with the trigger false. Time events closer than the event
+   tolerance are one instant (sample instants of two rates, 3·0.1 and 0.3).
 
 A crossing that can change nothing (a model without modes, no reinit of that indicator in
 that direction: a ball leaving the floor) is no event: not located, not logged.
@@ -51,6 +52,22 @@ EVENT_TOL = 1e-12          # event location: the bracket's width over max(1, |t|
 MAX_ITERATIONS = 50        # event iteration: rounds of mode updates at one instant
 CHATTER_EVENTS = 100       # this many state events ...
 CHATTER_SPAN = 1e-6        # ... within this fraction of the simulated time: chattering
+
+
+def instant(t: float) -> float:
+    """How close two time events are to be one instant: the event location's tolerance
+    (sample instants k·period of two sample rates differ by rounding: 3·0.1 vs 0.3)."""
+    return EVENT_TOL * max(1.0, abs(t))
+
+
+def instants(times) -> list[float]:
+    """The distinct instants of ``times``, sorted: times closer than ``instant`` merged (the
+    first kept)."""
+    out: list[float] = []
+    for t in sorted(set(times)):
+        if not out or t - out[-1] > instant(t):
+            out.append(float(t))
+    return out
 
 
 def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
@@ -103,7 +120,7 @@ class EventSimulation:
         real = set(model.state_events.real_modes)
         self.integer = np.array([n not in real for n in self.mode_names], dtype=bool)
         self.clocks = list(model.state_events.clocks)
-        self.ticks: list[set] = []            # the instants of each sample trigger (run)
+        self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
         if self.has_alg:
             z, alg_full = model.z, model.alg
             self.newton = model.function("newton", [alg_full, ca.jacobian(alg_full, z)])
@@ -238,7 +255,8 @@ class EventSimulation:
                 x_new[r.state] = values[j]
         held = {name: after for name, (_, after) in reinit.items()}
         d = np.array(d, dtype=float)
-        ticking = [c for c, ticks in zip(self.clocks, self.ticks) if t in ticks]
+        ticking = [c for c, ticks in zip(self.clocks, self.ticks)
+                   if np.any(np.abs(ticks - t) <= instant(t))]
         d_new = d.copy()
         d_new[ticking] = 1.0
         x_new, z, d_new = self.iterate(t, x_new, z, d_new, held)
@@ -306,7 +324,8 @@ class EventSimulation:
         sides = side(self.indicators(t, x, z, d), np.ones(len(self.names)))
         recent = deque(maxlen=CHATTER_EVENTS)
         span = CHATTER_SPAN * (grid[-1] - grid[0])
-        stops = sorted(set(time_events)) + [float(grid[-1])]
+        stops = [s for s in instants(time_events) if grid[-1] - s > instant(grid[-1])]
+        stops.append(float(grid[-1]))
         for stop in stops:
             while t < stop:
                 end = stop if stop == grid[-1] else just_before(stop)
@@ -352,7 +371,7 @@ class EventSimulation:
         return (T, *(np.column_stack([np.asarray(c[k], dtype=float).reshape(-1) for c in cols])
                      .reshape(-1, len(cols)) for k in (1, 2, 3)))
 
-    def _clock_instants(self, t0: float, t1: float) -> list[set]:
+    def _clock_instants(self, t0: float, t1: float) -> list[np.ndarray]:
         """The instants of each sample trigger: its time events in (t0, t1) (the same
         numbers as ``CompiledModel.event_times``), and t0 if the trigger is true at the
         start (``initial``; otherwise the start is initialization, where Modelica's
@@ -366,8 +385,8 @@ class EventSimulation:
             if not period > 0:
                 raise SimulationError(f"the sample period of '{self.mode_owner[c]}' must be "
                                       f"> 0 s, got {period:g}")
-            ticks = set(event_times([first], [period], t0, t1))
-            out.append(ticks | {t0} if initial else ticks)
+            ticks = event_times([first], [period], t0, t1)
+            out.append(np.array(ticks + [t0] if initial else ticks))
         return out
 
     def _chattering(self, recent: deque, span: float):
