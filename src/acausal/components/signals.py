@@ -21,8 +21,7 @@ inside optimal control problems. Discontinuous sources (Step, Pulse, table jumps
 time events: the integrator restarts there. Limiter, VariableLimiter and DeadZone generate
 state events at their kinks (MSL's default strict=false), so the simulator locates where the
 input reaches a limit; compiled with ``smooth=True`` their corners are rounded over a named
-width ``u_smooth`` (see Limiter). LimPID's limiter generates no events: the variable-step
-integrator resolves its kink by reducing its step. Blocks with Boolean signals (relations,
+width ``u_smooth`` (see Limiter); so does LimPID's output limiter (``y_smooth``). Blocks with Boolean signals (relations,
 Switch, Hysteresis, logical blocks) are in ``acausal.components.logical``, sampled-data
 blocks (Sampler, ZeroOrderHold, UnitDelay) in ``acausal.components.discrete``.
 
@@ -698,28 +697,37 @@ class _Limiting(SISO):
     u_smooth = Parameter(1e-3, "", "smooth form only: width over which the corners at the "
                                    "limits are rounded (error <= u_smooth/2)", positive=True)
 
-    def _events(self) -> bool:
-        return not getattr(self, "strict", False)
-
     def structure(self, s):
-        if self._events() and not s.smooth:
-            s.mode("region", 0, values=(-1, 0, 1),
-                   description="branch of the limiter: 1 if u > upper limit, -1 if u < lower "
-                               "limit, 0 between")
+        _limiter_region(s, not getattr(self, "strict", False))
 
     def limited(self, e, u, lower, upper):
-        """u limited to [lower, upper], and the events that go with it (class docstring)."""
-        if e.smooth:
-            return _smooth_min(_smooth_max(u, lower, self.u_smooth), upper, self.u_smooth)
-        if not self._events():
-            return _limit(u, lower, upper)
-        region = e.mode("region")
-        e.mode_update(region, ca.if_else(u > upper, 1, ca.if_else(u < lower, -1, 0)))
-        e.indicator("upper", ca.if_else(region == 1, u - upper, upper - u), "",
-                    "distance of u from the upper limit, positive while the region holds")
-        e.indicator("lower", ca.if_else(region == -1, lower - u, u - lower), "",
-                    "distance of u from the lower limit, positive while the region holds")
-        return ca.if_else(region == 1, upper, ca.if_else(region == -1, lower, u))
+        """u limited to [lower, upper], and the events that go with it (Limiter)."""
+        return _limited(e, u, lower, upper, self.u_smooth, not getattr(self, "strict", False))
+
+
+def _limiter_region(s, events: bool, prefix: str = "") -> None:
+    """Declare the mode ``<prefix>region`` of a limiter with events (not in smooth form)."""
+    if events and not s.smooth:
+        s.mode(f"{prefix}region", 0, values=(-1, 0, 1),
+               description="branch of the limiter: 1 if u > upper limit, -1 if u < lower "
+                           "limit, 0 between")
+
+
+def _limited(e, u, lower, upper, width, events: bool, prefix: str = ""):
+    """u limited to [lower, upper] as Limiter's docstring says: in smooth form its corners
+    rounded over ``width``; with ``events`` on the mode ``<prefix>region`` and the
+    indicators ``<prefix>upper``, ``<prefix>lower``; else the plain expression."""
+    if e.smooth:
+        return _smooth_min(_smooth_max(u, lower, width), upper, width)
+    if not events:
+        return _limit(u, lower, upper)
+    region = e.mode(f"{prefix}region")
+    e.mode_update(region, ca.if_else(u > upper, 1, ca.if_else(u < lower, -1, 0)))
+    e.indicator(f"{prefix}upper", ca.if_else(region == 1, u - upper, upper - u), "",
+                "distance of u from the upper limit, positive while the region holds")
+    e.indicator(f"{prefix}lower", ca.if_else(region == -1, lower - u, u - lower), "",
+                "distance of u from the lower limit, positive while the region holds")
+    return ca.if_else(region == 1, upper, ca.if_else(region == -1, lower, u))
 
 
 class _SymmetricLimits(_Limiting):
@@ -990,13 +998,18 @@ class LimPID(_StartValues, Component):
     Parameters: k [1] (non-zero), Ti [s] (> 0), Td [s] (≥ 0), yMax (required, as in MSL),
     yMin (default −yMax, MSL's binding: follows yMax unless given at construction), wp, wd
     [1] (set-point weights), Ni [1] (Ni·Ti is the anti-windup time constant), Nd [1] (the
-    higher, the more ideal the derivative), kFF [1]. Start values (constructor arguments):
-    xi_start (I.y), xd_start (D.x). Recorded: controlError, P.y, D.y, limiter.u.
+    higher, the more ideal the derivative), kFF [1], y_smooth (smooth form only). Start
+    values (constructor arguments): xi_start (I.y), xd_start (D.x). Recorded:
+    controlError, P.y, D.y, limiter.u.
+
+    The output limiter is MSL's Limiter (``limiter``): with strict=False (MSL's default)
+    state events where limiter.u reaches yMax or yMin (mode ``limiter.region``, indicators
+    ``limiter.upper``, ``limiter.lower``), with strict=True none; in smooth form its
+    corners rounded over ``y_smooth`` (error ≤ y_smooth/2; see Limiter).
 
     MSL differences: initType InitialState and NoInit start the states at xi_start,
     xd_start; SteadyState and InitialOutput are not available (give x0 at simulation
-    time). The limiter generates no events (as with strict=true); homotopyType changes
-    nothing (the initialization solves the actual model).
+    time). homotopyType changes nothing (the initialization solves the actual model).
     """
     _starts = ("xi_start", "xd_start")
     options = {"controllerType": SimpleController.PID, "withFeedForward": False,
@@ -1020,6 +1033,9 @@ class LimPID(_StartValues, Component):
     Nd = Parameter(10.0, "1", "the higher Nd, the more ideal the derivative block",
                    positive=True)
     kFF = Parameter(1.0, "1", "gain of feed-forward input")
+    y_smooth = Parameter(1e-3, "", "smooth form only: width over which the corners of the "
+                                   "output limiter are rounded (error <= y_smooth/2)",
+                         positive=True)
 
     def __new__(cls, name=None, **params):
         return super().__new__(_LimPIDyMin if cls is LimPID and "yMin" in params else cls)
@@ -1047,6 +1063,7 @@ class LimPID(_StartValues, Component):
         return self.controllerType in (SimpleController.PD, SimpleController.PID)
 
     def structure(self, s):
+        _limiter_region(s, not self.strict, "limiter.")
         if self._with_I:
             s.state("I.y", self.xi_start, description="integral part (state)")
         if self._with_D:
@@ -1064,7 +1081,8 @@ class LimPID(_StartValues, Component):
         i_y = e.state("I.y") if self._with_I else 0
         u_ff = e.input(self.u_ff) if self.withFeedForward else 0
         lim_u = self.k * (p_y + i_y + d_y) + self.kFF * u_ff
-        y = _limit(lim_u, self.yMin, self.yMax)
+        y = _limited(e, lim_u, self.yMin, self.yMax, self.y_smooth, not self.strict,
+                     "limiter.")
         if self._with_I:
             track = (y - lim_u) / (self.k * self.Ni)
             e.derivative(i_y, (u_s - u_m + track) / self.Ti)
