@@ -21,9 +21,10 @@ inside optimal control problems. Discontinuous sources (Step, Pulse, table jumps
 time events: the integrator restarts there. Limiter, VariableLimiter and DeadZone generate
 state events at their kinks (MSL's default strict=false), so the simulator locates where the
 input reaches a limit; compiled with ``smooth=True`` their corners are rounded over a named
-width ``u_smooth`` (see Limiter); so does LimPID's output limiter (``y_smooth``). Blocks with Boolean signals (relations,
-Switch, Hysteresis, logical blocks) are in ``acausal.components.logical``, sampled-data
-blocks (Sampler, ZeroOrderHold, UnitDelay) in ``acausal.components.discrete``.
+width ``u_smooth`` (see Limiter); so does LimPID's output limiter (``y_smooth``). Blocks
+with Boolean signals (relations, Switch, Hysteresis, logical blocks) are in
+``acausal.components.logical``, sampled-data blocks (Sampler, ZeroOrderHold, UnitDelay) in
+``acausal.components.discrete``.
 
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.

@@ -7,8 +7,8 @@ from .component import Component, ConditionalPort, Model, StateSelect, Unavailab
 from .interface import Input, Output
 from .parameter import Parameter
 from .ports import (PLANAR, ROTATIONAL, TRANSLATIONAL, BooleanInput, BooleanOutput, Domain,
-                    Frame, PhysicalPort, Port, PortVector, RealInput, RealOutput, RotationalFlange, TranslationalFlange,
-                    VectorPort)
+                    Frame, PhysicalPort, Port, PortVector, RealInput, RealOutput,
+                    RotationalFlange, TranslationalFlange, VectorPort)
 
 __all__ = [
     "Component", "ConditionalPort", "Model", "StateSelect", "Unavailable", "connect", "Input",
