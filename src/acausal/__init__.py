@@ -16,7 +16,8 @@ holds every import to it):
                     (t, x, z, u, p))
     models/         the models examples, tests and benchmarks share (MSL keeps its Examples
                     inside the library too)
-    components/     the component library (translational, rotational, planar, signals)
+    components/     the component library (translational, rotational, planar, friction,
+                    signals; logical and discrete: Boolean and sampled-data blocks)
     core/           the modelling language: Parameter, ports, Component, Model, connect
     errors.py, numerics.py   base leaves every layer may use: the exception hierarchy; the
                     dependency-free numerics shared with the pythonfmu FMU

@@ -3,9 +3,11 @@ same laws written out in numpy and hand-written scipy models.
 
 The nonlinear blocks drive a mass on a spring (m x'' + c x = F); the reference integrates
 the same ODE with scipy, F written with numpy from the MSL equations, restarting at the
-kinks (found by root finding on the numpy law). LimPID positions a mass through a
-saturating force; its reference is the LimPID equations (P, I with anti-windup feedback
-through Ni, approximated D, set-point weights, feed-forward, limiter) written by hand.
+kinks (found by root finding on the numpy law); the blocks' state events must fall on these
+kinks. LimPID positions a mass through a saturating force; its reference is the LimPID
+equations (P, I with anti-windup feedback through Ni, approximated D, set-point weights,
+feed-forward, limiter) written by hand. The smooth forms stay within half their named width
+of the exact laws.
 """
 from __future__ import annotations
 
@@ -45,6 +47,12 @@ def _spring_mass_reference(force, breaks):
         out[sel] = sol.sol(T[sel])[0]
         z = sol.y[:, -1]
     return out
+
+
+def _on_grid(res, name):
+    """``res[name]`` at the output grid T (a result with events also holds the event
+    instants)."""
+    return res[name][np.isin(res.t, T)]
 
 
 def _driven(block, sources: dict):
@@ -88,15 +96,15 @@ def test_static_nonlinearity_drives_a_mass_on_a_spring(kind, kwargs, params, lo,
     law = limiter_law if kind == "Limiter" else deadzone_law
     c = acausal.compile(_driven(getattr(sg, kind)(**kwargs), {"u": sg.Sine(amplitude=A,
                                                                            f=F_HZ)}))
-    # at rest inside the dead zone the integrator sees no error and would step over the
-    # first pulse: a step limit, as for the pulses of a Pulse source
-    max_step = 0.05 if kind == "DeadZone" else None
-    res = c.simulate(T_END, t=T, params=params, max_step=max_step, **SIM)
-    np.testing.assert_allclose(res["blk.y"], law(_u(T), lo, hi), rtol=0, atol=1e-12)
+    # state events at the kinks: no step limit, even while at rest inside the dead zone
+    res = c.simulate(T_END, t=T, params=params, **SIM)
+    np.testing.assert_allclose(_on_grid(res, "blk.y"), law(_u(T), lo, hi), rtol=0, atol=1e-12)
     breaks = _roots(lambda t: _u(t) - hi, T_END) + _roots(lambda t: _u(t) - lo, T_END)
     ref = _spring_mass_reference(lambda t: float(law(_u(t), lo, hi)), breaks)
-    np.testing.assert_allclose(res["mass.s"], ref, rtol=0, atol=1e-7)     # kinks, no events
-    assert c.event_times(c.param_vector(params), 0.0, T_END) == []      # no events
+    np.testing.assert_allclose(_on_grid(res, "mass.s"), ref, rtol=0, atol=1e-7)
+    assert c.event_times(c.param_vector(params), 0.0, T_END) == []      # no time events
+    events = sorted(ev.time for ev in res.events if ev.component == "blk")
+    np.testing.assert_allclose(events, sorted(breaks), rtol=0, atol=1e-9)   # at the kinks
 
 
 def test_variable_limiter_drives_a_mass_on_a_spring():
@@ -108,10 +116,13 @@ def test_variable_limiter_drives_a_mass_on_a_spring():
     res = acausal.compile(_driven(blk, src)).simulate(T_END, t=T, **SIM)
     hi = lambda t: 0.5 + 0.8 * t                                        # noqa: E731
     lo = lambda t: -1.0 + 0.3 * np.sin(3 * t)                           # noqa: E731
-    np.testing.assert_allclose(res["blk.y"], limiter_law(_u(T), lo(T), hi(T)), atol=1e-12)
+    np.testing.assert_allclose(_on_grid(res, "blk.y"), limiter_law(_u(T), lo(T), hi(T)),
+                               atol=1e-12)
     breaks = _roots(lambda t: _u(t) - hi(t), T_END) + _roots(lambda t: _u(t) - lo(t), T_END)
     ref = _spring_mass_reference(lambda t: float(limiter_law(_u(t), lo(t), hi(t))), breaks)
-    np.testing.assert_allclose(res["mass.s"], ref, rtol=0, atol=1e-8)
+    np.testing.assert_allclose(_on_grid(res, "mass.s"), ref, rtol=0, atol=1e-8)
+    events = sorted(ev.time for ev in res.events if ev.component == "blk")
+    np.testing.assert_allclose(events, sorted(breaks), rtol=0, atol=1e-9)
 
 
 def test_limits_are_checked_and_required():
@@ -200,13 +211,39 @@ def test_limpid_positions_a_mass_through_saturation(kind, given, feed_forward):
     x0 = [0.0, 0.3, 0.1 if kind in ("PI", "PID") else 0.0,
           -0.05 if kind in ("PD", "PID") else 0.0]
     z, y = _limpid_reference(t, p, kind, feed_forward, x0)
-    np.testing.assert_allclose(res["mass.s"], z[0], rtol=0, atol=1e-6)
-    np.testing.assert_allclose(res["mass.v"], z[1], rtol=0, atol=1e-6)
+    at = np.searchsorted(res.t, t, side="right") - 1      # the grid (right limits at events)
+    assert np.array_equal(res.t[at], t)
+    np.testing.assert_allclose(res["mass.s"][at], z[0], rtol=0, atol=1e-6)
+    np.testing.assert_allclose(res["mass.v"][at], z[1], rtol=0, atol=1e-6)
     if kind in ("PI", "PID"):
-        np.testing.assert_allclose(res["pid.I.y"], z[2], rtol=0, atol=1e-6)
+        np.testing.assert_allclose(res["pid.I.y"][at], z[2], rtol=0, atol=1e-6)
     if kind in ("PD", "PID"):
-        np.testing.assert_allclose(res["pid.D.x"], z[3], rtol=0, atol=1e-6)
-    np.testing.assert_allclose(res["pid.y"], y, rtol=0, atol=1e-5)
-    np.testing.assert_allclose(res["pid.controlError"], np.where(t < T_STEP, R0, R1)
-                               - res["mass.s"], atol=1e-12)
-    assert np.max(res["pid.y"]) == pytest.approx(p["yMax"], abs=1e-12)   # it saturates
+        np.testing.assert_allclose(res["pid.D.x"][at], z[3], rtol=0, atol=1e-6)
+    np.testing.assert_allclose(res["pid.y"][at], y, rtol=0, atol=1e-5)
+    np.testing.assert_allclose(res["pid.controlError"][at], np.where(t < T_STEP, R0, R1)
+                               - res["mass.s"][at], atol=1e-12)
+    assert np.max(res["pid.y"][at]) == pytest.approx(p["yMax"], abs=1e-12)   # it saturates
+    limiting = [ev.time for ev in res.events                    # state events: at the limits
+                if ev.indicator and ev.time != T_STEP]
+    lim_u = res["pid.limiter.u"]
+    for tk in limiting:
+        k = np.flatnonzero(res.t == tk)[0]
+        assert min(abs(lim_u[k] - p["yMax"]), abs(lim_u[k] - p["yMin"])) < 1e-9
+    assert limiting or kind == "P"
+
+
+def test_limpid_smooth_form_rounds_the_limiter_within_half_its_width():
+    """compile(smooth=True): no events; y within y_smooth/2 of limiter.u clamped to
+    [yMin, yMax] (numpy), the bound reached where the output leaves the limit."""
+    m = Model("limpid_smooth")
+    m.ref = sg.Step(height=1.0, startTime=T_STEP)
+    m.pid = sg.LimPID(controllerType="PI", k=20.0, yMax=5.0)
+    m.force, m.mass, m.probe = Force(), Mass(m=MASS_PID), PositionSensor()
+    for a, b in [(m.ref.y, m.pid.u_s), (m.probe.s, m.pid.u_m), (m.pid.y, m.force.f),
+                 (m.force.flange, m.mass.flange_a), (m.probe.flange, m.mass.flange_b)]:
+        m.connect(a, b)
+    c = acausal.compile(m, smooth=True)
+    assert not c.has_events
+    res = c.simulate(4.0, t=np.linspace(0.0, 4.0, 4001), params={"pid.y_smooth": 0.1}, **SIM)
+    error = np.abs(res["pid.y"] - np.clip(res["pid.limiter.u"], -5.0, 5.0))
+    assert error.max() <= 0.05 + 1e-12 and error.max() > 0.04

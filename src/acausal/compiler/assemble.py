@@ -239,7 +239,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     ode = _vc(motion.q_diff_dot, motion.qdd_diff, zdot)
     z = _vc(motion.alg_vars, _stack([a.sym for a in ws.algebraics]))
     alg = _vc(motion.alg_res, g_alg)
-    events = _state_events(ws, final, x, _vc(t, x, z, u))
+    events = _state_events(ws, final, x, _vc(t, x, z, u), p)
     resolve.check([ode, alg, y_out, events.indicator, events.mode_update,
                    events.reinit_values])
     check = ca.Function("check", [t, x, z, u, p], [ode, alg, y_out, events.indicator,
@@ -289,16 +289,17 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
 
 
 def _mode_record(m) -> ScalarVariable:
-    what = m.description or "discrete mode"
-    declaration = Parameter(float(m.start), "1", f"{what}; its start value here, changed only "
-                                                 f"at events")
-    return ScalarVariable(m.sym.name(), "1", declaration.description, float(m.start),
+    what = m.description or ("discrete variable" if m.real else "discrete mode")
+    declaration = Parameter(float(m.start), m.unit, f"{what}; its start value here, changed "
+                                                    f"only at events")
+    return ScalarVariable(m.sym.name(), m.unit, declaration.description, float(m.start),
                           declaration=declaration, component=m.owner.path)
 
 
-def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX) -> StateEvents:
+def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX) -> StateEvents:
     """The indicators, mode updates (a mode without one keeps its value) and reinits of the
-    components, in (t, x, z, u, p); a reinit's variable resolved to the state it is."""
+    components, in (t, x, z, u, p); a reinit's variable resolved to the state it is; the
+    sample triggers' instants as a Function of p."""
     indicators = [ScalarVariable(f"{o.path}.{n}" if o.path else n, unit, descr, component=o.path)
                   for o, n, _, unit, descr in ws.indicators]
     index = {(o, n): i for i, (o, n, *_) in enumerate(ws.indicators)}
@@ -325,7 +326,12 @@ def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX) -> StateEvents:
                            (value - ca.substitute(v, x[k], 0)) / a))
     reinit_values = _stack([r.value for r in rows])
     values = {m.sym.name(): m.values for m in ws.modes if m.values is not None}
-    return StateEvents(indicators, g, upd, rows, reinit_values, values)
+    clocks = [k for k, m in enumerate(ws.modes) if m.clock is not None]
+    clock_times = _events([ws.modes[k].clock for k in clocks], p)
+    return StateEvents(indicators, g, upd, rows, reinit_values, values,
+                       real_modes=tuple(m.sym.name() for m in ws.modes if m.real),
+                       clocks=clocks, clock_initial=[ws.modes[k].initial for k in clocks],
+                       clock_times=clock_times)
 
 
 def _check_declarations(ws: Workspace) -> None:

@@ -5,6 +5,7 @@ its units through the ports it takes (translational: m, m/s, N; rotational: rad,
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import casadi as ca
@@ -31,13 +32,19 @@ class StateInfo:
 
 @dataclass
 class ModeInfo:
-    """A discrete variable (Modelica's Integer or Boolean mode): constant between events."""
+    """A discrete variable, constant between events: Modelica's Integer or Boolean mode, a
+    ``discrete Real`` (``real``, in ``unit``), or a sample trigger (``clock``: its first
+    instant and period, expressions of parameters; ``initial``: also true at the start)."""
     sym: ca.SX
-    start: int
+    start: float
     values: tuple | None
     description: str
     owner: Component
     update: ca.SX | None = None
+    real: bool = False
+    unit: str = "1"
+    clock: tuple | None = None
+    initial: bool = False
 
 
 @dataclass
@@ -233,10 +240,45 @@ class StructureBuilder(_Base):
                 raise StructureError(f"{type(self._owner).__name__} '{self._owner.path}': mode "
                                      f"'{name}' starts at {start}, not one of its values "
                                      f"{values}")
-        m = ca.SX.sym(self._name(name))
-        self._ws.modes.append(ModeInfo(m, start, values, description, self._owner))
-        self._declare(name, m)
-        return m
+        return self._discrete(name, ModeInfo(None, start, values, description, self._owner))
+
+    def discrete(self, name: str, start: float = 0.0, unit: str = "",
+                 description: str = "") -> ca.SX:
+        """A discrete Real variable (Modelica's ``discrete Real``: a sampled value), starting
+        at ``start`` [unit], constant between events; it changes only at events, to the value
+        its ``PhysicsBuilder.mode_update`` gives (typically guarded by a ``sample`` trigger,
+        Modelica's ``when sample(...) then``). Compiled, it is appended to the parameters
+        like a mode (``CompiledModel.mode_params``), not rounded."""
+        start = float(start)
+        if not math.isfinite(start):
+            raise StructureError(f"{type(self._owner).__name__} '{self._owner.path}': discrete "
+                                 f"variable '{name}' starts at {start}; give a finite start")
+        return self._discrete(name, ModeInfo(None, start, None, description, self._owner,
+                                             real=True, unit=unit))
+
+    def sample(self, name: str, start, period, initial: bool = False,
+               description: str = "") -> ca.SX:
+        """Modelica's ``sample(start, period)``: a Boolean that is true (1) during the event
+        iteration at the instants start + k·period [s] (k = 0, 1, ...; both numbers or
+        expressions of parameters; period > 0) after the start of a simulation, and false
+        (0) everywhere else. The start itself is initialization, where Modelica's
+        when-clauses are inactive, even at a sample instant; with ``initial`` the trigger is
+        true there too (Modelica's ``when {sample(...), initial()}``). The instants are time
+        events. Use it in ``mode_update``s: it stays true
+        through every round of the event iteration at its instant, so a chain of sampled
+        values (a Sampler feeding a gain feeding a ZeroOrderHold) settles on the values of
+        that instant; after it the iteration runs once more with the trigger false. Recorded
+        (as 0 everywhere: it is true only within events) under ``name``."""
+        start, period = sx(start), sx(period)
+        self._ws.events.append((start, period))
+        return self._discrete(name, ModeInfo(None, 0, (0, 1), description, self._owner,
+                                             clock=(start, period), initial=bool(initial)))
+
+    def _discrete(self, name: str, info: ModeInfo) -> ca.SX:
+        info.sym = ca.SX.sym(self._name(name))
+        self._ws.modes.append(info)
+        self._declare(name, info.sym)
+        return info.sym
 
     def algebraic(self, name: str, start=0.0, unit: str = "",
                   description: str = "") -> ca.SX:
@@ -355,11 +397,13 @@ class PhysicsBuilder(_Base):
         self._ws.indicators.append((self._owner, name, sx(expr), unit, description))
 
     def mode_update(self, mode: ca.SX, expr) -> None:
-        """The value ``mode`` takes at every event (state or time event): ``expr``, of the
-        motion, states, algebraic variables, inputs, parameters and the modes. In ``expr`` the
-        modes are their values before the update (Modelica's ``pre(mode)``). At an event all
-        modes are updated together, again and again, until none changes (the event iteration,
-        as MSL's friction elements; the algebraic variables solved in between)."""
+        """The value ``mode`` (or a discrete Real variable) takes at every event (state or time
+        event): ``expr``, of the motion, states, algebraic variables, inputs, parameters and
+        the modes. In ``expr`` the modes are their values before the update (Modelica's
+        ``pre(mode)``). At an event all modes are updated together, again and again, until
+        none changes (the event iteration, as MSL's friction elements; the algebraic variables
+        solved in between). A sampled value changes at its instants only:
+        ``if_else(trigger, value, mode)`` with a ``StructureBuilder.sample`` trigger."""
         info = next((m for m in self._ws.modes if m.sym is mode and m.owner is self._owner),
                     None)
         if info is None:

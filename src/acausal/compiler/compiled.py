@@ -13,7 +13,8 @@ Every Function of the seam takes its arguments in one order, **(t, x, z, u, p)**
 states, algebraic variables, inputs, parameters (``function`` builds more of them).
 
 Discrete modes (``StructureBuilder.mode``: Integer / Boolean variables constant between
-events) are appended to the parameters: p = [parameters of the components; loop switches;
+events; ``discrete``: discrete Real variables; ``sample``: sample triggers) are appended to
+the parameters: p = [parameters of the components; loop switches;
 modes d], ``mode_params`` their positions in p, so every Function sees the modes as
 parameters and the argument order stays. ``state_events`` holds the zero-crossing
 indicators, the modes' updates and the reinits, as expressions in (t, x, z, u, p);
@@ -96,13 +97,20 @@ class StateEvents:
     ``indicator``; the new value of every mode (``mode_update``, in mode order: the mode
     itself where the component gives no update); the reinits and their values stacked
     (``reinit_values``); ``mode_values``: the values each mode may take, by name (modes
-    declared with ``values``)."""
+    declared with ``values``); ``real_modes``: the names of the discrete Real variables
+    (sampled values, never rounded); ``clocks``: positions among the modes of the sample
+    triggers (``StructureBuilder.sample``), ``clock_times`` the Function p -> (first
+    instants, periods) of them, ``clock_initial`` whether each is true at the start too."""
     indicators: list = field(default_factory=list)
     indicator: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
     mode_update: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
     reinits: list = field(default_factory=list)
     reinit_values: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
     mode_values: dict = field(default_factory=dict)
+    real_modes: tuple = ()
+    clocks: list = field(default_factory=list)
+    clock_initial: list = field(default_factory=list)
+    clock_times: ca.Function | None = None
 
 
 @dataclass

@@ -18,10 +18,13 @@ dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}`` (MSL's
 Sources are expressions of time built with CasADi functions (``if_else``, ``floor``,
 ``interpolant``), so they are exact, differentiable where the MSL signal is, and usable
 inside optimal control problems. Discontinuous sources (Step, Pulse, table jumps) declare
-time events: the integrator restarts there. The nonlinear blocks (Limiter, DeadZone,
-LimPID's limiter) generate no events: the variable-step integrator resolves their kinks by
-reducing its step; give ``max_step`` to ``simulate`` if a system rests (no error for the
-step control to see) until a short pulse or an excursion out of a dead zone.
+time events: the integrator restarts there. Limiter, VariableLimiter and DeadZone generate
+state events at their kinks (MSL's default strict=false), so the simulator locates where the
+input reaches a limit; compiled with ``smooth=True`` their corners are rounded over a named
+width ``u_smooth`` (see Limiter); so does LimPID's output limiter (``y_smooth``). Blocks
+with Boolean signals (relations, Switch, Hysteresis, logical blocks) are in
+``acausal.components.logical``, sampled-data blocks (Sampler, ZeroOrderHold, UnitDelay) in
+``acausal.components.discrete``.
 
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.
@@ -677,7 +680,58 @@ def _check_limits(block, upper: str, lower: str) -> None:
                              f"< {lower} (= {lo})")
 
 
-class _SymmetricLimits(SISO):
+def _smooth_max(a, b, width):
+    """max(a, b) with a rounded corner: (a + b + sqrt((a − b)² + width²))/2, above max(a, b)
+    by at most width/2 (at a = b), by width²/(4|a − b|) far from it."""
+    return (a + b + ca.sqrt((a - b) ** 2 + width ** 2)) / 2
+
+
+def _smooth_min(a, b, width):
+    """min(a, b) with a rounded corner, below it by at most width/2 (see _smooth_max)."""
+    return (a + b - ca.sqrt((a - b) ** 2 + width ** 2)) / 2
+
+
+class _Limiting(SISO):
+    """A block that limits u to [lower, upper] (``limited``), as MSL's limiters: ``if u >
+    upper then upper else if u < lower then lower else u``; events and smooth form as the
+    Limiter's docstring says."""
+    u_smooth = Parameter(1e-3, "", "smooth form only: width over which the corners at the "
+                                   "limits are rounded (error <= u_smooth/2)", positive=True)
+
+    def structure(self, s):
+        _limiter_region(s, not getattr(self, "strict", False))
+
+    def limited(self, e, u, lower, upper):
+        """u limited to [lower, upper], and the events that go with it (Limiter)."""
+        return _limited(e, u, lower, upper, self.u_smooth, not getattr(self, "strict", False))
+
+
+def _limiter_region(s, events: bool, prefix: str = "") -> None:
+    """Declare the mode ``<prefix>region`` of a limiter with events (not in smooth form)."""
+    if events and not s.smooth:
+        s.mode(f"{prefix}region", 0, values=(-1, 0, 1),
+               description="branch of the limiter: 1 if u > upper limit, -1 if u < lower "
+                           "limit, 0 between")
+
+
+def _limited(e, u, lower, upper, width, events: bool, prefix: str = ""):
+    """u limited to [lower, upper] as Limiter's docstring says: in smooth form its corners
+    rounded over ``width``; with ``events`` on the mode ``<prefix>region`` and the
+    indicators ``<prefix>upper``, ``<prefix>lower``; else the plain expression."""
+    if e.smooth:
+        return _smooth_min(_smooth_max(u, lower, width), upper, width)
+    if not events:
+        return _limit(u, lower, upper)
+    region = e.mode(f"{prefix}region")
+    e.mode_update(region, ca.if_else(u > upper, 1, ca.if_else(u < lower, -1, 0)))
+    e.indicator(f"{prefix}upper", ca.if_else(region == 1, u - upper, upper - u), "",
+                "distance of u from the upper limit, positive while the region holds")
+    e.indicator(f"{prefix}lower", ca.if_else(region == -1, lower - u, u - lower), "",
+                "distance of u from the lower limit, positive while the region holds")
+    return ca.if_else(region == 1, upper, ca.if_else(region == -1, lower, u))
+
+
+class _SymmetricLimits(_Limiting):
     """MSL's ``uMax`` (required) and ``uMin`` bound to −uMax: uMin follows uMax, also at
     simulation time, unless it is given at construction, which makes it a parameter of its
     own (the class ``_own_uMin`` derives). Limits with uMax < uMin are refused."""
@@ -715,37 +769,49 @@ class Limiter(_SymmetricLimits):
 
     Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding: it follows
     uMax, also at simulation time, unless given at construction, which makes it a parameter
-    of its own). Options ``strict`` and ``homotopyType`` are accepted.
+    of its own); u_smooth (smooth form only). Options ``strict`` (False: state events at
+    the limits, the mode ``region``; True: none, MSL's noEvent) and ``homotopyType``
+    (accepted; it changes nothing: the initialization solves the actual model).
 
-    MSL differences: no events at the limits whatever ``strict`` (MSL's strict=true,
-    ``noEvent``); the integrator's step control resolves the kinks. ``homotopyType``
-    changes nothing (the initialization solves the actual model).
+    With events (MSL's default, strict=false): the relations are discrete, as a Modelica
+    tool makes them: the mode ``region`` (1: u > upper, −1: u < lower, 0: between) says
+    which branch holds between events, and the indicators ``upper`` and ``lower`` (the
+    distance of u from each limit, positive while the region holds) make the simulator
+    locate where u reaches a limit, so a kink is never stepped across, nor missed by an
+    integrator that rests (no step limit needed). With ``strict=True`` (MSL's noEvent) the
+    plain expression, no events: the integrator's step control resolves the kinks.
+
+    Smooth form (``compile(model, smooth=True)``): the corners rounded over ``u_smooth``,
+    y = smooth_min(smooth_max(u, lower), upper) with smooth_max(a, b) = (a + b +
+    sqrt((a − b)² + u_smooth²))/2; its error |y − y_exact| ≤ u_smooth/2, reached at the
+    limits, decaying as u_smooth²/(4·d) at a distance d from the nearer one.
     """
     options = {"strict": False, "homotopyType": LimiterHomotopy.Linear}
     uMax = Parameter(1.0, "", "upper limits of input signals")
 
     def physics(self, e):
-        e.output(self.y, _limit(e.input(self.u), self.uMin, self.uMax))
+        e.output(self.y, self.limited(e, e.input(self.u), self.uMin, self.uMax))
 
 
 _LimiterUMin = _own_uMin(Limiter, "lower limits of input signals")
 
 
-class VariableLimiter(SISO):
+class VariableLimiter(_Limiting):
     """Limit the range of a signal with variable limits: y = limit1 if u > limit1, limit2 if
     u < limit2, else u (MSL Nonlinear.VariableLimiter). Inputs ``u``, ``limit1`` (maximum),
-    ``limit2`` (minimum).
+    ``limit2`` (minimum). Options ``strict`` (events as Limiter's) and ``homotopyType``;
+    u_smooth (smooth form only). Events and smooth form: as Limiter's.
 
-    MSL differences: no events at the limits whatever ``strict``; ``homotopyType`` changes
-    nothing (and its ySimplified is not declared); MSL's run-time assert limit1 ≥ limit2 is
-    not checked.
+    MSL differences: ``homotopyType`` changes nothing (and its ySimplified is not
+    declared); MSL's run-time assert limit1 ≥ limit2 is not checked.
     """
     options = {"strict": False, "homotopyType": VariableLimiterHomotopy.Linear}
     limit1 = RealInput("connector of Real input signal used as maximum of input u")
     limit2 = RealInput("connector of Real input signal used as minimum of input u")
 
     def physics(self, e):
-        e.output(self.y, _limit(e.input(self.u), e.input(self.limit2), e.input(self.limit1)))
+        e.output(self.y, self.limited(e, e.input(self.u), e.input(self.limit2),
+                                      e.input(self.limit1)))
 
 
 class DeadZone(_SymmetricLimits):
@@ -753,14 +819,15 @@ class DeadZone(_SymmetricLimits):
     (MSL Nonlinear.DeadZone).
 
     Parameters: uMax (required, as in MSL), uMin (default −uMax, MSL's binding, as for
-    Limiter). MSL differences: no events at the zone's edges.
+    Limiter); u_smooth (smooth form only). y = u − (u limited to [uMin, uMax]), with the
+    state events at the zone's edges (mode ``region``) and the smooth form of Limiter
+    (the same error bound u_smooth/2).
     """
     uMax = Parameter(1.0, "", "upper limits of dead zones")
 
     def physics(self, e):
         u = e.input(self.u)
-        e.output(self.y, ca.if_else(u > self.uMax, u - self.uMax,
-                                    ca.if_else(u < self.uMin, u - self.uMin, 0)))
+        e.output(self.y, u - self.limited(e, u, self.uMin, self.uMax))
 
 
 _DeadZoneUMin = _own_uMin(DeadZone, "lower limits of dead zones")
@@ -932,13 +999,18 @@ class LimPID(_StartValues, Component):
     Parameters: k [1] (non-zero), Ti [s] (> 0), Td [s] (≥ 0), yMax (required, as in MSL),
     yMin (default −yMax, MSL's binding: follows yMax unless given at construction), wp, wd
     [1] (set-point weights), Ni [1] (Ni·Ti is the anti-windup time constant), Nd [1] (the
-    higher, the more ideal the derivative), kFF [1]. Start values (constructor arguments):
-    xi_start (I.y), xd_start (D.x). Recorded: controlError, P.y, D.y, limiter.u.
+    higher, the more ideal the derivative), kFF [1], y_smooth (smooth form only). Start
+    values (constructor arguments): xi_start (I.y), xd_start (D.x). Recorded:
+    controlError, P.y, D.y, limiter.u.
+
+    The output limiter is MSL's Limiter (``limiter``): with strict=False (MSL's default)
+    state events where limiter.u reaches yMax or yMin (mode ``limiter.region``, indicators
+    ``limiter.upper``, ``limiter.lower``), with strict=True none; in smooth form its
+    corners rounded over ``y_smooth`` (error ≤ y_smooth/2; see Limiter).
 
     MSL differences: initType InitialState and NoInit start the states at xi_start,
     xd_start; SteadyState and InitialOutput are not available (give x0 at simulation
-    time). The limiter generates no events (as with strict=true); homotopyType changes
-    nothing (the initialization solves the actual model).
+    time). homotopyType changes nothing (the initialization solves the actual model).
     """
     _starts = ("xi_start", "xd_start")
     options = {"controllerType": SimpleController.PID, "withFeedForward": False,
@@ -962,6 +1034,9 @@ class LimPID(_StartValues, Component):
     Nd = Parameter(10.0, "1", "the higher Nd, the more ideal the derivative block",
                    positive=True)
     kFF = Parameter(1.0, "1", "gain of feed-forward input")
+    y_smooth = Parameter(1e-3, "", "smooth form only: width over which the corners of the "
+                                   "output limiter are rounded (error <= y_smooth/2)",
+                         positive=True)
 
     def __new__(cls, name=None, **params):
         return super().__new__(_LimPIDyMin if cls is LimPID and "yMin" in params else cls)
@@ -989,6 +1064,7 @@ class LimPID(_StartValues, Component):
         return self.controllerType in (SimpleController.PD, SimpleController.PID)
 
     def structure(self, s):
+        _limiter_region(s, not self.strict, "limiter.")
         if self._with_I:
             s.state("I.y", self.xi_start, description="integral part (state)")
         if self._with_D:
@@ -1006,7 +1082,8 @@ class LimPID(_StartValues, Component):
         i_y = e.state("I.y") if self._with_I else 0
         u_ff = e.input(self.u_ff) if self.withFeedForward else 0
         lim_u = self.k * (p_y + i_y + d_y) + self.kFF * u_ff
-        y = _limit(lim_u, self.yMin, self.yMax)
+        y = _limited(e, lim_u, self.yMin, self.yMax, self.y_smooth, not self.strict,
+                     "limiter.")
         if self._with_I:
             track = (y - lim_u) / (self.k * self.Ni)
             e.derivative(i_y, (u_s - u_m + track) / self.Ti)

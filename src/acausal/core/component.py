@@ -350,6 +350,11 @@ def _check_connectable(a, b) -> None:
             f"cannot connect '{a.path}' ({a.kind}) to '{b.path}' ({b.kind}): ports of "
             f"different kinds; use a component that converts between them "
             f"(e.g. IdealRollingWheel or IdealGearR2T for rotational <-> translational)")
+    if a.kind != b.kind:
+        raise PortConnectionError(
+            f"cannot connect '{a.path}' ({a.kind}) to '{b.path}' ({b.kind}): a Boolean signal "
+            f"connects to Boolean ports only; convert it with a BooleanToReal or RealToBoolean "
+            f"block")
     if isinstance(a, RealOutput) and isinstance(b, RealOutput):
         raise PortConnectionError(
             f"cannot connect two outputs '{a.path}' and '{b.path}': an output drives inputs")

@@ -2,7 +2,10 @@
 
 A physical port carries potential variables (equal at a connection) and flow variables (summed
 to zero at a connection; a flow is positive into the component, as in Modelica). A signal port
-carries one causal real value.
+carries one causal value: a Real signal, or a Boolean one (``BooleanInput`` /
+``BooleanOutput``, Modelica's Boolean connectors), carried as 0 / 1 (false / true) but a kind of
+its own: a Boolean port connects to Boolean ports only, so a logical value never drives a Real
+input by accident (Modelica.Blocks.Math.BooleanToReal / RealToBoolean convert between them).
 """
 from __future__ import annotations
 
@@ -89,6 +92,17 @@ class RealInput(Port):
 class RealOutput(Port):
     """A causal real output signal."""
     kind = "signal"
+
+
+class BooleanInput(RealInput):
+    """A causal Boolean input signal (0: false, 1: true); must be connected to exactly one
+    BooleanOutput."""
+    kind = "Boolean signal"
+
+
+class BooleanOutput(RealOutput):
+    """A causal Boolean output signal (0: false, 1: true)."""
+    kind = "Boolean signal"
 
 
 class VectorPort:

@@ -24,7 +24,12 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    the states are projected onto the loop constraints and their rates (the reinitialized
    ones held); the integrator restarts from there, the right limit;
 4. time events (declared, input jumps) are restarts as without modes; the event iteration
-   runs there and at the start too, so that the modes start consistent.
+   runs there and at the start too, so that the modes start consistent. At the instants of
+   a sample trigger (``StructureBuilder.sample``, Modelica's ``sample(start, period)``) the
+   trigger is true through the event iteration, so sampled values (discrete Real
+   variables, never rounded) take their new values and a chain of them settles; then the
+   iteration runs once more with the trigger false. Time events closer than the event
+   tolerance are one instant (sample instants of two rates, 3·0.1 and 0.3).
 
 A crossing that can change nothing (a model without modes, no reinit of that indicator in
 that direction: a ball leaving the floor) is no event: not located, not logged.
@@ -41,7 +46,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
-from ..numerics import just_before, short_error
+from ..numerics import event_times, just_before, short_error
 from .initialization import model_equations
 from .result import Event
 
@@ -53,6 +58,22 @@ FIRST_WINDOW = 2 * CHECKS  # checks integrated at once after an event (at least)
 MAX_WINDOW = 512           # ... doubled while none happens, up to this many
 CHATTER_EVENTS = 100       # this many state events ...
 CHATTER_SPAN = 1e-6        # ... within this fraction of the simulated time: chattering
+
+
+def instant(t: float) -> float:
+    """How close two time events are to be one instant: the event location's tolerance
+    (sample instants k·period of two sample rates differ by rounding: 3·0.1 vs 0.3)."""
+    return EVENT_TOL * max(1.0, abs(t))
+
+
+def instants(times) -> list[float]:
+    """The distinct instants of ``times``, sorted: times closer than ``instant`` merged (the
+    first kept)."""
+    out: list[float] = []
+    for t in sorted(set(times)):
+        if not out or t - out[-1] > instant(t):
+            out.append(float(t))
+    return out
 
 
 def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
@@ -90,12 +111,13 @@ class EventSimulation:
             scaled.update(z=model.z, alg=ca.substitute(alg, *at))
         local = {k: v for k, v in self.opts.items() if k not in ("max_step_size", "calc_ic")}
         self.loops = model.has_loops
+        self.static = self.nx == 0 and not self.has_alg     # only signals: nothing to integrate
         if self.has_alg:    # IDAS is given consistent derivatives at each start
             self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
         if self.loops:
             rows = model_equations(model)[0][1]                  # Φ̇ along the motion
             self.speeds = model.function("speeds", [rows, ca.jacobian(rows, model.x)])
-        else:
+        elif not self.static:
             self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
         self.u = ca.Function("u", [model.t], [u_expr])
         self._g_map, self._u_map = {}, {}
@@ -107,6 +129,10 @@ class EventSimulation:
         self.mode_names = [v.name for v in model.modes]
         self.mode_owner = [v.component for v in model.modes]
         self.allowed = model.state_events.mode_values
+        real = set(model.state_events.real_modes)
+        self.integer = np.array([n not in real for n in self.mode_names], dtype=bool)
+        self.clocks = list(model.state_events.clocks)
+        self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
         if self.has_alg:
             z, alg_full = model.z, model.alg
             self.newton = model.function("newton", [alg_full, ca.jacobian(alg_full, z)])
@@ -176,6 +202,8 @@ class EventSimulation:
     # ---- integration ---------------------------------------------------------------------
     def integrate(self, t0, times, x, z, d):
         """(x, z) at each of ``times`` (> t0) from (t0, x, z) with modes d, unscaled."""
+        if self.static:
+            return np.zeros((0, len(times))), np.zeros((0, len(times)))
         try:
             F = ca.integrator("segment", self.plugin, self.dae, float(t0), list(times),
                               self._start_options(t0, x, z, d, times[-1]))
@@ -201,7 +229,7 @@ class EventSimulation:
     def state_at(self, t0, x, z, d, t):
         """(x, z) at t from (t0, x, z), by the normalized integrator (t − t0 may be tiny);
         closed loops: by an integrator from t0 to t."""
-        if self.loops:
+        if self.loops or self.static:
             X, Z = self.integrate(t0, [t], x, z, d)
             return X[:, 0], Z[:, 0]
         sol = self.step(x0=x / self.Nx, z0=z / self.Nz, p=np.concatenate([[t0, t - t0], d]))
@@ -252,7 +280,15 @@ class EventSimulation:
                 reinit[self.model.x_names[r.state]] = (float(x_new[r.state]), float(values[j]))
                 x_new[r.state] = values[j]
         held = {name: after for name, (_, after) in reinit.items()}
-        x_new, z, d_new = self.iterate(t, x_new, z, np.array(d, dtype=float), held)
+        d = np.array(d, dtype=float)
+        ticking = [c for c, ticks in zip(self.clocks, self.ticks)
+                   if np.any(np.abs(ticks - t) <= instant(t))]
+        d_new = d.copy()
+        d_new[ticking] = 1.0
+        x_new, z, d_new = self.iterate(t, x_new, z, d_new, held)
+        if ticking:         # once more without the triggers: what follows them settles back
+            d_new[ticking] = 0.0
+            x_new, z, d_new = self.iterate(t, x_new, z, d_new, held)
         changed = {n: (float(a), float(b)) for n, a, b in zip(self.mode_names, d, d_new)
                    if a != b}
         for k, direction in crossed.items():
@@ -270,8 +306,8 @@ class EventSimulation:
         seen = [tuple(d)]
         for _ in range(MAX_ITERATIONS):
             x, z = self.consistent(t, x, z, d, held)
-            nxt = np.round(np.array(self.update(*self.point(t, x, z, d))[0],
-                                    dtype=float).ravel())
+            nxt = np.array(self.update(*self.point(t, x, z, d))[0], dtype=float).ravel()
+            nxt[self.integer] = np.round(nxt[self.integer])
             if np.array_equal(nxt, d):
                 self._check_values(t, d)
                 return x, z, d
@@ -319,12 +355,14 @@ class EventSimulation:
         limits at events (T repeats their time), D the modes per column."""
         t = float(grid[0])
         d = self.p[self.model.mode_params]
+        self.ticks = self._clock_instants(t, float(grid[-1]))
         x, z, d = self.event(t, x, z, d, {})
         cols = [(t, x, z, d)]
         sides = side(self.indicators(t, x, z, d), np.ones(len(self.names)))
         recent = deque(maxlen=CHATTER_EVENTS)
         span = CHATTER_SPAN * (grid[-1] - grid[0])
-        stops = sorted(set(time_events)) + [float(grid[-1])]
+        stops = [s for s in instants(time_events) if grid[-1] - s > instant(grid[-1])]
+        stops.append(float(grid[-1]))
         window = FIRST_WINDOW
         for stop in stops:
             end = stop if stop == grid[-1] else just_before(stop)
@@ -369,6 +407,24 @@ class EventSimulation:
         T = np.array([c[0] for c in cols])
         return (T, *(np.column_stack([np.asarray(c[k], dtype=float).reshape(-1) for c in cols])
                      .reshape(-1, len(cols)) for k in (1, 2, 3)))
+
+    def _clock_instants(self, t0: float, t1: float) -> list[np.ndarray]:
+        """The instants of each sample trigger: its time events in (t0, t1) (the same
+        numbers as ``CompiledModel.event_times``), and t0 if the trigger is true at the
+        start (``initial``; otherwise the start is initialization, where Modelica's
+        when-clauses are inactive, even at a sample instant)."""
+        ev = self.model.state_events
+        if not self.clocks:
+            return []
+        starts, periods = (np.array(v, dtype=float).ravel() for v in ev.clock_times(self.p))
+        out = []
+        for c, first, period, initial in zip(self.clocks, starts, periods, ev.clock_initial):
+            if not period > 0:
+                raise SimulationError(f"the sample period of '{self.mode_owner[c]}' must be "
+                                      f"> 0 s, got {period:g}")
+            ticks = event_times([first], [period], t0, t1)
+            out.append(np.array(ticks + [t0] if initial else ticks))
+        return out
 
     def _chattering(self, recent: deque, span: float):
         if len(recent) < CHATTER_EVENTS or recent[-1][0] - recent[0][0] > span:

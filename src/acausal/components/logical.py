@@ -1,0 +1,410 @@
+"""Blocks with Boolean signals, after Modelica.Blocks.Logical (MSL 4.0), with the Boolean
+sources of Modelica.Blocks.Sources and the conversions of Modelica.Blocks.Math; kept apart
+from ``signals`` (Real blocks), which they use.
+
+Boolean signals flow through ``BooleanInput`` / ``BooleanOutput`` ports, carried as 0 (false)
+and 1 (true): a kind of port of its own, so a Boolean output connected to a Real input is
+refused (``BooleanToReal`` and ``RealToBoolean`` convert). Names, connectors (u, u1, u2, u3,
+y), parameters and defaults are those of the MSL blocks.
+
+Relations (``GreaterThreshold``, ``Greater``, ``Hysteresis``, ``OnOffController``,
+``RealToBoolean``) work as a Modelica tool's: the output y is a discrete Boolean (a mode,
+constant between events, recorded as ``<block>.y``), and an indicator ``switching`` (the
+distance of the inputs from changing y, positive while y holds) makes the simulator locate
+the instant where the relation changes, to its event tolerance, instead of stepping across
+the jump; the event iteration then sets y, and every other mode that depends on it.
+Logical blocks (``And``, ``Not``, ``Switch``, ...) are expressions of their inputs, exact
+between the events of the blocks that feed them. ``Pre`` is MSL's: y = pre(u), the event
+iteration continuing until u = pre(u), which breaks loops of Boolean blocks.
+
+Smooth compilation (``compile(model, smooth=True)``, for optimal control): blocks whose
+output is a mode (relations, Hysteresis, OnOffController, Pre) refuse it with a
+StructureError naming the block; a switching law for optimal control is written as a
+smooth expression instead (e.g. a tanh blend of the two signals of a Switch). The logical
+blocks and the Boolean sources (expressions of their inputs and of time) compile either way.
+
+Not here yet: Edge, FallingEdge, Change, ZeroCrossing (true only at event instants),
+Timer, RSFlipFlop, TriggeredTrapezoid, LogicalDelay, TerminateSimulation, SampleTrigger;
+Integer signals; model-level Boolean inputs and outputs (``Input`` / ``Output`` are Real: put
+a BooleanToReal in between).
+"""
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from ..core import (BooleanInput, BooleanOutput, Component, Parameter, RealInput, RealOutput,
+                    Unavailable)
+from ..core.component import who
+from ..errors import ParameterError, StructureError
+from .signals import Extrapolation
+
+__all__ = [
+    "partialBooleanSISO", "partialBooleanSI2SO", "partialBooleanSO",
+    "partialBooleanThresholdComparison", "partialBooleanComparison",
+    "And", "Or", "Xor", "Nand", "Nor", "Not", "Pre",
+    "GreaterThreshold", "GreaterEqualThreshold", "LessThreshold", "LessEqualThreshold",
+    "Greater", "GreaterEqual", "Less", "LessEqual", "Hysteresis", "OnOffController",
+    "Switch", "LogicalSwitch",
+    "BooleanConstant", "BooleanStep", "BooleanPulse", "BooleanTable",
+    "BooleanToReal", "RealToBoolean",
+]
+
+
+def refuse_smooth(block: Component, builder) -> None:
+    """A StructureError when the model is compiled in smooth form (``builder.smooth``) and
+    ``block`` has no smooth form (its output changes at events only)."""
+    if builder.smooth:
+        raise StructureError(
+            f"{who(block)} has no smooth form: its output is a discrete value that changes "
+            f"at events only; compile without smooth=True, or write the switching law as a "
+            f"smooth expression (e.g. a tanh blend) for optimal control")
+
+
+# ---- interfaces (Modelica.Blocks.Interfaces) --------------------------------------------------
+class partialBooleanSO(Component):
+    """Single Boolean output ``y`` (MSL partialBooleanSO / partialBooleanSource)."""
+    y = BooleanOutput("connector of Boolean output signal")
+
+
+class partialBooleanSISO(partialBooleanSO):
+    """Boolean input ``u``, Boolean output ``y``."""
+    u = BooleanInput("connector of Boolean input signal")
+
+
+class partialBooleanSI2SO(partialBooleanSO):
+    """Boolean inputs ``u1``, ``u2``, Boolean output ``y``."""
+    u1 = BooleanInput("connector of first Boolean input signal")
+    u2 = BooleanInput("connector of second Boolean input signal")
+
+
+class _Relation(partialBooleanSO):
+    """y = the relation ``sign·difference > 0`` (``strict``) or ``>= 0`` of Real inputs, a
+    Boolean mode on state events (module docstring)."""
+    _sign, _strict = 1, True
+
+    def difference(self, e):
+        """The difference the relation compares with 0."""
+        raise NotImplementedError
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("y", 0, values=(0, 1), description="Boolean output (relation of the inputs)")
+
+    def physics(self, e):
+        y = e.mode("y")
+        w = self._sign * self.difference(e)
+        e.mode_update(y, w > 0 if self._strict else w >= 0)
+        e.indicator("switching", ca.if_else(y, w, -w), "",
+                    "distance of the inputs from switching y, positive while y holds")
+        e.output(self.y, y)
+
+
+class partialBooleanThresholdComparison(_Relation):
+    """Real input ``u`` compared with ``threshold``; Boolean output ``y``."""
+    threshold = Parameter(0.0, "", "comparison with respect to threshold")
+    u = RealInput("connector of Real input signal")
+
+    def difference(self, e):
+        return e.input(self.u) - self.threshold
+
+
+class partialBooleanComparison(_Relation):
+    """Real inputs ``u1``, ``u2`` compared; Boolean output ``y``."""
+    u1 = RealInput("connector of first Real input signal")
+    u2 = RealInput("connector of second Real input signal")
+
+    def difference(self, e):
+        return e.input(self.u1) - e.input(self.u2)
+
+
+# ---- relations --------------------------------------------------------------------------------
+class GreaterThreshold(partialBooleanThresholdComparison):
+    """y = u > threshold."""
+
+
+class GreaterEqualThreshold(partialBooleanThresholdComparison):
+    """y = u >= threshold."""
+    _strict = False
+
+
+class LessThreshold(partialBooleanThresholdComparison):
+    """y = u < threshold."""
+    _sign = -1
+
+
+class LessEqualThreshold(partialBooleanThresholdComparison):
+    """y = u <= threshold."""
+    _sign, _strict = -1, False
+
+
+class Greater(partialBooleanComparison):
+    """y = u1 > u2."""
+
+
+class GreaterEqual(partialBooleanComparison):
+    """y = u1 >= u2."""
+    _strict = False
+
+
+class Less(partialBooleanComparison):
+    """y = u1 < u2."""
+    _sign = -1
+
+
+class LessEqual(partialBooleanComparison):
+    """y = u1 <= u2."""
+    _sign, _strict = -1, False
+
+
+class RealToBoolean(partialBooleanThresholdComparison):
+    """y = u >= threshold (MSL Math.RealToBoolean; threshold default 0.5)."""
+    _strict = False
+    threshold = Parameter(0.5, "", "output signal y is true, if input u >= threshold")
+
+
+class _SwitchedByPre(Component):
+    """A Boolean output ``y``, a mode that starts at ``pre_y_start`` (option) and is set from
+    its own pre value and the inputs (``update``), on state events at ``margin`` (positive
+    while y holds)."""
+    options = {"pre_y_start": False}
+    y = BooleanOutput("connector of Boolean output signal")
+
+    def update(self, e, y):
+        raise NotImplementedError
+
+    def margin(self, e, y):
+        raise NotImplementedError
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("y", int(self.pre_y_start), values=(0, 1),
+               description="Boolean output; its start value is pre_y_start")
+
+    def physics(self, e):
+        y = e.mode("y")
+        e.mode_update(y, self.update(e, y))
+        e.indicator("switching", self.margin(e, y), "",
+                    "distance of the input from switching y, positive while y holds")
+        e.output(self.y, y)
+
+
+class Hysteresis(_SwitchedByPre):
+    """Real to Boolean with hysteresis: y = not pre(y) and u > uHigh or pre(y) and u >= uLow
+    (MSL Logical.Hysteresis): y switches to true when u rises above uHigh, to false when u
+    falls below uLow. Input ``u`` (Real), output ``y`` (Boolean).
+
+    Parameters: uLow, uHigh (required, as in MSL; uHigh > uLow); option ``pre_y_start``
+    (False): the value of pre(y) at the start (the start value of the mode ``y``, also given
+    at simulation time as ``params={"<block>.y": 1}``).
+    """
+    required = ("uLow", "uHigh")
+    uLow = Parameter(0.0, "", "if y=true and u<uLow, switch to y=false")
+    uHigh = Parameter(1.0, "", "if y=false and u>uHigh, switch to y=true")
+    u = RealInput("connector of Real input signal")
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if not self.uHigh > self.uLow:
+            raise ParameterError(f"{who(self)}: hysteresis limits wrong: uHigh (= {self.uHigh})"
+                                 f" <= uLow (= {self.uLow})")
+
+    def update(self, e, y):
+        u = e.input(self.u)
+        return ca.if_else(y, u >= self.uLow, u > self.uHigh)
+
+    def margin(self, e, y):
+        u = e.input(self.u)
+        return ca.if_else(y, u - self.uLow, self.uHigh - u)
+
+
+class OnOffController(_SwitchedByPre):
+    """On-off controller: y = pre(y) and (u < reference + bandwidth/2) or (u < reference −
+    bandwidth/2) (MSL Logical.OnOffController): y (the actuator) switches on when the
+    measurement ``u`` falls below reference − bandwidth/2, off when it rises to reference +
+    bandwidth/2. Inputs ``reference``, ``u`` (Real), output ``y`` (Boolean).
+
+    Parameters: bandwidth (required, as in MSL); option ``pre_y_start`` (False).
+    """
+    required = ("bandwidth",)
+    bandwidth = Parameter(0.1, "", "bandwidth around reference signal", nonnegative=True)
+    reference = RealInput("connector of Real input signal used as reference signal")
+    u = RealInput("connector of Real input signal used as measurement signal")
+
+    def _limits(self, e):
+        u, ref = e.input(self.u), e.input(self.reference)
+        return u, ref + self.bandwidth / 2, ref - self.bandwidth / 2
+
+    def update(self, e, y):
+        u, upper, lower = self._limits(e)
+        return ca.if_else(y, u < upper, u < lower)
+
+    def margin(self, e, y):
+        u, upper, lower = self._limits(e)
+        return ca.if_else(y, upper - u, u - lower)
+
+
+# ---- logical ----------------------------------------------------------------------------------
+class And(partialBooleanSI2SO):
+    """y = u1 and u2."""
+
+    def physics(self, e):
+        e.output(self.y, ca.logic_and(e.input(self.u1), e.input(self.u2)))
+
+
+class Or(partialBooleanSI2SO):
+    """y = u1 or u2."""
+
+    def physics(self, e):
+        e.output(self.y, ca.logic_or(e.input(self.u1), e.input(self.u2)))
+
+
+class Xor(partialBooleanSI2SO):
+    """y = u1 xor u2: true if exactly one input is true."""
+
+    def physics(self, e):
+        e.output(self.y, e.input(self.u1) != e.input(self.u2))
+
+
+class Nand(partialBooleanSI2SO):
+    """y = not (u1 and u2)."""
+
+    def physics(self, e):
+        e.output(self.y, ca.logic_not(ca.logic_and(e.input(self.u1), e.input(self.u2))))
+
+
+class Nor(partialBooleanSI2SO):
+    """y = not (u1 or u2)."""
+
+    def physics(self, e):
+        e.output(self.y, ca.logic_not(ca.logic_or(e.input(self.u1), e.input(self.u2))))
+
+
+class Not(partialBooleanSISO):
+    """y = not u."""
+
+    def physics(self, e):
+        e.output(self.y, ca.logic_not(e.input(self.u)))
+
+
+class Pre(partialBooleanSISO):
+    """y = pre(u): the input's value before the present event iteration round (MSL
+    Logical.Pre); the event iteration continues until u = pre(u). It breaks loops of
+    Boolean blocks. Option ``pre_u_start`` (False): pre(u) at the start (the start value
+    of the mode ``y``)."""
+    options = {"pre_u_start": False}
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("y", int(self.pre_u_start), values=(0, 1), description="pre(u)")
+
+    def physics(self, e):
+        y = e.mode("y")
+        e.mode_update(y, e.input(self.u))
+        e.output(self.y, y)
+
+
+class Switch(Component):
+    """y = if u2 then u1 else u3: switch between two Real signals by a Boolean one (MSL
+    Logical.Switch). Inputs ``u1``, ``u3`` (Real), ``u2`` (Boolean); output ``y`` (Real)."""
+    u1 = RealInput("connector of first Real input signal")
+    u2 = BooleanInput("connector of Boolean input signal")
+    u3 = RealInput("connector of second Real input signal")
+    y = RealOutput("connector of Real output signal")
+
+    def physics(self, e):
+        e.output(self.y, ca.if_else(e.input(self.u2), e.input(self.u1), e.input(self.u3)))
+
+
+class LogicalSwitch(Component):
+    """y = if u2 then u1 else u3, for Boolean signals (MSL Logical.LogicalSwitch)."""
+    u1 = BooleanInput("connector of first Boolean input signal")
+    u2 = BooleanInput("connector of second Boolean input signal")
+    u3 = BooleanInput("connector of third Boolean input signal")
+    y = BooleanOutput("connector of Boolean output signal")
+
+    def physics(self, e):
+        e.output(self.y, ca.if_else(e.input(self.u2), e.input(self.u1), e.input(self.u3)))
+
+
+# ---- conversions (Modelica.Blocks.Math) ---------------------------------------------------------
+class BooleanToReal(Component):
+    """y = if u then realTrue else realFalse (MSL Math.BooleanToReal)."""
+    realTrue = Parameter(1.0, "", "output signal for true input")
+    realFalse = Parameter(0.0, "", "output signal for false input")
+    u = BooleanInput("connector of Boolean input signal")
+    y = RealOutput("connector of Real output signal")
+
+    def physics(self, e):
+        e.output(self.y, ca.if_else(e.input(self.u), self.realTrue, self.realFalse))
+
+
+# ---- sources (Modelica.Blocks.Sources) ----------------------------------------------------------
+class BooleanConstant(partialBooleanSO):
+    """y = k (option ``k``, True as in MSL)."""
+    options = {"k": True}
+
+    def physics(self, e):
+        e.output(self.y, int(self.k))
+
+
+class BooleanStep(partialBooleanSO):
+    """y = if time >= startTime then not startValue else startValue (option ``startValue``,
+    False); a time event at startTime [s]."""
+    options = {"startValue": False}
+    startTime = Parameter(0.0, "s", "time instant of step start")
+
+    def physics(self, e):
+        before = int(self.startValue)
+        e.output(self.y, ca.if_else(e.time >= self.startTime, 1 - before, before))
+        e.time_event(self.startTime)
+
+
+class BooleanPulse(partialBooleanSO):
+    """Boolean pulse train: true during the first ``width`` percent of every ``period`` [s]
+    from startTime [s], false before startTime and in the rest of each period (MSL
+    Sources.BooleanPulse); time events at every edge."""
+    width = Parameter(50.0, "%", "width of pulse in % of period", positive=True)
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+    startTime = Parameter(0.0, "s", "time instant of first pulse")
+
+    def physics(self, e):
+        tau = e.time - self.startTime
+        tp = tau - ca.floor(tau / self.period) * self.period
+        e.output(self.y, ca.logic_and(tau >= 0, tp < self.period * self.width / 100))
+        e.time_event(self.startTime, self.period)
+        e.time_event(self.startTime + self.period * self.width / 100, self.period)
+
+
+class BooleanTable(partialBooleanSO):
+    """A Boolean signal that changes to its opposite at every time of ``table`` [s] (a
+    constructor argument, strictly increasing; MSL Sources.BooleanTable): ``startValue``
+    (option, False) before table[1], then not startValue, and so on; held after the last
+    time. ``shiftTime`` [s] shifts the table in time. Time events at the table's times.
+
+    MSL differences: extrapolation is HoldLastPoint only; startTime (output false before
+    it, −inf in MSL) is not available.
+    """
+    options = {"startValue": False,
+               "extrapolation": Unavailable(Extrapolation.HoldLastPoint,
+                                            "a Boolean table holds its last value")}
+    shiftTime = Parameter(0.0, "s", "shift time of table")
+
+    def __init__(self, name: str | None = None, *, table=(0.0, 1.0), **params):
+        super().__init__(name, **params)
+        try:
+            times = np.array(table, dtype=float).ravel()
+        except (TypeError, ValueError):
+            raise ParameterError(f"{who(self)}: table must be a sequence of times [s], got "
+                                 f"{table!r}") from None
+        if not np.all(np.isfinite(times)) or np.any(np.diff(times) <= 0):
+            raise ParameterError(f"{who(self)}: the times of table must be finite and "
+                                 f"strictly increasing, got {times.tolist()}")
+        self.__dict__["table"] = times
+
+    def physics(self, e):
+        tau = e.time - self.shiftTime
+        flips = sum((ca.if_else(tau >= tk, 1, 0) for tk in self.table), ca.SX(0))
+        e.output(self.y, ca.fmod(flips + int(self.startValue), 2))
+        for tk in self.table:
+            e.time_event(self.shiftTime + tk)
