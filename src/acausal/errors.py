@@ -27,7 +27,7 @@ import difflib
 import sys
 import warnings
 
-__all__ = ["did_you_mean", "warn_user", "AcausalError", "VariableNameError", "ParameterError",
+__all__ = ["did_you_mean", "warn_user", "SmoothFormWarning", "AcausalError", "VariableNameError", "ParameterError",
            "PortConnectionError", "DisabledPortError", "StructureError", "SingularModelError",
            "InitializationError", "SimulationError", "AnalysisError", "OCPError", "SolveError",
            "FmuExportError", "FmuPathError"]
@@ -45,6 +45,12 @@ def warn_user(message: str, category: type[Warning] = UserWarning) -> None:
     while frame is not None and frame.f_globals.get("__name__", "").startswith("acausal"):
         frame, level = frame.f_back, level + 1
     warnings.warn(message, category, stacklevel=level)
+
+
+class SmoothFormWarning(UserWarning):
+    """A note, not a fault: a model's components with events were replaced by their smooth
+    form (optimal control transcribes that form; see ``compile(model, smooth=True)``).
+    Silence it with ``warnings.simplefilter("ignore", SmoothFormWarning)``."""
 
 
 class AcausalError(Exception):

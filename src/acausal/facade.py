@@ -8,7 +8,6 @@ analysis | fmu | ocp): it may import any of them and none imports it. The compil
 """
 from __future__ import annotations
 
-from dataclasses import fields
 from pathlib import Path
 
 from . import compiler
@@ -20,11 +19,6 @@ from .simulation import Result, initial_state, simulate
 class CompiledModel(compiler.CompiledModel):
     """A compiled model (see ``acausal.compiler.CompiledModel`` for what it holds) with the
     calls users write on it."""
-
-    @classmethod
-    def wrap(cls, record: compiler.CompiledModel) -> "CompiledModel":
-        """The facade over the compiler's ``record`` (sharing its symbols and caches)."""
-        return cls(**{f.name: getattr(record, f.name) for f in fields(record)})
 
     def simulate(self, t_final: float, **kwargs) -> Result:
         """Simulate; see ``acausal.simulation.simulate`` for the arguments."""
