@@ -36,6 +36,9 @@ friction differs from F(|w|) by F·(1 − tanh(|w|/w_smooth)) ≤ 2·F·exp(−2
 away at tau0, not at tau0_max = peak·tau0 (the same for MSL's default peak = 1). Recorded
 as in the exact form, without the modes: tau (f), w_relfric, a_relfric, tau0, tau0_max,
 free, lossPower (and fn, mu of a normal-force element; mu = mu_pos(|w|)·tanh(w/w_smooth)).
+No complementarity form yet (the friction torque as a bounded decision variable of an OCP
+with complementarity constraints): it needs the builder to expose a component's force to
+the transcription.
 
 The characteristic tables (``tau_pos``, ``f_pos``, ``mu_pos``: rows [speed ≥ 0, value]) are
 interpolated linearly and extrapolated through the last two rows (MSL's CombiTable1D with
