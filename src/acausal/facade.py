@@ -43,7 +43,8 @@ def compile(model: Model, smooth: bool = False) -> CompiledModel:
     """Compile ``model`` into a CompiledModel: the CasADi equations of motion by name.
     ``smooth=True``: every component with events in its smooth form (a regularization with
     a named parameter instead of modes and events; what gradient-based optimal control
-    needs)."""
+    needs). The result keeps a reference to ``model`` (``source``): acausal.ocp compiles
+    it again in smooth form when given the exact one (``recompiled``)."""
     return CompiledModel.wrap(compiler.compile(model, smooth))
 
 
