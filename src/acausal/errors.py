@@ -20,6 +20,9 @@ are also Python's own kind derive from both, so ``except KeyError`` / ``except A
     │   └── SolveError                      IPOPT did not converge
     └── FmuExportError                      an FMU could not be built
         └── FmuPathError (FileNotFoundError) the FMU's destination cannot be written
+
+and one warning, a note rather than a fault: SmoothFormWarning (UserWarning), a model's
+components with events replaced by their smooth form (optimal control).
 """
 from __future__ import annotations
 
