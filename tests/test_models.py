@@ -16,6 +16,7 @@ CASES = {
     "pendulum_on_cart": (models.PendulumOnCart, CRANE, [], []),
     "pendulum_on_cart_input": (lambda: models.PendulumOnCart(drive="input"), CRANE, [], ["u"]),
     "cartpole": (models.CartPole, CRANE, [], ["F"]),
+    "friction_cartpole": (models.FrictionCartPole, CRANE, [], ["F"]),
     "four_bar": (models.FourBar, LOOP, [], []),
     "parallelogram": (models.Parallelogram, LOOP, [], []),
     "double_parallelogram": (lambda: models.Parallelogram(fifth_link=True),

@@ -20,6 +20,9 @@ are also Python's own kind derive from both, so ``except KeyError`` / ``except A
     │   └── SolveError                      IPOPT did not converge
     └── FmuExportError                      an FMU could not be built
         └── FmuPathError (FileNotFoundError) the FMU's destination cannot be written
+
+and one warning, a note rather than a fault: SmoothFormWarning (UserWarning), a model's
+components with events replaced by their smooth form (optimal control).
 """
 from __future__ import annotations
 
@@ -27,7 +30,7 @@ import difflib
 import sys
 import warnings
 
-__all__ = ["did_you_mean", "warn_user", "AcausalError", "VariableNameError", "ParameterError",
+__all__ = ["did_you_mean", "warn_user", "SmoothFormWarning", "AcausalError", "VariableNameError", "ParameterError",
            "PortConnectionError", "DisabledPortError", "StructureError", "SingularModelError",
            "InitializationError", "SimulationError", "AnalysisError", "OCPError", "SolveError",
            "FmuExportError", "FmuPathError"]
@@ -45,6 +48,12 @@ def warn_user(message: str, category: type[Warning] = UserWarning) -> None:
     while frame is not None and frame.f_globals.get("__name__", "").startswith("acausal"):
         frame, level = frame.f_back, level + 1
     warnings.warn(message, category, stacklevel=level)
+
+
+class SmoothFormWarning(UserWarning):
+    """A note, not a fault: a model's components with events were replaced by their smooth
+    form (optimal control transcribes that form; see ``compile(model, smooth=True)``).
+    Silence it with ``warnings.simplefilter("ignore", SmoothFormWarning)``."""
 
 
 class AcausalError(Exception):

@@ -8,7 +8,6 @@ analysis | fmu | ocp): it may import any of them and none imports it. The compil
 """
 from __future__ import annotations
 
-from dataclasses import fields
 from pathlib import Path
 
 from . import compiler
@@ -20,11 +19,6 @@ from .simulation import Result, initial_state, simulate
 class CompiledModel(compiler.CompiledModel):
     """A compiled model (see ``acausal.compiler.CompiledModel`` for what it holds) with the
     calls users write on it."""
-
-    @classmethod
-    def wrap(cls, record: compiler.CompiledModel) -> "CompiledModel":
-        """The facade over the compiler's ``record`` (sharing its symbols and caches)."""
-        return cls(**{f.name: getattr(record, f.name) for f in fields(record)})
 
     def simulate(self, t_final: float, **kwargs) -> Result:
         """Simulate; see ``acausal.simulation.simulate`` for the arguments."""
@@ -49,7 +43,8 @@ def compile(model: Model, smooth: bool = False) -> CompiledModel:
     """Compile ``model`` into a CompiledModel: the CasADi equations of motion by name.
     ``smooth=True``: every component with events in its smooth form (a regularization with
     a named parameter instead of modes and events; what gradient-based optimal control
-    needs)."""
+    needs). The result keeps a reference to ``model`` (``source``): acausal.ocp compiles
+    it again in smooth form when given the exact one (``recompiled``)."""
     return CompiledModel.wrap(compiler.compile(model, smooth))
 
 

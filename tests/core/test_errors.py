@@ -9,7 +9,13 @@ from acausal.errors import (AcausalError, AnalysisError, DisabledPortError, FmuE
                             FmuPathError, OCPError, ParameterError, SingularModelError,
                             SolveError, StructureError, VariableNameError, did_you_mean)
 
-CLASSES = [name for name in errors.__all__ if isinstance(getattr(errors, name), type)]
+CLASSES = [name for name in errors.__all__ if isinstance(getattr(errors, name), type)
+           and not issubclass(getattr(errors, name), Warning)]
+
+
+def test_the_warnings_are_user_warnings_not_errors():
+    assert issubclass(errors.SmoothFormWarning, UserWarning)
+    assert not issubclass(errors.SmoothFormWarning, AcausalError)
 
 
 def instance(cls, message):

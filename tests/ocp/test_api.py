@@ -88,9 +88,35 @@ def test_free_final_time_with_a_cost_on_time_and_effort(osc):
     assert isinstance(ocp.T, ca.MX)
 
 
-def test_a_model_with_events_is_refused():
-    """The transcriptions know no events: a model with some is an error naming the
-    components, not a problem that ignores them."""
+def test_a_model_with_events_is_refused_in_exact_form():
+    """The transcriptions know no events: with smooth=False a model with some is an error
+    naming the components, not a problem that ignores them."""
     from acausal.models import BouncingBall
-    with pytest.raises(OCPError, match="events or modes.*floor"):
-        OCP(acausal.compile(BouncingBall()), N=10, T=1.0)
+    with pytest.raises(OCPError, match="events or modes.*floor.*smooth=True"):
+        OCP(acausal.compile(BouncingBall()), N=10, T=1.0, smooth=False)
+
+
+def test_a_model_with_events_is_transcribed_in_smooth_form_and_says_so():
+    """By default the Model is compiled again in smooth form: a SmoothFormWarning names the
+    regularized component and the parameters only its smooth form uses (the floor's
+    restitution e is used by both forms, so it is not one of them); the OCP and its
+    solution report it. The smooth ball dropped from 1 m hits the floor at √(2h/g)."""
+    from acausal.errors import SmoothFormWarning
+    from acausal.models import BouncingBall
+    exact = acausal.compile(BouncingBall())
+    with pytest.warns(SmoothFormWarning, match=r"floor \(floor.c = 1e\+07 N/m2, "
+                                               r"floor.v_smooth = 0.001 m/s\)"):
+        ocp = OCP(exact, N=20, T=0.4, params={"floor.v_smooth": 0.001})
+    assert ocp.smooth and ocp.model.smooth and not ocp.model.has_events
+    assert ocp.regularized == {"floor": {"floor.c": 1e7, "floor.v_smooth": 0.001}}
+    assert "smooth form of floor" in repr(ocp)
+    ocp.initial({"ball.s": 1.0, "ball.v": 0.0})
+    ocp.minimize(ocp["ball.s"][-1] ** 2)
+    sol = ocp.solve()
+    assert sol.smooth and sol.regularized == ocp.regularized
+    assert "smooth form of floor" in repr(sol)
+    np.testing.assert_allclose(sol["ball.s"], 1.0 - 9.81 / 2 * sol.t ** 2, atol=1e-9)
+    # a model compiled smooth already is kept, and what it regularizes still named
+    with pytest.warns(SmoothFormWarning):
+        again = OCP(acausal.compile(BouncingBall(), smooth=True), N=5, T=0.1)
+    assert again.regularized == {"floor": {"floor.c": 1e7, "floor.v_smooth": 0.001}}

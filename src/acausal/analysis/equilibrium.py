@@ -21,7 +21,9 @@ import numpy as np
 
 from ..errors import AnalysisError
 from ..numerics import row_scales
-from .point import OperatingPoint, operating_point
+from .point import OperatingPoint, in_modes, modes_of, operating_point
+
+MODE_ROUNDS = 5           # solves with the modes found at the last equilibrium, at most
 
 
 @dataclass
@@ -33,17 +35,23 @@ class Equilibrium(OperatingPoint):
 
 
 def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: float = 0.0,
-                guess: dict | None = None, tol: float = 1e-10,
-                max_iter: int = 100) -> Equilibrium:
+                guess: dict | None = None, tol: float = 1e-10, max_iter: int = 100,
+                mode: dict | None = None) -> Equilibrium:
     """The equilibrium of ``model`` at time t [s] with inputs ``u`` and parameters ``params``
     (by name), nearest to ``guess`` (state names -> values; default the start values).
     Converged when every equation, divided by the size of its gradient (a distance in the
     variables' own units, whatever the stiffness: 1e9 N/m on 1 mg as well as 1 N/m on 1 kg),
     is below ``tol`` · (1 + max |x, z|). Raises AnalysisError naming the equations that do
-    not vanish when none is found."""
+    not vanish when none is found.
+
+    A model with discrete modes is solved in the modes ``mode`` (name -> value, held) and,
+    for the others, those the event iteration finds at the guess, then again at the
+    equilibrium found until they agree (a block on friction at rest under a load below
+    breakaway: stuck, anywhere; a stuck friction element holds a whole range of positions,
+    and the one nearest the guess is returned). ``Equilibrium.mode`` says which."""
     with warnings.catch_warnings():          # the guess is moved onto the loops: expected
         warnings.filterwarnings("ignore", message="initial values changed")
-        start = operating_point(model, {}, u=u, params=params, t=t, guess=guess)
+        start = operating_point(model, {}, u=u, params=params, t=t, guess=guess, mode=mode)
     p, uv = start.p, start.u
     w_sym = ca.vertcat(model.x, model.z)
     H = ca.vertcat(model.ode, model.alg)
@@ -51,6 +59,25 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
                     [H, ca.jacobian(H, w_sym)])
     nx = len(model.x_names)
     w = np.concatenate([start.x, start.z])
+    for _ in range(MODE_ROUNDS):
+        w = _solve(model, F, t, w, uv, p, tol, max_iter)
+        x, z, p_new = in_modes(model, float(t), w[:nx], w[nx:], uv, p, mode)
+        if np.array_equal(p_new, p):
+            break
+        p, w = p_new, np.concatenate([x, z])
+    else:
+        raise AnalysisError(f"equilibrium of '{model.name}': the discrete modes do not settle "
+                            f"(last {modes_of(model, p)}); give them with mode=")
+    h = _eval(F, t, w, uv, p)[0]
+    x, z = w[:nx], w[nx:]
+    return Equilibrium(model, float(t), x, z, p, uv, modes_of(model, p),
+                       _multipliers(model, x, z, p, uv, t), float(np.max(np.abs(h), initial=0.0)))
+
+
+def _solve(model, F, t, w, uv, p, tol, max_iter) -> np.ndarray:
+    """Gauss–Newton on the scaled equations from w (see ``equilibrium``)."""
+    nx = len(model.x_names)
+
     def converged(h, J, w):
         return np.all(np.abs(h) / row_scales(J) <= tol * (1 + np.abs(w).max(initial=0.0)))
 
@@ -73,15 +100,14 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
         if np.linalg.norm(step) < 1e-15 * (1 + np.linalg.norm(w)):
             break
     h, J = _eval(F, t, w, uv, p)
-    res = float(np.max(np.abs(h), initial=0.0))
     if not converged(h, J, w):
         given = dict(zip(model.input_names, map(float, uv)))
+        modes = f" in modes {modes_of(model, p)}" if model.mode_params else ""
         raise AnalysisError(f"no equilibrium of '{model.name}' found near the guess (inputs "
-                            f"{given}): these do not vanish: "
+                            f"{given}{modes}): these do not vanish: "
                             f"{_name_residuals(model, h / row_scales(J), tol)}; "
                             f"change the inputs, parameters or guess")
-    x, z = w[:nx], w[nx:]
-    return Equilibrium(model, float(t), x, z, p, uv, _multipliers(model, x, z, p, uv, t), res)
+    return w
 
 
 def _eval(F, t, w, u, p):

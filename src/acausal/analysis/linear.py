@@ -18,7 +18,8 @@ class LinearModel:
     ``coordinates`` names the position states of the mechanical coordinates among ``states``
     (``rates`` their rate states), ``mass`` is their (reduced) mass matrix there [SI units]
     and δq = ``q_basis`` · δ(coordinates) gives the change of every coordinate of the model
-    (``q_names``, dependent ones of closed loops included).
+    (``q_names``, dependent ones of closed loops included). ``mode``: the discrete modes
+    the model was linearized in, by name (empty without modes).
     """
     A: np.ndarray
     B: np.ndarray
@@ -37,6 +38,7 @@ class LinearModel:
     mass: np.ndarray | None = None
     q_names: list[str] = field(default_factory=list)
     q_basis: np.ndarray | None = None
+    mode: dict = field(default_factory=dict)
 
     def eigenvalues(self) -> np.ndarray:
         """Eigenvalues of A [1/s], sorted by imaginary part then real part."""
@@ -57,5 +59,6 @@ class LinearModel:
                           inputs=ok(self.inputs), outputs=ok(self.outputs), name=name)
 
     def __repr__(self):
+        modes = f", in modes {self.mode}" if self.mode else ""
         return (f"<LinearModel: {len(self.states)} states, {len(self.inputs)} inputs "
-                f"{self.inputs}, {len(self.outputs)} outputs {self.outputs}>")
+                f"{self.inputs}, {len(self.outputs)} outputs {self.outputs}{modes}>")

@@ -33,17 +33,23 @@ from .point import index_of, operating_point
 def linearize(model, x=None, *, u: dict | None = None, params: dict | None = None,
               t: float = 0.0, guess: dict | None = None, inputs: list[str] | None = None,
               outputs: list[str] | None = None,
-              independent: list[str] | None = None) -> LinearModel:
+              independent: list[str] | None = None, mode: dict | None = None) -> LinearModel:
     """The linear model of ``model`` about the point x (an OperatingPoint, e.g. from
     ``equilibrium``, or values by the name of any variable, assembled as simulate's x0),
     with inputs u and parameters ``params`` by name at time t [s].
+
+    mode        a model with discrete modes is linearized in one set of them: these (name
+                -> value, e.g. {"friction.mode": 0}: stuck, the friction a rigid lock;
+                1: sliding forward, the friction force F(w)), the others as the event
+                iteration finds them at the point (as simulate at its start); the
+                LinearModel's ``mode`` says which were used;
 
     inputs      names of the model's Inputs to keep as columns of B, D (default: all);
     outputs     names of any recorded variables (default: the model's Outputs);
     independent coordinates to keep as states of a model with closed loops (default: chosen
                 by QR with column pivoting of Φ_q; see the module docstring).
     """
-    pt = operating_point(model, x, u=u, params=params, t=t, guess=guess)
+    pt = operating_point(model, x, u=u, params=params, t=t, guess=guess, mode=mode)
     inputs = model.input_names if inputs is None else list(inputs)
     outputs = model.output_names if outputs is None else list(outputs)
     iu = index_of(model.input_names, inputs, "input", model.name)
@@ -89,7 +95,8 @@ def linearize(model, x=None, *, u: dict | None = None, params: dict | None = Non
     return LinearModel(A=Ax[keep] @ T, B=Bx[keep], C=Cx @ T, D=Dx, states=states,
                        inputs=inputs, outputs=outputs, x_op=pt.x[keep], u_op=pt.u[iu],
                        y_op=y0, full_states=full_names, expansion=full, coordinates=coords,
-                       rates=rates, mass=mass, q_names=list(L.q_names), q_basis=V)
+                       rates=rates, mass=mass, q_names=list(L.q_names), q_basis=V,
+                       mode=dict(pt.mode))
 
 
 def _expression(model, name):

@@ -9,7 +9,7 @@ constraint forces, and the damping matrix). The undamped modes solve K φ = ω²
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import scipy.linalg
@@ -26,20 +26,24 @@ class Modes:
     shapes in the named coordinates (all coordinates, dependent ones of closed loops included),
     each scaled to a largest entry of +1; ``eigenvalues`` [1/s]: damped eigenvalues of the
     linear model, one per complex-conjugate pair (Im ≥ 0) and the real ones, by magnitude;
-    ``damping``: their damping ratios ζ = −Re λ/|λ| (nan for λ = 0); ``damped_frequencies`` [Hz] = Im λ/2π."""
+    ``damping``: their damping ratios ζ = −Re λ/|λ| (nan for λ = 0); ``damped_frequencies`` [Hz] = Im λ/2π;
+    ``mode``: the discrete modes of the model they are of (friction stuck or sliding), by
+    name (empty without modes)."""
     frequencies: np.ndarray
     shapes: np.ndarray
     coordinates: list[str]
     eigenvalues: np.ndarray
     damping: np.ndarray
     damped_frequencies: np.ndarray
+    mode: dict = field(default_factory=dict)
 
     def shape(self, k: int) -> dict[str, float]:
         """Mode shape k by coordinate name."""
         return dict(zip(self.coordinates, map(float, self.shapes[:, k])))
 
     def __str__(self):
-        lines = [f"undamped modes ({', '.join(self.coordinates)}):"]
+        lines = [f"in discrete modes {self.mode}"] if self.mode else []
+        lines.append(f"undamped modes ({', '.join(self.coordinates)}):")
         for k, fk in enumerate(self.frequencies):
             shape = ", ".join(f"{v:+.3f}" for v in self.shapes[:, k])
             lines.append(f"  {fk:10.4f} Hz  [{shape}]")
@@ -52,7 +56,7 @@ class Modes:
 
 def modes(model, x=None, **kwargs) -> Modes:
     """Modes of ``model`` (a CompiledModel, linearized at x with ``kwargs`` as for
-    ``linearize``, or a LinearModel)."""
+    ``linearize``, ``mode=`` the discrete modes included, or a LinearModel)."""
     lin = model if isinstance(model, LinearModel) else linearize(model, x, inputs=[],
                                                                    outputs=[], **kwargs)
     if not lin.coordinates:
@@ -79,4 +83,5 @@ def modes(model, x=None, **kwargs) -> Modes:
     ev = ev[np.argsort(np.abs(ev))]
     mag = np.abs(ev)
     zeta = np.where(mag > 0, -ev.real / np.where(mag > 0, mag, 1.0), np.nan)
-    return Modes(freq, shapes, list(lin.q_names), ev, zeta, ev.imag / (2 * np.pi))
+    return Modes(freq, shapes, list(lin.q_names), ev, zeta, ev.imag / (2 * np.pi),
+                 dict(lin.mode))

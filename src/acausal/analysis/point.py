@@ -4,14 +4,21 @@ Every analysis works at such points. Inputs and parameters are given by dotted n
 ``simulate``); states by the dotted name of any variable (as ``x0``, held exactly; closed loops
 are assembled around them). Where closed loops have rows that are redundant at the point, the
 model's loop-row switches (``loop_switches``) are set as ``simulate`` sets them.
+
+A model with discrete modes (friction's stuck / sliding, ``StructureBuilder.mode``) is
+analysed in one set of modes, the point's ``mode`` (name -> value): the ones given by name
+(``mode={"friction.mode": 0}``) held, the others found by the event iteration at the point
+from their start values, as ``simulate`` finds them at its start (a body at rest under a
+load below breakaway: stuck). The algebraic variables are solved in those modes.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import AnalysisError, did_you_mean
+from ..errors import AnalysisError, SimulationError, did_you_mean
+from ..simulation.events import ModeIteration
 from ..simulation.initialization import initial_state
 
 
@@ -19,13 +26,15 @@ from ..simulation.initialization import initial_state
 class OperatingPoint:
     """A point of ``model``: time t [s], states x, algebraic variables z, parameters p and
     inputs u, as vectors in the model's order (``x_names``, ``z_names``, ``param_names``,
-    ``input_names``). ``point["name"]`` is any recorded variable there."""
+    ``input_names``). ``point["name"]`` is any recorded variable there. ``mode``: the
+    discrete modes it is in, by name (their values are also in p; empty without modes)."""
     model: object
     t: float
     x: np.ndarray
     z: np.ndarray
     p: np.ndarray
     u: np.ndarray
+    mode: dict = field(default_factory=dict)
 
     def __getitem__(self, name: str) -> float:
         f = self.model.function("value", [self.model.expression(name)])
@@ -67,17 +76,53 @@ def set_loop_switches(model, t, x, z, u, p) -> np.ndarray:
 
 
 def operating_point(model, x=None, *, u: dict | None = None, params: dict | None = None,
-                    t: float = 0.0, guess: dict | None = None) -> OperatingPoint:
+                    t: float = 0.0, guess: dict | None = None,
+                    mode: dict | None = None) -> OperatingPoint:
     """The point of ``model`` at time t [s] with inputs ``u`` and parameters ``params`` (by
     name; defaults otherwise) where the variables named in ``x`` have the given values
-    (closed loops assembled, ``guess`` as for simulate). ``x`` may also be an
-    OperatingPoint (returned as is; then u, params, t must not be given)."""
+    (closed loops assembled, ``guess`` as for simulate), in the discrete modes ``mode``
+    (name -> value; the others as the event iteration finds them there, see the module).
+    ``x`` may also be an OperatingPoint (returned as is; then u, params, t, mode must not be
+    given)."""
     if isinstance(x, OperatingPoint):
-        if u is not None or params is not None or guess is not None:
-            raise AnalysisError("give either an OperatingPoint or u/params/guess, not both")
+        if u is not None or params is not None or guess is not None or mode is not None:
+            raise AnalysisError("give either an OperatingPoint or u/params/guess/mode, not "
+                                "both")
         return x
     p = model.param_vector(params)
     uv = input_vector(model, u)
     xs, zs = initial_state(model, dict(x or {}), p, uv, float(t), guess)
     p = set_loop_switches(model, t, xs, zs, uv, p)
-    return OperatingPoint(model, float(t), np.asarray(xs, float), np.asarray(zs, float), p, uv)
+    xs, zs, p = in_modes(model, float(t), np.asarray(xs, float), np.asarray(zs, float), uv, p,
+                         mode)
+    return OperatingPoint(model, float(t), xs, zs, p, uv, modes_of(model, p))
+
+
+def modes_of(model, p) -> dict:
+    """The discrete modes in p, by name (int values)."""
+    return {v.name: int(round(p[i])) for v, i in zip(model.modes, model.mode_params)}
+
+
+def in_modes(model, t, x, z, u, p, mode: dict | None):
+    """(x, z, p) at (t, x) in the modes ``mode`` (name -> value, held) and, for the others,
+    the event iteration's from their values in p; z solved in them."""
+    given = dict(mode or {})
+    names = [v.name for v in model.modes]
+    if given and not names:
+        raise AnalysisError(f"model '{model.name}' has no discrete modes; remove mode=")
+    keep = index_of(names, list(given), "mode", model.name)
+    if not names:
+        return x, z, p
+    p = p.copy()
+    for k, (name, value) in zip(keep, given.items()):
+        allowed = model.state_events.mode_values.get(name)
+        if allowed is not None and value not in allowed:
+            raise AnalysisError(f"mode '{name}' takes the values {allowed}, not {value!r}")
+        p[model.mode_params[k]] = value
+    run = ModeIteration(model, p, lambda _: u)
+    try:
+        x, z, d = run.iterate(t, x, z, p[model.mode_params], {}, keep)
+    except SimulationError as e:
+        raise AnalysisError(f"the modes of '{model.name}' at this point: {e}") from None
+    p[model.mode_params] = d
+    return x, z, p

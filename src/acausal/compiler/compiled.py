@@ -28,13 +28,14 @@ The compiler builds this record and imports nothing downstream; what users call 
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, fields
 
 import casadi as ca
 import numpy as np
 
 from ..core.parameter import checked_value
-from ..errors import ParameterError, SimulationError, VariableNameError, did_you_mean
+from ..errors import (ParameterError, SimulationError, StructureError, VariableNameError,
+                      did_you_mean)
 from ..numerics import event_times
 from .lagrange import Lagrange
 from .loops import Mobility, mobility
@@ -129,7 +130,9 @@ class CompiledModel:
     parameters of this model. ``mode_params``: positions in p of the discrete modes (last in
     p; their records in ``params`` hold their start values, ``component`` their owner).
     ``state_events``: indicators, mode updates and reinits (see ``StateEvents``).
-    ``smooth``: compiled in smooth form (``compile(model, smooth=True)``)."""
+    ``smooth``: compiled in smooth form (``compile(model, smooth=True)``). ``source``: the
+    Model compiled (a reference, nothing of it copied: ``recompiled`` compiles it as it is
+    then)."""
     name: str
     t: ca.SX
     x: ca.SX
@@ -160,7 +163,24 @@ class CompiledModel:
     mode_params: list[int] = field(default_factory=list)
     state_events: StateEvents = field(default_factory=StateEvents)
     smooth: bool = False    # compiled in smooth form (no events; see PhysicsBuilder.smooth)
+    source: object = field(default=None, repr=False, compare=False)     # the Model compiled
     _cache: dict = field(default_factory=dict, repr=False)
+
+    @classmethod
+    def wrap(cls, record: "CompiledModel") -> "CompiledModel":
+        """A record of this class with the fields of ``record`` (sharing its symbols and
+        caches): how a subclass (the facade's) dresses the compiler's record."""
+        return cls(**{f.name: getattr(record, f.name) for f in fields(record)})
+
+    def recompiled(self, smooth: bool) -> "CompiledModel":
+        """The ``source`` model compiled again, in smooth form or not (``compile(model,
+        smooth)``), as a record of this class."""
+        if self.source is None:
+            raise StructureError(f"compiled model '{self.name}' does not know the Model it "
+                                 "was compiled from; compile the Model with "
+                                 f"acausal.compile(model, smooth={bool(smooth)})")
+        from .assemble import compile       # assemble builds records of this module
+        return type(self).wrap(compile(self.source, smooth))
 
     # ---- names ----------------------------------------------------------------------------
     @property

@@ -20,6 +20,26 @@ cleared at the next event), a sliding element that reaches w_relfric = 0 keeps s
 if its acceleration there (with the sliding friction tau0) keeps its direction or it has
 just broken away, and sticks otherwise.
 
+Smooth form (``compile(model, smooth=True)``, for gradient-based optimal control): no
+modes, no indicators, no reinits, no algebraic variable; the friction torque is the
+regularized law
+
+    tau = F(|w_relfric|)·tanh(w_relfric / w_smooth)     (0 when free)
+
+with F the forward sliding characteristic (tau_pos(w), or mu_pos(w)·cgeo·fn) and the
+parameter ``w_smooth`` [rad/s] (``v_smooth`` [m/s]) of the element. Its error against the
+exact form: (1) an element the exact form holds stuck, loaded by |tau_h| < tau0, creeps at
+the speed w_smooth·artanh(|tau_h|/tau0) ≈ w_smooth·|tau_h|/tau0 (for |tau_h| ≪ tau0; e.g. a
+block held by half its breakaway force creeps at 0.55·v_smooth); (2) sliding at |w| the
+friction differs from F(|w|) by F·(1 − tanh(|w|/w_smooth)) ≤ 2·F·exp(−2|w|/w_smooth), i.e.
+< 1e-3·F beyond |w| > 3.8·w_smooth; (3) there is no stiction peak: the smooth form breaks
+away at tau0, not at tau0_max = peak·tau0 (the same for MSL's default peak = 1). Recorded
+as in the exact form, without the modes: tau (f), w_relfric, a_relfric, tau0, tau0_max,
+free, lossPower (and fn, mu of a normal-force element; mu = mu_pos(|w|)·tanh(w/w_smooth)).
+No complementarity form yet (the friction torque as a bounded decision variable of an OCP
+with complementarity constraints): it needs the builder to expose a component's force to
+the transcription.
+
 The characteristic tables (``tau_pos``, ``f_pos``, ``mu_pos``: rows [speed ≥ 0, value]) are
 interpolated linearly and extrapolated through the last two rows (MSL's CombiTable1D with
 Smoothness.LinearSegments and Extrapolation.LastTwoPoints, the only smoothness here).
@@ -77,6 +97,9 @@ class PartialFriction(Component):
     never); ``_apply(e, tau)`` the flows; ``_stop(e)`` the state its relative speed is and
     the value that makes it 0 (reinit when it sticks). Records w_relfric, a_relfric, tau0,
     tau0_max, free, sa, locked, startForward, startBackward, lossPower [W] and the mode.
+    The domain declares ``w_small`` (``v_small``) and ``w_smooth`` (``v_smooth``), the speed
+    of the smooth form's regularization (see the module); a subclass that gives only these
+    hooks has the smooth form too.
     """
     axis: Axis
     table_name = ""
@@ -114,6 +137,8 @@ class PartialFriction(Component):
 
     # ---- the mode machine ----------------------------------------------------------------
     def structure(self, s):
+        if s.smooth:                # no modes, no algebraic: tau is the regularized law
+            return
         x = self.axis
         s.mode("mode", UNKNOWN, values=MODES,
                description="mode of friction (-1: backward sliding, 0: stuck, 1: forward "
@@ -125,6 +150,9 @@ class PartialFriction(Component):
         s.algebraic(x.f, unit=x.f_unit, description=f"friction {x.flow}")
 
     def physics(self, e):
+        if e.smooth:
+            self._smooth_physics(e)
+            return
         x = self.axis
         mode, tau = e.mode("mode"), e.state(x.f)
         start_fwd, start_bwd = e.mode("startForward"), e.mode("startBackward")
@@ -175,6 +203,32 @@ class PartialFriction(Component):
             mode == STUCK, from_stuck, ca.if_else(mode == FORWARD, from_forward, ca.if_else(
                 mode == BACKWARD, from_backward, sign_w)))))
 
+        self._record(e, w, a, tau0, tau0_max, free, tau)
+        e.variable("locked", locked, "", f"= true, if {x.v}_relfric=0 and not sliding")
+        e.variable("sa", ca.if_else(locked, tau, ca.if_else(free, a, ca.if_else(
+            fwd, a + tau0_max, ca.if_else(bwd, a - tau0_max, a)))),
+            "1", f"path parameter of friction characteristic {x.f} = f(a_relfric)")
+
+    # ---- the smooth form -----------------------------------------------------------------
+    def _smooth_physics(self, e):
+        """tau = F(|w_relfric|)·tanh(w_relfric/w_smooth), 0 when free (see the class)."""
+        x = self.axis
+        w, a = self._relfric(e)
+        tau0 = self._sliding(e, 0.0)
+        free = self._free(e)
+        law = self._sliding(e, ca.fabs(w)) * self._smooth_sign(w)
+        tau = law if free is None else ca.if_else(free, 0.0, law)
+        self._apply(e, tau)
+        e.variable(x.f, tau, x.f_unit, f"friction {x.flow} (smooth form)")
+        self._record(e, w, a, tau0, self.peak * tau0, ca.SX(0) if free is None else free, tau)
+
+    def _smooth_sign(self, w):
+        """tanh(w/w_smooth): the smooth form's sign of the relative speed w."""
+        return ca.tanh(w / getattr(self, f"{self.axis.v}_smooth"))
+
+    def _record(self, e, w, a, tau0, tau0_max, free, tau):
+        """The variables both forms record."""
+        x = self.axis
         e.variable(f"{x.v}_relfric", w, x.v_unit,
                    f"relative {x.speed} between frictional surfaces")
         e.variable("a_relfric", a, x.a_unit,
@@ -184,11 +238,8 @@ class PartialFriction(Component):
         e.variable(f"{x.f}0_max", tau0_max, x.f_unit,
                    f"maximum friction {x.flow} for {x.v}_relfric=0 and locked")
         e.variable("free", free, "", "= true, if frictional element is not active")
-        e.variable("locked", locked, "", f"= true, if {x.v}_relfric=0 and not sliding")
-        e.variable("sa", ca.if_else(locked, tau, ca.if_else(free, a, ca.if_else(
-            fwd, a + tau0_max, ca.if_else(bwd, a - tau0_max, a)))),
-            "1", f"path parameter of friction characteristic {x.f} = f(a_relfric)")
         e.variable("lossPower", tau * w, "W", "loss power leaving component via heatPort")
+
 
 class SupportedFriction(PartialFriction):
     """Friction of the rigidly joined flanges (flange_b = flange_a) against the support
@@ -252,9 +303,13 @@ class NormalForceFriction(PartialFriction):
 
     def physics(self, e):
         super().physics(e)
-        fn, mode = self._fn(e), e.mode("mode")
+        fn = self._fn(e)
         w = self._relfric(e)[0]
-        e.indicator("fn", fn, "N", "normal force")
         e.variable("fn", fn, "N", "normal force (= fn_max*f_normalized)")
-        e.variable("mu", ca.if_else(mode == BACKWARD, -table_value(self.table, -w),
-                                    table_value(self.table, w)), "1", "friction coefficient")
+        if e.smooth:
+            mu = table_value(self.table, ca.fabs(w)) * self._smooth_sign(w)
+        else:
+            e.indicator("fn", fn, "N", "normal force")
+            mu = ca.if_else(e.mode("mode") == BACKWARD, -table_value(self.table, -w),
+                            table_value(self.table, w))
+        e.variable("mu", mu, "1", "friction coefficient")

@@ -175,11 +175,14 @@ class PartialFriction(friction.PartialFriction):
     """Coulomb friction with MSL's mode machine (Rotational.Interfaces.PartialFriction; see
     ``acausal.components.friction``): w_relfric [rad/s], a_relfric [rad/s²], tau0, tau0_max
     [N.m], mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction torque tau
-    [N.m] an algebraic variable."""
+    [N.m] an algebraic variable; in smooth form tau = F(|w_relfric|)·tanh(w_relfric/w_smooth)."""
     axis = ROTATIONAL_AXIS
     w_small = Parameter(1.0e10, "rad/s", "relative angular velocity near to zero if jumps due "
                                          "to a reinit(..) of the velocity can occur",
                         positive=True)
+    w_smooth = Parameter(1e-3, "rad/s", "smooth form only: tau = tau_pos(|w_relfric|)*"
+                         "tanh(w_relfric/w_smooth) (a held element creeps at about "
+                         "w_smooth*|tau|/tau0)", positive=True)
 
 # =========================================================================================
 # Components

@@ -139,9 +139,12 @@ class PartialFriction(friction.PartialFriction):
     """Coulomb friction with MSL's mode machine (Translational.Interfaces.PartialFriction;
     see ``acausal.components.friction``): v_relfric [m/s], a_relfric [m/s²], f0, f0_max [N],
     mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction force f [N] an
-    algebraic variable."""
+    algebraic variable; in smooth form f = F(|v_relfric|)·tanh(v_relfric/v_smooth)."""
     axis = TRANSLATIONAL_AXIS
     v_small = Parameter(1e-3, "m/s", "relative velocity near to zero", positive=True)
+    v_smooth = Parameter(1e-3, "m/s", "smooth form only: f = f_pos(|v_relfric|)*"
+                         "tanh(v_relfric/v_smooth) (a held block creeps at about "
+                         "v_smooth*|f|/f0)", positive=True)
 
 class PartialForce(PartialElementaryOneFlangeAndSupport2):
     """A force law on ``flange`` (relative to the support). MSL's variable ``f`` = flange.f

@@ -9,7 +9,8 @@ no compiler or simulation imports.
     crane               GantryCrane: cart on a damped rail, load on a rope (input F)
     disk_drive          DiskDriveHead: actuator arm with a flexible tip (input T)
     pendulum_on_cart    PendulumOnCart: pendulum on a spring-mounted, base-excited cart
-    cartpole            CartPole: cart with a pole on a hinge (input F)
+    cartpole            CartPole: cart with a pole on a hinge (input F); FrictionCartPole:
+                        with Coulomb friction on the rail
     linkages            FourBar, Parallelogram, DrivenFourBar, SliderCrank, add_link;
                         KinematicLoop, PistonEngine (PlanarMechanics' examples)
     pendulums           PendulumChain: N-link planar pendulum
@@ -21,7 +22,7 @@ no compiler or simulation imports.
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
-from .cartpole import CartPole
+from .cartpole import CartPole, FrictionCartPole
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
@@ -34,7 +35,7 @@ from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
 
-__all__ = ["BouncingBall", "Floor", "CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
+__all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
            "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
            "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain",

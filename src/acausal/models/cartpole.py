@@ -6,6 +6,8 @@ pole of length l carries a point mass m2 at its tip and hangs from a hinge on th
 g (the World's). Coordinates x = ``rail.s``, θ = ``hinge.phi`` (pole angle from the downward
 vertical, counter-clockwise); input ``F`` [N].
 
+``FrictionCartPole`` adds Coulomb friction between cart and rail.
+
 Components (PlanarMechanics and MSL names):
 
     World  base: Fixed.frame ── rail: Prismatic(useFlange) ── cart: Body (m1, I = 0)
@@ -46,3 +48,16 @@ class CartPole(Model):
                      (self.pole.frame_b, self.tip.frame_a),
                      (self.F.y, self.force.f), (self.force.flange, self.rail.axis)]:
             self.connect(a, b)
+
+
+class FrictionCartPole(CartPole):
+    """The cart-pole with Coulomb friction between cart and rail: a translational
+    SupportFriction ``friction`` on the rail's axis, sliding friction ``f_c`` [N] (its
+    f_pos table [[0, f_c]], peak 1) and MSL's stuck mode in simulation; in smooth form (for
+    optimal control) f = f_c·tanh(v/v_smooth). Defaults m1 = 1 kg, m2 = 0.1 kg, l = 1 m,
+    f_c = 2 N."""
+
+    def __init__(self, name="friction_cartpole", m1=1.0, m2=0.1, l=1.0, f_c=2.0):
+        super().__init__(name, m1=m1, m2=m2, l=l)
+        self.friction = tr.SupportFriction(f_pos=[[0.0, f_c]])
+        self.connect(self.friction.flange_a, self.rail.axis)

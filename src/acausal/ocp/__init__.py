@@ -9,11 +9,16 @@ shooting, IPOPT), written with the model's names::
     sol = ocp.solve()
     sol["hinge.phi"], sol.control("F"), sol.cost, sol.plot(path=".")
 
+Models with state events or modes (friction, impacts) are transcribed in their smooth form
+(``OCP(..., smooth=True)``, the default: the Model compiled again with ``compile(model,
+smooth=True)``), noted by a ``SmoothFormWarning``; ``ocp.regularized`` names the components
+and their regularization parameters.
+
 Modules: problem (OCP, FreeTime), transcription (Collocation, MultipleShooting), solution
 (Solution), model (the names of a compiled model by kind), nlp (the NLP container), errors.
 """
-from ..errors import OCPError, SolveError
+from ..errors import OCPError, SmoothFormWarning, SolveError
 from .problem import OCP, FreeTime
 from .solution import Solution
 
-__all__ = ["OCP", "FreeTime", "Solution", "OCPError", "SolveError"]
+__all__ = ["OCP", "FreeTime", "Solution", "OCPError", "SolveError", "SmoothFormWarning"]

@@ -24,11 +24,10 @@ class ModelView:
 
     def __init__(self, compiled, params: dict | None = None, free=()):
         if compiled.has_events:
-            owners = sorted({v.component for v in
-                             compiled.state_events.indicators + compiled.modes})
             raise OCPError(f"model '{compiled.name}' has state events or modes (of "
-                           f"{', '.join(owners)}); optimal control of such models is not "
-                           f"supported yet: the transcription would ignore their events")
+                           f"{', '.join(event_owners(compiled))}); the transcription would "
+                           f"ignore their events: transcribe its smooth form "
+                           f"(OCP(..., smooth=True), the default)")
         self.compiled = compiled
         self.p_values = compiled.param_vector(params)
         self.free = list(free)
@@ -126,6 +125,41 @@ class ModelView:
         self.z_alg = sorted(set(cols))
         self.rows_z = sorted(set(rows))
         self.rows_x = [r for r in range(c.alg.numel()) if r not in set(rows)]
+
+
+def event_owners(compiled) -> list[str]:
+    """The components of ``compiled`` that declare state events or modes."""
+    return sorted({v.component for v in compiled.state_events.indicators + compiled.modes})
+
+
+def smooth_form(compiled):
+    """(the smooth form of ``compiled``, the components regularized in it with their
+    regularization parameters: {component: [parameter names]}). A model with events is
+    compiled again from its Model in smooth form (``compile(model, smooth=True)``); one
+    compiled smooth is kept (its exact form compiled to name what is regularized); one
+    without events and not smooth is its own smooth form, nothing regularized. The
+    regularization parameters of a component are its parameters that the smooth form's
+    equations use and the exact form's do not (``v_smooth``, a contact stiffness)."""
+    if compiled.has_events:
+        smooth = compiled.recompiled(smooth=True)
+        return smooth, _regularized(compiled, smooth)
+    if compiled.smooth and compiled.source is not None:
+        return compiled, _regularized(compiled.recompiled(smooth=False), compiled)
+    return compiled, {}
+
+
+def _regularized(exact, smooth) -> dict[str, list[str]]:
+    ev = exact.state_events
+    e_all = ca.vertcat(exact.ode, exact.alg, ev.indicator, ev.mode_update, ev.reinit_values)
+    s_all = ca.vertcat(smooth.ode, smooth.alg)
+    out = {}
+    for owner in event_owners(exact):
+        names = [n for i, n in enumerate(smooth.param_names)
+                 if n.startswith(owner + ".") and ca.depends_on(s_all, smooth.p[i])
+                 and not (n in exact.param_names and ca.depends_on(
+                     e_all, exact.p[exact.param_names.index(n)]))]
+        out[owner] = names
+    return out
 
 
 class Symbols(Mapping):

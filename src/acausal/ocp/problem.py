@@ -6,8 +6,8 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from ..errors import OCPError, SolveError
-from .model import ModelView
+from ..errors import OCPError, SmoothFormWarning, SolveError, warn_user
+from .model import ModelView, smooth_form
 from .nlp import DEFAULT_IPOPT, NLP, SUCCESS, canonical
 from .solution import Solution
 from .transcription import Collocation, MultipleShooting, Nodes
@@ -35,7 +35,20 @@ class OCP:
                    or 'shooting' (a CasADi ``integrator`` plugin per interval, with
                    ``integrator_options``; see transcription.MultipleShooting);
     ``params``     fixed parameter values by dotted name (defaults otherwise);
-    ``free``       parameters to estimate (decision variables; guess = their value).
+    ``free``       parameters to estimate (decision variables; guess = their value);
+    ``smooth``     True (default): a model with state events or modes (friction, impacts)
+                   is transcribed in its smooth form, its Model compiled again with
+                   ``compile(model, smooth=True)`` (each such component's law regularized
+                   with a named parameter, e.g. ``friction.v_smooth``, which ``params``
+                   sets; see the components' docstrings for the error against the exact
+                   form), noted by a ``SmoothFormWarning``; ``ocp.smooth`` says whether the
+                   transcribed model ``ocp.model`` is in smooth form, ``ocp.regularized``
+                   names the regularized components and their parameters' values. False:
+                   a model with events is refused (no complementarity form yet: a Coulomb
+                   friction force as a bounded algebraic with complementarity constraints
+                   needs the component to expose its force as a decision variable).
+                   Check the optimum on the exact model: ``compiled.simulate(T, inputs=
+                   {"F": Samples(sol.t[:-1], sol.control("F"), "hold")})``.
 
     Symbols, by name (CasADi MX column vectors, for costs and constraints; they combine
     with numpy arrays of the same length): ``ocp["cart.s"]`` a state at the nodes (N+1),
@@ -53,12 +66,23 @@ class OCP:
     def __init__(self, model, N: int = 50, T: float | FreeTime = 1.0, *, t0: float = 0.0,
                  method: str = "collocation", degree: int = 3, scheme: str = "radau",
                  integrator: str | None = None, integrator_options: dict | None = None,
-                 params: dict | None = None, free=()):
+                 params: dict | None = None, free=(), smooth: bool = True):
         if not isinstance(N, (int, np.integer)) or N < 1:
             raise OCPError(f"N must be a positive integer (number of intervals), not {N!r}")
         if method not in METHODS:
             raise OCPError(f"method '{method}' is not one of {METHODS}")
+        regularized = {}
+        if smooth:
+            model, regularized = smooth_form(model)
         self.view = view = ModelView(model, params, free)
+        self.smooth = bool(model.smooth)
+        self.regularized = {owner: {n: float(view.p_values[model.param_names.index(n)])
+                                    for n in names} for owner, names in regularized.items()}
+        if self.regularized:
+            warn_user(f"optimal control of '{model.name}' in smooth form: "
+                      f"{_regularization(self.regularized, model)} instead of events; the "
+                      f"optimum is the smooth model's (OCP.regularized; check it on the exact "
+                      f"model with simulate)", SmoothFormWarning)
         self.model, self.N, self.t0 = model, int(N), float(t0)
         self._nlp = nlp = NLP()
         X = nlp.variable("X", view.nx, N + 1)
@@ -291,9 +315,19 @@ class OCP:
 
     def __repr__(self):
         T = "free" if self.free_time is not None else f"{float(ca.evalf(self.T)):g} s"
+        form = f", smooth form of {', '.join(self.regularized)}" if self.regularized else (
+            ", smooth form" if self.smooth else "")
         return (f"<OCP on '{self.model.name}': {self.method}, N = {self.N}, T = {T}, "
                 f"{self.view.nx} states, {self.view.nu} controls, {len(self.view.free)} free "
-                f"parameters>")
+                f"parameters{form}>")
+
+
+def _regularization(regularized: dict, model) -> str:
+    """'friction (friction.v_smooth = 0.001 m/s), ...'."""
+    units = {v.name: v.unit for v in model.params}
+    return ", ".join(owner + " (" + ", ".join(f"{n} = {v:g} {units[n]}".rstrip()
+                                              for n, v in values.items()) + ")"
+                     for owner, values in regularized.items())
 
 
 def _rows_of(n: int, rows: list) -> ca.DM:

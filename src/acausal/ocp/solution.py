@@ -19,7 +19,9 @@ class Solution(Result):
     N interval values; ``sol.parameters``: the free parameters' values; ``sol.cost``,
     ``sol.T`` [s], ``sol.status`` (IPOPT's return status), ``sol.iterations``, ``sol.stats``;
     ``sol.value(expr)``: any MX expression of the problem's symbols (``ocp["x"]``,
-    ``ocp.integral(...)``, ``ocp.T``) at the optimum.
+    ``ocp.integral(...)``, ``ocp.T``) at the optimum; ``sol.smooth``, ``sol.regularized``:
+    whether the model was in smooth form, which components were regularized with which
+    parameter values (as the OCP's).
     """
 
     def __init__(self, ocp, nlp, w: np.ndarray, cost: float, stats: dict, resolve):
@@ -36,6 +38,7 @@ class Solution(Result):
         self.iterations = stats["iter_count"]
         self.parameters = {name: float(P[i, 0]) for name, i in zip(view.free, view.free_index)}
         self.method = ocp.method
+        self.smooth, self.regularized = ocp.smooth, ocp.regularized
 
     def value(self, expr):
         """The value of an MX expression of the problem's symbols at the optimum: a float
@@ -85,5 +88,7 @@ class Solution(Result):
         return fig
 
     def __repr__(self):
+        form = f", smooth form of {', '.join(self.regularized)}" if self.regularized else (
+            ", smooth form" if self.smooth else "")
         return (f"<Solution of '{self.model_name}': cost {self.cost:.6g}, T = {self.T:g} s, "
-                f"{self.status} in {self.iterations} iterations>")
+                f"{self.status} in {self.iterations} iterations{form}>")

@@ -82,61 +82,28 @@ def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
     return np.where(s == 0, before, s)
 
 
-class EventSimulation:
-    """Integration of ``model`` (an ODE/DAE whose ``ode``/``alg`` are scaled by ``scale``
-    and have the modes as free symbols, every other parameter a number) with its events."""
+class ModeIteration:
+    """The event iteration of ``model`` at a point, with parameters p (modes last, as
+    ``mode_params`` places them) and inputs ``u`` (a callable of time): what simulate runs
+    at the start and at every event, and what the analyses run to find the modes at an
+    operating point."""
 
-    def __init__(self, model, ode, alg, p, u_expr, scale, plugin, opts):
-        self.model, self.p, self.plugin = model, np.asarray(p, dtype=float), plugin
-        self.opts = dict(opts)
+    def __init__(self, model, p, u):
+        self.model, self.p, self.u = model, np.asarray(p, dtype=float), u
         self.nx, self.has_alg = model.x.numel(), model.z.numel() > 0
-        if self.has_alg:
-            # the integrator restarts at every event with z consistent but not its rate:
-            # the algebraic variables (index 1: functions of x) stay out of the error test;
-            # the start is consistent (``consistent``), so IDAS's own initial-value search
-            # is replaced by the known derivatives (it fails on a start that is consistent
-            # already, e.g. every friction element stuck: IDA_LINESEARCH_FAIL)
-            self.opts.setdefault("suppress_algebraic", True)
-            self.opts["calc_ic"] = False
-        self.Nx, self.Nz = scale[:self.nx], scale[self.nx:]
-        d = model.p[model.mode_params] if model.mode_params else ca.SX(0, 1)
-        self.dae = {"x": model.x, "t": model.t, "ode": ode, "p": d}
-        if self.has_alg:
-            self.dae.update(z=model.z, alg=alg)
-        t0, h, tau = ca.SX.sym("t0"), ca.SX.sym("h"), ca.SX.sym("tau")
-        at = model.t, t0 + h * tau
-        scaled = {"x": model.x, "t": tau, "p": ca.vertcat(t0, h, d),
-                  "ode": h * ca.substitute(ode, *at)}
-        if self.has_alg:
-            scaled.update(z=model.z, alg=ca.substitute(alg, *at))
-        local = {k: v for k, v in self.opts.items() if k not in ("max_step_size", "calc_ic")}
         self.loops = model.has_loops
-        self.static = self.nx == 0 and not self.has_alg     # only signals: nothing to integrate
-        if self.has_alg:    # IDAS is given consistent derivatives at each start
-            self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
         if self.loops:
             rows = model_equations(model)[0][1]                  # Φ̇ along the motion
             self.speeds = model.function("speeds", [rows, ca.jacobian(rows, model.x)])
-        elif not self.static:
-            self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
-        self.u = ca.Function("u", [model.t], [u_expr])
-        self._g_map, self._u_map = {}, {}
-        self.g = model.indicator_function
         self.update = model.event_update_function
-        self.reinits = model.state_events.reinits
-        self.owner = [v.component for v in model.state_events.indicators]
-        self.names = [v.name for v in model.state_events.indicators]
         self.mode_names = [v.name for v in model.modes]
         self.mode_owner = [v.component for v in model.modes]
         self.allowed = model.state_events.mode_values
         real = set(model.state_events.real_modes)
         self.integer = np.array([n not in real for n in self.mode_names], dtype=bool)
-        self.clocks = list(model.state_events.clocks)
-        self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
         if self.has_alg:
             z, alg_full = model.z, model.alg
             self.newton = model.function("newton", [alg_full, ca.jacobian(alg_full, z)])
-        self.log: list[Event] = []
 
     # ---- evaluation at a point -----------------------------------------------------------
     def params(self, d) -> np.ndarray:
@@ -144,26 +111,9 @@ class EventSimulation:
         p[self.model.mode_params] = d
         return p
 
-    def u_map(self, n: int) -> ca.Function:
-        if n not in self._u_map:
-            self._u_map[n] = self.u.map(n)
-        return self._u_map[n]
-
     def point(self, t, x, z, d):
         """The arguments (t, x, z, u, p) of the seam's Functions."""
         return t, x, z, np.array(self.u(t), dtype=float).ravel(), self.params(d)
-
-    def indicators(self, t, x, z, d) -> np.ndarray:
-        return np.array(self.g(*self.point(t, x, z, d)), dtype=float).ravel()
-
-    def indicators_along(self, times, X, Z, d) -> np.ndarray:
-        """The indicators at each of ``times`` (columns of X, Z), in one call."""
-        n = len(times)
-        if n not in self._g_map:
-            self._g_map[n] = self.g.map(n)
-        T = np.asarray(times, dtype=float).reshape(1, -1)
-        U = np.array(self.u_map(n)(T), dtype=float)
-        return self._g_map[n](T, X, Z, U, self.params(d)).full()
 
     def consistent(self, t, x, z, d, held: dict):
         """(x, z) consistent at t with modes d: in closed loops the speeds moved the least
@@ -198,6 +148,97 @@ class EventSimulation:
                               f"solution at t = {t:g} s with the modes "
                               f"{self._modes(d)}: check the equations the "
                               f"components give for these modes")
+
+    def iterate(self, t, x, z, d, held: dict, keep=()):
+        """The event iteration at (t, x): every mode updated from the present ones, the
+        algebraic variables solved for them (``consistent``, ``held`` states kept), until no
+        mode changes: (x, z, d). ``keep``: positions in d of modes held at their value."""
+        keep = list(keep)
+        seen = [tuple(d)]
+        for _ in range(MAX_ITERATIONS):
+            x, z = self.consistent(t, x, z, d, held)
+            nxt = np.array(self.update(*self.point(t, x, z, d))[0], dtype=float).ravel()
+            nxt[self.integer] = np.round(nxt[self.integer])
+            nxt[keep] = d[keep]
+            if np.array_equal(nxt, d):
+                self._check_values(t, d)
+                return x, z, d
+            d = nxt
+            seen.append(tuple(d))
+        moving = {self.mode_owner[k] for k in range(len(d)) if len({s[k] for s in seen}) > 1}
+        raise SimulationError(
+            f"event iteration at t = {t:g} s does not settle: the modes of "
+            f"{', '.join(sorted(moving))} keep changing ({MAX_ITERATIONS} rounds: "
+            f"{' -> '.join(str(s) for s in seen[-4:])}); check their mode_update for a cycle")
+
+    def _modes(self, d) -> dict:
+        return {n: float(v) for n, v in zip(self.mode_names, d)}
+
+    def _check_values(self, t, d):
+        for name, v, owner in zip(self.mode_names, d, self.mode_owner):
+            allowed = self.allowed.get(name)
+            if allowed is not None and int(v) not in allowed:
+                raise SimulationError(f"at t = {t:g} s the mode_update of '{owner}' gives "
+                                      f"{name} = {v:g}, not one of its values {allowed}")
+
+
+class EventSimulation(ModeIteration):
+    """Integration of ``model`` (an ODE/DAE whose ``ode``/``alg`` are scaled by ``scale``
+    and have the modes as free symbols, every other parameter a number) with its events."""
+
+    def __init__(self, model, ode, alg, p, u_expr, scale, plugin, opts):
+        super().__init__(model, p, ca.Function("u", [model.t], [u_expr]))
+        self.plugin, self.opts = plugin, dict(opts)
+        if self.has_alg:
+            # the integrator restarts at every event with z consistent but not its rate:
+            # the algebraic variables (index 1: functions of x) stay out of the error test;
+            # the start is consistent (``consistent``), so IDAS's own initial-value search
+            # is replaced by the known derivatives (it fails on a start that is consistent
+            # already, e.g. every friction element stuck: IDA_LINESEARCH_FAIL)
+            self.opts.setdefault("suppress_algebraic", True)
+            self.opts["calc_ic"] = False
+        self.Nx, self.Nz = scale[:self.nx], scale[self.nx:]
+        d = model.p[model.mode_params] if model.mode_params else ca.SX(0, 1)
+        self.dae = {"x": model.x, "t": model.t, "ode": ode, "p": d}
+        if self.has_alg:
+            self.dae.update(z=model.z, alg=alg)
+        t0, h, tau = ca.SX.sym("t0"), ca.SX.sym("h"), ca.SX.sym("tau")
+        at = model.t, t0 + h * tau
+        scaled = {"x": model.x, "t": tau, "p": ca.vertcat(t0, h, d),
+                  "ode": h * ca.substitute(ode, *at)}
+        if self.has_alg:
+            scaled.update(z=model.z, alg=ca.substitute(alg, *at))
+        local = {k: v for k, v in self.opts.items() if k not in ("max_step_size", "calc_ic")}
+        self.static = self.nx == 0 and not self.has_alg     # only signals: nothing to integrate
+        if self.has_alg:    # IDAS is given consistent derivatives at each start
+            self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
+        if not self.loops and not self.static:
+            self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
+        self._g_map, self._u_map = {}, {}
+        self.g = model.indicator_function
+        self.reinits = model.state_events.reinits
+        self.owner = [v.component for v in model.state_events.indicators]
+        self.names = [v.name for v in model.state_events.indicators]
+        self.clocks = list(model.state_events.clocks)
+        self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
+        self.log: list[Event] = []
+
+    def indicators(self, t, x, z, d) -> np.ndarray:
+        return np.array(self.g(*self.point(t, x, z, d)), dtype=float).ravel()
+
+    def indicators_along(self, times, X, Z, d) -> np.ndarray:
+        """The indicators at each of ``times`` (columns of X, Z), in one call."""
+        n = len(times)
+        if n not in self._g_map:
+            self._g_map[n] = self.g.map(n)
+        T = np.asarray(times, dtype=float).reshape(1, -1)
+        U = np.array(self.u_map(n)(T), dtype=float)
+        return self._g_map[n](T, X, Z, U, self.params(d)).full()
+
+    def u_map(self, n: int) -> ca.Function:
+        if n not in self._u_map:
+            self._u_map[n] = self.u.map(n)
+        return self._u_map[n]
 
     # ---- integration ---------------------------------------------------------------------
     def integrate(self, t0, times, x, z, d):
@@ -299,26 +340,6 @@ class EventSimulation:
             self.log.append(Event(float(t), ", ".join(owners), "", 0, changed, reinit))
         return x_new, z, d_new
 
-    def iterate(self, t, x, z, d, held: dict):
-        """The event iteration at (t, x): every mode updated from the present ones, the
-        algebraic variables solved for them (``consistent``, ``held`` states kept), until no
-        mode changes: (x, z, d)."""
-        seen = [tuple(d)]
-        for _ in range(MAX_ITERATIONS):
-            x, z = self.consistent(t, x, z, d, held)
-            nxt = np.array(self.update(*self.point(t, x, z, d))[0], dtype=float).ravel()
-            nxt[self.integer] = np.round(nxt[self.integer])
-            if np.array_equal(nxt, d):
-                self._check_values(t, d)
-                return x, z, d
-            d = nxt
-            seen.append(tuple(d))
-        moving = {self.mode_owner[k] for k in range(len(d)) if len({s[k] for s in seen}) > 1}
-        raise SimulationError(
-            f"event iteration at t = {t:g} s does not settle: the modes of "
-            f"{', '.join(sorted(moving))} keep changing ({MAX_ITERATIONS} rounds: "
-            f"{' -> '.join(str(s) for s in seen[-4:])}); check their mode_update for a cycle")
-
     def _first_event(self, G, sides):
         """(the first column of the indicators G off ``sides`` that is an event, or None;
         the sides just before it, inert crossings taken)."""
@@ -339,16 +360,6 @@ class EventSimulation:
         crossed = {k: new[k] for k in np.flatnonzero(new != sides)}
         return not any(r.indicator in crossed and r.direction in (0, crossed[r.indicator])
                        for r in self.reinits)
-
-    def _modes(self, d) -> dict:
-        return {n: float(v) for n, v in zip(self.mode_names, d)}
-
-    def _check_values(self, t, d):
-        for name, v, owner in zip(self.mode_names, d, self.mode_owner):
-            allowed = self.allowed.get(name)
-            if allowed is not None and int(v) not in allowed:
-                raise SimulationError(f"at t = {t:g} s the mode_update of '{owner}' gives "
-                                      f"{name} = {v:g}, not one of its values {allowed}")
 
     def run(self, grid, x, z, time_events):
         """Integrate over ``grid`` from (x, z) at grid[0]: (T, X, Z, D) with the left and right
