@@ -238,13 +238,19 @@ class EventSimulation:
         return xf, zf
 
     # ---- events --------------------------------------------------------------------------
-    def locate(self, t0, x0, z0, d, sides, t1):
-        """The first crossing in (t0, t1] (some indicator off its ``sides`` at t1): (t, x, z,
-        indicators) at the bracket's end after it, the event's left limit."""
+    def locate(self, t0, x0, z0, d, sides, t1, x1, z1):
+        """The first crossing in (t0, t1] (some indicator off its ``sides`` at t1, where the
+        integration gave x1, z1): (t, x, z, indicators) at the bracket's end after it, the
+        event's left limit."""
         lo_t, lo_g = t0, self.indicators(t0, x0, z0, d)
         hi_t = t1
         hi_x, hi_z = self.state_at(t0, x0, z0, d, t1)
         hi_g = self.indicators(t1, hi_x, hi_z, d)
+        if not np.any(side(hi_g, sides) != sides):
+            # the re-integration ends on the near side where the indicator is within the
+            # integrators' error of 0 at t1 (a crossing at an output time): bracket up to t1
+            hi_x, hi_z = x1, z1
+            hi_g = self.indicators(t1, hi_x, hi_z, d)
         tol = EVENT_TOL * max(1.0, abs(t1))
         widths = [hi_t - lo_t]
         while hi_t - lo_t > tol:
@@ -381,7 +387,7 @@ class EventSimulation:
                     continue
                 window = max(FIRST_WINDOW, 2 * (i + 1))
                 prev = (times[i - 1], X[:, i - 1], Z[:, i - 1]) if i else (t, x, z)
-                te, xe, ze, ge = self.locate(*prev, d, sides, times[i])
+                te, xe, ze, ge = self.locate(*prev, d, sides, times[i], X[:, i], Z[:, i])
                 new = side(ge, sides)
                 crossed = {k: int(new[k]) for k in np.flatnonzero(new != sides)}
                 cols.append((te, xe, ze, d))
