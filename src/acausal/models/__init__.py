@@ -18,11 +18,12 @@ no compiler or simulation imports.
     oscillators         Oscillator: mass on a spring and a damper
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
-    clutches            CoupledClutches: MSL's drive train with 3 coupled clutches
+    clutches            CoupledClutches: MSL's drive train with 3 coupled clutches;
+                        OneWayClutchDrive, OneWayClutchDisengaged: MSL's one-way clutch
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
-from .clutches import CoupledClutches
+from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .cartpole import CartPole
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
@@ -40,4 +41,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "GantryCrane", "CubicSpring", "F
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
            "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
            "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain",
-           "RotationalFriction", "CoupledClutches"]
+           "RotationalFriction", "CoupledClutches",
+           "OneWayClutchDrive", "OneWayClutchDisengaged"]
