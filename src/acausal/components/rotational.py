@@ -502,7 +502,8 @@ class OneWayClutch(_Overrunning):
     while locked; sa − tau0 while starting to slide), ``u`` (f_normalized); when it locks or
     breaks away, flange_b's speed is set to flange_a's (w_rel = 0 exactly): flange_b's speed
     must be a state. Records u, fn, mu, free, tau0, tau0_max, sa, locked, stuck,
-    startForward, phi_rel, w_rel, a_rel, tau and lossPower = 0 if stuck else tau·w_rel [W].
+    startForward, phi_rel, w_rel, a_rel, tau and lossPower = 0 if stuck else tau·w_rel [W]
+    (MSL's OneWayClutch has no ``mode``: stuck, startForward and locked say it).
     Not here: MSL's ``initial() and w_rel > 0`` term, which only sets startForward at the
     initial instant (nothing else depends on it there). As in MSL, the relative speed must
     start ≥ 0.
@@ -517,9 +518,13 @@ class OneWayClutch(_Overrunning):
     at w_rel ≫ w_smooth, the lock drags with d_smooth·w_smooth·exp(−w_rel/w_smooth) (< 1e-3 of
     d_smooth·w_smooth beyond w_rel > 6.9·w_smooth) and the friction is low by at most
     2·mu·cgeo·fn·exp(−2·w_rel/w_smooth); (3) a positive held torque T < tau0 creeps forward at
-    about w_smooth·artanh(T/tau0), and there is no stiction peak (it breaks away at tau0).
-    A stiffer lock (larger d_smooth) creeps less and makes the equations stiffer: the time
-    constant of the lock is about J/d_smooth.
+    about w_smooth·artanh(T/tau0), and there is no stiction peak (it breaks away at tau0);
+    (4) with nothing to hold, an engaged clutch settles not at w_rel = 0 but where
+    tau0·tanh(w_rel/w_smooth) = d_smooth·w_smooth·ln(1 + exp(−w_rel/w_smooth)) (the lock
+    pulls with d_smooth·w_smooth·ln 2 at w_rel = 0): 1.3e-4 rad/s for tau0 = 5 N.m and the
+    defaults. A stiffer lock (larger d_smooth) creeps less and makes the equations stiffer:
+    the time constant of the lock is about J/d_smooth. Recorded in the smooth form: u, fn, mu
+    (at |w_rel|), free, tau0, tau0_max, phi_rel, w_rel, a_rel, tau, lossPower = tau·w_rel.
     """
     peak = Parameter(1.0, "1", "peak for maximum value of mu at w==0 (mu0_max = "
                                "peak*mu_pos[1,2])")
