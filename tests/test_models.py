@@ -31,6 +31,10 @@ CASES = {
     "oscillator": (models.Oscillator, ["mass.s"], [], []),
     "duffing": (models.duffing_model, ["mass.s"], [], []),
     "motor": (models.motor_model, ["rotor.phi"], ["motor.i"], ["V"]),
+    "coupled_clutches": (models.CoupledClutches, [f"J{k}.phi" for k in (1, 2, 3, 4)], [], []),
+    "one_way_clutch": (models.OneWayClutchDrive, ["inertiaIn.phi", "inertiaOut.phi"], [], []),
+    "one_way_clutch_disengaged": (models.OneWayClutchDisengaged,
+                                  ["inertiaIn.phi", "inertiaOut.phi"], [], []),
 }
 
 

@@ -301,3 +301,31 @@ def test_closed_loop_elastic_stop_retraces_its_path():
     back = compiled.simulate(2 * t_1, rtol=1e-10, atol=1e-12, **start)
     assert back.final("rev1.phi") == pytest.approx(phi0, abs=1e-7)
     assert abs(back.final("rev1.w")) < 1e-6
+
+
+def test_a_crossing_the_re_integration_misses_at_its_check_is_still_located(monkeypatch):
+    """A crossing the integration saw at a check, where the re-integration up to that check
+    ends on the near side (the indicator within the integrators' error of 0 there, as on an
+    output grid holding the event times of a reference result): located between the two
+    checks all the same. Here the re-integration is made to land on the near side."""
+    from acausal.simulation import events
+    locate, state_at = events.EventSimulation.locate, events.EventSimulation.state_at
+
+    def near_side_first(self, t0, x0, z0, d, sides, t1, x1, z1):
+        calls = []
+
+        def misses(sim, a, x, z, d_, t):        # the first call: the state at t0, not t1
+            calls.append(t)
+            return state_at(sim, a, x, z, d_, a if len(calls) == 1 else t)
+        monkeypatch.setattr(events.EventSimulation, "state_at", misses)
+        try:
+            return locate(self, t0, x0, z0, d, sides, t1, x1, z1)
+        finally:
+            monkeypatch.setattr(events.EventSimulation, "state_at", state_at)
+
+    monkeypatch.setattr(events.EventSimulation, "locate", near_side_first)
+    res = acausal.compile(block(ConstantForce(f_constant=0.0))).simulate(
+        5.0, x0={"mass.v": 1.0}, rtol=1e-10, atol=1e-12)
+    start, stop = res.events
+    assert stop.time == pytest.approx(M * 1.0 / F_C, abs=1e-9)
+    assert stop.modes == {"friction.mode": (1.0, 0.0)}

@@ -22,7 +22,8 @@ classes here declare MSL's connectors and names on top of them.
 
 Differences from MSL, by necessity of a Python library, are listed in each docstring.
 Coulomb friction (BearingFriction, Brake, Clutch) has MSL's mode machine on state events
-(see ``friction``); backlash and stops are not here yet.
+(see ``friction``); OneWayClutch has MSL's own (a freewheel in parallel with a clutch), and
+Freewheel (not an MSL class) is its freewheel alone; backlash and stops are not here yet.
 """
 from __future__ import annotations
 
@@ -33,11 +34,13 @@ import casadi as ca
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
                     RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import ROTATIONAL
+from ..errors import ParameterError
 from . import friction, interfaces
 from .interfaces import ROTATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
 Flange = RotationalFlange
 _EPS = 2.220446049250313e-16      # Modelica.Constants.eps
+_EPS0 = 1.0e-4                     # OneWayClutch.eps0, relative hysteresis epsilon
 
 __all__ = [
     # interfaces
@@ -48,6 +51,7 @@ __all__ = [
     # components
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
+    "OneWayClutch", "Freewheel",
     # sources
     "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "TorqueStep", "Position", "Speed", "Accelerate", "Move",
@@ -397,6 +401,183 @@ class Clutch(PartialCompliantWithRelativeStates, friction.NormalForceFriction,
                    nominal=self.rel_nominal())
         e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))")
         e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
+
+
+class _Overrunning(PartialCompliantWithRelativeStates):
+    """The mode machine of MSL's OneWayClutch, shared by OneWayClutch and Freewheel (see
+    OneWayClutch). A subclass gives ``_engagement(e, w)``: (free, tau0, tau0_max, tau_slide)
+    with tau_slide the friction torque [N.m] when sliding forward at w_rel = w."""
+    options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
+    w_small = Parameter(1.0e10, "rad/s", "relative angular velocity near to zero if jumps due "
+                                         "to a reinit(..) of the velocity can occur",
+                        positive=True)
+    w_smooth = Parameter(1e-3, "rad/s", "smooth form only: speed scale of the regularization "
+                                        "(tanh of the friction, softplus of the lock)",
+                         positive=True)
+    d_smooth = Parameter(1e3, "N.m.s/rad", "smooth form only: one-sided damping that holds "
+                                           "the lock (a held torque T creeps at about "
+                                           "-|T|/d_smooth)", positive=True)
+
+    def _engagement(self, e, w):
+        raise NotImplementedError
+
+    def structure(self, s):
+        if s.smooth:                     # no modes, no algebraic: tau is the regularized law
+            return
+        s.mode("startForward", 0, values=(0, 1),
+               description="= true, if w_rel=0 and start of forward sliding or "
+                           "w_rel > w_small")
+        s.mode("stuck", 0, values=(0, 1),
+               description="w_rel=0 (locked or start forward sliding)")
+        s.algebraic("sa", unit="1",
+                    description="path parameter of tau = f(a_rel) friction characteristic")
+
+    def physics(self, e):
+        w_rel = e.vel(self.flange_b) - e.vel(self.flange_a)
+        a_rel = e.acc(self.flange_b) - e.acc(self.flange_a)
+        if e.smooth:
+            free, tau0, tau0_max, slide = self._engagement(e, ca.fabs(w_rel))
+            x = -w_rel / self.w_smooth                     # softplus(x) = ln(1 + exp(x))
+            lock = self.d_smooth * self.w_smooth * (ca.fmax(x, 0.0)
+                                                    + ca.log1p(ca.exp(-ca.fabs(x))))
+            tau = ca.if_else(free, 0.0, slide * ca.tanh(w_rel / self.w_smooth)) - lock
+            loss = tau * w_rel
+        else:
+            free, tau0, tau0_max, slide = self._engagement(e, w_rel)
+            stuck, start, sa = e.mode("stuck"), e.mode("startForward"), e.state("sa")
+            locked = ca.logic_and(stuck, ca.logic_not(start))
+            tau = ca.if_else(locked, sa, ca.if_else(free, 0.0, slide))
+            e.residual(a_rel - ca.if_else(locked, 0.0, sa - tau0))
+            # MSL: startForward = pre(stuck) and (sa > tau0_max or pre(startForward) and
+            # sa > tau0 or w_rel > w_small); locked = pre(stuck) and not startForward;
+            # stuck = locked or w_rel <= 0
+            starts = ca.logic_and(stuck, ca.logic_or(
+                ca.logic_or(sa > tau0_max, ca.logic_and(start, sa > tau0)),
+                w_rel > self.w_small))
+            e.mode_update(start, starts)
+            e.mode_update(stuck, ca.logic_or(ca.logic_and(stuck, ca.logic_not(starts)),
+                                             w_rel <= 0))
+            e.indicator("sliding", ca.if_else(locked, -1.0, w_rel), "rad/s",
+                        "w_rel while not locked (falls through 0: stuck; rises: sliding)")
+            e.indicator("breakaway", ca.if_else(locked, tau0_max - sa, ca.if_else(
+                ca.logic_and(stuck, start), sa - tau0, 1.0)), "1",
+                "tau0_max - sa while locked, sa - tau0 while starting to slide forward")
+            for when in ("sliding", "breakaway"):          # w_rel = 0 exactly at either
+                e.reinit(e.vel(self.flange_b), e.vel(self.flange_a), when=when,
+                         direction=-1)
+            e.variable("locked", locked, "", "= true, if w_rel=0 and not sliding")
+            e.variable("sa", sa, "1", "path parameter of tau = f(a_rel) friction "
+                                      "characteristic")
+            loss = ca.if_else(stuck, 0.0, tau * w_rel)
+        self._apply_opposite_flows(e, tau)
+        e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad",
+                   "relative rotation angle (= flange_b.phi - flange_a.phi)",
+                   nominal=self.rel_nominal())
+        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))")
+        e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
+        e.variable("tau", tau, "N.m", "torque between flanges (= flange_b.tau)")
+        e.variable("free", free, "", "= true, if frictional element is not active")
+        e.variable("tau0", tau0, "N.m", "friction torque for w=0 and sliding")
+        e.variable("tau0_max", tau0_max, "N.m", "maximum friction torque for w=0 and locked")
+        e.variable("lossPower", loss, "W", "loss power leaving component via heatPort")
+
+
+class OneWayClutch(_Overrunning):
+    """Parallel connection of freewheel and clutch (MSL's OneWayClutch): w_rel = der(phi_rel),
+    phi_rel = flange_b.phi − flange_a.phi, tau = flange_b.tau = −flange_a.tau [N.m].
+
+    The freewheel locks when w_rel would become negative and holds any negative tau (it
+    drives flange_b with flange_a); the clutch, pressed by fn = fn_max·f_normalized [N]
+    (free when f_normalized ≤ 0, fn = 0), brakes the overrunning flange_b with tau =
+    mu(w_rel)·cgeo·fn when w_rel > 0 and, locked, holds tau up to tau0_max = peak2·tau0,
+    tau0 = mu0·cgeo·fn, mu0 = mu_pos(0), peak2 = max(peak, 1 + 1e-4) (free: up to
+    tau0_max_low = 1e-4·mu0·cgeo·fn_max). ``mu_pos``: constructor keyword, rows [w_rel, mu]
+    (w_rel ≥ 0), default [[0, 0.5]], linear with extrapolation through the last two rows.
+    fn_max defaults to 1 N (MSL's start value). useHeatPort only False.
+
+    MSL's equations, on state events: the Boolean modes ``stuck`` and ``startForward`` (both
+    start false, as MSL's start values) and the algebraic path parameter ``sa``:
+    locked = stuck and not startForward; a_rel = 0 if locked else sa − tau0; tau = sa if
+    locked, else 0 if free, else mu·cgeo·fn. At every event (iterated until they settle):
+    startForward = stuck and (sa > tau0_max or startForward and sa > tau0 or w_rel > w_small),
+    stuck = (stuck and not startForward) or w_rel ≤ 0, as MSL updates them from their pre
+    values. Indicators: ``sliding`` (w_rel while not locked), ``breakaway`` (tau0_max − sa
+    while locked; sa − tau0 while starting to slide), ``u`` (f_normalized); when it locks or
+    breaks away, flange_b's speed is set to flange_a's (w_rel = 0 exactly): flange_b's speed
+    must be a state. Records u, fn, mu, free, tau0, tau0_max, sa, locked, stuck,
+    startForward, phi_rel, w_rel, a_rel, tau and lossPower = 0 if stuck else tau·w_rel [W]
+    (MSL's OneWayClutch has no ``mode``: stuck, startForward and locked say it).
+    Not here: MSL's ``initial() and w_rel > 0`` term, which only sets startForward at the
+    initial instant (nothing else depends on it there). As in MSL, the relative speed must
+    start ≥ 0.
+
+    Smooth form (``compile(model, smooth=True)``): no modes, indicators or algebraic;
+    tau = mu(|w_rel|)·cgeo·fn·tanh(w_rel/w_smooth) (0 when free)
+    − d_smooth·w_smooth·ln(1 + exp(−w_rel/w_smooth)), the clutch as PartialFriction's smooth
+    form and the freewheel a one-sided damper d_smooth [N.m.s/rad] smoothed over w_smooth
+    [rad/s]. Its error against the exact form: (1) where the exact form holds a torque T < 0
+    locked, the smooth form slips backward at w_rel = −w_smooth·ln(exp(|T|/(d_smooth·w_smooth))
+    − 1) ≈ −|T|/d_smooth (|T| ≫ d_smooth·w_smooth) plus the clutch's share; (2) overrunning
+    at w_rel ≫ w_smooth, the lock drags with d_smooth·w_smooth·exp(−w_rel/w_smooth) (< 1e-3 of
+    d_smooth·w_smooth beyond w_rel > 6.9·w_smooth) and the friction is low by at most
+    2·mu·cgeo·fn·exp(−2·w_rel/w_smooth); (3) a positive held torque T < tau0 creeps forward at
+    about w_smooth·artanh(T/tau0), and there is no stiction peak (it breaks away at tau0);
+    (4) with nothing to hold, an engaged clutch settles not at w_rel = 0 but where
+    tau0·tanh(w_rel/w_smooth) = d_smooth·w_smooth·ln(1 + exp(−w_rel/w_smooth)) (the lock
+    pulls with d_smooth·w_smooth·ln 2 at w_rel = 0): 1.3e-4 rad/s for tau0 = 5 N.m and the
+    defaults. A stiffer lock (larger d_smooth) creeps less and makes the equations stiffer:
+    the time constant of the lock is about J/d_smooth. Recorded in the smooth form: u, fn, mu
+    (at |w_rel|), free, tau0, tau0_max, phi_rel, w_rel, a_rel, tau, lossPower = tau·w_rel.
+    """
+    peak = Parameter(1.0, "1", "peak for maximum value of mu at w==0 (mu0_max = "
+                               "peak*mu_pos[1,2])")
+    cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "
+                               "assumption", nonnegative=True)
+    fn_max = Parameter(1.0, "N", "maximum normal force", nonnegative=True)
+    f_normalized = RealInput("normalized force signal 0..1 (normal force = "
+                             "fn_max*f_normalized; clutch is engaged if > 0)")
+
+    def __init__(self, name: str | None = None, **params):
+        table = params.pop("mu_pos", ((0.0, 0.5),))
+        super().__init__(name, **params)
+        if self.peak < 1:
+            raise ParameterError(f"parameter 'OneWayClutch.peak' must be >= 1 (MSL: min = 1), "
+                                 f"got {self.peak}")
+        self.__dict__["table"] = friction.check_table(table, "mu_pos", "OneWayClutch")
+
+    def _engagement(self, e, w):
+        u = e.input(self.f_normalized)
+        free = u <= 0
+        fn = ca.if_else(free, 0.0, self.fn_max * u)
+        mu0 = friction.table_value(self.table, 0.0)
+        mu = friction.table_value(self.table, w)
+        tau0 = mu0 * self.cgeo * fn
+        tau0_max = ca.if_else(free, _EPS0 * mu0 * self.cgeo * self.fn_max,
+                              ca.fmax(self.peak, 1 + _EPS0) * tau0)
+        if not e.smooth:
+            e.indicator("u", u, "1", "normalized force input (free when <= 0)")
+        e.variable("u", u, "1", "normalized force input signal (0..1)")
+        e.variable("fn", fn, "N", "normal force (fn=fn_max*inPort.signal)")
+        e.variable("mu", mu, "1", "friction coefficient")
+        return free, tau0, tau0_max, mu * self.cgeo * fn
+
+
+class Freewheel(_Overrunning):
+    """Ideal freewheel (overrunning clutch) between flange_a and flange_b. Not an MSL class
+    (MSL 4.1 has none): OneWayClutch without its clutch, f_normalized ≡ 0 with a zero
+    threshold. w_rel = der(flange_b.phi − flange_a.phi) ≥ 0, tau = flange_b.tau =
+    −flange_a.tau [N.m]: locked (w_rel = 0) it holds any tau ≤ 0, flange_a driving flange_b;
+    it frees as soon as the torque that holds it turns positive (flange_b would overrun) and
+    runs free (tau = 0) while w_rel > 0, until w_rel falls back to 0.
+
+    The mode machine, indicators, reinits and records are OneWayClutch's with free = true,
+    tau0 = tau0_max = 0 (OneWayClutch holds up to tau0_max_low = 1e-4·mu0·cgeo·fn_max when
+    free); its smooth form is OneWayClutch's lock alone: tau = −d_smooth·w_smooth·
+    ln(1 + exp(−w_rel/w_smooth)), with OneWayClutch's errors (1) and (2)."""
+
+    def _engagement(self, e, w):
+        return ca.SX(1), ca.SX(0), ca.SX(0), ca.SX(0)
+
 
 # =========================================================================================
 # Sources

@@ -19,10 +19,13 @@ no compiler or simulation imports.
     oscillators         Oscillator: mass on a spring and a damper
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
+    clutches            CoupledClutches: MSL's drive train with 3 coupled clutches;
+                        OneWayClutchDrive, OneWayClutchDisengaged: MSL's one-way clutch
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
+from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
@@ -35,8 +38,9 @@ from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
 
-__all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
-           "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
-           "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
-           "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain",
-           "RotationalFriction"]
+__all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane", "CubicSpring",
+           "Flywheel", "SimpleDCMotor", "duffing_model", "motor_model", "DiskDriveHead",
+           "Drivetrain", "DrivenFourBar", "ElasticBearing", "FourBar", "KinematicLoop",
+           "Parallelogram", "PistonEngine", "SliderCrank", "add_link", "Oscillator",
+           "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
+           "OneWayClutchDrive", "OneWayClutchDisengaged"]

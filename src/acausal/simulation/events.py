@@ -279,13 +279,19 @@ class EventSimulation(ModeIteration):
         return xf, zf
 
     # ---- events --------------------------------------------------------------------------
-    def locate(self, t0, x0, z0, d, sides, t1):
-        """The first crossing in (t0, t1] (some indicator off its ``sides`` at t1): (t, x, z,
-        indicators) at the bracket's end after it, the event's left limit."""
+    def locate(self, t0, x0, z0, d, sides, t1, x1, z1):
+        """The first crossing in (t0, t1] (some indicator off its ``sides`` at t1, where the
+        integration gave x1, z1): (t, x, z, indicators) at the bracket's end after it, the
+        event's left limit."""
         lo_t, lo_g = t0, self.indicators(t0, x0, z0, d)
         hi_t = t1
         hi_x, hi_z = self.state_at(t0, x0, z0, d, t1)
         hi_g = self.indicators(t1, hi_x, hi_z, d)
+        if not np.any(side(hi_g, sides) != sides):
+            # the re-integration ends on the near side where the indicator is within the
+            # integrators' error of 0 at t1 (a crossing at an output time): bracket up to t1
+            hi_x, hi_z = x1, z1
+            hi_g = self.indicators(t1, hi_x, hi_z, d)
         tol = EVENT_TOL * max(1.0, abs(t1))
         widths = [hi_t - lo_t]
         while hi_t - lo_t > tol:
@@ -343,12 +349,16 @@ class EventSimulation(ModeIteration):
     def _first_event(self, G, sides):
         """(the first column of the indicators G off ``sides`` that is an event, or None;
         the sides just before it, inert crossings taken)."""
-        for i in range(G.shape[1]):
-            new = side(G[:, i], sides)
-            if np.any(new != sides):
-                if not self._inert(new, sides):
-                    return i, sides
-                sides = new
+        first = 0
+        while first < G.shape[1]:
+            S = side(G[:, first:], sides[:, None])
+            off = np.flatnonzero(np.any(S != sides[:, None], axis=0))
+            if not off.size:
+                break
+            i, new = first + off[0], S[:, off[0]]
+            if not self._inert(new, sides):
+                return i, sides
+            sides, first = new, i + 1
         return None, sides
 
     def _inert(self, new, sides) -> bool:
@@ -378,21 +388,21 @@ class EventSimulation(ModeIteration):
         for stop in stops:
             end = stop if stop == grid[-1] else just_before(stop)
             while t < end:
-                times = _checks(grid, t, end, window)
+                times, output = _checks(grid, t, end, window)
                 X, Z = self.integrate(t, times, x, z, d)
                 i, after = self._first_event(self.indicators_along(times, X, Z, d), sides)
                 if i is None and times[-1] != end and window < MAX_WINDOW:
                     window *= 2         # again from t, further (no restart mid-way)
                     continue
-                cols += [(tt, X[:, k], Z[:, k], d) for k, tt in
-                         enumerate(times[:len(times) if i is None else i]) if tt in grid]
+                cols += [(times[k], X[:, k], Z[:, k], d)
+                         for k in np.flatnonzero(output[:len(times) if i is None else i])]
                 sides = after
                 if i is None:
                     t, x, z = times[-1], X[:, -1], Z[:, -1]
                     continue
                 window = max(FIRST_WINDOW, 2 * (i + 1))
                 prev = (times[i - 1], X[:, i - 1], Z[:, i - 1]) if i else (t, x, z)
-                te, xe, ze, ge = self.locate(*prev, d, sides, times[i])
+                te, xe, ze, ge = self.locate(*prev, d, sides, times[i], X[:, i], Z[:, i])
                 new = side(ge, sides)
                 crossed = {k: int(new[k]) for k in np.flatnonzero(new != sides)}
                 cols.append((te, xe, ze, d))
@@ -453,19 +463,24 @@ class EventSimulation(ModeIteration):
             f"that holds at the switching surface (a stuck mode) or end the simulation before")
 
 
-def _checks(grid, t, end, limit: int) -> list[float]:
+def _checks(grid, t, end, limit: int):
     """The output times in (t, end], end itself, and checks between them: CHECKS per output
     interval, none further apart than 1/CHECKS_PER_RUN of the simulated time; the first
-    ``limit`` of them."""
+    ``limit`` of them, and whether each is an output time."""
     spacing = (grid[-1] - grid[0]) / CHECKS_PER_RUN
     stops = grid[(grid > t) & (grid <= end)][:limit]
+    output = np.ones(len(stops), dtype=bool)
     if not len(stops) or stops[-1] != end:
-        stops = np.append(stops, end)
-    out, a = [], t
-    for b in stops:
-        if len(out) >= limit:
-            break
-        n = max(CHECKS, int(np.ceil((b - a) / spacing)))
-        out += list(np.linspace(a, b, n + 1)[1:-1]) + [float(b)]
-        a = b
-    return out[:limit]
+        stops, output = np.append(stops, end), np.append(output, False)
+    starts = np.concatenate([[t], stops[:-1]])
+    counts = np.maximum(CHECKS, np.ceil((stops - starts) / spacing).astype(int))
+    rows = [None] * len(stops)
+    for n in np.unique(counts):                  # the intervals of n checks, together
+        k = np.flatnonzero(counts == n)
+        block = starts[k, None] + (stops - starts)[k, None] * (np.arange(1, n + 1) / n)
+        block[:, -1] = stops[k]
+        for r, row in zip(k, block):
+            rows[r] = row
+    flags = np.zeros(int(counts.sum()), dtype=bool)
+    flags[np.cumsum(counts) - 1] = output
+    return np.concatenate(rows)[:limit], flags[:limit]
