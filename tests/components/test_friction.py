@@ -293,3 +293,23 @@ def test_drive_train_with_clutch_and_brake_matches_the_msl_reference(reference_r
                  "spring.phi_rel", "spring.w_rel"):
         values = ref[name]
         assert np.max(np.abs(res[name][at] - values)) < 2e-3 * np.max(np.abs(values)), name
+
+
+
+def test_stuck_cart_breaks_away_at_a_force_step_whatever_the_roundoff_of_its_speed():
+    """The friction cart-pole's cart is stuck (peak 1, f_c = 2 N) while its pole swings from
+    0.3 rad, its speed off 0 by the integrator's roundoff only; the push stepped to 3 N at
+    t1 (a time event, no reinit) starts forward sliding there, once (MSL keeps startForward
+    until the speed leaves 0), and the cart sticks no more before t1 + 0.1 s."""
+    from acausal.models import FrictionCartPole
+    from acausal.simulation.inputs import Samples
+    t1 = 1.0
+    compiled = acausal.compile(FrictionCartPole())
+    res = compiled.simulate(t1 + 0.1, x0={"hinge.phi": 0.3}, **TOL,
+                            inputs={"F": Samples([0.0, t1, 2.0], [0.0, 3.0, 3.0], "hold")})
+    before = res.t < t1
+    assert 0 < np.abs(res["rail.v"][before]).max() <= 1e-12       # stuck, up to roundoff
+    modes = [(ev.time, ev.modes["friction.mode"]) for ev in res.events
+             if "friction.mode" in ev.modes]
+    assert modes == [(0.0, (3.0, 0.0)), (t1, (0.0, 1.0))]
+    assert np.all(res["rail.v"][res.t > t1] > 0)

@@ -181,20 +181,22 @@ class PartialFriction(Component):
         e.reinit(state, zero, when="breakaway", direction=-1)      # at rest exactly
 
         # startForward: broken away from stuck (the torque that held it beyond tau0_max),
-        # kept while w_relfric = 0, so that sliding that starts with an acceleration ~0
-        # (peak = 1) does not fall back to stuck; cleared at the event of indicator "start",
-        # w_relfric leaving 0 (MSL: mode becomes Forward when w_relfric > 0)
+        # kept until w_relfric leaves 0 forward (the event of indicator "start"; MSL: mode
+        # becomes Forward when w_relfric > 0), so that sliding that starts with an
+        # acceleration ~0 (peak = 1) does not fall back to stuck, nor a stuck element whose
+        # speed the integrator left a roundoff below 0 (no reinit at a time event)
         small = self._small()
         breaks_fwd = ca.logic_and(mode == STUCK, tau > tau0_max)
         breaks_bwd = ca.logic_and(mode == STUCK, tau < -tau0_max)
-        e.mode_update(start_fwd, ca.logic_and(ca.logic_not(free), ca.logic_or(breaks_fwd, ca.logic_and(
-            start_fwd, ca.logic_and(mode == FORWARD, w == 0)))))
-        e.mode_update(start_bwd, ca.logic_and(ca.logic_not(free), ca.logic_or(breaks_bwd, ca.logic_and(
-            start_bwd, ca.logic_and(mode == BACKWARD, w == 0)))))
+        active = ca.logic_not(free)
+        e.mode_update(start_fwd, ca.logic_and(active, ca.logic_or(breaks_fwd, ca.logic_and(
+            start_fwd, ca.logic_and(mode == FORWARD, w <= 0)))))
+        e.mode_update(start_bwd, ca.logic_and(active, ca.logic_or(breaks_bwd, ca.logic_and(
+            start_bwd, ca.logic_and(mode == BACKWARD, w >= 0)))))
         sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
         from_stuck = ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD, STUCK))
-        keeps_forward = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
-        keeps_backward = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
+        keeps_forward = ca.logic_or(ca.logic_or(w > 0, start_fwd), ca.logic_and(w == 0, a > 0))
+        keeps_backward = ca.logic_or(ca.logic_or(w < 0, start_bwd), ca.logic_and(w == 0, a < 0))
         from_forward = ca.if_else(keeps_forward, FORWARD, ca.if_else(w < -small, BACKWARD,
                                                                       STUCK))
         from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,
