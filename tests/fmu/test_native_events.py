@@ -225,8 +225,9 @@ def fmu_check(fmu: Path, kind: str, T: float, h: float, out: Path) -> np.ndarray
 @pytest.mark.parametrize("name", list(CASES))
 def test_fmu_compliance_checker(fmus, name, tmp_path):
     """FMI 2.0: the checker finds nothing in model exchange (its forward Euler, events at its
-    steps' ends: the ball's impacts a step late at most) nor in co-simulation, whose results
-    equal compiled.simulate to 1e-6 of each signal's peak, from the models' default starts."""
+    steps' ends) nor in co-simulation, whose results equal compiled.simulate to 1e-6 of each
+    signal's peak, from the models' default starts (the checker sets none; the ball starts
+    at rest on the floor)."""
     make, T, dt, _, signals, modes = CASES[name]
     compiled = fmus[name][0]
     cs = fmu_check(fmus[name, "2.0"], "cs", T, dt, tmp_path / "cs.csv")
@@ -234,12 +235,7 @@ def test_fmu_compliance_checker(fmus, name, tmp_path):
     for n in signals:
         e = np.max(np.abs(at(cs["time"], cs[n], cs["time"]) - at(ref.t, ref[n], cs["time"])))
         assert e / max(np.max(np.abs(ref[n])), 1e-300) < RTOL, (name, n, e)
-    me = fmu_check(fmus[name, "2.0"], "me", T, 1e-4, tmp_path / "me.csv")
-    if name == "ball":           # Euler: each impact within its steps of the exact one
-        got = me["time"][1:][(me["ball.v"][:-1] < 0) & (me["ball.v"][1:] > 0)]
-        want = [e.time for e in ref.events]
-        assert len(got) == len(want)
-        assert np.max(np.abs(got - want)) < 1e-3
+    fmu_check(fmus[name, "2.0"], "me", T, 1e-4, tmp_path / "me.csv")
 
 
 # ---- errors -------------------------------------------------------------------------------------
