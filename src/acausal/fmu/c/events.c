@@ -6,7 +6,9 @@
 #include "instance.h"
 #include "model_functions.h"
 
-static double side_of(double g, double before) { return g > 0 ? 1.0 : g < 0 ? -1.0 : before; }
+double ac_side(double g, double before) { return g > 0 ? 1.0 : g < 0 ? -1.0 : before; }
+
+double ac_reported(double g, double side) { return g + (side < 0 ? -AC_HYSTERESIS : AC_HYSTERESIS); }
 
 int ac_indicators_at(ac_inst *m, double t, const double *x, double *z, double *g) {
 #if AC_NG > 0
@@ -43,13 +45,14 @@ static int inert(const int *dir) {
 int ac_crossing(ac_inst *m, const double *g, int accept) {
     int dir[AC_D(AC_NG)], i, any = 0;
     for (i = 0; i < AC_NG; i++) {
-        double s = side_of(g[i], m->d.sides[i]);
+        double s = ac_side(ac_reported(g[i], m->d.sides[i]), m->d.sides[i]);
         dir[i] = s != m->d.sides[i] ? (int)s : 0;
         any |= dir[i] != 0;
     }
     if (!any) return 0;
     if (!inert(dir)) return 1;
-    if (accept) for (i = 0; i < AC_NG; i++) m->d.sides[i] = side_of(g[i], m->d.sides[i]);
+    if (accept)
+        for (i = 0; i < AC_NG; i++) m->d.sides[i] = ac_side(ac_reported(g[i], m->d.sides[i]), m->d.sides[i]);
     return 0;
 }
 
@@ -57,8 +60,10 @@ int ac_event_indicators(ac_inst *m, double *g, size_t n) {
     int i;
     if (n != AC_NG) return ERR("expected %d event indicators, got %d", AC_NG, (int)n);
     if (here(m, g)) return AC_ERROR;
-    for (i = 0; i < AC_NG; i++)      /* an exact zero is on the side it was on */
+    for (i = 0; i < AC_NG; i++) {    /* an exact zero is on the side it was on */
+        g[i] = ac_reported(g[i], m->d.sides[i]);
         if (g[i] == 0.0) g[i] = (m->d.sides[i] < 0 ? -1.0 : 1.0) * 1e-300;
+    }
     return AC_OK;
 }
 
@@ -117,7 +122,8 @@ int ac_state_event(ac_inst *m, int start, int *changed) {
     if (AC_NG == 0 && AC_NMODE == 0) return AC_OK;
     if (here(m, g)) return AC_ERROR;
     for (i = 0; i < AC_NG; i++) {
-        after[i] = side_of(g[i], start ? 1.0 : m->d.sides[i]);
+        double before = start ? 1.0 : m->d.sides[i];
+        after[i] = ac_side(ac_reported(g[i], before), before);
         dir[i] = !start && after[i] != m->d.sides[i] ? (int)after[i] : 0;
         any |= dir[i] != 0;
     }
@@ -144,7 +150,7 @@ int ac_state_event(ac_inst *m, int start, int *changed) {
     }
     if (iterate(m, &ch)) return AC_ERROR;
     if (here(m, g)) return AC_ERROR;          /* the sides at the right limit */
-    for (i = 0; i < AC_NG; i++) m->d.sides[i] = side_of(g[i], after[i]);
+    for (i = 0; i < AC_NG; i++) m->d.sides[i] = ac_side(ac_reported(g[i], after[i]), after[i]);
     if (changed) *changed = ch;
     return AC_OK;
 }

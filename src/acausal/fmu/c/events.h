@@ -6,8 +6,15 @@
  *   - at an event: the reinits of the crossed indicators (in their direction, values at the
  *     left limit: ac_upd), then the event iteration: every mode updated from the present
  *     ones (ac_upd, rounded), the algebraic variables solved in between, until no mode
- *     changes (AC_EVENT_ITERATIONS, events.py's MAX_ITERATIONS; otherwise an error naming
+ *     changes (AC_EVENT_ITERATIONS rounds; otherwise an error naming
  *     the components whose modes kept changing); closed loops projected after a reinit;
+ *   - hysteresis, as Modelica tools shift their crossing functions: an indicator g on side s
+ *     is reported as g + s·AC_HYSTERESIS, so it crosses once g is AC_HYSTERESIS past zero
+ *     (in its own units); at the event the relations that the mode updates test (a torque
+ *     beyond its breakaway value) are then past their thresholds by more than round-off,
+ *     however tightly the importer locates the crossing, and after the event g stays on its
+ *     new side within the band. The event instants differ from simulate()'s by
+ *     AC_HYSTERESIS/|dg/dt| (1e-13 s for a clutch whose torque changes at 1000 N.m/s);
  *   - a crossing that can change nothing (no modes in the model, no reinit of that indicator
  *     in that direction: a ball leaving the floor) is no event, as in events.py.
  * Model exchange reports the indicators (exact zeros shifted to the side they are on, so that
@@ -20,10 +27,17 @@
 
 #include "model.h"
 
-#define AC_EVENT_ITERATIONS 50     /* events.py's MAX_ITERATIONS */
-#define AC_EVENT_TOL 1e-12         /* events.py's EVENT_TOL: location to 1e-12·max(1, |t|) s */
+/* model.h defines, from acausal.simulation.events, AC_EVENT_ITERATIONS (MAX_ITERATIONS: rounds
+ * of the event iteration) and AC_EVENT_TOL (EVENT_TOL: co-simulation locates events to
+ * AC_EVENT_TOL·max(1, |t|) s) */
 
 struct ac_inst;
+#define AC_HYSTERESIS 1e-10
+
+/* the side of an indicator's value g: its sign, `before` where it is exactly 0 */
+double ac_side(double g, double before);
+/* the value of g reported on side `side`, with the hysteresis (the crossings are its) */
+double ac_reported(double g, double side);
 /* g at (t, x), z solved from the warm start z (updated) */
 int ac_indicators_at(struct ac_inst *m, double t, const double *x, double *z, double *g);
 /* 1 if an indicator's side at g differs from the instance's sides and the crossing can change

@@ -75,11 +75,12 @@ static double err_norm(ac_inst *m) {
     return AC_NX > 0 ? sqrt(s / AC_NX) : 0.0;
 }
 
-static double side_of(double g, double before) { return g > 0 ? 1.0 : g < 0 ? -1.0 : before; }
-
 static int any_crossed(ac_inst *m, const double *g) {
     int i;
-    for (i = 0; i < AC_NG; i++) if (side_of(g[i], m->d.sides[i]) != m->d.sides[i]) return 1;
+    for (i = 0; i < AC_NG; i++) {
+        double s = m->d.sides[i];
+        if (ac_side(ac_reported(g[i], s), s) != s) return 1;
+    }
     return 0;
 }
 
@@ -101,8 +102,9 @@ static int locate(ac_inst *m, double t, double H) {
         else {          /* the earliest secant estimate among the crossed indicators */
             double frac = 1.0;
             for (i = 0; i < AC_NG; i++) {
-                double ga = s->g_lo[i], gb = s->g_hi[i], f;
-                if (side_of(gb, m->d.sides[i]) == m->d.sides[i]) continue;
+                double side = m->d.sides[i], f;
+                double ga = ac_reported(s->g_lo[i], side), gb = ac_reported(s->g_hi[i], side);
+                if (ac_side(gb, side) == side) continue;
                 f = ga / (ga == gb ? 1.0 : ga - gb);
                 f = f < 0 ? 0 : f > 1 ? 1 : f;
                 if (f < frac) frac = f;
