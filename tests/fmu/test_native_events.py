@@ -271,6 +271,31 @@ def test_an_event_iteration_that_never_settles_names_the_component(fmu_dir, vers
                      r"changing \(50 rounds\)", log), log
 
 
+class Jump(Component):
+    """A mode declared with values (0, 1) whose update gives 2."""
+    flange = TranslationalFlange("any flange")
+
+    def structure(self, s):
+        s.mode("gear", 0, values=(0, 1))
+
+    def physics(self, e):
+        e.mode_update(e.mode("gear"), 2)
+
+
+@pytest.mark.parametrize("version", VERSIONS)
+def test_a_mode_off_its_values_names_the_component(fmu_dir, version, capsys):
+    model = acausal.Model("jump")
+    model.mass = tr.Mass(m=1.0)
+    model.jump = Jump()
+    model.connect(model.mass.flange_a, model.jump.flange)
+    path = acausal.compile(model).export_fmu(fmu_dir / f"jump{version[0]}.fmu",
+                                             fmi_version=version)
+    with pytest.raises(FMICallException, match="status 3"):
+        fmpy.simulate_fmu(str(path), fmi_type="ModelExchange", stop_time=1.0)
+    log = capsys.readouterr().out
+    assert "the mode_update of 'jump' gives jump.gear = 2, not one of its values" in log, log
+
+
 def test_pythonfmu_refuses_models_with_events_and_points_at_the_native_backend(fmu_dir):
     compiled = acausal.compile(BouncingBall())
     with pytest.raises(FmuExportError, match=r"floor.*pythonfmu.*backend='native'"):

@@ -119,12 +119,19 @@ class ModelFunctions:
         self.dep_p = Fp.reshape(F.numel(), p.numel())
 
     def event_tables(self) -> dict:
-        """The state events' tables for the C runtime: positions in p of the modes and their
-        owners; each indicator's owner and name; each reinit's state (index in x), indicator
-        and direction."""
+        """The state events' tables for the C runtime: positions in p of the modes, their
+        names, owners and allowed values; each indicator's name; each reinit's state (index
+        in x), indicator and direction."""
         c = self.compiled
+        allowed = [c.state_events.mode_values.get(v.name) for v in c.modes]
+        starts = np.cumsum([0] + [len(a or ()) for a in allowed]).tolist()
         return {"AC_MODE_P": ("int", c.mode_params),
+                "AC_MODE_NAMES": ("char *", [v.name for v in c.modes]),
                 "AC_MODE_OWNER": ("char *", [v.component for v in c.modes]),
+                # the values each mode may take: AC_MODE_VALUES[AC_MODE_FIRST[k] ...
+                # AC_MODE_FIRST[k + 1]) (none: any value)
+                "AC_MODE_FIRST": ("int", starts),
+                "AC_MODE_VALUES": ("int", [int(v) for a in allowed for v in (a or ())]),
                 "AC_G_NAMES": ("char *", [v.name for v in c.state_events.indicators]),
                 "AC_RE_STATE": ("int", [r.state for r in c.state_events.reinits]),
                 "AC_RE_IND": ("int", [r.indicator for r in c.state_events.reinits]),

@@ -14,7 +14,8 @@ What the FMU contains
   ``sources/buildDescription.xml``; to rebuild elsewhere compile them with the standard FMI
   headers on the include path and link with ``-lm``.
 - Variables: ``variables.fmu_variables`` (parameters tunable, inputs, outputs, states with
-  settable start values, derivatives, every recorded variable) plus ``solver.rtol`` and
+  settable start values, derivatives, the modes and event indicators of a model with state
+  events, every recorded variable) plus ``solver.rtol`` and
   ``solver.atol``, the co-simulation solver's tolerances (tunable parameters; they exist in
   model exchange too but are used there only for the loop-drift threshold below).
 

@@ -73,6 +73,23 @@ int ac_step_crossed(ac_inst *m) {
     return ac_crossing(m, g, 1);
 }
 
+/* every mode declared with values has one of them (events.py's _check_values) */
+static int check_values(ac_inst *m) {
+#if AC_NMODE > 0
+    int k, j;
+    for (k = 0; k < AC_NMODE; k++) {
+        double v = m->d.p[AC_MODE_P[k]];
+        int ok = AC_MODE_FIRST[k] == AC_MODE_FIRST[k + 1];
+        for (j = AC_MODE_FIRST[k]; j < AC_MODE_FIRST[k + 1]; j++) ok |= v == AC_MODE_VALUES[j];
+        if (!ok) return ERR("at t = %g s the mode_update of '%s' gives %s = %g, not one of its "
+                            "values", m->d.t, AC_MODE_OWNER[k], AC_MODE_NAMES[k], v);
+    }
+#else
+    (void)m;
+#endif
+    return AC_OK;
+}
+
 /* the event iteration at the instance's point (events.py's iterate) */
 static int iterate(ac_inst *m, int *changed) {
 #if AC_NMODE > 0
@@ -91,7 +108,7 @@ static int iterate(ac_inst *m, int *changed) {
             if (!isfinite(v)) return ERR("the mode_update of '%s' is not finite at t = %g", AC_MODE_OWNER[k], m->d.t);
             if (v != m->d.p[AC_MODE_P[k]]) { m->d.p[AC_MODE_P[k]] = v; moving[k] = 1; diff = 1; }
         }
-        if (!diff) return AC_OK;
+        if (!diff) return check_values(m);
         *changed = 1;
         ac_invalidate(m);
     }

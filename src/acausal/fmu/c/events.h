@@ -7,7 +7,8 @@
  *     left limit: ac_upd), then the event iteration: every mode updated from the present
  *     ones (ac_upd, rounded), the algebraic variables solved in between, until no mode
  *     changes (AC_EVENT_ITERATIONS rounds; otherwise an error naming
- *     the components whose modes kept changing); closed loops projected after a reinit;
+ *     the components whose modes kept changing), each mode then one of its declared values
+ *     (otherwise an error naming it); closed loops projected after a reinit;
  *   - hysteresis, as Modelica tools shift their crossing functions: an indicator g on side s
  *     is reported as g + s·AC_HYSTERESIS, so it crosses once g is AC_HYSTERESIS past zero
  *     (in its own units); at the event the relations that the mode updates test (a torque
