@@ -120,7 +120,7 @@ class ModelFunctions:
 
     def event_tables(self) -> dict:
         """The state events' tables for the C runtime: positions in p of the modes, their
-        names, owners and allowed values; each indicator's name; each reinit's state (index
+        names, owners and allowed values; each indicator's name and owner; each reinit's state (index
         in x), indicator and direction."""
         c = self.compiled
         allowed = [c.state_events.mode_values.get(v.name) for v in c.modes]
@@ -133,6 +133,7 @@ class ModelFunctions:
                 "AC_MODE_FIRST": ("int", starts),
                 "AC_MODE_VALUES": ("int", [int(v) for a in allowed for v in (a or ())]),
                 "AC_G_NAMES": ("char *", [v.name for v in c.state_events.indicators]),
+                "AC_G_OWNER": ("char *", [v.component for v in c.state_events.indicators]),
                 "AC_RE_STATE": ("int", [r.state for r in c.state_events.reinits]),
                 "AC_RE_IND": ("int", [r.indicator for r in c.state_events.reinits]),
                 "AC_RE_DIR": ("int", [r.direction for r in c.state_events.reinits])}

@@ -73,8 +73,11 @@ point one RODAS4 step from the step's start; the event (reinits, event iteration
 the bracket's end and the step goes on from there. Time events run the event iteration
 too.
 
-What it cannot do: no chattering detection (simulate()'s; a relay without a stuck mode
-makes the importer's solver, or the FMU's, take ever smaller steps); with closed loops, a
+Chattering (simulate()'s rule: 100 state events within 1e-6 of the time, here of
+max(1, |t|) s, the FMU not knowing the importer's stop time) is an error naming the
+component whose indicators fired the most (a relay without a stuck mode).
+
+What it cannot do: with closed loops, a
 reinit is followed by the drift projection, which does not hold the reinitialized states as
 simulate() does; the Jacobian is dense and re-evaluated every step and
 the linear algebra is dense LU, O(n³) per step (fine for tens to a few hundred states, slow
@@ -132,7 +135,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import AcausalError, FmuExportError
-from ..simulation.events import EVENT_TOL, MAX_ITERATIONS
+from ..simulation.events import CHATTER_EVENTS, CHATTER_SPAN, EVENT_TOL, MAX_ITERATIONS
 from .codegen import ModelFunctions
 from .destination import fmu_path, identifier
 from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, fmi3_xml)
@@ -266,7 +269,9 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
     model_h += [f"#define AC_{k} {v}\n" for k, v in sizes]
     # simulate()'s event engine's settings (acausal.simulation.events), for events.c
     model_h.append(f"#define AC_EVENT_ITERATIONS {MAX_ITERATIONS}\n"
-                   f"#define AC_EVENT_TOL {EVENT_TOL!r}\n")
+                   f"#define AC_EVENT_TOL {EVENT_TOL!r}\n"
+                   f"#define AC_CHATTER_EVENTS {CHATTER_EVENTS}\n"
+                   f"#define AC_CHATTER_SPAN {CHATTER_SPAN!r}\n")
     model_h.append("#define AC_D(n) ((n) > 0 ? (n) : 1)   /* array length: C has no empty "
                    "arrays */\n")
     model_h += [f"extern const {t} {n};\n" for t, n, _ in tables] + [d for d, _ in arrays]

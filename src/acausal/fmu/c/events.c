@@ -132,6 +132,32 @@ static int iterate(ac_inst *m, int *changed) {
 #endif
 }
 
+/* the crossed indicators `dir` logged at the instance's time; chattering is an error */
+static int chattering(ac_inst *m, const int *dir) {
+    int i, k, n = AC_CHATTER_EVENTS, oldest, worst = 0, hits[AC_D(AC_NG)];
+    for (i = 0; i < AC_NG; i++) {
+        if (!dir[i]) continue;
+        m->d.recent_t[m->d.n_recent % n] = m->d.t;
+        m->d.recent_g[m->d.n_recent % n] = i;
+        m->d.n_recent++;
+    }
+    if (m->d.n_recent < n) return AC_OK;
+    oldest = m->d.n_recent % n;        /* the ring is full: the next slot is the oldest */
+    if (m->d.t - m->d.recent_t[oldest] > AC_CHATTER_SPAN * (fabs(m->d.t) > 1 ? fabs(m->d.t) : 1))
+        return AC_OK;
+    for (i = 0; i < AC_NG; i++) hits[i] = 0;
+    for (k = 0; k < n; k++)            /* by owner: an indicator's hits count for its owner */
+        for (i = 0; i < AC_NG; i++)
+            if (!strcmp(AC_G_OWNER[i], AC_G_OWNER[m->d.recent_g[k]])) hits[i]++;
+    for (i = 1; i < AC_NG; i++) if (hits[i] > hits[worst]) worst = i;
+    return ERR("chattering: %d events within %.3g s after t = %.9g s, %d of them of component "
+               "'%s': its modes switch back and forth without end (an ideal relay, a sliding "
+               "mode, a Zeno accumulation of impacts); give it a mode that holds at the "
+               "switching surface (a stuck mode) or end the simulation before", n,
+               m->d.t - m->d.recent_t[oldest], m->d.recent_t[oldest], hits[worst],
+               AC_G_OWNER[worst]);
+}
+
 int ac_state_event(ac_inst *m, int start, int *changed) {
     double g[AC_D(AC_NG)], after[AC_D(AC_NG)];
     int dir[AC_D(AC_NG)], i, j, any = 0, ch = 0;
@@ -144,6 +170,7 @@ int ac_state_event(ac_inst *m, int start, int *changed) {
         dir[i] = !start && after[i] != m->d.sides[i] ? (int)after[i] : 0;
         any |= dir[i] != 0;
     }
+    if (any && chattering(m, dir)) return AC_ERROR;
     if (any && AC_NREINIT > 0) {      /* the reinits of the crossed indicators, at the left limit */
         double modes[AC_D(AC_NMODE)], re[AC_D(AC_NREINIT)];
         double *out[2] = {modes, re};

@@ -16,6 +16,9 @@
  *     however tightly the importer locates the crossing, and after the event g stays on its
  *     new side within the band. The event instants differ from simulate()'s by
  *     AC_HYSTERESIS/|dg/dt| (1e-13 s for a clutch whose torque changes at 1000 N.m/s);
+ *   - chattering, as events.py detects it: AC_CHATTER_EVENTS state events within
+ *     AC_CHATTER_SPAN·max(1, |t|) s (events.py: of the simulated time, which the FMU does
+ *     not know) are an error naming the component whose indicators fired the most;
  *   - a crossing that can change nothing (no modes in the model, no reinit of that indicator
  *     in that direction: a ball leaving the floor) is no event, as in events.py.
  * Model exchange reports the indicators (exact zeros shifted to the side they are on, so that

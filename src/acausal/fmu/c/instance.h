@@ -46,6 +46,8 @@ typedef struct {
     double next_event;                  /* next time event (HUGE_VAL: none) */
     double sides[AC_D(AC_NG)];          /* the indicators' sides at the last accepted step or
                                            event (events.h); the modes are in p */
+    double recent_t[AC_CHATTER_EVENTS]; /* the last state events (a ring): time, indicator */
+    int recent_g[AC_CHATTER_EVENTS], n_recent;
     int mode;
     int initialized;
 } ac_data;
