@@ -42,7 +42,7 @@ static int inert(const int *dir) {
     return 1;
 }
 
-int ac_crossing(ac_inst *m, const double *g, int accept) {
+int ac_crossing(ac_inst *m, const double *g) {
     int dir[AC_D(AC_NG)], i, any = 0;
     for (i = 0; i < AC_NG; i++) {
         double s = ac_side(ac_reported(g[i], m->d.sides[i]), m->d.sides[i]);
@@ -51,14 +51,14 @@ int ac_crossing(ac_inst *m, const double *g, int accept) {
     }
     if (!any) return 0;
     if (!inert(dir)) return 1;
-    if (accept)
-        for (i = 0; i < AC_NG; i++) m->d.sides[i] = ac_side(ac_reported(g[i], m->d.sides[i]), m->d.sides[i]);
+    for (i = 0; i < AC_NG; i++) m->d.sides[i] = ac_side(ac_reported(g[i], m->d.sides[i]), m->d.sides[i]);
     return 0;
 }
 
 int ac_event_indicators(ac_inst *m, double *g, size_t n) {
     int i;
     if (n != AC_NG) return ERR("expected %d event indicators, got %d", AC_NG, (int)n);
+    if (AC_NG == 0) return AC_OK;
     if (here(m, g)) return AC_ERROR;
     for (i = 0; i < AC_NG; i++) {    /* an exact zero is on the side it was on */
         g[i] = ac_reported(g[i], m->d.sides[i]);
@@ -70,7 +70,7 @@ int ac_event_indicators(ac_inst *m, double *g, size_t n) {
 int ac_step_crossed(ac_inst *m) {
     double g[AC_D(AC_NG)];
     if (AC_NG == 0 || here(m, g)) return 0;   /* a failed evaluation shows in the next call */
-    return ac_crossing(m, g, 1);
+    return ac_crossing(m, g);
 }
 
 /* every mode declared with values has one of them (events.py's _check_values) */

@@ -45,8 +45,8 @@ double ac_reported(double g, double side);
 /* g at (t, x), z solved from the warm start z (updated) */
 int ac_indicators_at(struct ac_inst *m, double t, const double *x, double *z, double *g);
 /* 1 if an indicator's side at g differs from the instance's sides and the crossing can change
- * something (an event), else 0; `sides` of an inert crossing are updated when `accept` */
-int ac_crossing(struct ac_inst *m, const double *g, int accept);
+ * something (an event), else 0; the sides of an inert crossing are updated */
+int ac_crossing(struct ac_inst *m, const double *g);
 /* the indicators at the instance's point as the importer sees them (n must be AC_NG) */
 int ac_event_indicators(struct ac_inst *m, double *g, size_t n);
 /* model exchange, completedIntegratorStep: 1 if the step crossed (ask for an event) */

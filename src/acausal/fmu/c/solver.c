@@ -84,12 +84,12 @@ static int any_crossed(ac_inst *m, const double *g) {
     return 0;
 }
 
-/* a step from (t, m->d.x) to t + H crossed (solver.g at its end, solver.zc its z): the
+/* a step from (t, m->d.x) to te crossed (solver.g at its end, solver.zc its z): the
  * crossing located, the instance put at the bracket's end after it, the event's left limit */
-static int locate(ac_inst *m, double t, double H) {
+static int locate(ac_inst *m, double t, double te) {
     ac_solver_work *s = &m->solver;
-    double lo = 0.0, hi = H, w[3] = {H, H, H};
-    double tol = AC_EVENT_TOL * (fabs(t + H) > 1 ? fabs(t + H) : 1);
+    double H = te - t, lo = 0.0, hi = H, w[3] = {H, H, H};
+    double tol = AC_EVENT_TOL * (fabs(te) > 1 ? fabs(te) : 1);
     int i, n = 0;
     memcpy(s->g_hi, s->g, sizeof(s->g));
     memcpy(s->x_hi, s->ytmp, sizeof(s->x_hi));
@@ -131,7 +131,7 @@ static int locate(ac_inst *m, double t, double H) {
     }
     memcpy(m->d.x, s->x_hi, sizeof(double) * AC_NX);
     memcpy(m->d.z, s->z_hi, sizeof(double) * AC_NZ);
-    m->d.t = t + hi;
+    m->d.t = hi == H ? te : t + hi;
     ac_invalidate(m);
     return AC_OK;
 }
@@ -176,8 +176,8 @@ static int integrate(ac_inst *m, double t1) {
             double te = last ? t1 : t + hs;
             memcpy(m->solver.zc, m->solver.zs, sizeof(m->solver.zc));
             if (ac_indicators_at(m, te, m->solver.ytmp, m->solver.zc, m->solver.g)) return AC_ERROR;
-            if (ac_crossing(m, m->solver.g, 1)) {
-                if (locate(m, t, te - t)) return AC_ERROR;
+            if (ac_crossing(m, m->solver.g)) {
+                if (locate(m, t, te)) return AC_ERROR;
                 if (ac_state_event(m, 0, NULL)) return AC_ERROR;
                 if (ac_keep_loops_closed(m, 1e-3, NULL)) return AC_ERROR;
                 t = m->d.t;
