@@ -105,12 +105,6 @@ def impacts_from_samples(t, s, v):
     return t[after] - (-v + np.sqrt(v * v + 2 * G * s)) / G
 
 
-def reference_events(res, modes):
-    if not modes:
-        return {"impacts": impacts(res.t, res["ball.v"])}
-    return {m: mode_changes(res.t, res[m]) for m in modes}
-
-
 def check(name, ref, t, get, grid, events=None):
     _, _, _, _, signals, modes = CASES[name]
     for n in signals:
@@ -119,14 +113,15 @@ def check(name, ref, t, get, grid, events=None):
     for m in modes:        # the modes at the output points (right limits) too
         assert np.array_equal(at(t, get(m), grid), at(ref.t, ref[m], grid)), (name, m)
     for key, got in (events or {}).items():
-        want = reference_events(ref, modes)[key]
+        want = model_events(name, ref.t, lambda n: ref[n])[key]
         assert len(want) > 0, key
         assert len(got) == len(want), (name, key, got, want)
         assert np.max(np.abs(got - want)) < EVENT_TOL, (name, key, got - want)
 
 
 def model_events(name, t, get):
-    """Event instants in an importer's rows (model exchange keeps both limits of events)."""
+    """Event instants in rows that keep both limits of events (simulate()'s, an importer's in
+    model exchange)."""
     modes = CASES[name][5]
     if not modes:
         return {"impacts": impacts(t, get("ball.v"))}
@@ -142,7 +137,7 @@ def test_fmpy_reproduces_simulate_with_its_events(fmus, name, version, kind):
     the signals within 1e-6 of their peaks, the modes at every output point, and the event
     instants within 1e-6 s: in model exchange from fmpy's rows at the events, in
     co-simulation the ball's impacts extrapolated back from the samples after them."""
-    compiled, ref = fmus[name]
+    ref = fmus[name][1]
     _, T, dt, x0, signals, modes = CASES[name]
     r = fmpy.simulate_fmu(str(fmus[name, version]), fmi_type=kind, stop_time=T,
                           output_interval=dt, start_values=x0, relative_tolerance=1e-10,
@@ -186,7 +181,7 @@ def csv(path: Path) -> np.ndarray:
 @pytest.mark.parametrize("name", list(CASES))
 def test_fmusim_reproduces_simulate_with_its_events(fmus, name, version, kind, tmp_path):
     """The Reference FMUs' fmusim (CVODE for model exchange), tolerance 1e-10: as fmpy."""
-    compiled, ref = fmus[name]
+    ref = fmus[name][1]
     _, T, dt, x0, signals, modes = CASES[name]
     out = tmp_path / "out.csv"
     cmd = [str(tool("fmusim")), "--interface-type", kind, "--tolerance", "1e-10",

@@ -120,8 +120,8 @@ class ModelFunctions:
 
     def event_tables(self) -> dict:
         """The state events' tables for the C runtime: positions in p of the modes, their
-        names, owners and allowed values; each indicator's name and owner; each reinit's state (index
-        in x), indicator and direction."""
+        names, owners and allowed values; each indicator's name and owner; each reinit's
+        state (index in x), indicator and direction."""
         c = self.compiled
         allowed = [c.state_events.mode_values.get(v.name) for v in c.modes]
         starts = np.cumsum([0] + [len(a or ()) for a in allowed]).tolist()

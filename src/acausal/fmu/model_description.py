@@ -169,7 +169,7 @@ def fmi2_xml(info: dict) -> str:
             f' numberOfEventIndicators="{sum(v.kind == "indicator" for v in vs)}">\n']
     if info["me"]:
         head.append(f'  <ModelExchange modelIdentifier="{info["identifier"]}" {caps}'
-                    f' completedIntegratorStepNotNeeded="{"false" if needs_step(info) else "true"}">\n'
+                    f' completedIntegratorStepNotNeeded="{str(not needs_step(info)).lower()}">\n'
                     f'{src}  </ModelExchange>\n')
     if info["cs"]:
         head.append(f'  <CoSimulation modelIdentifier="{info["identifier"]}" {caps}'
@@ -217,7 +217,7 @@ def fmi3_xml(info: dict) -> str:
             f' variableNamingConvention="{naming_convention(names)}">\n']
     if info["me"]:
         head.append(f'  <ModelExchange modelIdentifier="{info["identifier"]}" {caps}'
-                    f' needsCompletedIntegratorStep="{"true" if needs_step(info) else "false"}"/>\n')
+                    f' needsCompletedIntegratorStep="{str(needs_step(info)).lower()}"/>\n')
     if info["cs"]:
         head.append(f'  <CoSimulation modelIdentifier="{info["identifier"]}" {caps}'
                     f' canHandleVariableCommunicationStepSize="true" hasEventMode="false"'
