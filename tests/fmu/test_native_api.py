@@ -309,10 +309,3 @@ def _lag_model():
     m.lag = Lag()
     return acausal.compile(m)
 
-
-def test_a_model_with_events_is_refused(tmp_path):
-    """FMUs do not handle state events yet: exporting a model that has some is an error
-    naming the components, not an FMU that ignores them."""
-    from acausal.models import BouncingBall
-    with pytest.raises(FmuExportError, match="events or modes.*floor"):
-        acausal.compile(BouncingBall()).export_fmu(tmp_path)

@@ -6,7 +6,8 @@ Two backends:
   system C compiler; FMI 2.0 or 3.0, model exchange and/or co-simulation; nothing needed on
   the importer's side. See ``acausal.fmu.export`` for what the FMU does and cannot do.
 - ``pythonfmu``: an FMI 2.0 co-simulation slave running the compiled model in Python
-  (``acausal.fmu.pythonfmu_backend``).
+  (``acausal.fmu.pythonfmu_backend``); models with state events or modes are refused
+  (FmuExportError): use the native backend for them.
 """
 from __future__ import annotations
 
@@ -26,11 +27,6 @@ def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None
     options      native: ``stop_time`` [s] of the DefaultExperiment (default 1), ``description``.
     Returns the Path of the written .fmu.
     """
-    if compiled.has_events:
-        owners = sorted({v.component for v in compiled.state_events.indicators + compiled.modes})
-        raise FmuExportError(f"model '{compiled.name}' has state events or modes (of "
-                             f"{', '.join(owners)}); FMUs of such models are not made yet: "
-                             f"their events would be ignored")
     if backend == "native":
         from .export import export_native
         try:
@@ -41,6 +37,15 @@ def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None
                 raise FmuExportError(f"export_fmu(backend='native'): {e}") from None
             raise
     if backend == "pythonfmu":
+        if compiled.has_events:
+            owners = sorted({v.component for v in compiled.state_events.indicators
+                             + compiled.modes})
+            raise FmuExportError(
+                f"model '{compiled.name}' has state events or modes (of {', '.join(owners)}); "
+                f"the pythonfmu backend does not handle them (its slave would integrate "
+                f"across the events and ignore them): use backend='native', whose FMUs "
+                f"locate the events (model exchange: event indicators and the event "
+                f"iteration in the event update; co-simulation: inside doStep)")
         from .pythonfmu_backend import export_pythonfmu
         return Path(export_pythonfmu(compiled, path, fmi_version=fmi_version,
                                      fmu_type=fmu_type or "cs", **options))

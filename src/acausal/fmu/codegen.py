@@ -19,6 +19,14 @@ Functions (outputs dense, column-major):
     ac_phiq -> Φ_q                    their Jacobian in the coordinates, every row enforced:
                                       the runtime picks the rows to enforce from it
     ac_start(p) -> start values of [x; z];  ac_events(p) -> [first times; periods]
+    ac_ind  -> g                      the state events' indicators (``indicator_function``)
+    ac_upd  -> (modes, reinit)        the modes' new values from their present ones in p and
+                                      the reinits' values (``event_update_function``)
+
+The event logic over these two (which indicator crossed, which reinits apply, the event
+iteration) is the C runtime's events.c, after acausal.simulation.events; the tables it
+needs (where the modes are in p, the reinits' states, indicators and directions, owners)
+are ``event_tables``.
 """
 from __future__ import annotations
 
@@ -28,7 +36,7 @@ import numpy as np
 from ..simulation.initialization import model_equations
 
 FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
-             "ac_events")
+             "ac_events", "ac_ind", "ac_upd")
 
 
 class ModelFunctions:
@@ -62,6 +70,10 @@ class ModelFunctions:
         self.h_names = model_equations(c)[1][:self.nh]
         ev_t, ev_p = c.events(p)
         self.nev = ev_t.numel()
+        se = c.state_events
+        ind = nol(se.indicator) if se.indicator.numel() else ca.SX(0, 1)
+        upd = [nol(v) if v.numel() else ca.SX(0, 1) for v in (se.mode_update, se.reinit_values)]
+        self.ng, self.nmode, self.nreinit = ind.numel(), len(c.mode_params), len(se.reinits)
 
         s0 = ca.vertsplit(c.start(p))          # start values of [x; z]: x and the free z
         start = ca.vertcat(*(s0[:self.nx] + [s0[self.nx + i] for i in free]))
@@ -85,6 +97,9 @@ class ModelFunctions:
             "ac_start": ca.Function("ac_start", [p], [d(start)], ["p"], ["x0"]),
             "ac_events": ca.Function("ac_events", [p], [d(ca.vertcat(ev_t, ev_p))], ["p"],
                                      ["ev"]),
+            "ac_ind": ca.Function("ac_ind", args, [d(ind)], names, ["g"]),
+            "ac_upd": ca.Function("ac_upd", args, [d(upd[0]), d(upd[1])], names,
+                                  ["modes", "reinit"]),
         }
         self.functions = fs
         # structural dependencies of F = [ẋ; y] on w = [x; u; t] (through z too), and on p
@@ -102,6 +117,26 @@ class ModelFunctions:
             Fp = Fp | np.outer(via, gp)
         self.dep_w = Fw.reshape(F.numel(), w.numel())     # rows ẋ then y; cols x, u, t
         self.dep_p = Fp.reshape(F.numel(), p.numel())
+
+    def event_tables(self) -> dict:
+        """The state events' tables for the C runtime: positions in p of the modes, their
+        names, owners and allowed values; each indicator's name and owner; each reinit's
+        state (index in x), indicator and direction."""
+        c = self.compiled
+        allowed = [c.state_events.mode_values.get(v.name) for v in c.modes]
+        starts = np.cumsum([0] + [len(a or ()) for a in allowed]).tolist()
+        return {"AC_MODE_P": ("int", c.mode_params),
+                "AC_MODE_NAMES": ("char *", [v.name for v in c.modes]),
+                "AC_MODE_OWNER": ("char *", [v.component for v in c.modes]),
+                # the values each mode may take: AC_MODE_VALUES[AC_MODE_FIRST[k] ...
+                # AC_MODE_FIRST[k + 1]) (none: any value)
+                "AC_MODE_FIRST": ("int", starts),
+                "AC_MODE_VALUES": ("int", [int(v) for a in allowed for v in (a or ())]),
+                "AC_G_NAMES": ("char *", [v.name for v in c.state_events.indicators]),
+                "AC_G_OWNER": ("char *", [v.component for v in c.state_events.indicators]),
+                "AC_RE_STATE": ("int", [r.state for r in c.state_events.reinits]),
+                "AC_RE_IND": ("int", [r.indicator for r in c.state_events.reinits]),
+                "AC_RE_DIR": ("int", [r.direction for r in c.state_events.reinits])}
 
     def sizes(self) -> dict:
         """Work array sizes over all functions."""

@@ -7,14 +7,15 @@ What the FMU contains
   from ``sources/``: the generated model functions (``model_functions.c``), the model's sizes
   and tables (``model.h``, ``model_data.c``), the shared runtime (``c/`` in this package:
   ``instance.c`` the instance, its variables and life cycle; ``equations.c`` evaluation and
-  Newton for algebraic variables; ``loops.c`` loop assembly and projection; ``solver.c`` the
+  Newton for algebraic variables; ``events.c`` state events and modes; ``loops.c`` loop assembly and projection; ``solver.c`` the
   RODAS4 co-simulation solver; ``linalg.c`` dense LU, Householder QR and minimum-norm least
   squares) and the FMI adapter (``fmi2.c`` or
   ``fmi3.c``). FMI 2 lists the sources in modelDescription.xml, FMI 3 in
   ``sources/buildDescription.xml``; to rebuild elsewhere compile them with the standard FMI
   headers on the include path and link with ``-lm``.
 - Variables: ``variables.fmu_variables`` (parameters tunable, inputs, outputs, states with
-  settable start values, derivatives, every recorded variable) plus ``solver.rtol`` and
+  settable start values, derivatives, the modes and event indicators of a model with state
+  events, every recorded variable) plus ``solver.rtol`` and
   ``solver.atol``, the co-simulation solver's tolerances (tunable parameters; they exist in
   model exchange too but are used there only for the loop-drift threshold below).
 
@@ -28,7 +29,31 @@ are presented with μ = ν = 0, i.e. the accelerations of the KKT solve; the con
 max(|Φ|, |Φ̇|) exceeds 1e-3·``solver.rtol`` and the event update projects the states onto
 the constraints (the closest point in the Euclidean norm of the states, by the assembly's
 projection steps below, reporting ``valuesOfContinuousStatesChanged``). Time events (steps, ramps, pulses) are reported as
-``nextEventTime``. There are no state events (no event indicators).
+``nextEventTime``.
+
+State events and modes (``compiled.state_events``; the runtime's ``events.c``, after
+acausal.simulation.events): the indicators are the FMU's event indicators
+(``numberOfEventIndicators`` / FMI 3's ``EventIndicator``s, also variables by their names
+``<component>.<indicator>``), read by ``fmi2GetEventIndicators`` / ``fmi3GetEventIndicators``;
+the importer locates their sign changes. The modes are internal discrete states (variables
+``local``, ``discrete``, read-only). The FMU keeps each indicator's side (its sign, a zero
+staying on the side it was on, as events.py's ``side``) at the last accepted step
+(``completedIntegratorStep``, which the FMU then needs, asks for an event when a step
+crossed) and event, and reports each indicator with a hysteresis of 1e-10 (in its units)
+on that side (g + 1e-10·side), as Modelica tools shift their crossing functions: at the
+crossing the importer locates, the relations the mode updates test (a torque beyond its
+breakaway value) are past their thresholds by more than round-off, however tightly it is
+located; the event instants differ from simulate()'s by 1e-10/|dg/dt|. The
+event update (``fmi2NewDiscreteStates`` / ``fmi3UpdateDiscreteStates``) runs the event as
+``simulate()`` does: the reinits of the indicators that crossed (in their directions, values
+at the left limit), then the event iteration: all modes updated from the present ones, the
+algebraic variables solved in between, until no mode changes (50 rounds, events.py's
+``MAX_ITERATIONS``; otherwise fmiError with a message naming the components whose modes
+keep changing), reporting ``valuesOfContinuousStatesChanged`` when states were reinitialized
+or modes changed (the importer restarts its solver). Initialization ends with the same
+iteration, so that the modes start consistent. A crossing that can change nothing (no
+modes, no reinit of it in that direction: a ball leaving the floor) updates the sides
+only.
 
 Co-simulation
 -------------
@@ -41,9 +66,20 @@ event and restarts at it. Loops: the states are projected onto Φ = 0, Φ̇ = 0 
 accepted step. An importer's tolerance (fmi2SetupExperiment / fmi3EnterInitializationMode)
 replaces the default ``solver.rtol`` (and sets ``solver.atol`` to 1/100 of it) unless they
 were set explicitly.
+State events: after every accepted step the indicators' sides are checked; a crossing is
+located inside the step as ``simulate()`` locates it (secant steps on the crossed
+indicators, bisection when the bracket shrinks slowly, to 1e-12·max(1, |t|) s), each trial
+point one RODAS4 step from the step's start; the event (reinits, event iteration) runs at
+the bracket's end and the step goes on from there. Time events run the event iteration
+too.
 
-What it cannot do: no state events (the models have none; a model with discontinuities in
-the states' values is not supported); the Jacobian is dense and re-evaluated every step and
+Chattering (simulate()'s rule: 100 state events within 1e-6 of the time, here of
+max(1, |t|) s, the FMU not knowing the importer's stop time) is an error naming the
+component whose indicators fired the most (a relay without a stuck mode).
+
+What it cannot do: with closed loops, a
+reinit is followed by the drift projection, which does not hold the reinitialized states as
+simulate() does; the Jacobian is dense and re-evaluated every step and
 the linear algebra is dense LU, O(n³) per step (fine for tens to a few hundred states, slow
 for thousands); the Newton iteration for z has no globalization beyond the warm start (it
 fails with fmi2Error and a logged message if it does not converge in 50 iterations); the
@@ -99,16 +135,18 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import AcausalError, FmuExportError
+from ..simulation.events import CHATTER_EVENTS, CHATTER_SPAN, EVENT_TOL, MAX_ITERATIONS
 from .codegen import ModelFunctions
 from .destination import fmu_path, identifier
 from .model_description import (SOLVER_VARIABLES, build_description, fmi2_xml, fmi3_xml)
 from .variables import FmuVariable, fmu_variables
 
 KINDS = {"parameter": 0, "input": 1, "output": 2, "state": 3, "derivative": 4, "recorded": 5,
-         "solver": 6, "time": 7, "switch": 9}       # instance.h's AC_K_* (8: no variable)
+         "solver": 6, "time": 7, "switch": 9, "mode": 10, "indicator": 11}
+# (instance.h's AC_K_*; 8: no variable)
 # the runtime shared by every native FMU (c/): headers, then the C files compiled
-RUNTIME_HEADERS = ("instance.h", "equations.h", "loops.h", "solver.h", "linalg.h")
-RUNTIME_SOURCES = ("instance.c", "equations.c", "loops.c", "solver.c", "linalg.c")
+RUNTIME_HEADERS = ("instance.h", "equations.h", "events.h", "loops.h", "solver.h", "linalg.h")
+RUNTIME_SOURCES = ("instance.c", "equations.c", "events.c", "loops.c", "solver.c", "linalg.c")
 
 
 # ---- the toolchain ---------------------------------------------------------------------
@@ -202,6 +240,7 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
     sizes = [("NX", mf.nx), ("NZ", mf.nz), ("NP", mf.np), ("NU", mf.nu), ("NY", mf.ny),
              ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
              ("NPOS", len(compiled.position_states)), ("NEV", mf.nev), ("NVR", len(kind)),
+             ("NG", mf.ng), ("NMODE", mf.nmode), ("NREINIT", mf.nreinit),
              ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
              ("SZ_W", sz["w"])]
     # the Parameter's flags, checked by the runtime as Parameter.check_scalar does
@@ -223,9 +262,16 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
               _c_arr("double", "AC_X_NOMINAL", nominal),
               _c_arr("char *", "AC_Z_NAMES", mf.z_names, _c_str),
               _c_arr("double", "AC_SOLVER_DEFAULT", [float(s[1]) for s in SOLVER_VARIABLES])]
+    arrays += [_c_arr(ctype, name, values, _c_str if ctype == "char *" else str)
+               for name, (ctype, values) in mf.event_tables().items()]
     model_h = ["/* generated by acausal: sizes and tables of the model */\n#ifndef AC_MODEL_H\n"
                "#define AC_MODEL_H\n"]
     model_h += [f"#define AC_{k} {v}\n" for k, v in sizes]
+    # simulate()'s event engine's settings (acausal.simulation.events), for events.c
+    model_h.append(f"#define AC_EVENT_ITERATIONS {MAX_ITERATIONS}\n"
+                   f"#define AC_EVENT_TOL {EVENT_TOL!r}\n"
+                   f"#define AC_CHATTER_EVENTS {CHATTER_EVENTS}\n"
+                   f"#define AC_CHATTER_SPAN {CHATTER_SPAN!r}\n")
     model_h.append("#define AC_D(n) ((n) > 0 ? (n) : 1)   /* array length: C has no empty "
                    "arrays */\n")
     model_h += [f"extern const {t} {n};\n" for t, n, _ in tables] + [d for d, _ in arrays]
@@ -322,7 +368,7 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
                 "variables": variables, "me": fmu_type in ("me", "both"),
                 "cs": fmu_type in ("cs", "both"), "sources": c_files,
                 "deps": dependencies(compiled, mf, variables),
-                "loops": mf.nh > 0, "stop_time": stop_time,
+                "loops": mf.nh > 0, "events": compiled.has_events, "stop_time": stop_time,
                 "nominal": {n: v for n, v in zip(compiled.x_names, nominal) if v != 1.0}}
         if fmi_version == "2.0":
             (tmp / "modelDescription.xml").write_text(fmi2_xml(info))

@@ -125,6 +125,13 @@ def _a(name, value) -> str:
     return f" {name}={quoteattr(str(value))}" if value not in (None, "") else ""
 
 
+def needs_step(info: dict) -> bool:
+    """Whether the importer must call completedIntegratorStep: to keep closed loops closed,
+    and with state events, where the FMU keeps the indicators' signs at the accepted steps
+    (a crossing that changes nothing updates them there; any other asks for an event)."""
+    return bool(info["loops"] or info["events"])
+
+
 # ---- FMI 2.0 ------------------------------------------------------------------------------
 def _attributes(v, info: dict, derivative) -> tuple[str, str]:
     """The XML attributes of a variable: (those of the variable itself, those of its real
@@ -145,7 +152,8 @@ def _attributes(v, info: dict, derivative) -> tuple[str, str]:
 
 def fmi2_xml(info: dict) -> str:
     """info: model_name, identifier, guid, description, variables (FmuVariable list incl. the
-    solver ones), me, cs, sources, deps (see export), loops, nx, stop_time."""
+    solver ones), me, cs, sources, deps (see export), loops, events (state events: the
+    importer must call completedIntegratorStep), stop_time."""
     vs: list[FmuVariable] = info["variables"]
     index = {v.value_reference: k + 1 for k, v in enumerate(vs)}   # 1-based list position
     names = [v.name for v in vs]
@@ -158,10 +166,10 @@ def fmi2_xml(info: dict) -> str:
             f'{_a("description", info["description"])} generationTool="acausal (native)"'
             f' generationDateAndTime="{time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())}"'
             f' variableNamingConvention="{naming_convention(names)}"'
-            f' numberOfEventIndicators="0">\n']
+            f' numberOfEventIndicators="{sum(v.kind == "indicator" for v in vs)}">\n']
     if info["me"]:
         head.append(f'  <ModelExchange modelIdentifier="{info["identifier"]}" {caps}'
-                    f' completedIntegratorStepNotNeeded="{"false" if info["loops"] else "true"}">\n'
+                    f' completedIntegratorStepNotNeeded="{str(not needs_step(info)).lower()}">\n'
                     f'{src}  </ModelExchange>\n')
     if info["cs"]:
         head.append(f'  <CoSimulation modelIdentifier="{info["identifier"]}" {caps}'
@@ -209,7 +217,7 @@ def fmi3_xml(info: dict) -> str:
             f' variableNamingConvention="{naming_convention(names)}">\n']
     if info["me"]:
         head.append(f'  <ModelExchange modelIdentifier="{info["identifier"]}" {caps}'
-                    f' needsCompletedIntegratorStep="{"true" if info["loops"] else "false"}"/>\n')
+                    f' needsCompletedIntegratorStep="{str(needs_step(info)).lower()}"/>\n')
     if info["cs"]:
         head.append(f'  <CoSimulation modelIdentifier="{info["identifier"]}" {caps}'
                     f' canHandleVariableCommunicationStepSize="true" hasEventMode="false"'
@@ -231,6 +239,8 @@ def fmi3_xml(info: dict) -> str:
                      ("InitialUnknown", "initial")):
         for vr, deps in info["deps"][key]:
             body.append(f'    <{tag} valueReference="{vr}"{_deps(deps, str)}/>\n')
+    body += [f'    <EventIndicator valueReference="{v.value_reference}"/>\n' for v in vs
+             if v.kind == "indicator"]
     body.append("  </ModelStructure>\n</fmiModelDescription>\n")
     return "".join(head + body)
 

@@ -27,6 +27,9 @@ What the importing machine needs
   serialization format may change between releases). Not acausal, not pythonfmu.
 For an FMU that needs nothing on the importer's side use the native backend.
 
+Models with state events or modes are refused (``acausal.fmu.export_fmu``: FmuExportError):
+the slave's integrator would step across their events; the native backend handles them.
+
 The FMU: every parameter tunable (a change during the simulation takes effect from the next
 step), inputs held constant over each communication step, states settable before
 initialization (a value different from the declared start is held exactly; closed loops are

@@ -11,6 +11,11 @@ agree on names, causalities, units and start values:
 - outputs (``output``, ``continuous``);
 - continuous states (``local``, ``continuous``, initial ``exact``: settable start values);
 - their derivatives ``der(<state>)`` (``local``, ``continuous``, initial ``calculated``);
+- the discrete modes of a model with state events (``local``, ``discrete``, initial
+  ``calculated``: the event iteration at the end of initialization sets them from their
+  declared start values and the start of the states, as simulate() does);
+- the event indicators (``local``, ``continuous``, initial ``calculated``), by their names
+  (``<component>.<indicator>``); FMI 3.0 lists them as its EventIndicators;
 - every other recorded variable (``local``, ``continuous``, initial ``calculated``): port
   positions, flows, sensor signals by their dotted names.
 """
@@ -25,8 +30,10 @@ from ..compiler import CompiledModel
 class FmuVariable:
     name: str
     value_reference: int
-    kind: str            # parameter / switch / input / output / state / derivative / recorded
-    index: int           # position in p (parameters, switches), u, y, x, ẋ, or recorded_names
+    kind: str            # parameter / switch / input / output / state / derivative / mode /
+                         # indicator / recorded
+    index: int           # position in p (parameters, switches, modes), u, y, x, ẋ, the
+                         # indicators, or recorded_names
     causality: str       # parameter / calculatedParameter / input / output / local
     variability: str     # tunable / fixed / continuous
     initial: str | None  # exact / calculated / None (inputs, as FMI requires)
@@ -45,8 +52,10 @@ def fmu_variables(compiled: CompiledModel) -> list[FmuVariable]:
         out.append(FmuVariable(name, len(out) + 1, kind, index, causality, variability,
                                initial, start, unit or "", desc or "", der))
 
-    switches = set(compiled.loop_switches)
+    switches, modes = set(compiled.loop_switches), set(compiled.mode_params)
     for i, v in enumerate(compiled.params):
+        if i in modes:
+            continue
         if i in switches:
             add(v.name, "switch", i, "calculatedParameter", "fixed", "calculated", None, v.unit,
                 v.description)
@@ -70,6 +79,13 @@ def fmu_variables(compiled: CompiledModel) -> list[FmuVariable]:
         unit = units.get(name, "")
         add(f"der({name})", "derivative", i, "local", "continuous", "calculated", None,
             f"{unit}/s" if unit else "", f"time derivative of {name}", state_ref[i])
+    for i in compiled.mode_params:
+        v = compiled.params[i]
+        add(v.name, "mode", i, "local", "discrete", "calculated", None, v.unit,
+            v.description or f"mode of {v.component}")
+    for i, v in enumerate(compiled.state_events.indicators):
+        add(v.name, "indicator", i, "local", "continuous", "calculated", None,
+            v.unit or units.get(v.name), v.description or f"event indicator of {v.component}")
     taken = {v.name for v in out}
     for i, name in enumerate(compiled.recorded_names):
         if name not in taken:

@@ -25,7 +25,7 @@ int ac_eval_p(ac_inst *m, ac_fn f, double *out) {
 }
 
 /* Newton's method for the algebraic variables z at (t, x), warm-started from z. */
-static int solve_z(ac_inst *m, double t, const double *x, double *z) {
+int ac_solve_z(ac_inst *m, double t, const double *x, double *z) {
 #if AC_NZ > 0
     ac_equations *e = &m->eq;
     int it, i;
@@ -55,7 +55,7 @@ static int solve_z(ac_inst *m, double t, const double *x, double *z) {
 
 int ac_rhs(ac_inst *m, double t, const double *x, double *z, double *xdot) {
     double *out[1] = {xdot};
-    if (solve_z(m, t, x, z)) return AC_ERROR;
+    if (ac_solve_z(m, t, x, z)) return AC_ERROR;
     if (ac_eval(m, (ac_fn)ac_ode, t, x, z, out, 1)) return ERR("evaluating the derivatives failed");
     if (!ac_all_finite(xdot, AC_NX)) return ERR("the state derivatives are not finite at t = %g", t);
     return AC_OK;
@@ -70,7 +70,7 @@ int ac_total_jacobian(ac_inst *m, double t, const double *x, const double *z) {
 #if AC_NZ > 0
     if (ac_lu(e->gz, AC_NZ, e->piv)) return ERR("the algebraic equations are singular at t = %g", t);
     for (j = 0; j < AC_NW; j++) {
-        double *s = e->g;        /* scratch: solve_z is not running here */
+        double *s = e->g;        /* scratch: ac_solve_z is not running here */
         int k;
         for (i = 0; i < AC_NZ; i++) s[i] = e->gw[i + j * AC_NZ];
         ac_lu_solve(e->gz, AC_NZ, e->piv, s);
@@ -94,7 +94,7 @@ void ac_invalidate(ac_inst *m) {
 
 int ac_ensure_z(ac_inst *m) {
     if (m->eq.valid_z) return AC_OK;
-    if (solve_z(m, m->d.t, m->d.x, m->d.z)) return AC_ERROR;
+    if (ac_solve_z(m, m->d.t, m->d.x, m->d.z)) return AC_ERROR;
     m->eq.valid_z = 1;
     return AC_OK;
 }

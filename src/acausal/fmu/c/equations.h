@@ -34,6 +34,8 @@ struct ac_inst;
 int ac_eval(struct ac_inst *m, ac_fn f, double t, const double *x, const double *z,
             double **out, int nout);
 int ac_eval_p(struct ac_inst *m, ac_fn f, double *out);
+/* z solved at (t, x) by Newton's method from the warm start z (updated) */
+int ac_solve_z(struct ac_inst *m, double t, const double *x, double *z);
 /* state derivatives at (t, x), z solved by Newton from the warm start z (updated) */
 int ac_rhs(struct ac_inst *m, double t, const double *x, double *z, double *xdot);
 /* eq.T at (t, x, z): z eliminated, F_w − F_z g_z⁻¹ g_w */

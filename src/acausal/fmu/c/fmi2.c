@@ -196,7 +196,7 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
                                        fmi2Boolean *enterEventMode, fmi2Boolean *terminateSimulation) {
     (void)noSetFMUStatePriorToCurrentPoint;
     BEGIN(AC_CONT);
-    *enterEventMode = ac_drift_exceeded(M) ? fmi2True : fmi2False;
+    *enterEventMode = ac_drift_exceeded(M) || ac_step_crossed(M) ? fmi2True : fmi2False;
     *terminateSimulation = fmi2False;
     return fmi2OK;
 }
@@ -217,9 +217,8 @@ fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx
 }
 
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni) {
-    (void)eventIndicators;
     BEGIN(AC_STATES_READABLE);
-    return no_such(c, ni, "event indicator");
+    return ST(ac_event_indicators(M, eventIndicators, ni));
 }
 
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx) {

@@ -331,7 +331,7 @@ fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance, fmi3Boolean noSetF
                                        fmi3Boolean *enterEventMode, fmi3Boolean *terminateSimulation) {
     (void)noSetFMUStatePriorToCurrentPoint;
     BEGIN(AC_CONT);
-    *enterEventMode = ac_drift_exceeded(M) ? fmi3True : fmi3False;
+    *enterEventMode = ac_drift_exceeded(M) || ac_step_crossed(M) ? fmi3True : fmi3False;
     *terminateSimulation = fmi3False;
     return fmi3OK;
 }
@@ -352,9 +352,8 @@ fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance instance, fmi3Float64 
 }
 
 fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64 z[], size_t n) {
-    (void)z;
     BEGIN(AC_STATES_READABLE);
-    return n ? unsupported(instance, "event indicators") : fmi3OK;
+    return ST(ac_event_indicators(M, z, n));
 }
 
 fmi3Status fmi3GetContinuousStates(fmi3Instance instance, fmi3Float64 x[], size_t n) {
@@ -370,7 +369,7 @@ fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance, fmi3Float64 
 
 fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance, size_t *n) {
     BEGIN(AC_ANY);
-    *n = 0;
+    *n = AC_NG;
     return fmi3OK;
 }
 

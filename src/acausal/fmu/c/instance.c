@@ -108,6 +108,7 @@ static int initialize(ac_inst *m) {
     if (ac_assemble_loops(m)) return AC_ERROR;
     ac_invalidate(m);
     if (ac_ensure_z(m)) return AC_ERROR;
+    if (ac_state_event(m, 1, NULL)) return AC_ERROR;     /* the modes consistent at the start */
     if (ac_derivatives(m, NULL)) return AC_ERROR;
     m->d.next_event = ac_next_event(m, m->d.t);
     m->d.initialized = 1;
@@ -121,8 +122,11 @@ int ac_exit_initialization(ac_inst *m) {
 }
 
 int ac_event_update(ac_inst *m, int *states_changed) {
+    int event = 0;
     if (ac_keep_loops_closed(m, 1e-3, states_changed)) { m->d.mode = AC_FAILED; return AC_ERROR; }
     ac_invalidate(m);
+    if (ac_state_event(m, 0, &event)) { m->d.mode = AC_FAILED; return AC_ERROR; }
+    if (event) *states_changed = 1;
     m->d.next_event = ac_next_event(m, m->d.t);
     return AC_OK;
 }
@@ -137,7 +141,13 @@ static int vr_kind(unsigned vr, int *index) {
 static int get_real(ac_inst *m, unsigned vr, double *v) {
     int i, k = vr_kind(vr, &i);
     switch (k) {
-    case AC_K_PARAM: case AC_K_SWITCH: *v = m->d.p[i]; return AC_OK;
+    case AC_K_PARAM: case AC_K_SWITCH: case AC_K_MODE: *v = m->d.p[i]; return AC_OK;
+    case AC_K_IND: {
+        double g[AC_D(AC_NG)];
+        if (ac_event_indicators(m, g, AC_NG)) return AC_ERROR;
+        *v = g[i];
+        return AC_OK;
+    }
     case AC_K_INPUT: *v = m->d.u[i]; return AC_OK;
     case AC_K_STATE: *v = m->d.x[i]; return AC_OK;
     case AC_K_TIME: *v = m->d.t; return AC_OK;

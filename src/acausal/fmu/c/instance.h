@@ -10,13 +10,15 @@
 
 #include "model.h"
 #include "equations.h"
+#include "events.h"
 #include "loops.h"
 #include "solver.h"
 
 enum { AC_OK = 0, AC_WARNING = 1, AC_DISCARD = 2, AC_ERROR = 3, AC_FATAL = 4 };
 /* kinds of value references (export.py's KINDS) */
 enum { AC_K_PARAM = 0, AC_K_INPUT, AC_K_OUTPUT, AC_K_STATE, AC_K_DER, AC_K_REC, AC_K_SOLVER,
-       AC_K_TIME, AC_K_NONE, AC_K_SWITCH };   /* AC_K_SWITCH: a loop-row switch (calculated) */
+       AC_K_TIME, AC_K_NONE, AC_K_SWITCH,   /* AC_K_SWITCH: a loop-row switch (calculated) */
+       AC_K_MODE, AC_K_IND };               /* a discrete mode (in p), an event indicator */
 /* life-cycle modes, bits so that a set of them is a mask. AC_FAILED: a computation failed
  * (initialization, a step, an event update); the instance can then be read, restored from
  * an FMU state, reset or freed. */
@@ -42,6 +44,10 @@ typedef struct {
     int rtol_set, atol_set;
     double h;                           /* co-simulation: step size carried between steps */
     double next_event;                  /* next time event (HUGE_VAL: none) */
+    double sides[AC_D(AC_NG)];          /* the indicators' sides at the last accepted step or
+                                           event (events.h); the modes are in p */
+    double recent_t[AC_CHATTER_EVENTS]; /* the last state events (a ring): time, indicator */
+    int recent_g[AC_CHATTER_EVENTS], n_recent;
     int mode;
     int initialized;
 } ac_data;
@@ -74,7 +80,9 @@ int ac_instantiate(ac_inst *m, const char *name, const char *token, int is_cs, i
 void ac_defaults(ac_inst *m);                  /* instantiated: defaults and start values */
 int ac_setup(ac_inst *m, int tolerance_defined, double tolerance, double start_time);
 int ac_exit_initialization(ac_inst *m);        /* to event mode (ME) or step mode (CS) */
-int ac_event_update(ac_inst *m, int *states_changed);   /* ME: project the loops, next event */
+/* ME: project the loops, the state event (reinits, event iteration of the modes), next event;
+ * *states_changed: states projected or reinitialized, or modes changed */
+int ac_event_update(ac_inst *m, int *states_changed);
 /* values by value reference */
 int ac_get_reals(ac_inst *m, const unsigned *vr, size_t n, double *values);
 int ac_set_reals(ac_inst *m, const unsigned *vr, size_t n, const double *values);

@@ -75,7 +75,68 @@ static double err_norm(ac_inst *m) {
     return AC_NX > 0 ? sqrt(s / AC_NX) : 0.0;
 }
 
-/* integrate the states from m->d.t to t1 (no event inside) */
+static int any_crossed(ac_inst *m, const double *g) {
+    int i;
+    for (i = 0; i < AC_NG; i++) {
+        double s = m->d.sides[i];
+        if (ac_side(ac_reported(g[i], s), s) != s) return 1;
+    }
+    return 0;
+}
+
+/* a step from (t, m->d.x) to te crossed (solver.g at its end, solver.zc its z): the
+ * crossing located, the instance put at the bracket's end after it, the event's left limit */
+static int locate(ac_inst *m, double t, double te) {
+    ac_solver_work *s = &m->solver;
+    double H = te - t, lo = 0.0, hi = H, w[3] = {H, H, H};
+    double tol = AC_EVENT_TOL * (fabs(te) > 1 ? fabs(te) : 1);
+    int i, n = 0;
+    memcpy(s->g_hi, s->g, sizeof(s->g));
+    memcpy(s->x_hi, s->ytmp, sizeof(s->x_hi));
+    memcpy(s->z_hi, s->zc, sizeof(s->z_hi));
+    memcpy(s->zc, m->d.z, sizeof(s->zc));
+    if (ac_indicators_at(m, t, m->d.x, s->zc, s->g_lo)) return AC_ERROR;
+    while (hi - lo > tol) {
+        double a;
+        if (n >= 2 && w[2] > 0.5 * w[0]) a = 0.5 * (lo + hi);        /* slow: bisect */
+        else {          /* the earliest secant estimate among the crossed indicators */
+            double frac = 1.0;
+            for (i = 0; i < AC_NG; i++) {
+                double side = m->d.sides[i], f;
+                double ga = ac_reported(s->g_lo[i], side), gb = ac_reported(s->g_hi[i], side);
+                if (ac_side(gb, side) == side) continue;
+                f = ga / (ga == gb ? 1.0 : ga - gb);
+                f = f < 0 ? 0 : f > 1 ? 1 : f;
+                if (f < frac) frac = f;
+            }
+            a = lo + frac * (hi - lo);
+        }
+        if (a < lo + 0.25 * tol) a = lo + 0.25 * tol;
+        if (a > hi - 0.25 * tol) a = hi - 0.25 * tol;
+        if (rodas_step(m, t, a) != AC_OK)
+            return ERR("co-simulation solver: locating a state event failed at t = %.17g", t + a);
+        memcpy(s->zc, s->zs, sizeof(s->zc));
+        if (ac_indicators_at(m, t + a, s->ytmp, s->zc, s->g)) return AC_ERROR;
+        if (any_crossed(m, s->g)) {
+            hi = a;
+            memcpy(s->g_hi, s->g, sizeof(s->g));
+            memcpy(s->x_hi, s->ytmp, sizeof(s->x_hi));
+            memcpy(s->z_hi, s->zc, sizeof(s->z_hi));
+        } else {
+            lo = a;
+            memcpy(s->g_lo, s->g, sizeof(s->g));
+        }
+        w[0] = w[1]; w[1] = w[2]; w[2] = hi - lo;
+        n++;
+    }
+    memcpy(m->d.x, s->x_hi, sizeof(double) * AC_NX);
+    memcpy(m->d.z, s->z_hi, sizeof(double) * AC_NZ);
+    m->d.t = hi == H ? te : t + hi;
+    ac_invalidate(m);
+    return AC_OK;
+}
+
+/* integrate the states from m->d.t to t1 (no time event inside), running the state events */
 static int integrate(ac_inst *m, double t1) {
     double t = m->d.t, h = m->d.h, span = t1 - t;
     int rejected = 0;
@@ -111,6 +172,19 @@ static int integrate(ac_inst *m, double t1) {
         fac = err > 0 ? 0.9 * pow(err, -0.25) : 5.0;
         if (fac > 5.0) fac = 5.0;
         if (fac < 0.2) fac = 0.2;
+        if (err <= 1.0 && AC_NG > 0) {     /* a state event inside the step? */
+            double te = last ? t1 : t + hs;
+            memcpy(m->solver.zc, m->solver.zs, sizeof(m->solver.zc));
+            if (ac_indicators_at(m, te, m->solver.ytmp, m->solver.zc, m->solver.g)) return AC_ERROR;
+            if (ac_crossing(m, m->solver.g)) {
+                if (locate(m, t, te)) return AC_ERROR;
+                if (ac_state_event(m, 0, NULL)) return AC_ERROR;
+                if (ac_keep_loops_closed(m, 1e-3, NULL)) return AC_ERROR;
+                t = m->d.t;
+                rejected = 0;
+                continue;
+            }
+        }
         if (err <= 1.0) {
             memcpy(m->d.x, m->solver.ytmp, sizeof(double) * AC_NX);
             memcpy(m->d.z, m->solver.zs, sizeof(double) * AC_NZ);
@@ -143,6 +217,7 @@ static int advance(ac_inst *m, double t1) {
             if (end > m->d.t && integrate(m, end)) return AC_ERROR;
             m->d.t = te > t1 ? t1 : te;
             ac_invalidate(m);
+            if (ac_state_event(m, 0, NULL)) return AC_ERROR;     /* crossings there, modes */
         } else if (integrate(m, t1)) return AC_ERROR;
     }
     m->d.t = t1;
