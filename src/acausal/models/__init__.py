@@ -18,6 +18,9 @@ no compiler or simulation imports.
     oscillators         Oscillator: mass on a spring and a damper
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
+    translational_friction  TranslationalBrake, TranslationalFriction, PreLoad: MSL's
+                        Translational Examples Brake, Friction (MassWithStopAndFriction) and
+                        PreLoad (ElastoGap)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -33,9 +36,10 @@ from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, Pis
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
+from .translational_friction import PreLoad, TranslationalBrake, TranslationalFriction
 
 __all__ = ["BouncingBall", "Floor", "CartPole", "GantryCrane", "CubicSpring", "Flywheel", "SimpleDCMotor",
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
            "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
            "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain",
-           "RotationalFriction"]
+           "RotationalFriction", "PreLoad", "TranslationalBrake", "TranslationalFriction"]
