@@ -318,8 +318,9 @@ class MassWithStopAndFriction(PartialRigid, PartialFriction):
     form (``v_smooth``) and each stop a penalty contact of stiffness ``c_smooth`` [N/m],
     critically damped (d = 2·√(c_smooth·m), the damping force limited so that it never
     pulls, ``contact_force``): at a stop hit at speed v the mass goes past it by about
-    |v|·√(m/c_smooth)/e (e = 2.718…) and comes back nearly at rest; pressed by a force F it
-    stays past it by F/c_smooth. useHeatPort only False.
+    |v|·√(m/(2·c_smooth)) (while it goes in, the limited damping force equals the spring's)
+    and comes back nearly at rest; pressed by a force F it stays past it by F/c_smooth.
+    useHeatPort only False.
     """
     options = {"useHeatPort": USE_HEAT_PORT}
     smax = Parameter(25.0, "m", "right stop for (right end of) sliding mass")
@@ -481,9 +482,11 @@ class HardStop(PartialElementaryOneFlangeAndSupport2):
     Smooth form (``compile(model, smooth=True)``): each stop a penalty contact of stiffness
     ``c_smooth`` [N/m] and damping ``d_smooth`` [N.s/m], the damping force limited so that
     it never pulls (``contact_force``); no modes, no events, e not used. For a body of mass
-    m hitting a stop at speed v it goes past the stop by about |v|·√(m/c_smooth) and leaves
-    it after about π·√(m/c_smooth) s with a restitution of about exp(−ζπ/√(1 − ζ²)),
-    ζ = d_smooth/(2·√(c_smooth·m)) (a linear damper; the limit makes it somewhat higher).
+    m hitting a stop at speed v with d_smooth = 0 it goes past the stop by |v|·√(m/c_smooth)
+    and leaves it after π·√(m/c_smooth) s at the same speed (restitution 1); with damping
+    the restitution falls (about exp(−ζπ/√(1 − ζ²)), ζ = d_smooth/(2·√(c_smooth·m)), for a
+    linear damper; the limit keeps it higher) and the penetration towards
+    |v|·√(m/(2·c_smooth)) (the damping force saturates at the spring's while it goes in).
     """
     flange = Flange("flange of the body the stops hold", required=True)
     smax = Parameter(25.0, "m", "upper stop of s = flange.s - support.s")
