@@ -271,18 +271,13 @@ class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
                              "fn_max*f_normalized; brake is active if > 0)")
 
 
-def contact_force(depth, rate, c, d, width=None):
+def contact_force(depth, rate, c, d):
     """The pushing-only force [N] (≥ 0, pushing the bodies apart) of a contact of stiffness c
     [N/m] and damping d [N.s/m] at penetration depth [m] (> 0 in contact) closing at rate
     [m/s] (= der(depth)): MSL ElastoGap's law with n = 1, c·depth plus the damping force
-    d·rate limited to ±c·depth, so that the total never pulls (0 out of contact).
-    ``width`` [m]: the smooth form, depth⁺ = width·log(1 + exp(depth/width)) (≥ the exact
-    depth⁺, by at most width·ln 2, at depth = 0) and the limit by tanh (see ElastoGap)."""
-    if width is None:
-        spring = c * ca.fmax(depth, 0.0)
-        return spring + ca.fmin(ca.fmax(d * rate, -spring), spring)
-    spring = c * _softplus(depth, width)
-    return spring + spring * ca.tanh(d * rate / spring)
+    d·rate limited to ±c·depth, so that the total never pulls (0 out of contact)."""
+    spring = c * ca.fmax(depth, 0.0)
+    return spring + ca.fmin(ca.fmax(d * rate, -spring), spring)
 
 
 def _softplus(x, width):
@@ -405,17 +400,23 @@ class ElastoGap(PartialCompliantWithRelativeStates):
     lossPower = f_d·v_rel [W]. Parameters: c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL's start
     values), s_rel0 [m] (0), s_ref [m] (1), n ≥ 1 (1). Records s_rel, v_rel, f, lossPower and
     ``contact``, a Boolean mode changed at the state event of indicator ``compression``
-    (δ crossing 0), so that the integrator does not step across the kink there (MSL: the
-    event of ``contact = s_rel < s_rel0``; the limit of f_d is without events, as MSL's
-    noEvent). useHeatPort only False.
+    (δ crossing 0, MSL's event of ``contact = s_rel < s_rel0``), so that the integrator
+    restarts at the kink instead of stepping across it. The law itself is written in δ (as
+    MSL's noEvent expressions), not switched on the mode: while the integrator runs ahead
+    of a crossing not located yet, the bodies keep touching as they should (switched off,
+    two plates preloaded by a spring would ring undamped for the rest of the run). The
+    limit of f_d has no events (MSL: noEvent). useHeatPort only False.
 
     Smooth form (``compile(model, smooth=True)``): no mode and no event; the compression
-    out of contact is δ⁺ = s_smooth·log(1 + exp(δ/s_smooth)) (named parameter s_smooth [m],
-    default 1e-6), and the damping force |f_c|·tanh(d·v_rel/|f_c|). Error against the exact
-    law: δ⁺ exceeds max(δ, 0) by at most s_smooth·ln 2 (at δ = 0) and by less than
-    s_smooth·exp(−|δ|/s_smooth) elsewhere, so f_c by at most f_ref·(s_smooth·ln 2/s_ref)^n
-    (n = 1: c·s_smooth·ln 2); the damping force differs from the limited d·v_rel by at most
-    0.24·|f_c| (where d·|v_rel| ≈ |f_c|), by less than |d·v_rel|³/(3·|f_c|²) below it.
+    is δ⁺ = s_smooth·log(1 + exp(δ/s_smooth)) (named parameter s_smooth [m], default 1e-6)
+    in f_c, and the damping force |f_c|·tanh(d·v_rel/(|f_c| + f_s)), f_s = f_ref·(s_smooth/
+    s_ref)^n the spring force at δ = s_smooth (so that out of contact it fades smoothly
+    instead of becoming a step in v_rel). Error against the exact law: δ⁺ exceeds max(δ, 0)
+    by at most s_smooth·ln 2 (at δ = 0) and by less than s_smooth·exp(−|δ|/s_smooth)
+    elsewhere, so f_c by at most f_ref·(s_smooth·ln 2/s_ref)^n (n = 1: c·s_smooth·ln 2); in
+    contact (|f_c| ≫ f_s) the damping force differs from the limited d·v_rel by at most
+    0.24·|f_c| (where d·|v_rel| ≈ |f_c|), and by less than |d·v_rel|³/(3·|f_c|²) +
+    |d·v_rel|·f_s/|f_c| below it.
     """
     options = {"useHeatPort": USE_HEAT_PORT}
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
@@ -444,19 +445,14 @@ class ElastoGap(PartialCompliantWithRelativeStates):
         f_ref = self.c * self.s_ref
         if e.smooth:
             f_c = -f_ref * (_softplus(depth, self.s_smooth) / self.s_ref) ** self.n
-            limit = ca.fmax(-f_c, 1e-300)
-            f_d = limit * ca.tanh(self.d * v_rel / limit)
+            f_s = f_ref * (self.s_smooth / self.s_ref) ** self.n
+            f_d = -f_c * ca.tanh(self.d * v_rel / (f_s - f_c))
             e.variable("contact", depth > 0, "", "= true, if contact, otherwise no contact")
         else:
-            contact = e.mode("contact")
             e.indicator("compression", depth, "m", "compression s_rel0 - s_rel")
-            e.mode_update(contact, depth > 0)
-            # in contact f_c continues past δ = 0 with the opposite sign, where the limit
-            # makes f_d = −f_c: f = 0 there as in the exact law (nothing pulls or blows up
-            # while the integrator runs ahead of the event)
-            f_c = ca.if_else(contact, -f_ref * ca.sign(depth) * ca.fabs(depth / self.s_ref)
-                             ** self.n, 0.0)
-            f_d = ca.if_else(contact, ca.fmin(ca.fmax(self.d * v_rel, f_c), -f_c), 0.0)
+            e.mode_update(e.mode("contact"), depth > 0)
+            f_c = -f_ref * (ca.fmax(depth, 0.0) / self.s_ref) ** self.n
+            f_d = ca.fmin(ca.fmax(self.d * v_rel, f_c), -f_c)
         return f_c + f_d, f_d * v_rel
 
 
