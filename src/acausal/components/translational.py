@@ -331,8 +331,8 @@ class MassWithStopAndFriction(PartialRigid, PartialFriction):
 
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
-        check_stops(self, self.smin + self.L / 2, self.smax - self.L / 2,
-                    "(smax - L/2) must be >= (smin + L/2)")
+        check_stops(self, *self._limits(), "(smax - L/2) must be >= (smin + L/2), L = "
+                                            f"{self.L}")
 
     def _centre(self, s):
         return s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
@@ -547,8 +547,7 @@ def check_stops(component, lower, upper, what: str) -> None:
     """A ParameterError naming the component's smax unless upper ≥ lower."""
     if upper < lower:
         raise ParameterError(f"parameter '{type(component).__name__}.smax' = "
-                             f"{component.smax} is below the stop smin = {component.smin}: "
-                             f"{what}")
+                             f"{component.smax} with smin = {component.smin}: {what}")
 
 
 # =========================================================================================
