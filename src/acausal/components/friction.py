@@ -95,8 +95,10 @@ class PartialFriction(Component):
     surfaces; ``_sliding(e, w)`` the forward sliding friction at speed w ≥ 0 (tau_pos(w), or
     mu_pos(w)·cgeo·fn); ``_free(e)`` whether the element is inactive (an expression, or None:
     never); ``_apply(e, tau)`` the flows; ``_stop(e)`` the state its relative speed is and
-    the value that makes it 0 (reinit when it sticks). Records w_relfric, a_relfric, tau0,
-    tau0_max, free, sa, locked, startForward, startBackward, lossPower [W] and the mode.
+    the value that makes it 0 (reinit when it sticks); ``_can_slide(e)`` whether it may slide
+    forward and backward (default: both; a hard stop blocks one direction). Records
+    w_relfric, a_relfric, tau0, tau0_max, free, sa, locked, startForward, startBackward,
+    lossPower [W] and the mode.
     The domain declares ``w_small`` (``v_small``) and ``w_smooth`` (``v_smooth``), the speed
     of the smooth form's regularization (see the module); a subclass that gives only these
     hooks has the smooth form too.
@@ -134,6 +136,10 @@ class PartialFriction(Component):
 
     def _stop(self, e):
         raise NotImplementedError
+
+    def _can_slide(self, e):
+        """(forward, backward): whether the element may slide that way (expressions)."""
+        return True, True
 
     # ---- the mode machine ----------------------------------------------------------------
     def structure(self, s):
@@ -186,8 +192,9 @@ class PartialFriction(Component):
         # acceleration ~0 (peak = 1) does not fall back to stuck, nor a stuck element whose
         # speed the integrator left a roundoff below 0 (no reinit at a time event)
         small = self._small()
-        breaks_fwd = ca.logic_and(mode == STUCK, tau > tau0_max)
-        breaks_bwd = ca.logic_and(mode == STUCK, tau < -tau0_max)
+        fwd_ok, bwd_ok = self._can_slide(e)
+        breaks_fwd = ca.logic_and(ca.logic_and(mode == STUCK, tau > tau0_max), fwd_ok)
+        breaks_bwd = ca.logic_and(ca.logic_and(mode == STUCK, tau < -tau0_max), bwd_ok)
         active = ca.logic_not(free)
         e.mode_update(start_fwd, ca.logic_and(active, ca.logic_or(breaks_fwd, ca.logic_and(
             start_fwd, ca.logic_and(mode == FORWARD, w <= 0)))))
@@ -195,8 +202,10 @@ class PartialFriction(Component):
             start_bwd, ca.logic_and(mode == BACKWARD, w >= 0)))))
         sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
         from_stuck = ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD, STUCK))
-        keeps_forward = ca.logic_or(ca.logic_or(w > 0, start_fwd), ca.logic_and(w == 0, a > 0))
-        keeps_backward = ca.logic_or(ca.logic_or(w < 0, start_bwd), ca.logic_and(w == 0, a < 0))
+        keeps_forward = ca.logic_and(fwd_ok, ca.logic_or(ca.logic_or(w > 0, start_fwd),
+                                                         ca.logic_and(w == 0, a > 0)))
+        keeps_backward = ca.logic_and(bwd_ok, ca.logic_or(ca.logic_or(w < 0, start_bwd),
+                                                          ca.logic_and(w == 0, a < 0)))
         from_forward = ca.if_else(keeps_forward, FORWARD, ca.if_else(w < -small, BACKWARD,
                                                                       STUCK))
         from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,

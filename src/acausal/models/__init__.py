@@ -21,6 +21,9 @@ no compiler or simulation imports.
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
     clutches            CoupledClutches: MSL's drive train with 3 coupled clutches;
                         OneWayClutchDrive, OneWayClutchDisengaged: MSL's one-way clutch
+    translational_friction  TranslationalBrake, TranslationalFriction, PreLoad: MSL's
+                        Translational Examples Brake, Friction (MassWithStopAndFriction) and
+                        PreLoad (ElastoGap)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -37,10 +40,12 @@ from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, Pis
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
+from .translational_friction import PreLoad, TranslationalBrake, TranslationalFriction
 
 __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane", "CubicSpring",
            "Flywheel", "SimpleDCMotor", "duffing_model", "motor_model", "DiskDriveHead",
            "Drivetrain", "DrivenFourBar", "ElasticBearing", "FourBar", "KinematicLoop",
            "Parallelogram", "PistonEngine", "SliderCrank", "add_link", "Oscillator",
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
-           "OneWayClutchDrive", "OneWayClutchDisengaged"]
+           "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
+           "TranslationalFriction"]
