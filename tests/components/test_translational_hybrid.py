@@ -8,7 +8,6 @@ from scipy.integrate import solve_ivp
 
 import acausal
 from acausal.components import translational as tr
-from acausal.components.signals import Step
 from acausal.errors import ParameterError
 from acausal.models.translational_friction import PreLoad, TranslationalBrake, \
     TranslationalFriction
