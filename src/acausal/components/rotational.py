@@ -29,10 +29,12 @@ from __future__ import annotations
 import math
 
 import casadi as ca
+import numpy as np
 
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
                     RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import ROTATIONAL
+from ..errors import ParameterError
 from . import friction, interfaces
 from .interfaces import ROTATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
@@ -48,6 +50,7 @@ __all__ = [
     # components
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
+    "LossyGear", "ElastoBacklash", "ElastoBacklash2",
     # sources
     "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "TorqueStep", "Position", "Speed", "Accelerate", "Move",
@@ -683,3 +686,206 @@ class DCMotor(PartialElementaryOneFlangeAndSupport2):
         e.variable("tau_el", tau_el, "N.m", "electrical (air gap) torque")
         e.variable("vi", self.k * w_rel, "V", "induced (back-emf) voltage")
         e.variable("pin", v * i, "W", "electrical input power")
+
+
+# =========================================================================================
+# Gears with losses, backlash
+# =========================================================================================
+class LossyGear(PartialElementaryTwoFlangesAndSupport2):
+    """Gear with mesh efficiency and bearing friction, stuck or rolling (MSL 4.1's
+    LossyGear): phi_a = ratio·phi_b (relative to the support), 0 = flange_b.tau +
+    ratio·(flange_a.tau − tauLoss), support.tau = −(flange_a.tau + flange_b.tau).
+
+    ``lossTable`` (constructor keyword, rows [|w_a|, eta_mf1, eta_mf2, tau_bf1, tau_bf2],
+    default [[0, 1, 1, 0, 0]], the ideal gear) gives the mesh efficiencies [1] when flange_a
+    (eta_mf1) or flange_b (eta_mf2) drives and the resultant bearing friction [N.m] w.r.t.
+    flange_a, interpolated in |w_a| as MSL's Smoothness.LinearSegments (the only smoothness
+    here) with Extrapolation.LastTwoPoints. ``ratio`` [1] ≠ 0 (default 1 = MSL start value).
+
+    The loss torque tauLoss [N.m] (on flange_a's side) is an algebraic variable switched on
+    MSL's mode (2: ideal, 1: forward rolling w_a > 0, 0: stuck, −1: backward) and on
+    tau_etaPos, MSL's relation tau_eta ≥ 0 (which side drives): rolling forward,
+    tauLoss = quadrant1 (tau_etaPos) or quadrant2; backward, quadrant4 or quadrant3; stuck,
+    a_a = 0 and tauLoss is the torque that holds the gear, between tauLossMin_m and
+    tauLossMax_p. MSL writes its own mode machine for LossyGear (it does not extend
+    PartialFriction); here it runs on the state-event engine as PartialFriction's does
+    (``acausal.components.friction``): events ``rolling`` (w_a falling through 0 while
+    rolling, setting w_a to 0 exactly), ``breakaway`` (the holding torque leaving
+    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 after breaking away:
+    startForward/startBackward, Boolean modes set at breakaway, are cleared then) and
+    ``tau_eta`` (the driving side changing: the kink between quadrants). A rolling gear
+    that reaches w_a = 0 keeps rolling only if its acceleration there keeps its direction.
+    The mode starts at Free (MSL: start = Free, fixed = true); at the start, as MSL's
+    initial(), it takes the direction of w_a, or Stuck.
+
+    Records MSL's variables: phi_a, phi_b, w_a, a_a, sa, eta_mf1, eta_mf2, tau_bf1,
+    tau_bf2, tau_bf_a, tau_eta, tau_eta_p, tau_eta_m, quadrant1..4, quadrant1_p,
+    quadrant2_p, quadrant3_m, quadrant4_m, tauLoss, tauLossMax, tauLossMin, tauLossMax_p,
+    tauLossMin_m, tau_aPos, tau_etaPos, startForward, startBackward, locked, ideal, mode,
+    lossPower [W] (MSL's interpolation_result matrix is not recorded: its columns are
+    eta_mf1, eta_mf2, tau_bf1, tau_bf2). The ideal table gives an IdealGear without events
+    (mode 2, tauLoss 0). useHeatPort only False.
+    """
+    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    ratio = Parameter(1.0, "1", "transmission ratio (flange_a.phi/flange_b.phi)", nonzero=True)
+    IDEAL = ((0.0, 1.0, 1.0, 0.0, 0.0),)
+
+    def __init__(self, name: str | None = None, **params):
+        table = params.pop("lossTable", self.IDEAL)
+        super().__init__(name, **params)
+        try:
+            tab = np.array(table, dtype=float)
+        except (TypeError, ValueError):
+            tab = np.zeros((0, 0))
+        if tab.ndim != 2 or tab.shape[1] != 5 or tab.shape[0] < 1:
+            raise ParameterError(f"parameter 'LossyGear.lossTable' must be a table of rows "
+                                 f"[w, eta_mf1, eta_mf2, tau_bf1, tau_bf2], got {table!r}")
+        for k in range(1, 5):                     # speeds increasing from >= 0, finite values
+            friction.check_table(tab[:, [0, k]], "lossTable", "LossyGear")
+        if np.any(tab[:, 1:3] <= 0):
+            raise ParameterError(f"parameter 'LossyGear.lossTable': the efficiencies eta_mf1, "
+                                 f"eta_mf2 (columns 2 and 3) must be > 0, got "
+                                 f"{tab[:, 1:3].tolist()}")
+        self.__dict__["lossTable"] = tab
+        self.__dict__["ideal"] = tab.shape == (1, 5) and np.allclose(
+            tab, self.IDEAL, rtol=0.0, atol=_EPS)
+
+    def _losses(self, w):
+        """(eta_mf1, eta_mf2, tau_bf1, tau_bf2, tau_bf_a) at |w_a| = w: the table's columns
+        and MSL's split tau_bf_a [N.m] of the bearing friction to flange_a's side."""
+        eta1, eta2, bf1, bf2 = (friction.table_value(self.lossTable[:, [0, k]], w)
+                                for k in range(1, 5))
+        bf1, bf2 = ca.fabs(bf1), ca.fabs(bf2)
+        unit = ca.logic_and(ca.fabs(eta1 - 1.0) <= _EPS, ca.fabs(eta2 - 1.0) <= _EPS)
+        tau_bf_a = ca.if_else(unit, bf1 / 2, (bf1 - bf2) / ca.if_else(unit, 1.0,
+                                                                       eta1 - 1.0 / eta2))
+        return eta1, eta2, bf1, bf2, tau_bf_a
+
+    def structure(self, s):
+        self._relative_constraint(s, {self.flange_a: 1.0, self.flange_b: -self.ratio}, 0.0,
+                                  f"{self.path}: phi_a = ratio*phi_b")
+        if self.ideal:
+            return
+        s.mode("mode", friction.FREE, values=friction.MODES[:-1],
+               description="mode of friction element (-1: backward rolling, 0: stuck, "
+                           "1: forward rolling, 2: not active)")
+        s.mode("startForward", 0, values=(0, 1), description="= true, if starting to roll "
+                                                             "forward")
+        s.mode("startBackward", 0, values=(0, 1), description="= true, if starting to roll "
+                                                              "backward")
+        s.mode("tau_etaPos", 1, values=(0, 1), description="= true, if torque tau_eta is "
+                                                           "not negative")
+        s.algebraic("tauLoss", unit="N.m", description="torque loss due to friction in the "
+                                                       "gear teeth and in the bearings")
+
+    def physics(self, e):
+        phi_a, phi_b = (self._rel_position(e, f) for f in (self.flange_a, self.flange_b))
+        w, a = self._rel_speed(e, self.flange_a), self._rel_acc(e, self.flange_a)
+        e.variable("phi_a", phi_a, "rad", "angle between left shaft flange and support")
+        e.variable("phi_b", phi_b, "rad", "angle between right shaft flange and support")
+        e.variable("w_a", w, "rad/s", "angular velocity of flange_a with respect to support")
+        e.variable("a_a", a, "rad/s2", "angular acceleration of flange_a with respect to "
+                                       "support")
+        e.variable("ideal", float(self.ideal), "", "= true, if losses are neglected (that is "
+                                                   "lossTable = [0, 1, 1, 0, 0])")
+        if self.ideal:
+            e.variable("mode", friction.FREE, "", "mode of friction element")
+            e.variable("tauLoss", 0.0, "N.m", "torque loss")
+            e.variable("lossPower", 0.0, "W", "loss power leaving component via heatPort")
+            return
+        FORWARD, STUCK, BACKWARD = friction.FORWARD, friction.STUCK, friction.BACKWARD
+        mode, tau_loss = e.mode("mode"), e.state("tauLoss")
+        start_fwd, start_bwd, pos = (e.mode(n) for n in ("startForward", "startBackward",
+                                                         "tau_etaPos"))
+        e.flow(self.flange_a, tau_loss)
+        if self.useSupport:
+            e.flow(self.support, -tau_loss)
+        tau_a = e.cut_flow(self.flange_a)                      # flange_a.tau
+
+        eta1, eta2, bf1, bf2, tau_bf_a = self._losses(ca.fabs(w))
+        eta1_0, eta2_0, bf1_0, bf2_0, tau_bf_a_0 = self._losses(0.0)
+        tau_eta_p, tau_eta_m = tau_a - tau_bf_a_0, tau_a + tau_bf_a_0
+        q1_p = (1 - eta1_0) * tau_a + bf1_0
+        q2_p = (1 - 1 / eta2_0) * tau_a + bf2_0
+        q4_m = (1 - 1 / eta2_0) * tau_a - bf2_0
+        q3_m = (1 - eta1_0) * tau_a - bf1_0
+        loss_max_p = ca.if_else(tau_eta_p > 0, q1_p, q2_p)
+        loss_min_m = ca.if_else(tau_eta_m > 0, q4_m, q3_m)
+        q1 = (1 - eta1) * tau_a + bf1
+        q2 = (1 - 1 / eta2) * tau_a + bf2
+        q4 = (1 - 1 / eta2) * tau_a - bf2
+        q3 = (1 - eta1) * tau_a - bf1
+        loss_max = ca.if_else(pos, q1, q2)
+        loss_min = ca.if_else(pos, q4, q3)
+
+        fwd = ca.logic_or(mode == FORWARD, start_fwd)
+        bwd = ca.logic_or(mode == BACKWARD, start_bwd)
+        locked = ca.logic_not(ca.logic_or(fwd, bwd))
+        by_sign = ca.if_else(w > 0, tau_loss - loss_max,         # mode Free: at the start
+                             ca.if_else(w < 0, tau_loss - loss_min, a))
+        e.residual(ca.if_else(fwd, tau_loss - loss_max, ca.if_else(
+            bwd, tau_loss - loss_min, ca.if_else(mode == STUCK, a, by_sign))))
+        tau_eta = ca.if_else(locked, tau_a, ca.if_else(fwd, tau_a - tau_bf_a, tau_a + tau_bf_a))
+
+        stuck = ca.logic_and(locked, mode == STUCK)
+        e.indicator("rolling", ca.if_else(fwd, w, ca.if_else(bwd, -w, 1.0)), "rad/s",
+                    "w_a while rolling, in its direction")
+        e.indicator("breakaway", ca.if_else(stuck, ca.fmin(loss_max_p - tau_loss,
+                                                           tau_loss - loss_min_m), 1.0),
+                    "N.m", "distance of the holding torque to its bounds while stuck")
+        e.indicator("start", ca.if_else(start_fwd, -w, ca.if_else(start_bwd, w, 1.0)),
+                    "rad/s", "-w_a after breaking away, against its direction (from 0, "
+                             "falling: also when the gear breaks away at the start)")
+        e.indicator("tau_eta", tau_eta, "N.m", "torque that determines the driving side")
+        stop = e.vel(self.support) if self.useSupport else 0.0
+        e.reinit(e.vel(self.flange_a), stop, when="rolling", direction=-1)
+        e.reinit(e.vel(self.flange_a), stop, when="breakaway", direction=-1)
+
+        breaks_fwd = ca.logic_and(stuck, tau_loss > loss_max_p)
+        breaks_bwd = ca.logic_and(stuck, tau_loss < loss_min_m)
+        e.mode_update(start_fwd, ca.logic_or(breaks_fwd, ca.logic_and(
+            start_fwd, ca.logic_and(mode == FORWARD, w == 0))))
+        e.mode_update(start_bwd, ca.logic_or(breaks_bwd, ca.logic_and(
+            start_bwd, ca.logic_and(mode == BACKWARD, w == 0))))
+        e.mode_update(pos, tau_eta >= 0)
+        keeps_fwd = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
+        keeps_bwd = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
+        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
+        e.mode_update(mode, ca.if_else(
+            mode == STUCK, ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD,
+                                                                        STUCK)),
+            ca.if_else(mode == FORWARD, ca.if_else(keeps_fwd, FORWARD, STUCK),
+                       ca.if_else(mode == BACKWARD, ca.if_else(keeps_bwd, BACKWARD, STUCK),
+                                  sign_w))))
+
+        for name, value, descr in [
+                ("sa", ca.if_else(locked, tau_loss, a + tau_loss),
+                 "path parameter for acceleration and torque loss"),
+                ("eta_mf1", eta1, "mesh efficiency in case that flange_a is driving"),
+                ("eta_mf2", eta2, "mesh efficiency in case that flange_b is driving")]:
+            e.variable(name, value, "1", descr)
+        for name, value, descr in [
+                ("tau_bf1", bf1, "absolute resultant bearing friction torque with respect "
+                                 "to flange_a in case that flange_a is driving"),
+                ("tau_bf2", bf2, "absolute resultant bearing friction torque with respect "
+                                 "to flange_a in case that flange_b is driving"),
+                ("tau_bf_a", tau_bf_a, "bearing friction torque on flange_a side"),
+                ("tau_eta", tau_eta, "torque that determines the driving side"),
+                ("tau_eta_p", tau_eta_p, "tau_eta assuming positive omega"),
+                ("tau_eta_m", tau_eta_m, "tau_eta assuming negative omega"),
+                ("quadrant1", q1, "torque loss if w_a > 0 and flange_a.tau >= 0"),
+                ("quadrant2", q2, "torque loss if w_a > 0 and flange_a.tau < 0"),
+                ("quadrant3", q3, "torque loss if w_a < 0 and flange_a.tau >= 0"),
+                ("quadrant4", q4, "torque loss if w_a < 0 and flange_a.tau < 0"),
+                ("quadrant1_p", q1_p, "torque loss at w_a = 0+ (flange_a.tau >= 0)"),
+                ("quadrant2_p", q2_p, "torque loss at w_a = 0+ (flange_a.tau < 0)"),
+                ("quadrant3_m", q3_m, "torque loss at w_a = 0- (flange_a.tau >= 0)"),
+                ("quadrant4_m", q4_m, "torque loss at w_a = 0- (flange_a.tau < 0)"),
+                ("tauLossMax", loss_max, "torque loss for positive speed"),
+                ("tauLossMin", loss_min, "torque loss for negative speed"),
+                ("tauLossMax_p", loss_max_p, "torque loss for positive speed (at w_a = 0+)"),
+                ("tauLossMin_m", loss_min_m, "torque loss for negative speed (at w_a = 0-)")]:
+            e.variable(name, value, "N.m", descr)
+        e.variable("tau_aPos", pos, "", "only for backwards compatibility (= tau_etaPos)")
+        e.variable("locked", locked, "", "= true, if gear is locked")
+        e.variable("lossPower", tau_loss * w, "W", "loss power leaving component via heatPort")
