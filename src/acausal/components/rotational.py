@@ -836,7 +836,12 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
         e.indicator("start", ca.if_else(start_fwd, -w, ca.if_else(start_bwd, w, 1.0)),
                     "rad/s", "-w_a after breaking away, against its direction (from 0, "
                              "falling: also when the gear breaks away at the start)")
-        e.indicator("tau_eta", tau_eta, "N.m", "torque that determines the driving side")
+        # MSL's relation tau_eta >= 0 with a hysteresis of its round-off (as a simulator's
+        # crossing functions): in LossyGearDemo3 tau_eta is 0 while rolling, up to noise
+        band = 1e-10 * (ca.fabs(tau_a) + ca.fabs(tau_bf_a) + 1.0)
+        e.indicator("tau_eta", ca.if_else(pos, tau_eta + band, tau_eta - band), "N.m",
+                    "torque that determines the driving side (tau_eta), past a band of "
+                    "round-off on the side of tau_etaPos")
         stop = e.vel(self.support) if self.useSupport else 0.0
         e.reinit(e.vel(self.flange_a), stop, when="rolling", direction=-1)
         e.reinit(e.vel(self.flange_a), stop, when="breakaway", direction=-1)
@@ -847,7 +852,7 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
             start_fwd, ca.logic_and(mode == FORWARD, w == 0))))
         e.mode_update(start_bwd, ca.logic_or(breaks_bwd, ca.logic_and(
             start_bwd, ca.logic_and(mode == BACKWARD, w == 0))))
-        e.mode_update(pos, tau_eta >= 0)
+        e.mode_update(pos, ca.if_else(pos, tau_eta + band >= 0, tau_eta - band > 0))
         keeps_fwd = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
         keeps_bwd = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
         sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
