@@ -894,3 +894,173 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
         e.variable("tau_aPos", pos, "", "only for backwards compatibility (= tau_etaPos)")
         e.variable("locked", locked, "", "= true, if gear is locked")
         e.variable("lossPower", tau_loss * w, "W", "loss power leaving component via heatPort")
+
+
+def _smax(x, y, eps):
+    """max(x, y) rounded over a width eps: ½(x + y + √((x − y)² + eps²)), above the max by
+    at most eps/2 (where x = y), by less than eps²/(4|x − y|) away from it."""
+    return 0.5 * (x + y + ca.sqrt((x - y) ** 2 + eps ** 2))
+
+
+def _smin(x, y, eps):
+    """min(x, y) rounded over a width eps, below it by at most eps/2 (see _smax)."""
+    return -_smax(-x, -y, eps)
+
+
+class _ElastoBacklash(PartialCompliantWithRelativeStates):
+    """Backlash b [rad] in series with a linear spring c [N.m/rad] and damper d [N.m.s/rad]
+    (MSL's ElastoBacklash and ElastoBacklash2): no torque while bMin ≤ phi_diff ≤ bMax
+    (phi_diff = phi_rel − phi_rel0 [rad], bMax = b/2 = −bMin); in contact the spring torque
+    tau_c = c·(phi_diff ∓ b/2) and the damper torque tau_d = d·w_rel, never pulling; a
+    plain spring-damper when b ≤ bEps = 1e-10 rad.
+
+    Events (MSL's relations phi_diff > bMax, phi_diff < bMin): the mode ``contact`` (1:
+    contact at bMax, 0: in the backlash, −1: contact at bMin) changes at the indicators
+    ``bMax`` (phi_diff − bMax) and ``bMin`` (phi_diff − bMin), the Boolean mode ``pushing``
+    (tau_c + tau_d pushes, in the contact's direction) at the indicator ``pushing``; the
+    torque is written for the modes, so the integrator never steps across a kink. During
+    initialization MSL replaces the characteristic by a monotone one (for solving initial
+    equations); here the start values are given (x0) and that form is not needed.
+
+    Smooth form (``e.smooth``): the contacts' kinks rounded over ``phi_smooth`` [rad] (and
+    the torques' over c·phi_smooth [N.m]) by √(x² + ε²) maxima, no modes nor events (the
+    subclasses give the error). Records tau_c, tau_d, phi_diff (MSL's protected variables),
+    contact, pushing, tau, lossPower [W]. useHeatPort only False.
+    """
+    options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
+    c = Parameter(1.0e5, "N.m/rad", "spring constant (c > 0 required)", positive=True)
+    d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
+    b = Parameter(0.0, "rad", "total backlash", nonnegative=True)
+    phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
+    phi_smooth = Parameter(1.0e-5, "rad", "smooth form (compile(smooth=True)): width of the "
+                                          "rounded contact kinks", positive=True)
+    bEps = 1e-10                 # rad, MSL's minimum backlash
+
+    def structure(self, s):
+        if s.smooth:
+            return
+        s.mode("contact", 0, values=(-1, 0, 1),
+               description="1: contact at phi_diff = b/2, 0: in the backlash, -1: contact at "
+                           "phi_diff = -b/2")
+        s.mode("pushing", 0, values=(0, 1), description="= true, if in contact and tau_c + "
+                                                        "tau_d pushes")
+        self._structure_modes(s)
+
+    def _structure_modes(self, s):
+        """Further modes of a subclass."""
+
+    def physics(self, e):
+        phi_rel = e.pos(self.flange_b) - e.pos(self.flange_a)
+        w_rel = e.vel(self.flange_b) - e.vel(self.flange_a)
+        phi_diff, b_max = phi_rel - self.phi_rel0, self.b / 2
+        plain = self.b <= self.bEps
+        tau_d = self.d * w_rel
+        if e.smooth:
+            eps = self.phi_smooth
+            tau_c = self.c * (_smax(phi_diff - b_max, 0.0, eps)
+                              + _smin(phi_diff + b_max, 0.0, eps))
+            tau, loss = self._smooth_law(phi_diff, b_max, tau_d, w_rel)
+        else:
+            contact, pushing = e.mode("contact"), e.mode("pushing")
+            tau_c = self.c * (phi_diff - contact * b_max)        # in contact
+            tc, td = contact * tau_c, contact * tau_d            # in its direction
+            tau, loss = self._contact_law(e, contact, tc, td)
+            tau = ca.if_else(pushing, contact * tau, 0.0)
+            loss = ca.if_else(pushing, loss * w_rel, 0.0)
+            tau_c = ca.if_else(contact == 0, 0.0, tau_c)
+            touching = ca.logic_and(contact != 0, ca.logic_not(plain))
+            e.indicator("bMax", ca.if_else(plain, 1.0, phi_diff - b_max), "rad",
+                        "phi_diff - b/2")
+            e.indicator("bMin", ca.if_else(plain, 1.0, phi_diff + b_max), "rad",
+                        "phi_diff + b/2")
+            e.indicator("pushing", ca.if_else(touching, tc + td, 1.0), "N.m",
+                        "tau_c + tau_d in the contact's direction, in contact")
+            e.mode_update(contact, ca.if_else(phi_diff > b_max, 1, ca.if_else(
+                phi_diff < -b_max, -1, 0)))
+            e.mode_update(pushing, ca.logic_and(contact != 0, tc + td > 0))
+        law = (ca.if_else(plain, self.c * phi_diff + tau_d, tau),
+               ca.if_else(plain, tau_d * w_rel, loss))
+        self.__dict__["_law"] = law
+        super().physics(e)
+        e.variable("phi_diff", phi_diff, "rad", "phi_rel - phi_rel0")
+        e.variable("tau_c", ca.if_else(plain, self.c * phi_diff, tau_c), "N.m",
+                   "spring torque")
+        e.variable("tau_d", tau_d, "N.m", "damper torque")
+
+    def torque(self, phi_rel, w_rel):
+        return self._law[0]
+
+    def loss_power(self, phi_rel, w_rel, tau):
+        return self._law[1]
+
+    def _contact_law(self, e, contact, tc, td):
+        """(torque, loss torque) in contact and pushing, in the contact's direction, from the
+        spring and damper torques tc, td in that direction; the loss torque times w_rel is
+        lossPower."""
+        raise NotImplementedError
+
+    def _smooth_law(self, phi_diff, b_max, tau_d, w_rel):
+        """(tau, lossPower) of the smooth form."""
+        raise NotImplementedError
+
+
+class ElastoBacklash(_ElastoBacklash):
+    """Backlash in series with a spring and damper (MSL's ElastoBacklash): in contact and
+    pushing, flange_b.tau = tau_c + min(tau_c, tau_d) in the contact's direction (the damper
+    torque limited by the spring torque: no jump at the start of contact, no pulling),
+    lossPower = min(tau_c, tau_d)·w_rel. See _ElastoBacklash for the rest.
+
+    Besides MSL's events (contact), the mode ``limited`` (tau_d ≥ tau_c in the contact's
+    direction, the damping limited) changes at the indicator ``limited`` (tau_d − tau_c), so
+    that every kink of the law is an event (MSL writes it under noEvent).
+
+    Smooth form: |tau − exact| ≤ 4·c·phi_smooth [N.m] (each of the four rounded maxima
+    adds at most half its width, and a rounded contact deflection c·phi_smooth/2).
+    """
+    def _structure_modes(self, s):
+        s.mode("limited", 0, values=(0, 1), description="= true, if in contact and the "
+                                                        "damper torque is limited by tau_c")
+
+    def _contact_law(self, e, contact, tc, td):
+        limited = e.mode("limited")
+        e.indicator("limited", ca.if_else(contact != 0, td - tc, -1.0), "N.m",
+                    "tau_d - tau_c in the contact's direction, in contact")
+        e.mode_update(limited, ca.logic_and(contact != 0, td > tc))
+        e.variable("limited", limited, "", "= true, if the damper torque is limited")
+        damper = ca.if_else(limited, tc, td)
+        return tc + damper, damper
+
+    def _smooth_law(self, phi_diff, b_max, tau_d, w_rel):
+        eps, tau_eps = self.phi_smooth, self.c * self.phi_smooth
+        tc_pos = self.c * _smax(phi_diff - b_max, 0.0, eps)
+        tc_neg = self.c * _smin(phi_diff + b_max, 0.0, eps)
+        d_pos, d_neg = _smin(tc_pos, tau_d, tau_eps), _smax(tc_neg, tau_d, tau_eps)
+        tau_pos = _smax(tc_pos + d_pos, 0.0, tau_eps)
+        tau_neg = _smin(tc_neg + d_neg, 0.0, tau_eps)
+        return tau_pos + tau_neg, (d_pos + d_neg) * w_rel
+
+
+class ElastoBacklash2(_ElastoBacklash):
+    """Backlash in series with a spring and damper (MSL 4.x's ElastoBacklash2): in contact
+    and pushing, flange_b.tau = tau_c + tau_d (it jumps by tau_d when contact starts: an
+    event), zero when it would pull; lossPower = tau_d·w_rel. See _ElastoBacklash for the
+    rest.
+
+    Smooth form: tau_d switched on by ½(1 ± tanh((phi_diff ∓ b/2)/phi_smooth)) and the
+    no-pull limit rounded over c·phi_smooth: |tau − exact| ≤ 1.5·c·phi_smooth +
+    d·|w_rel|·exp(−2·|phi_diff ∓ b/2|/phi_smooth) [N.m] (the torque's jump at contact spread
+    over a few phi_smooth).
+    """
+
+    def _contact_law(self, e, contact, tc, td):
+        return tc + td, td
+
+    def _smooth_law(self, phi_diff, b_max, tau_d, w_rel):
+        eps, tau_eps = self.phi_smooth, self.c * self.phi_smooth
+        on_pos = 0.5 * (1 + ca.tanh((phi_diff - b_max) / eps))
+        on_neg = 0.5 * (1 - ca.tanh((phi_diff + b_max) / eps))
+        tau_pos = _smax(self.c * _smax(phi_diff - b_max, 0.0, eps) + on_pos * tau_d, 0.0,
+                        tau_eps)
+        tau_neg = _smin(self.c * _smin(phi_diff + b_max, 0.0, eps) + on_neg * tau_d, 0.0,
+                        tau_eps)
+        return tau_pos + tau_neg, tau_d * w_rel * (on_pos + on_neg)
