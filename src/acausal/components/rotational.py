@@ -702,6 +702,15 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
     flange_a, interpolated in |w_a| as MSL's Smoothness.LinearSegments (the only smoothness
     here) with Extrapolation.LastTwoPoints. ``ratio`` [1] ≠ 0 (default 1 = MSL start value).
 
+    Smooth form (``e.smooth``, for optimal control): no modes nor events; tauLoss =
+    σ·max(quadrant1, quadrant2) + (1 − σ)·min(quadrant3, quadrant4), σ = ½(1 +
+    tanh(w_a/w_smooth)), the table read at √(w_a² + w_smooth²/4) (≥ |w_a|, by at most
+    w_smooth/2). For efficiencies with eta_mf1·eta_mf2 ≤ 1 the max and min are MSL's choice
+    of quadrant by the sign of tau_eta (quadrant1 − quadrant2 = (1/eta_mf2 − eta_mf1)·tau_eta),
+    so rolling at |w_a| ≫ w_smooth the loss is exact up to |tauLossMax − tauLossMin|·
+    exp(−2|w_a|/w_smooth) (plus the table's slope·w_smooth/2); there is no stuck mode: where
+    the exact gear sticks, the smooth one creeps with |w_a| of the order of w_smooth.
+
     The loss torque tauLoss [N.m] (on flange_a's side) is an algebraic variable switched on
     MSL's mode (2: ideal, 1: forward rolling w_a > 0, 0: stuck, −1: backward) and on
     tau_etaPos, MSL's relation tau_eta ≥ 0 (which side drives): rolling forward,
@@ -728,6 +737,9 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
     """
     options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
     ratio = Parameter(1.0, "1", "transmission ratio (flange_a.phi/flange_b.phi)", nonzero=True)
+    w_smooth = Parameter(1.0e-3, "rad/s", "smooth form (compile(smooth=True)): speed over "
+                                          "which the loss changes from rolling backward to "
+                                          "forward", positive=True)
     IDEAL = ((0.0, 1.0, 1.0, 0.0, 0.0),)
 
     def __init__(self, name: str | None = None, **params):
@@ -766,6 +778,10 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
                                   f"{self.path}: phi_a = ratio*phi_b")
         if self.ideal:
             return
+        s.algebraic("tauLoss", unit="N.m", description="torque loss due to friction in the "
+                                                       "gear teeth and in the bearings")
+        if s.smooth:
+            return
         s.mode("mode", friction.FREE, values=friction.MODES[:-1],
                description="mode of friction element (-1: backward rolling, 0: stuck, "
                            "1: forward rolling, 2: not active)")
@@ -775,8 +791,6 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
                                                               "backward")
         s.mode("tau_etaPos", 1, values=(0, 1), description="= true, if torque tau_eta is "
                                                            "not negative")
-        s.algebraic("tauLoss", unit="N.m", description="torque loss due to friction in the "
-                                                       "gear teeth and in the bearings")
 
     def physics(self, e):
         phi_a, phi_b = (self._rel_position(e, f) for f in (self.flange_a, self.flange_b))
@@ -793,28 +807,43 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
             e.variable("tauLoss", 0.0, "N.m", "torque loss")
             e.variable("lossPower", 0.0, "W", "loss power leaving component via heatPort")
             return
-        FORWARD, STUCK, BACKWARD = friction.FORWARD, friction.STUCK, friction.BACKWARD
-        mode, tau_loss = e.mode("mode"), e.state("tauLoss")
-        start_fwd, start_bwd, pos = (e.mode(n) for n in ("startForward", "startBackward",
-                                                         "tau_etaPos"))
+        tau_loss = e.state("tauLoss")
         e.flow(self.flange_a, tau_loss)
         if self.useSupport:
             e.flow(self.support, -tau_loss)
         tau_a = e.cut_flow(self.flange_a)                      # flange_a.tau
+        e.variable("lossPower", tau_loss * w, "W", "loss power leaving component via heatPort")
+        if e.smooth:
+            self._smooth(e, tau_loss, tau_a, w, a)
+        else:
+            self._modes(e, tau_loss, tau_a, w, a)
 
-        eta1, eta2, bf1, bf2, tau_bf_a = self._losses(ca.fabs(w))
-        eta1_0, eta2_0, bf1_0, bf2_0, tau_bf_a_0 = self._losses(0.0)
+    def _quadrants(self, tau_a, w):
+        """MSL's quadrant1..4 [N.m] at |w_a| = w, and eta_mf1, eta_mf2, tau_bf1, tau_bf2,
+        tau_bf_a there."""
+        eta1, eta2, bf1, bf2, tau_bf_a = self._losses(w)
+        return ((1 - eta1) * tau_a + bf1, (1 - 1 / eta2) * tau_a + bf2,
+                (1 - eta1) * tau_a - bf1, (1 - 1 / eta2) * tau_a - bf2,
+                (eta1, eta2, bf1, bf2, tau_bf_a))
+
+    def _smooth(self, e, tau_loss, tau_a, w, a):
+        """The smooth form: tauLoss = σ·max(q1, q2) + (1 − σ)·min(q3, q4), σ = ½(1 +
+        tanh(w_a/w_smooth)), the table at the rounded |w_a| (see the class)."""
+        q1, q2, q3, q4, _ = self._quadrants(tau_a, _smax(w, -w, self.w_smooth))
+        up = 0.5 * (1 + ca.tanh(w / self.w_smooth))
+        e.residual(tau_loss - (up * ca.fmax(q1, q2) + (1 - up) * ca.fmin(q3, q4)))
+
+    def _modes(self, e, tau_loss, tau_a, w, a):
+        """The exact form: MSL's modes on state events (see the class)."""
+        FORWARD, STUCK, BACKWARD = friction.FORWARD, friction.STUCK, friction.BACKWARD
+        mode = e.mode("mode")
+        start_fwd, start_bwd, pos = (e.mode(n) for n in ("startForward", "startBackward",
+                                                         "tau_etaPos"))
+        q1, q2, q3, q4, (eta1, eta2, bf1, bf2, tau_bf_a) = self._quadrants(tau_a, ca.fabs(w))
+        q1_p, q2_p, q3_m, q4_m, (*_, tau_bf_a_0) = self._quadrants(tau_a, 0.0)   # w_a = 0±
         tau_eta_p, tau_eta_m = tau_a - tau_bf_a_0, tau_a + tau_bf_a_0
-        q1_p = (1 - eta1_0) * tau_a + bf1_0
-        q2_p = (1 - 1 / eta2_0) * tau_a + bf2_0
-        q4_m = (1 - 1 / eta2_0) * tau_a - bf2_0
-        q3_m = (1 - eta1_0) * tau_a - bf1_0
         loss_max_p = ca.if_else(tau_eta_p > 0, q1_p, q2_p)
         loss_min_m = ca.if_else(tau_eta_m > 0, q4_m, q3_m)
-        q1 = (1 - eta1) * tau_a + bf1
-        q2 = (1 - 1 / eta2) * tau_a + bf2
-        q4 = (1 - 1 / eta2) * tau_a - bf2
-        q3 = (1 - eta1) * tau_a - bf1
         loss_max = ca.if_else(pos, q1, q2)
         loss_min = ca.if_else(pos, q4, q3)
 
@@ -893,7 +922,6 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
             e.variable(name, value, "N.m", descr)
         e.variable("tau_aPos", pos, "", "only for backwards compatibility (= tau_etaPos)")
         e.variable("locked", locked, "", "= true, if gear is locked")
-        e.variable("lossPower", tau_loss * w, "W", "loss power leaving component via heatPort")
 
 
 def _smax(x, y, eps):
