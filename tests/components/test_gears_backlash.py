@@ -236,6 +236,10 @@ def test_lossy_gear_demos_match_the_msl_reference(reference_result, name, model)
     res = acausal.compile(model()).simulate(float(ref["time"][-1]), t=ref["time"],
                                             x0=START[name], rtol=1e-8, atol=1e-10)
     _compare(ref, res, ("Inertia2.phi", "Inertia2.w"), ("gear.mode",))
+    # MSL's check: the power the flanges lose (PowerLoss) is the gear's lossPower
+    flanges = res["gear.flange_a.tau"] * res["gear.w_a"] + res["gear.flange_b.tau"] * \
+        res["gear.w_a"] / res["gear.ratio"]
+    assert np.abs(res["gear.lossPower"] - flanges).max() < 1e-12
 
 
 def test_backlash_example_matches_the_msl_reference(reference_result):
