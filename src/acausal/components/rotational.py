@@ -22,7 +22,9 @@ classes here declare MSL's connectors and names on top of them.
 
 Differences from MSL, by necessity of a Python library, are listed in each docstring.
 Coulomb friction (BearingFriction, Brake, Clutch) has MSL's mode machine on state events
-(see ``friction``); backlash and stops are not here yet.
+(see ``friction``); LossyGear (mesh efficiency and bearing friction, stuck or rolling),
+ElastoBacklash and ElastoBacklash2 switch on modes at state events too, and each has a smooth
+form for optimal control (``compile(model, smooth=True)``).
 """
 from __future__ import annotations
 

@@ -18,6 +18,7 @@ no compiler or simulation imports.
     oscillators         Oscillator: mass on a spring and a damper
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
+    gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -28,6 +29,7 @@ from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
 from .elastic_bearing import ElasticBearing
 from .friction import RotationalFriction
+from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .oscillators import Oscillator
@@ -38,4 +40,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "GantryCrane", "CubicSpring", "F
            "duffing_model", "motor_model", "DiskDriveHead", "Drivetrain", "DrivenFourBar",
            "ElasticBearing", "FourBar", "KinematicLoop", "Parallelogram", "PistonEngine",
            "SliderCrank", "add_link", "Oscillator", "PendulumOnCart", "PendulumChain",
-           "RotationalFriction"]
+           "RotationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
+           "LossyGearDemo3"]
