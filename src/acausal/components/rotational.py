@@ -722,7 +722,7 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
     PartialFriction); here it runs on the state-event engine as PartialFriction's does
     (``acausal.components.friction``): events ``rolling`` (w_a falling through 0 while
     rolling, setting w_a to 0 exactly), ``breakaway`` (the holding torque leaving
-    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 after breaking away:
+    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 by more than W_NOISE after breaking away:
     startForward/startBackward, Boolean modes set at breakaway, are cleared then) and
     ``tau_eta`` (the driving side changing: the kink between quadrants). A rolling gear
     that reaches w_a = 0 keeps rolling only if its acceleration there keeps its direction.
@@ -864,9 +864,9 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
         e.indicator("breakaway", ca.if_else(stuck, ca.fmin(loss_max_p - tau_loss,
                                                            tau_loss - loss_min_m), 1.0),
                     "N.m", "distance of the holding torque to its bounds while stuck")
-        e.indicator("start", ca.if_else(start_fwd, -w, ca.if_else(start_bwd, w, 1.0)),
-                    "rad/s", "-w_a after breaking away, against its direction (from 0, "
-                             "falling: also when the gear breaks away at the start)")
+        e.indicator("start", ca.if_else(start_fwd, w - friction.W_NOISE, ca.if_else(
+            start_bwd, -w - friction.W_NOISE, -1.0)), "rad/s",
+            "w_a after breaking away, in its direction, past W_NOISE")
         # MSL's relation tau_eta >= 0 with a hysteresis of its round-off (as a simulator's
         # crossing functions): in LossyGearDemo3 tau_eta is 0 while rolling, up to noise
         band = 1e-10 * (ca.fabs(tau_a) + ca.fabs(tau_bf_a) + 1.0)
@@ -880,9 +880,9 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
         breaks_fwd = ca.logic_and(stuck, tau_loss > loss_max_p)
         breaks_bwd = ca.logic_and(stuck, tau_loss < loss_min_m)
         e.mode_update(start_fwd, ca.logic_or(breaks_fwd, ca.logic_and(
-            start_fwd, ca.logic_and(mode == FORWARD, w == 0))))
+            start_fwd, ca.logic_and(mode == FORWARD, ca.fabs(w) <= friction.W_NOISE))))
         e.mode_update(start_bwd, ca.logic_or(breaks_bwd, ca.logic_and(
-            start_bwd, ca.logic_and(mode == BACKWARD, w == 0))))
+            start_bwd, ca.logic_and(mode == BACKWARD, ca.fabs(w) <= friction.W_NOISE))))
         e.mode_update(pos, ca.if_else(pos, tau_eta + band >= 0, tau_eta - band > 0))
         keeps_fwd = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
         keeps_bwd = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
