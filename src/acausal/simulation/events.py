@@ -157,7 +157,8 @@ class EventSimulation:
         except RuntimeError as e:
             raise SimulationError(f"integration of '{self.model.name}' failed after "
                                   f"t = {t0:g} s with the modes "
-                                  f"{self._modes(d)}: {short_error(e)}") from None
+                                  f"{self._modes(d)}: {short_error(e)}"
+                                  f"{self._undetermined(t0, x, z, d)}") from None
         X = np.array(sol["xf"], dtype=float) * self.Nx[:, None]
         if not self.has_alg:
             return X, np.zeros((0, len(times)))
@@ -271,6 +272,23 @@ class EventSimulation:
         crossed = {k: new[k] for k in np.flatnonzero(new != sides)}
         return not any(r.indicator in crossed and r.direction in (0, crossed[r.indicator])
                        for r in self.reinits)
+
+    def _undetermined(self, t, x, z, d) -> str:
+        """Why the algebraic equations may be singular at (t, x, z): the algebraic variables
+        they leave free (their Jacobian's null space), or '' if none."""
+        if not self.has_alg:
+            return ""
+        J = np.array(self.newton(*self.point(t, x, z, d))[1], dtype=float)
+        _, sv, vt = np.linalg.svd(J[np.any(J != 0, axis=1)])
+        rank = int(np.sum(sv > 1e-10 * max(sv.max(initial=0.0), 1.0)))
+        free = np.abs(vt[rank:]).max(axis=0, initial=0.0) > 1e-8 if rank < J.shape[1] \
+            else np.zeros(J.shape[1], bool)
+        names = [self.model.z_names[k] for k in np.flatnonzero(free)]
+        if not names:
+            return ""
+        return (f"; the equations leave {', '.join(names)} undetermined there (e.g. two "
+                f"friction elements stuck on one rigid shaft share its holding torque in any "
+                f"proportion: statically indeterminate, not solvable here yet)")
 
     def _modes(self, d) -> dict:
         return {n: float(v) for n, v in zip(self.mode_names, d)}
