@@ -722,9 +722,12 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
     PartialFriction); here it runs on the state-event engine as PartialFriction's does
     (``acausal.components.friction``): events ``rolling`` (w_a falling through 0 while
     rolling, setting w_a to 0 exactly), ``breakaway`` (the holding torque leaving
-    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 by more than W_NOISE after breaking away:
-    startForward/startBackward, Boolean modes set at breakaway, are cleared then) and
-    ``tau_eta`` (the driving side changing: the kink between quadrants). A rolling gear
+    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 by more than
+    friction.W_NOISE after breaking away: startForward/startBackward, Boolean modes set at
+    breakaway, are cleared then) and ``tau_eta`` (the driving side changing: the kink
+    between quadrants, past a band of round-off; a mode only of a gear with losses). Two
+    elements stuck on one shaft (a LossyGear and a BearingFriction) leave their holding
+    torques undetermined: the simulation stops there with an error. A rolling gear
     that reaches w_a = 0 keeps rolling only if its acceleration there keeps its direction.
     The mode starts at Free (MSL: start = Free, fixed = true); at the start, as MSL's
     initial(), it takes the direction of w_a, or Stuck.
