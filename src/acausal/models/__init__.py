@@ -24,6 +24,7 @@ no compiler or simulation imports.
     translational_friction  TranslationalBrake, TranslationalFriction, PreLoad: MSL's
                         Translational Examples Brake, Friction (MassWithStopAndFriction) and
                         PreLoad (ElastoGap)
+    gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -35,6 +36,7 @@ from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
 from .elastic_bearing import ElasticBearing
 from .friction import RotationalFriction
+from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .oscillators import Oscillator
@@ -48,4 +50,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "Parallelogram", "PistonEngine", "SliderCrank", "add_link", "Oscillator",
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
-           "TranslationalFriction"]
+           "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
+           "LossyGearDemo3"]
