@@ -908,8 +908,9 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
     friction.W_NOISE after breaking away: startForward/startBackward, Boolean modes set at
     breakaway, are cleared then) and ``tau_eta`` (the driving side changing: the kink
     between quadrants, past a band of round-off; a mode only of a gear with losses). Two
-    elements stuck on one shaft (a LossyGear and a BearingFriction) leave their holding
-    torques undetermined: the simulation stops there with an error. A rolling gear
+    elements stuck on one shaft (a LossyGear and a BearingFriction) leave the split of their
+    holding torque undetermined: the simulator keeps the split they stuck with (see
+    ``acausal.simulation.events``). A rolling gear
     that reaches w_a = 0 keeps rolling only if its acceleration there keeps its direction.
     The mode starts at Free (MSL: start = Free, fixed = true); at the start, as MSL's
     initial(), it takes the direction of w_a, or Stuck.

@@ -7,8 +7,9 @@ experiments:
   backward. StopTime 0.5 s, Interval 0.001 s; all at rest at 0.
 - ``LossyGearDemo2``: the same with a BearingFriction (tau_pos [[0, 0.5], [1, 1]]) between
   the drive and inertia1: both friction elements stuck at once have no unique solution
-  (MSL's documentation says so): here the simulation follows the reference until that
-  happens (0.3083 s) and stops there with an error naming the undetermined torques.
+  (MSL's documentation says so; from 0.3083 s): the simulator keeps the split of the holding
+  torque they had when they stuck (Dymola picks another), so the motion is the reference's
+  and the two modes may differ from it until the shaft breaks away (0.4727 s).
 - ``LossyGearDemo3``: inertia1 (J 0.001, w 10 rad/s at the start), a LossyGear (ratio 1,
   lossTable [[0, 0.25, 0.25, 0.625, 2.5]]), inertia2 (J 0.001) loaded by a step of 1 N.m at
   0.5 s; the driving side is not obvious (MSL's LossyGear before 3.1 failed here). StopTime

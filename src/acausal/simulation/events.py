@@ -22,7 +22,10 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    modes updated together from the present ones, the algebraic variables solved in between,
    until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine); in closed loops
    the states are projected onto the loop constraints and their rates (the reinitialized
-   ones held); the integrator restarts from there, the right limit;
+   ones held); the integrator restarts from there, the right limit; where the algebraic
+   equations are singular but consistent there (statically indeterminate: two friction
+   elements stuck on one shaft), the indeterminate combinations of the algebraic variables
+   are held at the least-norm values the iteration found until the next event;
 4. time events (declared, input jumps) are restarts as without modes; the event iteration
    runs there and at the start too, so that the modes start consistent. At the instants of
    a sample trigger (``StructureBuilder.sample``, Modelica's ``sample(start, period)``) the
@@ -199,21 +202,14 @@ class EventSimulation(ModeIteration):
             self.opts["calc_ic"] = False
         self.Nx, self.Nz = scale[:self.nx], scale[self.nx:]
         d = model.p[model.mode_params] if model.mode_params else ca.SX(0, 1)
-        self.dae = {"x": model.x, "t": model.t, "ode": ode, "p": d}
-        if self.has_alg:
-            self.dae.update(z=model.z, alg=alg)
-        t0, h, tau = ca.SX.sym("t0"), ca.SX.sym("h"), ca.SX.sym("tau")
-        at = model.t, t0 + h * tau
-        scaled = {"x": model.x, "t": tau, "p": ca.vertcat(t0, h, d),
-                  "ode": h * ca.substitute(ode, *at)}
-        if self.has_alg:
-            scaled.update(z=model.z, alg=ca.substitute(alg, *at))
-        local = {k: v for k, v in self.opts.items() if k not in ("max_step_size", "calc_ic")}
+        self.ode, self.alg, self.d = ode, alg, d
         self.static = self.nx == 0 and not self.has_alg     # only signals: nothing to integrate
         if self.has_alg:    # IDAS is given consistent derivatives at each start
             self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
-        if not self.loops and not self.static:
-            self.step = ca.integrator("locate", plugin, scaled, 0.0, [1.0], local)
+            self.alg_jacobian = ca.Function("alg_jacobian", [model.x, model.z, model.t, d],
+                                            [ca.jacobian(alg, model.z)])
+        self.regular = self._integrators(alg)
+        self.dae, self.step = self.regular
         self._g_map, self._u_map = {}, {}
         self.g = model.indicator_function
         self.reinits = model.state_events.reinits
@@ -222,6 +218,48 @@ class EventSimulation(ModeIteration):
         self.clocks = list(model.state_events.clocks)
         self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
         self.log: list[Event] = []
+
+    def _integrators(self, alg):
+        """(the DAE with algebraic equations ``alg``, the integrator over a normalized
+        interval [t0, t0 + h] built on it once: what locating an event re-integrates)."""
+        model, d = self.model, self.d
+        dae = {"x": model.x, "t": model.t, "ode": self.ode, "p": d}
+        if self.has_alg:
+            dae.update(z=model.z, alg=alg)
+        if self.loops or self.static:
+            return dae, None
+        t0, h, tau = ca.SX.sym("t0"), ca.SX.sym("h"), ca.SX.sym("tau")
+        at = model.t, t0 + h * tau
+        scaled = {"x": model.x, "t": tau, "p": ca.vertcat(t0, h, d),
+                  "ode": h * ca.substitute(self.ode, *at)}
+        if self.has_alg:
+            scaled.update(z=model.z, alg=ca.substitute(alg, *at))
+        local = {k: v for k, v in self.opts.items() if k not in ("max_step_size", "calc_ic")}
+        return dae, ca.integrator("locate", self.plugin, scaled, 0.0, [1.0], local)
+
+    def _prepare(self, t, x, z, d):
+        """The DAE of the stretch that starts at (t, x, z) with modes d: the model's, or,
+        where its algebraic equations are singular there (statically indeterminate: two
+        friction elements stuck on one rigid shaft share its holding torque in any
+        proportion, MSL's LossyGearDemo2; a Modelica tool picks a split by pivoting), their
+        independent rows and the indeterminate combinations of the algebraic variables held
+        at their values there (the least-norm split the event iteration solved)."""
+        self.dae, self.step = self.regular
+        if not self.has_alg or self.loops:
+            return
+        xs, zs = x / self.Nx, z / self.Nz
+        J = np.array(self.alg_jacobian(xs, zs, t, d), dtype=float)
+        sv, vt = np.linalg.svd(J)[1:]
+        rank = int(np.sum(sv > 1e-10 * max(sv.max(initial=0.0), 1.0)))
+        if rank == J.shape[1]:
+            return
+        rows = []
+        for k in range(J.shape[0]):                 # the first independent rows
+            if np.linalg.matrix_rank(J[rows + [k]], tol=1e-10 * sv[0]) > len(rows):
+                rows.append(k)
+        held = vt[rank:]                            # the null space: indeterminate
+        alg = ca.vertcat(self.alg[rows], ca.mtimes(ca.DM(held), self.model.z - ca.DM(zs)))
+        self.dae, self.step = self._integrators(alg)
 
     def indicators(self, t, x, z, d) -> np.ndarray:
         return np.array(self.g(*self.point(t, x, z, d)), dtype=float).ravel()
@@ -350,6 +388,7 @@ class EventSimulation(ModeIteration):
         if not crossed and (changed or reinit):
             owners = sorted({self.mode_owner[self.mode_names.index(n)] for n in changed})
             self.log.append(Event(float(t), ", ".join(owners), "", 0, changed, reinit))
+        self._prepare(t, x_new, z, d_new)
         return x_new, z, d_new
 
     def _first_event(self, G, sides):
@@ -390,9 +429,8 @@ class EventSimulation(ModeIteration):
         names = [self.model.z_names[k] for k in np.flatnonzero(free)]
         if not names:
             return ""
-        return (f"; the equations leave {', '.join(names)} undetermined there (e.g. two "
-                f"friction elements stuck on one rigid shaft share its holding torque in any "
-                f"proportion: statically indeterminate, not solvable here yet)")
+        return (f"; the equations leave {', '.join(names)} undetermined there and are not "
+                f"consistent (check the equations the components give for these modes)")
 
     def run(self, grid, x, z, time_events):
         """Integrate over ``grid`` from (x, z) at grid[0]: (T, X, Z, D) with the left and right
