@@ -21,12 +21,15 @@ no compiler or simulation imports.
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
     clutches            CoupledClutches: MSL's drive train with 3 coupled clutches;
                         OneWayClutchDrive, OneWayClutchDisengaged: MSL's one-way clutch
+    event_blocks        Thermostat: a bang-bang loop (OnOffController or Hysteresis);
+                        SampledPController: Sampler and ZeroOrderHold on a mass
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
 from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
+from .event_blocks import SampledPController, Thermostat
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
@@ -43,4 +46,4 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "Drivetrain", "DrivenFourBar", "ElasticBearing", "FourBar", "KinematicLoop",
            "Parallelogram", "PistonEngine", "SliderCrank", "add_link", "Oscillator",
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
-           "OneWayClutchDrive", "OneWayClutchDisengaged"]
+           "OneWayClutchDrive", "OneWayClutchDisengaged", "SampledPController", "Thermostat"]
