@@ -16,18 +16,22 @@ CoupledClutches (models/clutches.py; three clutches sticking and slipping, 1.5 s
 """
 from __future__ import annotations
 
+import re
 import subprocess
 
 import numpy as np
 import pytest
 
 fmpy = pytest.importorskip("fmpy")
+from fmpy.fmi1 import FMICallException                                   # noqa: E402
 
 import acausal                                                            # noqa: E402
 from acausal.components import discrete as dc                            # noqa: E402
 from acausal.components import signals as sg                             # noqa: E402
 from acausal.models import CoupledClutches, SampledPController, Thermostat  # noqa: E402
+from acausal.errors import FmuExportError                                # noqa: E402
 from acausal.models.clutches import START as CLUTCHES_START              # noqa: E402
+from fmi_calls import init, instance                                     # noqa: E402
 from test_native_events import EVENT_TOL, RTOL, VERSIONS, at, csv, mode_changes, tool  # noqa: E402,I001
 
 RAMP = (0.5, 0.2)              # offset, slope [1/s]
@@ -157,3 +161,28 @@ def test_fmusim_reproduces_simulate_with_its_samples(fmus, name, version, kind, 
     assert r.returncode == 0, r.stdout + r.stderr
     res = csv(out)
     check(name, fmus[name], res["time"], lambda n: res[n], kind == "me")
+
+
+# ---- errors -----------------------------------------------------------------------------------
+def test_an_importer_stepping_over_a_sample_instant_gets_an_error_not_a_lost_sample(fmus,
+                                                                                     capsys):
+    """Model exchange, FMI 2.0: an event update at 0.3 s, past the hold's instant 0.105 s
+    (and 0.2 s of the Sampler) that the importer did not stop at: fmiError naming the
+    block, rather than a sample silently lost."""
+    fmu, vr, md = instance(fmus["hold", "2.0"])
+    init(fmu, md)
+    fmu.newDiscreteStates()
+    fmu.enterContinuousTimeMode()
+    fmu.setTime(0.3)
+    fmu.enterEventMode()
+    with pytest.raises(FMICallException, match="status 3"):
+        fmu.newDiscreteStates()
+    log = capsys.readouterr().out
+    assert re.search(r"the sample instant t = 0\.10\d* s of 'zoh' was passed without an "
+                     r"event at it .*nextEventTime", log), log
+
+
+def test_pythonfmu_refuses_sampled_models_and_points_at_the_native_backend(fmu_dir):
+    compiled = acausal.compile(hold())
+    with pytest.raises(FmuExportError, match=r"dly, smp, zoh.*backend='native'"):
+        compiled.export_fmu(fmu_dir / "hold_py.fmu", backend="pythonfmu")

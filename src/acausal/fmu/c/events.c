@@ -136,22 +136,34 @@ static int iterate(ac_inst *m, int *changed) {
  * those declared `initial` (whatever the time); later those with an instant first + k·period
  * (k >= 0, the numbers ac_events reports as time events) within AC_EVENT_TOL·max(1, |t|) s,
  * the tolerance of events.py's `instant`, once per instant (an importer may run the event
- * update twice at one time: a UnitDelay would shift twice) */
+ * update twice at one time: a UnitDelay would shift twice). An instant passed since the
+ * trigger last ticked is an error: the importer stepped over a time event (nextEventTime),
+ * and the sample would be lost */
 static int ticking(ac_inst *m, int start, unsigned char *tick, int *any) {
 #if AC_NCLOCK > 0
     double cl[2 * AC_NCLOCK], t = m->d.t, tol = AC_EVENT_TOL * (fabs(t) > 1 ? fabs(t) : 1);
     int c;
     if (ac_eval_p(m, (ac_fn)ac_clocks, cl)) return ERR("evaluating the sample instants failed");
     for (c = 0; c < AC_NCLOCK; c++) {
-        double first = cl[c], period = cl[AC_NCLOCK + c], k = round((t - first) / period);
+        double first = cl[c], period = cl[AC_NCLOCK + c], k, last;
         if (!(period > 0) || !isfinite(period) || !isfinite(first))
             return ERR("the sample period of '%s' must be > 0 s, got %g (first instant %g s)",
                        AC_MODE_OWNER[AC_CLOCK_MODE[c]], period, first);
-        tick[c] = start ? AC_CLOCK_INITIAL[c] != 0
-                        : k >= 0 && fabs(first + k * period - t) <= tol && t > m->d.last_tick + tol;
+        if (start) {
+            tick[c] = AC_CLOCK_INITIAL[c] != 0;
+            m->d.last_tick[c] = t;
+        } else {
+            k = floor((t + tol - first) / period);       /* the last instant up to t */
+            last = first + k * period;
+            tick[c] = k >= 0 && last > m->d.last_tick[c] + tol;
+            if (tick[c] && last < t - tol)
+                return ERR("the sample instant t = %.17g s of '%s' was passed without an event "
+                           "at it (the FMU is at t = %.17g s): an importer must stop at "
+                           "nextEventTime", last, AC_MODE_OWNER[AC_CLOCK_MODE[c]], t);
+            if (tick[c]) m->d.last_tick[c] = t;
+        }
         *any |= tick[c];
     }
-    if (start || *any) m->d.last_tick = t;
 #else
     (void)m; (void)start; (void)tick; (void)any;
 #endif
