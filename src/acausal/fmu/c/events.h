@@ -13,9 +13,11 @@
  *   - sample triggers (StructureBuilder.sample; AC_CLOCK_MODE: their positions among the
  *     modes): their instants are among the time events (ac_events, so ME reports them as
  *     nextEventTime and CS stops at them); at an event within AC_EVENT_TOL·max(1, |t|) s of
- *     an instant of a trigger (not yet handled: once per instant), the trigger is 1 through
- *     the event iteration and then the iteration runs once more with it 0, as events.py's
- *     `event`; at the start only the triggers declared `initial` (AC_CLOCK_INITIAL) tick;
+ *     an instant of a trigger (once per instant: each trigger's last tick is kept), the
+ *     trigger is 1 through the event iteration and then the iteration runs once more with
+ *     it 0, as events.py's `event`; at the start only the triggers declared `initial`
+ *     (AC_CLOCK_INITIAL) tick; an event past an instant the importer did not stop at is an
+ *     error naming the block (the sample would be lost);
  *   - hysteresis, as Modelica tools shift their crossing functions: an indicator g on side s
  *     is reported as g + s·AC_HYSTERESIS, so it crosses once g is AC_HYSTERESIS past zero
  *     (in its own units); at the event the relations that the mode updates test (a torque
