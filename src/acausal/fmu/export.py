@@ -89,7 +89,10 @@ the linear algebra is dense LU, O(n³) per step (fine for tens to a few hundred 
 for thousands); the Newton iteration for z has no globalization beyond the warm start (it
 fails with fmi2Error and a logged message if it does not converge in 50 iterations); the
 solver does not detect the loops' singular positions (a dead point of a linkage stops it
-with an error).
+with an error). A sample instant at the stop time is taken by the co-simulation FMU (its
+last doStep ends at the instant's right limit), not by simulate(), which ends there; a
+model-exchange importer that steps over a sample instant (its event update comes later)
+gets fmiError naming the block instead of a lost sample.
 
 Initialization
 --------------
