@@ -11,7 +11,8 @@ The models: a ramp 0.5 + 0.2·t through a ZeroOrderHold (every 0.25 s from 0.105
 Sampler into a UnitDelay (every 0.2 s) — the hold is also checked against the exact
 staircase and the delay against the ramp one instant late; the sampled P controller on a mass (models/event_blocks.py,
 its exact discretization is checked in tests/components/test_event_blocks.py); the
-Hysteresis thermostat (a relation's state events; its switching times are logarithms); MSL's
+thermostat with a Hysteresis and with an OnOffController (a relation's state events; its
+switching times are logarithms); MSL's
 CoupledClutches (models/clutches.py; three clutches sticking and slipping, 1.5 s).
 """
 from __future__ import annotations
@@ -60,6 +61,7 @@ CASES = {
                 ["smp.y", "zoh.ySample"]),
     "thermostat": (lambda: Thermostat(kind="Hysteresis"), 12.0, 0.01, {},
                    ["plant.y", "heater.y"], ["ctrl.y"]),
+    "on_off": (Thermostat, 12.0, 0.01, {}, ["plant.y", "heater.y"], ["ctrl.y"]),
     "clutches": (CoupledClutches, 1.5, 0.001, CLUTCHES_START, CLUTCHES,
                  ["clutch1.mode", "clutch2.mode", "clutch3.mode"]),
 }
@@ -121,12 +123,13 @@ def test_the_references_are_the_closed_forms(fmus):
     k = np.floor(grid / DELAY + 1e-9)
     delayed = np.where(k < 1, 0.0, ramp(DELAY * (k - 1)))
     np.testing.assert_allclose(at(ref.t, ref["dly.y"], grid), delayed, rtol=0, atol=1e-14)
-    ref = fmus["thermostat"]
     heat, cool = 2.0 * np.log((10.0 - 4.0) / (10.0 - 6.0)), 2.0 * np.log(6.0 / 4.0)
     first = -2.0 * np.log(1 - 6.0 / 10.0)
-    switches = mode_changes(ref.t, ref["ctrl.y"])
-    expected = first + np.cumsum([0.0] + [cool, heat] * (len(switches) // 2))[:len(switches)]
-    np.testing.assert_allclose(switches, expected, rtol=0, atol=1e-9)
+    for name in ("thermostat", "on_off"):
+        switches = mode_changes(fmus[name].t, fmus[name]["ctrl.y"])
+        assert len(switches) == 13
+        expected = first + np.cumsum([0.0] + [cool, heat] * 6)[:13]
+        np.testing.assert_allclose(switches, expected, rtol=0, atol=1e-9)
 
 
 @pytest.mark.parametrize("kind", ["ModelExchange", "CoSimulation"])
