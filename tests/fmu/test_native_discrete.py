@@ -9,10 +9,10 @@ and rounds only the Integer/Boolean modes.
 
 The models: a ramp 0.5 + 0.2·t through a ZeroOrderHold (every 0.25 s from 0.105 s) and a
 Sampler into a UnitDelay (every 0.2 s) — the hold is also checked against the exact
-staircase and the delay against the ramp one instant late; the sampled P controller on a mass (models/event_blocks.py,
-its exact discretization is checked in tests/components/test_event_blocks.py); the
-thermostat with a Hysteresis and with an OnOffController (a relation's state events; its
-switching times are logarithms); MSL's
+staircase and the delay against the ramp one instant late; the sampled P controller on a
+mass (models/event_blocks.py; its exact discretization is checked in
+tests/components/test_event_blocks.py); the thermostat with a Hysteresis and with an
+OnOffController (a relation's state events; its switching times are logarithms); MSL's
 CoupledClutches (models/clutches.py; three clutches sticking and slipping, 1.5 s).
 """
 from __future__ import annotations
@@ -29,8 +29,8 @@ from fmpy.fmi1 import FMICallException                                   # noqa:
 import acausal                                                            # noqa: E402
 from acausal.components import discrete as dc                            # noqa: E402
 from acausal.components import signals as sg                             # noqa: E402
-from acausal.models import CoupledClutches, SampledPController, Thermostat  # noqa: E402
 from acausal.errors import FmuExportError                                # noqa: E402
+from acausal.models import CoupledClutches, SampledPController, Thermostat  # noqa: E402
 from acausal.models.clutches import START as CLUTCHES_START              # noqa: E402
 from fmi_calls import init, instance                                     # noqa: E402
 from test_native_events import (EVENT_TOL, RTOL, VERSIONS, at, csv, fmu_check,  # noqa: E402,I001
