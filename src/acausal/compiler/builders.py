@@ -341,7 +341,9 @@ class PhysicsBuilder(_Base):
     def cut_flow(self, port: PhysicalPort) -> ca.SX:
         """The total flow through one of this component's ports (force [N] / torque [N.m],
         positive into the component), reactions included: what a force or torque sensor
-        measures. It may feed outputs and state derivatives, not forces of the model."""
+        measures. It may feed outputs, state derivatives and the residuals of algebraic
+        variables (a LossyGear's loss depends on flange_a.tau: an implicit equation the DAE
+        solver closes), not forces of the model directly."""
         self._mine(port)
         if port not in self._ws.cut_flow_sym:
             self._ws.cut_flow_sym[port] = ca.SX.sym(f"flow:{port.path}", port.domain.dim)

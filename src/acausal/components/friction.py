@@ -12,7 +12,8 @@ sliding characteristic tau = F(w_relfric); backward, tau = −F(−w_relfric); f
 Events: ``sliding`` (the relative speed falling through 0 while sliding), ``breakaway``
 (tau0_max − |tau| falling through 0 while stuck), both setting the relative speed to 0
 exactly (the stuck element's speed drifts by the integrator's tolerance otherwise), ``start``
-(the relative speed leaving 0 after breaking away), ``fn`` (the
+(the relative speed leaving 0, by more than the round-off W_NOISE, after breaking away),
+``fn`` (the
 normal force crossing 0, for elements that can be free). At every event the modes are updated
 as MSL does: a stuck element slides forward when the torque that holds it exceeds tau0_max
 (backward below −tau0_max; ``startForward``/``startBackward``, Boolean modes, are set then and
@@ -55,6 +56,9 @@ from .interfaces import Axis
 
 UNKNOWN, FREE, FORWARD, STUCK, BACKWARD = 3, 2, 1, 0, -1
 MODES = (BACKWARD, STUCK, FORWARD, FREE, UNKNOWN)
+#: [rad/s, m/s] how far the relative speed must leave 0 to clear startForward/startBackward:
+#: above the round-off a speed set to 0 drifts by while other elements hold the motion
+W_NOISE = 1e-10
 
 
 def check_table(table, name: str, where: str) -> np.ndarray:
@@ -95,8 +99,10 @@ class PartialFriction(Component):
     surfaces; ``_sliding(e, w)`` the forward sliding friction at speed w ≥ 0 (tau_pos(w), or
     mu_pos(w)·cgeo·fn); ``_free(e)`` whether the element is inactive (an expression, or None:
     never); ``_apply(e, tau)`` the flows; ``_stop(e)`` the state its relative speed is and
-    the value that makes it 0 (reinit when it sticks). Records w_relfric, a_relfric, tau0,
-    tau0_max, free, sa, locked, startForward, startBackward, lossPower [W] and the mode.
+    the value that makes it 0 (reinit when it sticks); ``_can_slide(e)`` whether it may slide
+    forward and backward (default: both; a hard stop blocks one direction). Records
+    w_relfric, a_relfric, tau0, tau0_max, free, sa, locked, startForward, startBackward,
+    lossPower [W] and the mode.
     The domain declares ``w_small`` (``v_small``) and ``w_smooth`` (``v_smooth``), the speed
     of the smooth form's regularization (see the module); a subclass that gives only these
     hooks has the smooth form too.
@@ -134,6 +140,10 @@ class PartialFriction(Component):
 
     def _stop(self, e):
         raise NotImplementedError
+
+    def _can_slide(self, e):
+        """(forward, backward): whether the element may slide that way (expressions)."""
+        return True, True
 
     # ---- the mode machine ----------------------------------------------------------------
     def structure(self, s):
@@ -174,29 +184,33 @@ class PartialFriction(Component):
                     f"relative {x.speed} while sliding, in its direction")
         e.indicator("breakaway", ca.if_else(locked, tau0_max - ca.fabs(tau), 1.0), x.f_unit,
                     f"{x.f}0_max - |{x.f}| while stuck")
-        e.indicator("start", ca.if_else(start_fwd, w, ca.if_else(start_bwd, -w, -1.0)),
-                    x.v_unit, f"relative {x.speed} after breaking away, in its direction")
+        e.indicator("start", ca.if_else(start_fwd, w - W_NOISE, ca.if_else(
+            start_bwd, -w - W_NOISE, -1.0)), x.v_unit,
+            f"relative {x.speed} after breaking away, in its direction, past W_NOISE")
         state, zero = self._stop(e)
         e.reinit(state, zero, when="sliding", direction=-1)
         e.reinit(state, zero, when="breakaway", direction=-1)      # at rest exactly
 
         # startForward: broken away from stuck (the torque that held it beyond tau0_max),
-        # kept until w_relfric leaves 0 forward (the event of indicator "start"; MSL: mode
-        # becomes Forward when w_relfric > 0), so that sliding that starts with an
+        # kept until w_relfric leaves 0 forward past W_NOISE (the event of indicator "start";
+        # MSL: mode becomes Forward when w_relfric > 0), so that sliding that starts with an
         # acceleration ~0 (peak = 1) does not fall back to stuck, nor a stuck element whose
         # speed the integrator left a roundoff below 0 (no reinit at a time event)
         small = self._small()
-        breaks_fwd = ca.logic_and(mode == STUCK, tau > tau0_max)
-        breaks_bwd = ca.logic_and(mode == STUCK, tau < -tau0_max)
+        fwd_ok, bwd_ok = self._can_slide(e)
+        breaks_fwd = ca.logic_and(ca.logic_and(mode == STUCK, tau > tau0_max), fwd_ok)
+        breaks_bwd = ca.logic_and(ca.logic_and(mode == STUCK, tau < -tau0_max), bwd_ok)
         active = ca.logic_not(free)
         e.mode_update(start_fwd, ca.logic_and(active, ca.logic_or(breaks_fwd, ca.logic_and(
-            start_fwd, ca.logic_and(mode == FORWARD, w <= 0)))))
+            start_fwd, ca.logic_and(mode == FORWARD, w <= W_NOISE)))))
         e.mode_update(start_bwd, ca.logic_and(active, ca.logic_or(breaks_bwd, ca.logic_and(
-            start_bwd, ca.logic_and(mode == BACKWARD, w >= 0)))))
+            start_bwd, ca.logic_and(mode == BACKWARD, w >= -W_NOISE)))))
         sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
         from_stuck = ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD, STUCK))
-        keeps_forward = ca.logic_or(ca.logic_or(w > 0, start_fwd), ca.logic_and(w == 0, a > 0))
-        keeps_backward = ca.logic_or(ca.logic_or(w < 0, start_bwd), ca.logic_and(w == 0, a < 0))
+        keeps_forward = ca.logic_and(fwd_ok, ca.logic_or(ca.logic_or(w > 0, start_fwd),
+                                                         ca.logic_and(w == 0, a > 0)))
+        keeps_backward = ca.logic_and(bwd_ok, ca.logic_or(ca.logic_or(w < 0, start_bwd),
+                                                          ca.logic_and(w == 0, a < 0)))
         from_forward = ca.if_else(keeps_forward, FORWARD, ca.if_else(w < -small, BACKWARD,
                                                                       STUCK))
         from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,

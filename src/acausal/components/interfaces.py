@@ -92,11 +92,17 @@ class PartialCompliant(PartialTwoFlanges):
         """Dissipated power [W] (MSL's lossPower), or None for a lossless element."""
         return None
 
+    def _law(self, e, rel_pos, rel_speed):
+        """(flow into flange_b, lossPower or None); an element whose law needs the physics
+        builder (modes, events) replaces this instead of ``flange_b_flow``."""
+        flow = self.flange_b_flow(rel_pos, rel_speed)
+        return flow, self.loss_power(rel_pos, rel_speed, flow)
+
     def physics(self, e):
         x = self.axis
         rel_pos = e.pos(self.flange_b) - e.pos(self.flange_a)
         rel_speed = e.vel(self.flange_b) - e.vel(self.flange_a)
-        flow = self.flange_b_flow(rel_pos, rel_speed)
+        flow, loss = self._law(e, rel_pos, rel_speed)
         self._apply_opposite_flows(e, flow)
         e.variable(f"{x.s}_rel", rel_pos, x.s_unit,
                    f"relative {x.position} (= flange_b.{x.s} - flange_a.{x.s})",
@@ -106,7 +112,6 @@ class PartialCompliant(PartialTwoFlanges):
             e.variable("a_rel", e.acc(self.flange_b) - e.acc(self.flange_a), x.a_unit,
                        f"relative {x.acceleration} (= der({x.v}_rel))")
         e.variable(x.f, flow, x.f_unit, f"{x.flow} between flanges (= flange_b.{x.f})")
-        loss = self.loss_power(rel_pos, rel_speed, flow)
         if loss is not None:
             e.variable("lossPower", loss, "W", "loss power leaving component via heatPort")
 

@@ -23,13 +23,16 @@ classes here declare MSL's connectors and names on top of them.
 Differences from MSL, by necessity of a Python library, are listed in each docstring.
 Coulomb friction (BearingFriction, Brake, Clutch) has MSL's mode machine on state events
 (see ``friction``); OneWayClutch has MSL's own (a freewheel in parallel with a clutch), and
-Freewheel (not an MSL class) is its freewheel alone; backlash and stops are not here yet.
+Freewheel (not an MSL class) is its freewheel alone; LossyGear (mesh efficiency and bearing
+friction, stuck or rolling), ElastoBacklash and ElastoBacklash2 switch on modes at state
+events too, and each has a smooth form for optimal control (``compile(model, smooth=True)``).
 """
 from __future__ import annotations
 
 import math
 
 import casadi as ca
+import numpy as np
 
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
                     RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
@@ -51,7 +54,7 @@ __all__ = [
     # components
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
-    "OneWayClutch", "Freewheel",
+    "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2",
     # sources
     "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "TorqueStep", "Position", "Speed", "Accelerate", "Move",
@@ -867,3 +870,402 @@ class DCMotor(PartialElementaryOneFlangeAndSupport2):
         e.variable("tau_el", tau_el, "N.m", "electrical (air gap) torque")
         e.variable("vi", self.k * w_rel, "V", "induced (back-emf) voltage")
         e.variable("pin", v * i, "W", "electrical input power")
+
+
+# =========================================================================================
+# Gears with losses, backlash
+# =========================================================================================
+class LossyGear(PartialElementaryTwoFlangesAndSupport2):
+    """Gear with mesh efficiency and bearing friction, stuck or rolling (MSL 4.1's
+    LossyGear): phi_a = ratio·phi_b (relative to the support), 0 = flange_b.tau +
+    ratio·(flange_a.tau − tauLoss), support.tau = −(flange_a.tau + flange_b.tau).
+
+    ``lossTable`` (constructor keyword, rows [|w_a|, eta_mf1, eta_mf2, tau_bf1, tau_bf2],
+    default [[0, 1, 1, 0, 0]], the ideal gear) gives the mesh efficiencies [1] when flange_a
+    (eta_mf1) or flange_b (eta_mf2) drives and the resultant bearing friction [N.m] w.r.t.
+    flange_a, interpolated in |w_a| as MSL's Smoothness.LinearSegments (the only smoothness
+    here) with Extrapolation.LastTwoPoints. ``ratio`` [1] ≠ 0 (default 1 = MSL start value).
+
+    Smooth form (``e.smooth``, for optimal control): no modes nor events; tauLoss =
+    σ·max(quadrant1, quadrant2) + (1 − σ)·min(quadrant3, quadrant4), σ = ½(1 +
+    tanh(w_a/w_smooth)), the table read at √(w_a² + w_smooth²/4) (≥ |w_a|, by at most
+    w_smooth/2). For efficiencies with eta_mf1·eta_mf2 ≤ 1 the max and min are MSL's choice
+    of quadrant by the sign of tau_eta (quadrant1 − quadrant2 = (1/eta_mf2 − eta_mf1)·tau_eta),
+    so rolling at |w_a| ≫ w_smooth the loss is exact up to |tauLossMax − tauLossMin|·
+    exp(−2|w_a|/w_smooth) (plus the table's slope·w_smooth/2); there is no stuck mode: where
+    the exact gear sticks, the smooth one creeps with |w_a| of the order of w_smooth.
+
+    The loss torque tauLoss [N.m] (on flange_a's side) is an algebraic variable switched on
+    MSL's mode (2: ideal, 1: forward rolling w_a > 0, 0: stuck, −1: backward) and on
+    tau_etaPos, MSL's relation tau_eta ≥ 0 (which side drives): rolling forward,
+    tauLoss = quadrant1 (tau_etaPos) or quadrant2; backward, quadrant4 or quadrant3; stuck,
+    a_a = 0 and tauLoss is the torque that holds the gear, between tauLossMin_m and
+    tauLossMax_p. MSL writes its own mode machine for LossyGear (it does not extend
+    PartialFriction); here it runs on the state-event engine as PartialFriction's does
+    (``acausal.components.friction``): events ``rolling`` (w_a falling through 0 while
+    rolling, setting w_a to 0 exactly), ``breakaway`` (the holding torque leaving
+    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 by more than
+    friction.W_NOISE after breaking away: startForward/startBackward, Boolean modes set at
+    breakaway, are cleared then) and ``tau_eta`` (the driving side changing: the kink
+    between quadrants, past a band of round-off; a mode only of a gear with losses). Two
+    elements stuck on one shaft (a LossyGear and a BearingFriction) leave their holding
+    torques undetermined: the simulation stops there with an error. A rolling gear
+    that reaches w_a = 0 keeps rolling only if its acceleration there keeps its direction.
+    The mode starts at Free (MSL: start = Free, fixed = true); at the start, as MSL's
+    initial(), it takes the direction of w_a, or Stuck.
+
+    Records MSL's variables: phi_a, phi_b, w_a, a_a, sa, eta_mf1, eta_mf2, tau_bf1,
+    tau_bf2, tau_bf_a, tau_eta, tau_eta_p, tau_eta_m, quadrant1..4, quadrant1_p,
+    quadrant2_p, quadrant3_m, quadrant4_m, tauLoss, tauLossMax, tauLossMin, tauLossMax_p,
+    tauLossMin_m, tau_aPos, tau_etaPos, startForward, startBackward, locked, ideal, mode,
+    lossPower [W] (MSL's interpolation_result matrix is not recorded: its columns are
+    eta_mf1, eta_mf2, tau_bf1, tau_bf2). The ideal table gives an IdealGear without events
+    (mode 2, tauLoss 0). useHeatPort only False.
+    """
+    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    ratio = Parameter(1.0, "1", "transmission ratio (flange_a.phi/flange_b.phi)", nonzero=True)
+    w_smooth = Parameter(1.0e-3, "rad/s", "smooth form (compile(smooth=True)): speed over "
+                                          "which the loss changes from rolling backward to "
+                                          "forward", positive=True)
+    IDEAL = ((0.0, 1.0, 1.0, 0.0, 0.0),)
+
+    def __init__(self, name: str | None = None, **params):
+        table = params.pop("lossTable", self.IDEAL)
+        super().__init__(name, **params)
+        try:
+            tab = np.array(table, dtype=float)
+        except (TypeError, ValueError):
+            tab = np.zeros((0, 0))
+        if tab.ndim != 2 or tab.shape[1] != 5 or tab.shape[0] < 1:
+            raise ParameterError(f"parameter 'LossyGear.lossTable' must be a table of rows "
+                                 f"[w, eta_mf1, eta_mf2, tau_bf1, tau_bf2], got {table!r}")
+        for k in range(1, 5):                     # speeds increasing from >= 0, finite values
+            friction.check_table(tab[:, [0, k]], "lossTable", "LossyGear")
+        if np.any(tab[:, 1:3] <= 0):
+            raise ParameterError(f"parameter 'LossyGear.lossTable': the efficiencies eta_mf1, "
+                                 f"eta_mf2 (columns 2 and 3) must be > 0, got "
+                                 f"{tab[:, 1:3].tolist()}")
+        self.__dict__["lossTable"] = tab
+        self.__dict__["ideal"] = tab.shape == (1, 5) and np.allclose(
+            tab, self.IDEAL, rtol=0.0, atol=_EPS)
+
+    def _losses(self, w):
+        """(eta_mf1, eta_mf2, tau_bf1, tau_bf2, tau_bf_a) at |w_a| = w: the table's columns
+        and MSL's split tau_bf_a [N.m] of the bearing friction to flange_a's side."""
+        eta1, eta2, bf1, bf2 = (friction.table_value(self.lossTable[:, [0, k]], w)
+                                for k in range(1, 5))
+        bf1, bf2 = ca.fabs(bf1), ca.fabs(bf2)
+        unit = ca.logic_and(ca.fabs(eta1 - 1.0) <= _EPS, ca.fabs(eta2 - 1.0) <= _EPS)
+        tau_bf_a = ca.if_else(unit, bf1 / 2, (bf1 - bf2) / ca.if_else(unit, 1.0,
+                                                                       eta1 - 1.0 / eta2))
+        return eta1, eta2, bf1, bf2, tau_bf_a
+
+    def structure(self, s):
+        self._relative_constraint(s, {self.flange_a: 1.0, self.flange_b: -self.ratio}, 0.0,
+                                  f"{self.path}: phi_a = ratio*phi_b")
+        if self.ideal:
+            return
+        s.algebraic("tauLoss", unit="N.m", description="torque loss due to friction in the "
+                                                       "gear teeth and in the bearings")
+        if s.smooth:
+            return
+        s.mode("mode", friction.FREE, values=friction.MODES[:-1],
+               description="mode of friction element (-1: backward rolling, 0: stuck, "
+                           "1: forward rolling, 2: not active)")
+        s.mode("startForward", 0, values=(0, 1), description="= true, if starting to roll "
+                                                             "forward")
+        s.mode("startBackward", 0, values=(0, 1), description="= true, if starting to roll "
+                                                              "backward")
+        s.mode("tau_etaPos", 1, values=(0, 1), description="= true, if torque tau_eta is "
+                                                           "not negative")
+
+    def physics(self, e):
+        phi_a, phi_b = (self._rel_position(e, f) for f in (self.flange_a, self.flange_b))
+        w, a = self._rel_speed(e, self.flange_a), self._rel_acc(e, self.flange_a)
+        e.variable("phi_a", phi_a, "rad", "angle between left shaft flange and support")
+        e.variable("phi_b", phi_b, "rad", "angle between right shaft flange and support")
+        e.variable("w_a", w, "rad/s", "angular velocity of flange_a with respect to support")
+        e.variable("a_a", a, "rad/s2", "angular acceleration of flange_a with respect to "
+                                       "support")
+        e.variable("ideal", float(self.ideal), "", "= true, if losses are neglected (that is "
+                                                   "lossTable = [0, 1, 1, 0, 0])")
+        if self.ideal:
+            e.variable("mode", friction.FREE, "", "mode of friction element")
+            e.variable("tauLoss", 0.0, "N.m", "torque loss")
+            e.variable("lossPower", 0.0, "W", "loss power leaving component via heatPort")
+            return
+        tau_loss = e.state("tauLoss")
+        e.flow(self.flange_a, tau_loss)
+        if self.useSupport:
+            e.flow(self.support, -tau_loss)
+        tau_a = e.cut_flow(self.flange_a)                      # flange_a.tau
+        e.variable("lossPower", tau_loss * w, "W", "loss power leaving component via heatPort")
+        if e.smooth:
+            self._smooth(e, tau_loss, tau_a, w, a)
+        else:
+            self._modes(e, tau_loss, tau_a, w, a)
+
+    def _quadrants(self, tau_a, w):
+        """MSL's quadrant1..4 [N.m] at |w_a| = w, and eta_mf1, eta_mf2, tau_bf1, tau_bf2,
+        tau_bf_a there."""
+        eta1, eta2, bf1, bf2, tau_bf_a = self._losses(w)
+        return ((1 - eta1) * tau_a + bf1, (1 - 1 / eta2) * tau_a + bf2,
+                (1 - eta1) * tau_a - bf1, (1 - 1 / eta2) * tau_a - bf2,
+                (eta1, eta2, bf1, bf2, tau_bf_a))
+
+    def _smooth(self, e, tau_loss, tau_a, w, a):
+        """The smooth form: tauLoss = σ·max(q1, q2) + (1 − σ)·min(q3, q4), σ = ½(1 +
+        tanh(w_a/w_smooth)), the table at the rounded |w_a| (see the class)."""
+        q1, q2, q3, q4, _ = self._quadrants(tau_a, _smax(w, -w, self.w_smooth))
+        up = 0.5 * (1 + ca.tanh(w / self.w_smooth))
+        e.residual(tau_loss - (up * ca.fmax(q1, q2) + (1 - up) * ca.fmin(q3, q4)))
+
+    def _modes(self, e, tau_loss, tau_a, w, a):
+        """The exact form: MSL's modes on state events (see the class)."""
+        FORWARD, STUCK, BACKWARD = friction.FORWARD, friction.STUCK, friction.BACKWARD
+        mode = e.mode("mode")
+        start_fwd, start_bwd, pos = (e.mode(n) for n in ("startForward", "startBackward",
+                                                         "tau_etaPos"))
+        q1, q2, q3, q4, (eta1, eta2, bf1, bf2, tau_bf_a) = self._quadrants(tau_a, ca.fabs(w))
+        q1_p, q2_p, q3_m, q4_m, (*_, tau_bf_a_0) = self._quadrants(tau_a, 0.0)   # w_a = 0±
+        tau_eta_p, tau_eta_m = tau_a - tau_bf_a_0, tau_a + tau_bf_a_0
+        loss_max_p = ca.if_else(tau_eta_p > 0, q1_p, q2_p)
+        loss_min_m = ca.if_else(tau_eta_m > 0, q4_m, q3_m)
+        loss_max = ca.if_else(pos, q1, q2)
+        loss_min = ca.if_else(pos, q4, q3)
+
+        fwd = ca.logic_or(mode == FORWARD, start_fwd)
+        bwd = ca.logic_or(mode == BACKWARD, start_bwd)
+        locked = ca.logic_not(ca.logic_or(fwd, bwd))
+        by_sign = ca.if_else(w > 0, tau_loss - loss_max,         # mode Free: at the start
+                             ca.if_else(w < 0, tau_loss - loss_min, a))
+        e.residual(ca.if_else(fwd, tau_loss - loss_max, ca.if_else(
+            bwd, tau_loss - loss_min, ca.if_else(mode == STUCK, a, by_sign))))
+        tau_eta = ca.if_else(locked, tau_a, ca.if_else(fwd, tau_a - tau_bf_a, tau_a + tau_bf_a))
+
+        stuck = ca.logic_and(locked, mode == STUCK)
+        e.indicator("rolling", ca.if_else(fwd, w, ca.if_else(bwd, -w, 1.0)), "rad/s",
+                    "w_a while rolling, in its direction")
+        e.indicator("breakaway", ca.if_else(stuck, ca.fmin(loss_max_p - tau_loss,
+                                                           tau_loss - loss_min_m), 1.0),
+                    "N.m", "distance of the holding torque to its bounds while stuck")
+        e.indicator("start", ca.if_else(start_fwd, w - friction.W_NOISE, ca.if_else(
+            start_bwd, -w - friction.W_NOISE, -1.0)), "rad/s",
+            "w_a after breaking away, in its direction, past W_NOISE")
+        # MSL's relation tau_eta >= 0 with a hysteresis of its round-off (as a simulator's
+        # crossing functions): in LossyGearDemo3 tau_eta is 0 while rolling, up to noise
+        band = 1e-10 * (ca.fabs(tau_a) + ca.fabs(tau_bf_a) + 1.0)
+        e.indicator("tau_eta", ca.if_else(pos, tau_eta + band, tau_eta - band), "N.m",
+                    "torque that determines the driving side (tau_eta), past a band of "
+                    "round-off on the side of tau_etaPos")
+        stop = e.vel(self.support) if self.useSupport else 0.0
+        e.reinit(e.vel(self.flange_a), stop, when="rolling", direction=-1)
+        e.reinit(e.vel(self.flange_a), stop, when="breakaway", direction=-1)
+
+        breaks_fwd = ca.logic_and(stuck, tau_loss > loss_max_p)
+        breaks_bwd = ca.logic_and(stuck, tau_loss < loss_min_m)
+        e.mode_update(start_fwd, ca.logic_or(breaks_fwd, ca.logic_and(
+            start_fwd, ca.logic_and(mode == FORWARD, ca.fabs(w) <= friction.W_NOISE))))
+        e.mode_update(start_bwd, ca.logic_or(breaks_bwd, ca.logic_and(
+            start_bwd, ca.logic_and(mode == BACKWARD, ca.fabs(w) <= friction.W_NOISE))))
+        e.mode_update(pos, ca.if_else(pos, tau_eta + band >= 0, tau_eta - band > 0))
+        keeps_fwd = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
+        keeps_bwd = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
+        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
+        e.mode_update(mode, ca.if_else(
+            mode == STUCK, ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD,
+                                                                        STUCK)),
+            ca.if_else(mode == FORWARD, ca.if_else(keeps_fwd, FORWARD, STUCK),
+                       ca.if_else(mode == BACKWARD, ca.if_else(keeps_bwd, BACKWARD, STUCK),
+                                  sign_w))))
+
+        for name, value, descr in [
+                ("sa", ca.if_else(locked, tau_loss, a + tau_loss),
+                 "path parameter for acceleration and torque loss"),
+                ("eta_mf1", eta1, "mesh efficiency in case that flange_a is driving"),
+                ("eta_mf2", eta2, "mesh efficiency in case that flange_b is driving")]:
+            e.variable(name, value, "1", descr)
+        for name, value, descr in [
+                ("tau_bf1", bf1, "absolute resultant bearing friction torque with respect "
+                                 "to flange_a in case that flange_a is driving"),
+                ("tau_bf2", bf2, "absolute resultant bearing friction torque with respect "
+                                 "to flange_a in case that flange_b is driving"),
+                ("tau_bf_a", tau_bf_a, "bearing friction torque on flange_a side"),
+                ("tau_eta", tau_eta, "torque that determines the driving side"),
+                ("tau_eta_p", tau_eta_p, "tau_eta assuming positive omega"),
+                ("tau_eta_m", tau_eta_m, "tau_eta assuming negative omega"),
+                ("quadrant1", q1, "torque loss if w_a > 0 and flange_a.tau >= 0"),
+                ("quadrant2", q2, "torque loss if w_a > 0 and flange_a.tau < 0"),
+                ("quadrant3", q3, "torque loss if w_a < 0 and flange_a.tau >= 0"),
+                ("quadrant4", q4, "torque loss if w_a < 0 and flange_a.tau < 0"),
+                ("quadrant1_p", q1_p, "torque loss at w_a = 0+ (flange_a.tau >= 0)"),
+                ("quadrant2_p", q2_p, "torque loss at w_a = 0+ (flange_a.tau < 0)"),
+                ("quadrant3_m", q3_m, "torque loss at w_a = 0- (flange_a.tau >= 0)"),
+                ("quadrant4_m", q4_m, "torque loss at w_a = 0- (flange_a.tau < 0)"),
+                ("tauLossMax", loss_max, "torque loss for positive speed"),
+                ("tauLossMin", loss_min, "torque loss for negative speed"),
+                ("tauLossMax_p", loss_max_p, "torque loss for positive speed (at w_a = 0+)"),
+                ("tauLossMin_m", loss_min_m, "torque loss for negative speed (at w_a = 0-)")]:
+            e.variable(name, value, "N.m", descr)
+        e.variable("tau_aPos", pos, "", "only for backwards compatibility (= tau_etaPos)")
+        e.variable("locked", locked, "", "= true, if gear is locked")
+
+
+def _smax(x, y, eps):
+    """max(x, y) rounded over a width eps: ½(x + y + √((x − y)² + eps²)), above the max by
+    at most eps/2 (where x = y), by less than eps²/(4|x − y|) away from it."""
+    return 0.5 * (x + y + ca.sqrt((x - y) ** 2 + eps ** 2))
+
+
+def _smin(x, y, eps):
+    """min(x, y) rounded over a width eps, below it by at most eps/2 (see _smax)."""
+    return -_smax(-x, -y, eps)
+
+
+class _ElastoBacklash(PartialCompliantWithRelativeStates):
+    """Backlash b [rad] in series with a linear spring c [N.m/rad] and damper d [N.m.s/rad]
+    (MSL's ElastoBacklash and ElastoBacklash2): no torque while bMin ≤ phi_diff ≤ bMax
+    (phi_diff = phi_rel − phi_rel0 [rad], bMax = b/2 = −bMin); in contact the spring torque
+    tau_c = c·(phi_diff ∓ b/2) and the damper torque tau_d = d·w_rel, never pulling; a
+    plain spring-damper when b ≤ bEps = 1e-10 rad.
+
+    Events (MSL's relations phi_diff > bMax, phi_diff < bMin): the mode ``contact`` (1:
+    contact at bMax, 0: in the backlash, −1: contact at bMin) changes at the indicators
+    ``bMax`` (phi_diff − bMax) and ``bMin`` (phi_diff − bMin), the Boolean mode ``pushing``
+    (tau_c + tau_d pushes, in the contact's direction) at the indicator ``pushing``; the
+    torque is written for the modes, so the integrator never steps across a kink. During
+    initialization MSL replaces the characteristic by a monotone one (for solving initial
+    equations); here the start values are given (x0) and that form is not needed.
+
+    Smooth form (``e.smooth``): the contacts' kinks rounded over ``phi_smooth`` [rad] (and
+    the torques' over c·phi_smooth [N.m]) by √(x² + ε²) maxima, no modes nor events (the
+    subclasses give the error). Records tau_c, tau_d, phi_diff (MSL's protected variables),
+    contact, pushing, tau, lossPower [W]. useHeatPort only False.
+    """
+    options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
+    c = Parameter(1.0e5, "N.m/rad", "spring constant (c > 0 required)", positive=True)
+    d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
+    b = Parameter(0.0, "rad", "total backlash", nonnegative=True)
+    phi_rel0 = Parameter(0.0, "rad", "unstretched spring angle")
+    phi_smooth = Parameter(1.0e-5, "rad", "smooth form (compile(smooth=True)): width of the "
+                                          "rounded contact kinks", positive=True)
+    bEps = 1e-10                 # rad, MSL's minimum backlash
+
+    def structure(self, s):
+        if s.smooth:
+            return
+        s.mode("contact", 0, values=(-1, 0, 1),
+               description="1: contact at phi_diff = b/2, 0: in the backlash, -1: contact at "
+                           "phi_diff = -b/2")
+        s.mode("pushing", 0, values=(0, 1), description="= true, if in contact and tau_c + "
+                                                        "tau_d pushes")
+        self._structure_modes(s)
+
+    def _structure_modes(self, s):
+        """Further modes of a subclass."""
+
+    def _law(self, e, phi_rel, w_rel):
+        phi_diff, b_max = phi_rel - self.phi_rel0, self.b / 2
+        plain = self.b <= self.bEps
+        tau_d = self.d * w_rel
+        if e.smooth:
+            eps = self.phi_smooth
+            tau_c = self.c * (_smax(phi_diff - b_max, 0.0, eps)
+                              + _smin(phi_diff + b_max, 0.0, eps))
+            tau, loss = self._smooth_law(phi_diff, b_max, tau_d, w_rel)
+        else:
+            contact, pushing = e.mode("contact"), e.mode("pushing")
+            tau_c = self.c * (phi_diff - contact * b_max)        # in contact
+            tc, td = contact * tau_c, contact * tau_d            # in its direction
+            tau, loss = self._contact_law(e, contact, tc, td)
+            tau = ca.if_else(pushing, contact * tau, 0.0)
+            loss = ca.if_else(pushing, loss * w_rel, 0.0)
+            tau_c = ca.if_else(contact == 0, 0.0, tau_c)
+            touching = ca.logic_and(contact != 0, ca.logic_not(plain))
+            e.indicator("bMax", ca.if_else(plain, 1.0, phi_diff - b_max), "rad",
+                        "phi_diff - b/2")
+            e.indicator("bMin", ca.if_else(plain, 1.0, phi_diff + b_max), "rad",
+                        "phi_diff + b/2")
+            e.indicator("pushing", ca.if_else(touching, tc + td, 1.0), "N.m",
+                        "tau_c + tau_d in the contact's direction, in contact")
+            e.mode_update(contact, ca.if_else(phi_diff > b_max, 1, ca.if_else(
+                phi_diff < -b_max, -1, 0)))
+            e.mode_update(pushing, ca.logic_and(contact != 0, tc + td > 0))
+        e.variable("phi_diff", phi_diff, "rad", "phi_rel - phi_rel0")
+        e.variable("tau_c", ca.if_else(plain, self.c * phi_diff, tau_c), "N.m",
+                   "spring torque")
+        e.variable("tau_d", tau_d, "N.m", "damper torque")
+        return (ca.if_else(plain, self.c * phi_diff + tau_d, tau),
+                ca.if_else(plain, tau_d * w_rel, loss))
+
+    def _contact_law(self, e, contact, tc, td):
+        """(torque, loss torque) in contact and pushing, in the contact's direction, from the
+        spring and damper torques tc, td in that direction; the loss torque times w_rel is
+        lossPower."""
+        raise NotImplementedError
+
+    def _smooth_law(self, phi_diff, b_max, tau_d, w_rel):
+        """(tau, lossPower) of the smooth form."""
+        raise NotImplementedError
+
+
+class ElastoBacklash(_ElastoBacklash):
+    """Backlash in series with a spring and damper (MSL's ElastoBacklash): in contact and
+    pushing, flange_b.tau = tau_c + min(tau_c, tau_d) in the contact's direction (the damper
+    torque limited by the spring torque: no jump at the start of contact, no pulling),
+    lossPower = min(tau_c, tau_d)·w_rel. See _ElastoBacklash for the rest.
+
+    Besides MSL's events (contact), the mode ``limited`` (tau_d ≥ tau_c in the contact's
+    direction, the damping limited) changes at the indicator ``limited`` (tau_d − tau_c), so
+    that every kink of the law is an event (MSL writes it under noEvent).
+
+    Smooth form: |tau − exact| ≤ 4·c·phi_smooth [N.m] (each of the four rounded maxima
+    adds at most half its width, and a rounded contact deflection c·phi_smooth/2).
+    """
+    def _structure_modes(self, s):
+        s.mode("limited", 0, values=(0, 1), description="= true, if in contact and the "
+                                                        "damper torque is limited by tau_c")
+
+    def _contact_law(self, e, contact, tc, td):
+        limited = e.mode("limited")
+        e.indicator("limited", ca.if_else(contact != 0, td - tc, -1.0), "N.m",
+                    "tau_d - tau_c in the contact's direction, in contact")
+        e.mode_update(limited, ca.logic_and(contact != 0, td > tc))
+        e.variable("limited", limited, "", "= true, if the damper torque is limited")
+        damper = ca.if_else(limited, tc, td)
+        return tc + damper, damper
+
+    def _smooth_law(self, phi_diff, b_max, tau_d, w_rel):
+        eps, tau_eps = self.phi_smooth, self.c * self.phi_smooth
+        tc_pos = self.c * _smax(phi_diff - b_max, 0.0, eps)
+        tc_neg = self.c * _smin(phi_diff + b_max, 0.0, eps)
+        d_pos, d_neg = _smin(tc_pos, tau_d, tau_eps), _smax(tc_neg, tau_d, tau_eps)
+        tau_pos = _smax(tc_pos + d_pos, 0.0, tau_eps)
+        tau_neg = _smin(tc_neg + d_neg, 0.0, tau_eps)
+        return tau_pos + tau_neg, (d_pos + d_neg) * w_rel
+
+
+class ElastoBacklash2(_ElastoBacklash):
+    """Backlash in series with a spring and damper (MSL 4.x's ElastoBacklash2): in contact
+    and pushing, flange_b.tau = tau_c + tau_d (it jumps by tau_d when contact starts: an
+    event), zero when it would pull; lossPower = tau_d·w_rel. See _ElastoBacklash for the
+    rest.
+
+    Smooth form: tau_d switched on by ½(1 ± tanh((phi_diff ∓ b/2)/phi_smooth)) and the
+    no-pull limit rounded over c·phi_smooth: |tau − exact| ≤ 1.5·c·phi_smooth +
+    d·|w_rel|·exp(−2·|phi_diff ∓ b/2|/phi_smooth) [N.m] (the torque's jump at contact spread
+    over a few phi_smooth).
+    """
+
+    def _contact_law(self, e, contact, tc, td):
+        return tc + td, td
+
+    def _smooth_law(self, phi_diff, b_max, tau_d, w_rel):
+        eps, tau_eps = self.phi_smooth, self.c * self.phi_smooth
+        on_pos = 0.5 * (1 + ca.tanh((phi_diff - b_max) / eps))
+        on_neg = 0.5 * (1 - ca.tanh((phi_diff + b_max) / eps))
+        tau_pos = _smax(self.c * _smax(phi_diff - b_max, 0.0, eps) + on_pos * tau_d, 0.0,
+                        tau_eps)
+        tau_neg = _smin(self.c * _smin(phi_diff + b_max, 0.0, eps) + on_neg * tau_d, 0.0,
+                        tau_eps)
+        return tau_pos + tau_neg, tau_d * w_rel * (on_pos + on_neg)

@@ -23,8 +23,10 @@ receives the reaction force (support.f = −flange.f).
 The equations shared with the rotational library are written once in ``interfaces``; the
 classes here declare MSL's connectors and names on top of them.
 
-Coulomb friction (SupportFriction, Brake) has MSL's mode machine on state events (see
-``friction``). Not here yet: ElastoGap, MassWithStopAndFriction, SignForce,
+Coulomb friction (SupportFriction, Brake, MassWithStopAndFriction) has MSL's mode machine
+on state events (see ``friction``); MassWithStopAndFriction's stops, ElastoGap's contact and
+HardStop (stops with a coefficient of restitution, not an MSL class) are state events too.
+Not here yet: SignForce,
 InverseSpeedDependentForce, EddyCurrentForce; nor the adaptors, InitializeFlange,
 RelativeStates, Vehicle. Differences from MSL are listed in each
 docstring.
@@ -36,6 +38,7 @@ import casadi as ca
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
                     StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import TRANSLATIONAL
+from ..errors import ParameterError
 from . import friction, interfaces
 from .interfaces import TRANSLATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
 
@@ -49,6 +52,7 @@ __all__ = [
     "PartialAbsoluteSensor", "PartialRelativeSensor",
     # components
     "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "SupportFriction", "Brake",
+    "MassWithStopAndFriction", "ElastoGap", "HardStop", "contact_force",
     # sources
     "Force", "Force2", "ConstantForce", "ForceStep", "LinearSpeedDependentForce",
     "QuadraticSpeedDependentForce", "Position", "Speed", "Accelerate", "Move",
@@ -268,6 +272,286 @@ class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
     options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
     f_normalized = RealInput("normalized force signal 0..1 (normal force = "
                              "fn_max*f_normalized; brake is active if > 0)")
+
+
+def contact_force(depth, rate, c, d):
+    """The pushing-only force [N] (≥ 0, pushing the bodies apart) of a contact of stiffness c
+    [N/m] and damping d [N.s/m] at penetration depth [m] (> 0 in contact) closing at rate
+    [m/s] (= der(depth)): MSL ElastoGap's law with n = 1, c·depth plus the damping force
+    d·rate limited to ±c·depth, so that the total never pulls (0 out of contact)."""
+    spring = c * ca.fmax(depth, 0.0)
+    return spring + ca.fmin(ca.fmax(d * rate, -spring), spring)
+
+
+def _softplus(x, width):
+    """width·log(1 + exp(x/width)) [m], written so that it never overflows."""
+    return ca.fmax(x, 0.0) + width * ca.log1p(ca.exp(-ca.fabs(x) / width))
+
+
+class MassWithStopAndFriction(PartialRigid, PartialFriction):
+    """Sliding mass with hard stops and Stribeck friction (MSL's MassWithStopAndFriction).
+
+    A mass m [kg] of length L [m] (centre ``s``: flange_a.s = s − L/2, flange_b.s = s + L/2;
+    states s [m], v [m/s]; a [m/s²] recorded) sliding on a fixed surface between the stops
+    smin and smax [m] (its flange_a at ≥ smin, its flange_b at ≤ smax): m·a = flange_a.f +
+    flange_b.f − f. The friction force f [N] (against v) has MSL's mode machine
+    (``acausal.components.friction``); sliding forward f = F_prop·v + F_Coulomb +
+    F_Stribeck·exp(−fexp·v), backward the mirror image; stuck up to f0_max = peak·f0,
+    f0 = F_Coulomb + F_Stribeck. Parameters (MSL's start values as defaults): m = 1,
+    F_prop = 1 [N.s/m], F_Coulomb = 5 [N], F_Stribeck = 10 [N], fexp = 2 [s/m], smax = 25,
+    smin = −25 [m], v_small = 1e-3 [m/s]; ``peak`` = 1.001 is MSL's fixed factor
+    f0_max = 1.001·f0 (a parameter here). free (no friction at all: f0 ≤ 0 and F_prop ≤ 0,
+    between the stops) is mode 2.
+
+    Stops (MSL's ``when stopped <> 0 then reinit(v, 0)``): when s − L/2 falls to smin or
+    s + L/2 rises to smax (indicators ``gap_min``, ``gap_max`` [m], the distances to the
+    stops) the velocity is set to 0; the mass is then stuck, the stop's reaction in f, and
+    it stays there until f passes f0_max away from the stop (it neither breaks away nor
+    slides into the stop). Records ``stopped`` (−1 at smin, +1 at smax, 0 between), mode,
+    locked, sa, f, f0, f0_max, v_relfric = v, a_relfric = a, lossPower = f·v [W].
+    Difference from MSL: the position is not reinitialized onto the stop; it stays where the
+    impact was located, past the stop by the event location's tolerance (~1e-12·|v| m).
+
+    Smooth form (``compile(model, smooth=True)``): the friction of PartialFriction's smooth
+    form (``v_smooth``) and each stop a penalty contact of stiffness ``c_smooth`` [N/m],
+    critically damped (d = 2·√(c_smooth·m), the damping force limited so that it never
+    pulls, ``contact_force``): at a stop hit at speed v the mass goes past it by about
+    |v|·√(m/(2·c_smooth)) (while it goes in, the limited damping force equals the spring's)
+    and comes back nearly at rest; pressed by a force F it stays past it by F/c_smooth.
+    useHeatPort only False.
+    """
+    options = {"useHeatPort": USE_HEAT_PORT}
+    smax = Parameter(25.0, "m", "right stop for (right end of) sliding mass")
+    smin = Parameter(-25.0, "m", "left stop for (left end of) sliding mass")
+    m = Parameter(1.0, "kg", "mass", positive=True)
+    F_prop = Parameter(1.0, "N.s/m", "velocity dependent friction", nonnegative=True)
+    F_Coulomb = Parameter(5.0, "N", "constant friction: Coulomb force")
+    F_Stribeck = Parameter(10.0, "N", "Stribeck effect")
+    fexp = Parameter(2.0, "s/m", "exponential decay", nonnegative=True)
+    peak = Parameter(1.001, "1", "f0_max = peak*f0 (MSL: fixed 1.001)")
+    c_smooth = Parameter(1e7, "N/m", "smooth form only: stiffness of the stops",
+                         positive=True)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        check_stops(self, *self._limits(), "(smax - L/2) must be >= (smin + L/2), L = "
+                                            f"{self.L}")
+
+    def _centre(self, s):
+        return s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
+
+    def structure(self, s):
+        PartialRigid.structure(self, s)
+        PartialFriction.structure(self, s)
+
+    def _limits(self):
+        return self.smin + self.L / 2, self.smax - self.L / 2
+
+    def _relfric(self, e):
+        node = e.node("s")
+        return e.vel(node), e.acc(node)
+
+    def _sliding(self, e, v):
+        # |v| as MSL: bounded where the mode's law is continued past v = 0 before the event
+        return self.F_prop * v + self.F_Coulomb + self.F_Stribeck * ca.exp(
+            -self.fexp * ca.fabs(v))
+
+    def _free(self, e):
+        lower, upper = self._limits()
+        s = e.pos(e.node("s"))
+        return ca.logic_and(ca.logic_and(self.F_Coulomb + self.F_Stribeck <= 0,
+                                         self.F_prop <= 0), ca.logic_and(s > lower, s < upper))
+
+    def _apply(self, e, f) -> None:
+        e.flow(e.node("s"), f)
+
+    def _stop(self, e):
+        return e.vel(e.node("s")), 0.0
+
+    def _can_slide(self, e):
+        lower, upper = self._limits()
+        s = e.pos(e.node("s"))
+        return s < upper, s > lower
+
+    def physics(self, e):
+        node = e.node("s")
+        s, v = e.pos(node), e.vel(node)
+        e.kinetic_energy(0.5 * self.m * v ** 2)
+        super().physics(e)
+        lower, upper = self._limits()
+        if e.smooth:
+            d = 2 * ca.sqrt(self.c_smooth * self.m)
+            e.flow(node, contact_force(s - upper, v, self.c_smooth, d)
+                   - contact_force(lower - s, -v, self.c_smooth, d))
+        else:
+            e.indicator("gap_max", upper - s, "m", "distance to the stop smax")
+            e.indicator("gap_min", s - lower, "m", "distance to the stop smin")
+            e.reinit(v, 0.0, when="gap_max", direction=-1)
+            e.reinit(v, 0.0, when="gap_min", direction=-1)
+        e.variable("stopped", ca.if_else(s <= lower, -1, ca.if_else(s >= upper, 1, 0)), "",
+                   "mode of stop (-1: hard stop at flange_a, 0: no stop, +1: hard stop at "
+                   "flange_b)")
+
+
+class ElastoGap(PartialCompliantWithRelativeStates):
+    """Spring and damper in parallel with a gap (MSL's ElastoGap): they act only in contact,
+    s_rel < s_rel0, and only push.
+
+    With the compression δ = s_rel0 − s_rel [m]: contact (δ > 0) f_c = −f_ref·|δ/s_ref|^n,
+    f_ref = c·s_ref (MSL's binding; not a parameter of its own here), the damping force
+    d·v_rel limited to |f_d| ≤ |f_c| (so f = f_c + f_d never pulls), f = 0 out of contact;
+    lossPower = f_d·v_rel [W]. Parameters: c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL's start
+    values), s_rel0 [m] (0), s_ref [m] (1), n ≥ 1 (1). Records s_rel, v_rel, f, lossPower and
+    ``contact``, a Boolean mode changed at the state event of indicator ``compression``
+    (δ crossing 0, MSL's event of ``contact = s_rel < s_rel0``), so that the integrator
+    restarts at the kink instead of stepping across it. The law itself is written in δ (as
+    MSL's noEvent expressions), not switched on the mode: while the integrator runs ahead
+    of a crossing not located yet, the bodies keep touching as they should (switched off,
+    two plates preloaded by a spring would ring undamped for the rest of the run). The
+    limit of f_d has no events (MSL: noEvent). useHeatPort only False.
+
+    Smooth form (``compile(model, smooth=True)``): no mode and no event; the compression
+    is δ⁺ = s_smooth·log(1 + exp(δ/s_smooth)) (named parameter s_smooth [m], default 1e-6)
+    in f_c, and the damping force |f_c|·tanh(d·v_rel/(|f_c| + f_s)), f_s = f_ref·(s_smooth/
+    s_ref)^n the spring force at δ = s_smooth (so that out of contact it fades smoothly
+    instead of becoming a step in v_rel). Error against the exact law: δ⁺ exceeds max(δ, 0)
+    by at most s_smooth·ln 2 (at δ = 0) and by less than s_smooth·exp(−|δ|/s_smooth)
+    elsewhere, so f_c by at most f_ref·(s_smooth·ln 2/s_ref)^n (n = 1: c·s_smooth·ln 2); in
+    contact (|f_c| ≫ f_s) the damping force differs from the limited d·v_rel by at most
+    0.24·|f_c| (where d·|v_rel| ≈ |f_c|), and by less than |d·v_rel|³/(3·|f_c|²) +
+    |d·v_rel|·f_s/|f_c| below it.
+    """
+    options = {"useHeatPort": USE_HEAT_PORT}
+    c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
+    d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
+    s_rel0 = Parameter(0.0, "m", "unstretched spring length")
+    s_ref = Parameter(1.0, "m", "reference relative compression at which f_c = f_ref "
+                                "(= c*s_ref)", positive=True)
+    n = Parameter(1.0, "1", "exponent of spring force ( f_c = -f_ref*|(s_rel-s_rel0)/s_ref|^n )",
+                  positive=True)
+    s_smooth = Parameter(1e-6, "m", "smooth form only: width of the contact's regularization",
+                         positive=True)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if self.n < 1:
+            raise ParameterError(f"parameter '{type(self).__name__}.n' must be >= 1 (MSL: "
+                                 f"min = 1), got {self.n}")
+
+    def structure(self, s):
+        if not s.smooth:
+            s.mode("contact", 0, values=(0, 1),
+                   description="= true, if contact, otherwise no contact")
+
+    def _law(self, e, s_rel, v_rel):
+        depth = self.s_rel0 - s_rel
+        f_ref = self.c * self.s_ref
+        if e.smooth:
+            f_c = -f_ref * (_softplus(depth, self.s_smooth) / self.s_ref) ** self.n
+            f_s = f_ref * (self.s_smooth / self.s_ref) ** self.n
+            f_d = -f_c * ca.tanh(self.d * v_rel / (f_s - f_c))
+            e.variable("contact", depth > 0, "", "= true, if contact, otherwise no contact")
+        else:
+            e.indicator("compression", depth, "m", "compression s_rel0 - s_rel")
+            e.mode_update(e.mode("contact"), depth > 0)
+            f_c = -f_ref * (ca.fmax(depth, 0.0) / self.s_ref) ** self.n
+            f_d = ca.fmin(ca.fmax(self.d * v_rel, f_c), -f_c)
+        return f_c + f_d, f_d * v_rel
+
+
+class HardStop(PartialElementaryOneFlangeAndSupport2):
+    """Hard stops with a coefficient of restitution: the position s = flange.s − support.s
+    [m] of the body connected to ``flange`` stays in [smin, smax]. Not an MSL class (MSL's
+    stops are MassWithStopAndFriction's, which end every impact at rest, and ElastoGap, a
+    compliant contact); written after MSL's conventions.
+
+    Between impacts it exerts no force. An impact (indicator ``gap_max`` = smax − s while
+    approaching smax, v > 0; ``gap_min`` = s − smin while approaching smin) sets the
+    velocity v = der(s) [m/s] to −e·v (Modelica's ``reinit(v, -e*pre(v))``), or to 0 when
+    the impact speed |v| is below v_small [m/s]: the body then rests at the stop (mode
+    ``stopped`` = +1 at smax, −1 at smin, 0 free), held by the force f [N] = flange.f
+    (an algebraic variable: the relative acceleration is 0), until that force would pull
+    (indicator ``release``). So a body bouncing under a constant force comes to rest after
+    about log(v_small/v1)/log(e) impacts instead of an endless (Zeno) accumulation.
+    Parameters: smax = 25, smin = −25 [m] (MSL's MassWithStopAndFriction), e = 0.8 [1]
+    (0 ≤ e ≤ 1), v_small = 1e-3 [m/s]. Records s, v, f, contact (= true, if resting at a
+    stop), stopped. The position is not reinitialized onto the stop: it is where the impact
+    was located (past the stop by ~1e-12·|v| m).
+
+    Smooth form (``compile(model, smooth=True)``): each stop a penalty contact of stiffness
+    ``c_smooth`` [N/m] and damping ``d_smooth`` [N.s/m], the damping force limited so that
+    it never pulls (``contact_force``); no modes, no events, e not used. For a body of mass
+    m hitting a stop at speed v with d_smooth = 0 it goes past the stop by |v|·√(m/c_smooth)
+    and leaves it after π·√(m/c_smooth) s at the same speed (restitution 1); with damping
+    the restitution falls (about exp(−ζπ/√(1 − ζ²)), ζ = d_smooth/(2·√(c_smooth·m)), for a
+    linear damper; the limit keeps it higher) and the penetration towards
+    |v|·√(m/(2·c_smooth)) (the damping force saturates at the spring's while it goes in).
+    """
+    flange = Flange("flange of the body the stops hold", required=True)
+    smax = Parameter(25.0, "m", "upper stop of s = flange.s - support.s")
+    smin = Parameter(-25.0, "m", "lower stop of s = flange.s - support.s")
+    e = Parameter(0.8, "1", "coefficient of restitution (speed after / speed before impact)",
+                  nonnegative=True)
+    v_small = Parameter(1e-3, "m/s", "impact speed below which the body rests at the stop",
+                        positive=True)
+    c_smooth = Parameter(1e7, "N/m", "smooth form only: stiffness of the stops", positive=True)
+    d_smooth = Parameter(1e3, "N.s/m", "smooth form only: damping of the stops",
+                         nonnegative=True)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if self.e > 1:
+            raise ParameterError(f"parameter '{type(self).__name__}.e' (coefficient of "
+                                 f"restitution) must be in [0, 1], got {self.e}")
+        check_stops(self, self.smin, self.smax, "smax must be >= smin")
+
+    def structure(self, s):
+        if not s.smooth:
+            s.mode("stopped", 0, values=(-1, 0, 1),
+                   description="-1: resting at smin, 0: free, +1: resting at smax")
+            s.algebraic("f", unit="N", description="force of the stops on the flange "
+                                                   "(= flange.f)")
+
+    def physics(self, e):
+        s, v = self._rel_position(e, self.flange), self._rel_speed(e, self.flange)
+        self._record_relative(e, "s", "v")
+        if e.smooth:
+            f = contact_force(s - self.smax, v, self.c_smooth, self.d_smooth) \
+                - contact_force(self.smin - s, -v, self.c_smooth, self.d_smooth)
+            self._apply_flange_flow(e, f)
+            e.variable("f", f, "N", "force of the stops on the flange (= flange.f)")
+            e.variable("contact", ca.logic_or(s > self.smax, s < self.smin), "",
+                       "= true, if in contact with a stop")
+            return
+        stopped, f = e.mode("stopped"), e.state("f")
+        a = self._rel_acc(e, self.flange)
+        e.residual(ca.if_else(stopped == 0, f, a))
+        self._apply_flange_flow(e, f)
+        e.indicator("gap_max", ca.if_else(v > 0, self.smax - s, 1.0), "m",
+                    "distance to smax while approaching it")
+        e.indicator("gap_min", ca.if_else(v < 0, s - self.smin, 1.0), "m",
+                    "distance to smin while approaching it")
+        e.indicator("release", ca.if_else(stopped == 1, f, ca.if_else(stopped == -1, -f, 1.0)),
+                    "N", "force pushing the flange into the stop it rests at")
+        after = ca.if_else(ca.fabs(v) < self.v_small, 0.0, -self.e * v)
+        for when in ("gap_max", "gap_min"):
+            e.reinit(e.vel(self.flange), e.vel(self.flange) - v + after, when=when,
+                     direction=-1)
+        at_max = ca.logic_and(s >= self.smax, v == 0)
+        at_min = ca.logic_and(s <= self.smin, v == 0)
+        e.mode_update(stopped, ca.if_else(
+            stopped == 1, f >= 0, ca.if_else(stopped == -1, -(f <= 0), ca.if_else(
+                ca.logic_and(at_max, a > 0), 1, ca.if_else(ca.logic_and(at_min, a < 0),
+                                                           -1, 0)))))
+        e.variable("contact", stopped != 0, "", "= true, if resting at a stop")
+
+
+def check_stops(component, lower, upper, what: str) -> None:
+    """A ParameterError naming the component's smax unless upper ≥ lower."""
+    if upper < lower:
+        raise ParameterError(f"parameter '{type(component).__name__}.smax' = "
+                             f"{component.smax} with smin = {component.smin}: {what}")
+
 
 # =========================================================================================
 # Sources

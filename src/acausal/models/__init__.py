@@ -23,27 +23,35 @@ no compiler or simulation imports.
                         OneWayClutchDrive, OneWayClutchDisengaged: MSL's one-way clutch
     event_blocks        Thermostat: a bang-bang loop (OnOffController or Hysteresis);
                         SampledPController: Sampler and ZeroOrderHold on a mass
+    translational_friction  TranslationalBrake, TranslationalFriction, PreLoad: MSL's
+                        Translational Examples Brake, Friction (MassWithStopAndFriction) and
+                        PreLoad (ElastoGap)
+    gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
 from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
-from .event_blocks import SampledPController, Thermostat
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
 from .elastic_bearing import ElasticBearing
+from .event_blocks import SampledPController, Thermostat
 from .friction import RotationalFriction
+from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
+from .translational_friction import PreLoad, TranslationalBrake, TranslationalFriction
 
 __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane", "CubicSpring",
            "Flywheel", "SimpleDCMotor", "duffing_model", "motor_model", "DiskDriveHead",
            "Drivetrain", "DrivenFourBar", "ElasticBearing", "FourBar", "KinematicLoop",
            "Parallelogram", "PistonEngine", "SliderCrank", "add_link", "Oscillator",
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
-           "OneWayClutchDrive", "OneWayClutchDisengaged", "SampledPController", "Thermostat"]
+           "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
+           "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
+           "LossyGearDemo3", "SampledPController", "Thermostat"]
