@@ -16,21 +16,14 @@ import os
 import numpy as np
 
 import acausal
-from acausal.components import discrete, logical, signals
-from acausal.components.translational import Damper, Fixed, Force, Mass, PositionSensor
+from acausal.models import SampledPController, Thermostat
 
 TAU, POWER, REFERENCE, BAND = 2.0, 12.0, 5.0, 2.0
 
 
 def thermostat():
-    m = acausal.Model("thermostat")
-    m.plant = signals.FirstOrder(k=1.0, T=TAU)
-    m.ref = signals.Constant(k=REFERENCE)
-    m.ctrl = logical.OnOffController(bandwidth=BAND, pre_y_start=True)
-    m.heater = logical.BooleanToReal(realTrue=POWER, realFalse=0.0)
-    for a, b in [(m.ref.y, m.ctrl.reference), (m.plant.y, m.ctrl.u), (m.ctrl.y, m.heater.u),
-                 (m.heater.y, m.plant.u)]:
-        m.connect(a, b)
+    m = Thermostat(kind="OnOffController", tau=TAU, power=POWER, lower=REFERENCE - BAND / 2,
+                   upper=REFERENCE + BAND / 2)
     res = acausal.compile(m).simulate(12.0, rtol=1e-10, atol=1e-12)
     switches = np.array([ev.time for ev in res.events if ev.component == "ctrl"])
     off, on = switches[1::2] - switches[0::2][:len(switches) // 2], np.diff(switches)[1::2]
@@ -42,17 +35,7 @@ def thermostat():
 
 
 def sampled_controller():
-    m = acausal.Model("sampled")
-    m.ref, m.fb, m.gain = signals.Constant(k=1.0), signals.Feedback(), signals.Gain(k=20.0)
-    m.smp = discrete.Sampler(samplePeriod=0.1)
-    m.zoh = discrete.ZeroOrderHold(samplePeriod=0.1)
-    m.force, m.mass, m.probe = Force(), Mass(m=1.0), PositionSensor()
-    m.damper, m.fixed = Damper(d=8.0), Fixed()
-    for a, b in [(m.ref.y, m.fb.u1), (m.probe.s, m.smp.u), (m.smp.y, m.fb.u2),
-                 (m.fb.y, m.gain.u), (m.gain.y, m.zoh.u), (m.zoh.y, m.force.f),
-                 (m.force.flange, m.mass.flange_a), (m.probe.flange, m.mass.flange_b),
-                 (m.fixed.flange, m.damper.flange_a), (m.damper.flange_b, m.mass.flange_a)]:
-        m.connect(a, b)
+    m = SampledPController(m=1.0, c=0.0, d=8.0, K=20.0, reference=1.0, samplePeriod=0.1)
     res = acausal.compile(m).simulate(2.0)
     print(f"sampled controller: {len(res.events)} sample instants with a new force; "
           f"x(2 s) = {res.final('mass.s'):.4f} m")

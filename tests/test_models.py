@@ -35,6 +35,10 @@ CASES = {
     "one_way_clutch": (models.OneWayClutchDrive, ["inertiaIn.phi", "inertiaOut.phi"], [], []),
     "one_way_clutch_disengaged": (models.OneWayClutchDisengaged,
                                   ["inertiaIn.phi", "inertiaOut.phi"], [], []),
+    "thermostat": (models.Thermostat, [], ["plant.y"], []),
+    "thermostat_hysteresis": (lambda: models.Thermostat(kind="Hysteresis"), [], ["plant.y"],
+                              []),
+    "sampled_p_controller": (models.SampledPController, ["mass.s"], [], []),
 }
 
 
@@ -61,3 +65,9 @@ def test_closed_loops_keep_their_closing_joint_as_constraints():
 def test_pendulum_on_cart_refuses_an_unknown_drive():
     with pytest.raises(ParameterError, match=r"drive must be 'position' or 'input', got 'force'"):
         models.PendulumOnCart(drive="force")
+
+
+def test_thermostat_refuses_an_unknown_kind():
+    with pytest.raises(ParameterError, match=r"kind must be 'OnOffController' or "
+                                             r"'Hysteresis', got 'PID'"):
+        models.Thermostat(kind="PID")

@@ -20,8 +20,7 @@ from acausal import Model, ParameterError, PortConnectionError, StructureError
 from acausal.components import discrete as dc
 from acausal.components import logical as lg
 from acausal.components import signals as sg
-from acausal.components.translational import (Damper, Fixed, Force, Mass, PositionSensor,
-                                              Spring)
+from acausal.models.event_blocks import SampledPController, Thermostat
 
 SIM = dict(rtol=1e-10, atol=1e-12)
 TIGHT = dict(rtol=1e-12, atol=1e-14)          # integrated plants: event times to 1e-9 s
@@ -172,24 +171,10 @@ def _bang_bang_times(t_end: float) -> np.ndarray:
     return np.array(out[:-1] if out[-1] >= t_end else out)
 
 
-def _thermostat(kind: str) -> Model:
-    m = Model("thermostat")
-    m.plant = sg.FirstOrder(k=1.0, T=TAU)
-    if kind == "OnOffController":            # on below reference - bandwidth/2
-        m.ctrl = lg.OnOffController(bandwidth=UPPER - LOWER, pre_y_start=True)
-        m.ref = sg.Constant(k=(UPPER + LOWER) / 2)
-        m.heater = lg.BooleanToReal(realTrue=POWER, realFalse=0.0)
-        return _wire(m, [(m.ref.y, m.ctrl.reference), (m.plant.y, m.ctrl.u),
-                         (m.ctrl.y, m.heater.u), (m.heater.y, m.plant.u)])
-    m.ctrl = lg.Hysteresis(uLow=LOWER, uHigh=UPPER)          # true (hot): heater off
-    m.off, m.on, m.heater = sg.Constant(k=0.0), sg.Constant(k=POWER), lg.Switch()
-    return _wire(m, [(m.plant.y, m.ctrl.u), (m.ctrl.y, m.heater.u2), (m.off.y, m.heater.u1),
-                     (m.on.y, m.heater.u3), (m.heater.y, m.plant.u)])
-
-
 @pytest.mark.parametrize("kind", ["OnOffController", "Hysteresis"])
 def test_bang_bang_of_a_first_order_plant_switches_at_the_closed_form_times(kind):
-    res = acausal.compile(_thermostat(kind)).simulate(12.0, **TIGHT)
+    model = Thermostat(kind=kind, tau=TAU, power=POWER, lower=LOWER, upper=UPPER)
+    res = acausal.compile(model).simulate(12.0, **TIGHT)
     expected = _bang_bang_times(12.0)
     assert len(expected) == 13
     np.testing.assert_allclose(_switch_times(res, "ctrl"), expected, rtol=0, atol=1e-9)
@@ -344,16 +329,7 @@ def _discrete_loop(n: int) -> tuple[np.ndarray, np.ndarray]:
 
 
 def test_sampled_p_controller_on_a_mass_matches_the_exact_discretization():
-    m = Model("sampled_loop")
-    m.ref, m.fb, m.gain = sg.Constant(k=R), sg.Feedback(), sg.Gain(k=K)
-    m.smp, m.zoh = dc.Sampler(samplePeriod=TS), dc.ZeroOrderHold(samplePeriod=TS)
-    m.force, m.mass, m.probe = Force(), Mass(m=M), PositionSensor()
-    m.spring, m.damper, m.fixed = Spring(c=C), Damper(d=D), Fixed()
-    _wire(m, [(m.ref.y, m.fb.u1), (m.probe.s, m.smp.u), (m.smp.y, m.fb.u2),
-              (m.fb.y, m.gain.u), (m.gain.y, m.zoh.u), (m.zoh.y, m.force.f),
-              (m.force.flange, m.mass.flange_b), (m.probe.flange, m.mass.flange_b),
-              (m.fixed.flange, m.spring.flange_a), (m.fixed.flange, m.damper.flange_a),
-              (m.spring.flange_b, m.mass.flange_a), (m.damper.flange_b, m.mass.flange_a)])
+    m = SampledPController(m=M, c=C, d=D, K=K, reference=R, samplePeriod=TS)
     res = acausal.compile(m).simulate(2.05, x0={"mass.s": 0.2}, **TIGHT)
     xs, fs = _discrete_loop(21)
     tk = TS * np.arange(21)

@@ -19,6 +19,9 @@ Functions (outputs dense, column-major):
     ac_phiq -> Φ_q                    their Jacobian in the coordinates, every row enforced:
                                       the runtime picks the rows to enforce from it
     ac_start(p) -> start values of [x; z];  ac_events(p) -> [first times; periods]
+    ac_clocks(p) -> [first times; periods] of the sample triggers (``clock_times``): their
+                                      instants are among ac_events' (reported as time events
+                                      there); this tells which trigger ticks at one
     ac_ind  -> g                      the state events' indicators (``indicator_function``)
     ac_upd  -> (modes, reinit)        the modes' new values from their present ones in p and
                                       the reinits' values (``event_update_function``)
@@ -36,7 +39,7 @@ import numpy as np
 from ..simulation.initialization import model_equations
 
 FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
-             "ac_events", "ac_ind", "ac_upd")
+             "ac_events", "ac_clocks", "ac_ind", "ac_upd")
 
 
 class ModelFunctions:
@@ -74,6 +77,8 @@ class ModelFunctions:
         ind = nol(se.indicator) if se.indicator.numel() else ca.SX(0, 1)
         upd = [nol(v) if v.numel() else ca.SX(0, 1) for v in (se.mode_update, se.reinit_values)]
         self.ng, self.nmode, self.nreinit = ind.numel(), len(c.mode_params), len(se.reinits)
+        self.nclock = len(se.clocks)
+        clocks = ca.vertcat(*se.clock_times(p)) if self.nclock else ca.SX(0, 1)
 
         s0 = ca.vertsplit(c.start(p))          # start values of [x; z]: x and the free z
         start = ca.vertcat(*(s0[:self.nx] + [s0[self.nx + i] for i in free]))
@@ -97,6 +102,7 @@ class ModelFunctions:
             "ac_start": ca.Function("ac_start", [p], [d(start)], ["p"], ["x0"]),
             "ac_events": ca.Function("ac_events", [p], [d(ca.vertcat(ev_t, ev_p))], ["p"],
                                      ["ev"]),
+            "ac_clocks": ca.Function("ac_clocks", [p], [d(clocks)], ["p"], ["clocks"]),
             "ac_ind": ca.Function("ac_ind", args, [d(ind)], names, ["g"]),
             "ac_upd": ca.Function("ac_upd", args, [d(upd[0]), d(upd[1])], names,
                                   ["modes", "reinit"]),
@@ -120,9 +126,12 @@ class ModelFunctions:
 
     def event_tables(self) -> dict:
         """The state events' tables for the C runtime: positions in p of the modes, their
-        names, owners and allowed values; each indicator's name and owner; each reinit's
-        state (index in x), indicator and direction."""
+        names, owners and allowed values, whether each is an Integer/Boolean mode (rounded by
+        the event iteration) or a discrete Real variable (not); the sample triggers' positions
+        among the modes and whether each is true at the start too; each indicator's name and
+        owner; each reinit's state (index in x), indicator and direction."""
         c = self.compiled
+        real = set(c.state_events.real_modes)
         allowed = [c.state_events.mode_values.get(v.name) for v in c.modes]
         starts = np.cumsum([0] + [len(a or ()) for a in allowed]).tolist()
         return {"AC_MODE_P": ("int", c.mode_params),
@@ -132,6 +141,9 @@ class ModelFunctions:
                 # AC_MODE_FIRST[k + 1]) (none: any value)
                 "AC_MODE_FIRST": ("int", starts),
                 "AC_MODE_VALUES": ("int", [int(v) for a in allowed for v in (a or ())]),
+                "AC_MODE_INT": ("int", [int(v.name not in real) for v in c.modes]),
+                "AC_CLOCK_MODE": ("int", list(c.state_events.clocks)),
+                "AC_CLOCK_INITIAL": ("int", [int(b) for b in c.state_events.clock_initial]),
                 "AC_G_NAMES": ("char *", [v.name for v in c.state_events.indicators]),
                 "AC_G_OWNER": ("char *", [v.component for v in c.state_events.indicators]),
                 "AC_RE_STATE": ("int", [r.state for r in c.state_events.reinits]),

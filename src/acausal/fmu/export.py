@@ -53,7 +53,12 @@ keep changing), reporting ``valuesOfContinuousStatesChanged`` when states were r
 or modes changed (the importer restarts its solver). Initialization ends with the same
 iteration, so that the modes start consistent. A crossing that can change nothing (no
 modes, no reinit of it in that direction: a ball leaving the floor) updates the sides
-only.
+only. Integer and Boolean modes are rounded in the iteration, discrete Real variables
+(sampled values, ``StructureBuilder.discrete``) are not. The instants of sample triggers
+(``StructureBuilder.sample``: the discrete blocks) are time events (``nextEventTime``); at
+one (within 1e-12·max(1, |t|) s, events.py's ``instant``) the trigger is true through the
+event iteration, then the iteration runs once more with it false, as in ``simulate()``;
+at the start only the triggers declared ``initial`` are true.
 
 Co-simulation
 -------------
@@ -84,7 +89,10 @@ the linear algebra is dense LU, O(n³) per step (fine for tens to a few hundred 
 for thousands); the Newton iteration for z has no globalization beyond the warm start (it
 fails with fmi2Error and a logged message if it does not converge in 50 iterations); the
 solver does not detect the loops' singular positions (a dead point of a linkage stops it
-with an error).
+with an error). A sample instant at the stop time is taken by the co-simulation FMU (its
+last doStep ends at the instant's right limit), not by simulate(), which ends there; a
+model-exchange importer that steps over a sample instant (its event update comes later)
+gets fmiError naming the block instead of a lost sample.
 
 Initialization
 --------------
@@ -241,6 +249,7 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
              ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
              ("NPOS", len(compiled.position_states)), ("NEV", mf.nev), ("NVR", len(kind)),
              ("NG", mf.ng), ("NMODE", mf.nmode), ("NREINIT", mf.nreinit),
+             ("NCLOCK", mf.nclock),
              ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
              ("SZ_W", sz["w"])]
     # the Parameter's flags, checked by the runtime as Parameter.check_scalar does

@@ -21,6 +21,8 @@ no compiler or simulation imports.
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
     clutches            CoupledClutches: MSL's drive train with 3 coupled clutches;
                         OneWayClutchDrive, OneWayClutchDisengaged: MSL's one-way clutch
+    event_blocks        Thermostat: a bang-bang loop (OnOffController or Hysteresis);
+                        SampledPController: Sampler and ZeroOrderHold on a mass
     translational_friction  TranslationalBrake, TranslationalFriction, PreLoad: MSL's
                         Translational Examples Brake, Friction (MassWithStopAndFriction) and
                         PreLoad (ElastoGap)
@@ -35,6 +37,7 @@ from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_mod
 from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
 from .elastic_bearing import ElasticBearing
+from .event_blocks import SampledPController, Thermostat
 from .friction import RotationalFriction
 from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
@@ -51,4 +54,4 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
-           "LossyGearDemo3"]
+           "LossyGearDemo3", "SampledPController", "Thermostat"]

@@ -104,7 +104,7 @@ static int iterate(ac_inst *m, int *changed) {
         if (ac_eval(m, (ac_fn)ac_upd, m->d.t, m->d.x, m->d.z, out, 2))
             return ERR("evaluating the modes' updates failed");
         for (k = 0; k < AC_NMODE; k++) {
-            double v = round(next[k]);
+            double v = AC_MODE_INT[k] ? round(next[k]) : next[k];   /* discrete Reals: as they are */
             if (!isfinite(v)) return ERR("the mode_update of '%s' is not finite at t = %g", AC_MODE_OWNER[k], m->d.t);
             if (v != m->d.p[AC_MODE_P[k]]) { m->d.p[AC_MODE_P[k]] = v; moving[k] = 1; diff = 1; }
         }
@@ -129,6 +129,55 @@ static int iterate(ac_inst *m, int *changed) {
 #else
     (void)m; (void)changed;
     return AC_OK;
+#endif
+}
+
+/* the sample triggers that tick at the instance's time (events.py's `ticking`): at the start
+ * those declared `initial` (whatever the time); later those with an instant first + k·period
+ * (k >= 0, the numbers ac_events reports as time events) within AC_EVENT_TOL·max(1, |t|) s,
+ * the tolerance of events.py's `instant`, once per instant (an importer may run the event
+ * update twice at one time: a UnitDelay would shift twice). An instant passed since the
+ * trigger last ticked is an error: the importer stepped over a time event (nextEventTime),
+ * and the sample would be lost */
+static int ticking(ac_inst *m, int start, unsigned char *tick, int *any) {
+#if AC_NCLOCK > 0
+    double cl[2 * AC_NCLOCK], t = m->d.t, tol = AC_EVENT_TOL * (fabs(t) > 1 ? fabs(t) : 1);
+    int c;
+    if (ac_eval_p(m, (ac_fn)ac_clocks, cl)) return ERR("evaluating the sample instants failed");
+    for (c = 0; c < AC_NCLOCK; c++) {
+        double first = cl[c], period = cl[AC_NCLOCK + c], k, last;
+        if (!(period > 0) || !isfinite(period) || !isfinite(first))
+            return ERR("the sample period of '%s' must be > 0 s, got %g (first instant %g s)",
+                       AC_MODE_OWNER[AC_CLOCK_MODE[c]], period, first);
+        if (start) {
+            tick[c] = AC_CLOCK_INITIAL[c] != 0;
+            m->d.last_tick[c] = t;
+        } else {
+            k = floor((t + tol - first) / period);       /* the last instant up to t */
+            last = first + k * period;
+            tick[c] = k >= 0 && last > m->d.last_tick[c] + tol;
+            if (tick[c] && last < t - tol)
+                return ERR("the sample instant t = %.17g s of '%s' was passed without an event "
+                           "at it (the FMU is at t = %.17g s): an importer must stop at "
+                           "nextEventTime", last, AC_MODE_OWNER[AC_CLOCK_MODE[c]], t);
+            if (tick[c]) m->d.last_tick[c] = t;
+        }
+        *any |= tick[c];
+    }
+#else
+    (void)m; (void)start; (void)tick; (void)any;
+#endif
+    return AC_OK;
+}
+
+/* the ticking triggers set to `value` (1: through the event iteration, then 0) */
+static void set_triggers(ac_inst *m, const unsigned char *tick, double value) {
+#if AC_NCLOCK > 0
+    int c;
+    for (c = 0; c < AC_NCLOCK; c++) if (tick[c]) m->d.p[AC_MODE_P[AC_CLOCK_MODE[c]]] = value;
+    ac_invalidate(m);
+#else
+    (void)m; (void)tick; (void)value;
 #endif
 }
 
@@ -160,9 +209,11 @@ static int chattering(ac_inst *m, const int *dir) {
 
 int ac_state_event(ac_inst *m, int start, int *changed) {
     double g[AC_D(AC_NG)], after[AC_D(AC_NG)];
-    int dir[AC_D(AC_NG)], i, j, any = 0, ch = 0;
+    int dir[AC_D(AC_NG)], i, j, any = 0, ch = 0, ticks = 0;
+    unsigned char tick[AC_D(AC_NCLOCK)];
     if (changed) *changed = 0;
     if (AC_NG == 0 && AC_NMODE == 0) return AC_OK;
+    if (ticking(m, start, tick, &ticks)) return AC_ERROR;
     if (here(m, g)) return AC_ERROR;
     for (i = 0; i < AC_NG; i++) {
         double before = start ? 1.0 : m->d.sides[i];
@@ -192,7 +243,15 @@ int ac_state_event(ac_inst *m, int start, int *changed) {
             if (ac_keep_loops_closed(m, 1.0, NULL)) return AC_ERROR;
         }
     }
+    /* at a sample instant the triggers are true through the event iteration, so the sampled
+     * values (and a chain of them) settle on the values of this instant; then once more
+     * with them false, as events.py's `event` */
+    if (ticks) set_triggers(m, tick, 1.0);
     if (iterate(m, &ch)) return AC_ERROR;
+    if (ticks) {
+        set_triggers(m, tick, 0.0);
+        if (iterate(m, &ch)) return AC_ERROR;
+    }
     if (here(m, g)) return AC_ERROR;          /* the sides at the right limit */
     for (i = 0; i < AC_NG; i++) m->d.sides[i] = ac_side(ac_reported(g[i], after[i]), after[i]);
     if (changed) *changed = ch;

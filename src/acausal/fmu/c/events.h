@@ -6,9 +6,18 @@
  *   - at an event: the reinits of the crossed indicators (in their direction, values at the
  *     left limit: ac_upd), then the event iteration: every mode updated from the present
  *     ones (ac_upd, rounded), the algebraic variables solved in between, until no mode
- *     changes (AC_EVENT_ITERATIONS rounds; otherwise an error naming
+ *     changes (Integer/Boolean modes rounded, discrete Real variables
+ *     as they are: AC_MODE_INT; AC_EVENT_ITERATIONS rounds; otherwise an error naming
  *     the components whose modes kept changing), each mode then one of its declared values
  *     (otherwise an error naming it); closed loops projected after a reinit;
+ *   - sample triggers (StructureBuilder.sample; AC_CLOCK_MODE: their positions among the
+ *     modes): their instants are among the time events (ac_events, so ME reports them as
+ *     nextEventTime and CS stops at them); at an event within AC_EVENT_TOL·max(1, |t|) s of
+ *     an instant of a trigger (once per instant: each trigger's last tick is kept), the
+ *     trigger is 1 through the event iteration and then the iteration runs once more with
+ *     it 0, as events.py's `event`; at the start only the triggers declared `initial`
+ *     (AC_CLOCK_INITIAL) tick; an event past an instant the importer did not stop at is an
+ *     error naming the block (the sample would be lost);
  *   - hysteresis, as Modelica tools shift their crossing functions: an indicator g on side s
  *     is reported as g + s·AC_HYSTERESIS, so it crosses once g is AC_HYSTERESIS past zero
  *     (in its own units); at the event the relations that the mode updates test (a torque

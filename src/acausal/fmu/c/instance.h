@@ -44,6 +44,8 @@ typedef struct {
     int rtol_set, atol_set;
     double h;                           /* co-simulation: step size carried between steps */
     double next_event;                  /* next time event (HUGE_VAL: none) */
+    double last_tick[AC_D(AC_NCLOCK)];  /* when each sample trigger last ticked (or the
+                                           start) */
     double sides[AC_D(AC_NG)];          /* the indicators' sides at the last accepted step or
                                            event (events.h); the modes are in p */
     double recent_t[AC_CHATTER_EVENTS]; /* the last state events (a ring): time, indicator */
