@@ -298,9 +298,29 @@ class EventSimulation(ModeIteration):
         # out of the error test, z at an output time is IDAS's interpolant, far off where
         # the states stand still (a stuck friction element: long steps); solved at x instead
         Z = np.array(sol["zf"], dtype=float) * self.Nz[:, None]
-        for i, t in enumerate(times):
-            Z[:, i] = self.consistent_z(t, X[:, i], Z[:, i], d)
-        return X, Z
+        return X, self.consistent_along(times, X, Z, d)
+
+    def consistent_along(self, times, X, Z, d) -> np.ndarray:
+        """``consistent_z`` at each of ``times`` (columns of X, Z), all at once (one mapped
+        Newton step per round, least squares by pseudo-inverse)."""
+        n, nz = len(times), Z.shape[0]
+        if ("newton", n) not in self._g_map:
+            self._g_map["newton", n] = self.newton.map(n)
+        T = np.asarray(times, dtype=float).reshape(1, -1)
+        U, P = np.array(self.u_map(n)(T), dtype=float), self.params(d)
+        Z = np.array(Z, dtype=float)
+        for _ in range(50):
+            r, J = self._g_map["newton", n](T, X, Z, U, P)
+            r = r.full()
+            J = J.full().reshape(nz, n, nz).transpose(1, 0, 2)        # one per column
+            rows = np.any(J != 0, axis=2).T                           # (nz, n)
+            scale = 1 + np.abs(Z).max(initial=0.0)
+            if np.max(np.abs(np.where(rows, r, 0.0)), initial=0.0) <= 1e-12 * scale:
+                return Z
+            Z = Z - np.einsum("kij,jk->ik", np.linalg.pinv(J), np.where(rows, r, 0.0))
+        for k in range(n):          # one by one: what converges slowly, or the error
+            Z[:, k] = self.consistent_z(times[k], X[:, k], Z[:, k], d)
+        return Z
 
     def _start_options(self, t0, x, z, d, t1) -> dict:
         """The integrator's options; DAEs: with the derivatives at the start and a first
