@@ -302,22 +302,32 @@ class EventSimulation(ModeIteration):
 
     def consistent_along(self, times, X, Z, d) -> np.ndarray:
         """``consistent_z`` at each of ``times`` (columns of X, Z), all at once (one mapped
-        Newton step per round, least squares by pseudo-inverse)."""
+        Newton step per round; a row no algebraic variable enters left out, a singular
+        system by least squares)."""
         n, nz = len(times), Z.shape[0]
         if ("newton", n) not in self._g_map:
-            self._g_map["newton", n] = self.newton.map(n)
+            F = self.newton.map(n)
+            i, j = F.sparsity_out(1).get_triplet()                   # J: nz x (n·nz)
+            self._g_map["newton", n] = F, (np.array(j) // nz, np.array(i), np.array(j) % nz)
+        F, at = self._g_map["newton", n]
         T = np.asarray(times, dtype=float).reshape(1, -1)
         U, P = np.array(self.u_map(n)(T), dtype=float), self.params(d)
         Z = np.array(Z, dtype=float)
         for _ in range(50):
-            r, J = self._g_map["newton", n](T, X, Z, U, P)
+            r, Jv = F(T, X, Z, U, P)
             r = r.full()
-            J = J.full().reshape(nz, n, nz).transpose(1, 0, 2)        # one per column
+            J = np.zeros((n, nz, nz))                                 # one per column
+            J[at] = np.array(Jv.nonzeros())
             rows = np.any(J != 0, axis=2).T                           # (nz, n)
             scale = 1 + np.abs(Z).max(initial=0.0)
             if np.max(np.abs(np.where(rows, r, 0.0)), initial=0.0) <= 1e-12 * scale:
                 return Z
-            Z = Z - np.einsum("kij,jk->ik", np.linalg.pinv(J), np.where(rows, r, 0.0))
+            R = np.where(rows, r, 0.0).T[..., None]                   # (n, nz, 1)
+            try:
+                step = np.linalg.solve(J + ~rows.T[..., None] * np.eye(nz), R)
+            except np.linalg.LinAlgError:                             # indeterminate
+                step = np.linalg.pinv(J) @ R
+            Z = Z - step[..., 0].T
         for k in range(n):          # one by one: what converges slowly, or the error
             Z[:, k] = self.consistent_z(times[k], X[:, k], Z[:, k], d)
         return Z
