@@ -1,0 +1,299 @@
+"""Potential/flow networks (electrical, thermal): Kirchhoff's laws as DAE equations.
+
+The connection sets of network ports (``Domain.network``: pins, heat ports) are not
+mechanical: they get no coordinates, no kinetic energy. Each set is a node with one
+potential (v [V], T [K]); the unknowns and equations the network adds to the DAE are
+
+- unknowns: every node's potential; every port flow a component reads as an unknown
+  (``PhysicsBuilder.flow_of``); the algebraic variables of components with network ports;
+- equations: Kirchhoff's current law at every node (the flows of its ports, positive into
+  the components, sum to zero); the residuals of components with network ports.
+
+A component gives each of its network ports' flows either explicitly
+(``PhysicsBuilder.flow``: an inductor's state current, a heat flow source) or as the unknown
+``flow_of(port)`` with an equation of its own (a resistor's v = R·i). Capacitors, inductors
+and heat capacitors declare states with derivatives (semi-explicit DAE).
+
+Structure. Before any elimination, the network's equations are matched to its unknowns
+(maximum bipartite matching of the incidence). A network is accepted when the matching is
+perfect: index 1, which IDAS integrates directly. Otherwise it is structurally singular, a
+higher-index network, refused with a StructureError naming the parts (no index reduction):
+
+- equations left over with no unknown of their own (Dulmage-Mendelsohn's over-determined
+  part) are either a loop of potential-fixing elements (capacitors, voltage sources,
+  grounds, heat capacitors and fixed temperatures joined directly: one voltage follows
+  from the others, Kirchhoff's voltage law constrains states) or a cut set of flow-fixing
+  elements (nodes whose flows are all given: inductors, current sources; Kirchhoff's
+  current law constrains states). The error names the components and says what to change
+  (a resistor in series, or across; or merging the elements into one);
+- unknowns left over (the under-determined part: no Ground in a circuit) name the nodes.
+
+Elimination. Trivial equations are solved before the DAE is built, where cheap: an equation
+affine in an unknown with a numeric coefficient is solved for it when the rest holds at most
+one other unknown (a grounded potential, p.v = 0; an alias, n.i = −p.i; a potential fixed by
+a state, v = C's voltage) or when the unknown appears in no other network equation (the
+ground's current). The eliminated unknowns are substituted everywhere (equations of motion,
+outputs, recorded variables) and recorded as expressions.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import casadi as ca
+import numpy as np
+from scipy.sparse import csr_matrix
+from scipy.sparse.csgraph import maximum_bipartite_matching
+
+from ..errors import StructureError
+
+_vc = ca.vertcat
+
+
+@dataclass
+class NetNode:
+    """A connection set of network ports: one potential (an unknown of the DAE)."""
+    ports: list
+    potential: ca.SX
+
+    @property
+    def domain(self):
+        return self.ports[0].domain
+
+    @property
+    def name(self) -> str:
+        return self.ports[0].path
+
+
+def declare_nodes(ws, groups: list) -> None:
+    """Give every network connection set of ``groups`` its node and potential symbol."""
+    for g in groups:
+        name = f"{g[0].path}.{g[0].domain.potentials[0]}"
+        node = NetNode(list(g), ca.SX.sym(name))
+        ws.der_table[name] = None
+        ws.net_nodes.append(node)
+        for p in g:
+            ws.net_node_of[p] = node
+
+
+def has_network_ports(component) -> bool:
+    return any(getattr(p, "domain", None) is not None and p.domain.network
+               for p in component.ports.values())
+
+
+@dataclass
+class Network:
+    """The network's part of the DAE: remaining unknowns ``z`` (with units and start
+    values), equations ``alg``, and ``substitute``, which replaces the eliminated unknowns
+    in any expression; ``records`` are (name, expression, unit) of every port's potential
+    and flow."""
+    z: list = field(default_factory=list)            # (symbol, unit, start, description)
+    alg: list = field(default_factory=list)
+    eliminated: list = field(default_factory=list)   # symbols
+    values: list = field(default_factory=list)       # their expressions
+    records: list = field(default_factory=list)
+
+    def substitute(self, exprs: list) -> list:
+        if not self.eliminated:
+            return exprs
+        return ca.substitute(exprs, [_vc(*self.eliminated)], [_vc(*self.values)])
+
+
+def build_network(ws, resolve) -> Network:
+    """Kirchhoff's laws and the residuals of the components with network ports, resolved
+    (signals substituted), checked for structure and reduced (see the module's docstring)."""
+    net = Network()
+    if not ws.net_nodes:
+        return net
+    explicit: dict = {}
+    for p, v in ws.net_flows:
+        explicit[p] = explicit[p] + v if p in explicit else v
+    unknowns, units, starts, what = [], [], [], []
+    for n in ws.net_nodes:
+        unknowns.append(n.potential)
+        units.append(n.domain.potential_units[0])
+        starts.append(0.0)
+        what.append(("node", n))
+    for p, s in ws.net_flow_sym.items():
+        if p in explicit:
+            raise StructureError(f"{type(p.owner).__name__} '{p.owner.path}' gives the flow of "
+                                 f"'{p.path}' (e.flow) and also reads it as unknown "
+                                 f"(e.flow_of); use one")
+        unknowns.append(s)
+        units.append(p.domain.flow_units[0])
+        starts.append(0.0)
+        what.append(("port", p))
+    for a in ws.algebraics:
+        if has_network_ports(a.owner):
+            unknowns.append(a.sym)
+            units.append(a.unit)
+            starts.append(a.start)
+            what.append(("component", a.owner))
+    eqs, labels = [], []
+    for n in ws.net_nodes:
+        flows = []
+        for p in n.ports:
+            if p in explicit:
+                flows.append(explicit[p])
+            elif p in ws.net_flow_sym:
+                flows.append(ws.net_flow_sym[p])
+            else:
+                raise StructureError(f"{type(p.owner).__name__} '{p.owner.path}' sets no "
+                                     f"{p.domain.flows[0]} of its port '{p.path}' (give it "
+                                     f"with e.flow, or read it with e.flow_of and give an "
+                                     f"equation for it)")
+        eqs.append(ca.sum1(_vc(*flows)))
+        labels.append(("node", n))
+    for owner, r in ws.residuals:
+        if has_network_ports(owner):
+            eqs.append(r)
+            labels.append(("component", owner))
+    eqs = ca.vertsplit(resolve([_vc(*eqs)])[0])
+    _check_structure(eqs, unknowns, labels, what, explicit)
+    alive, solved = _eliminate(eqs, unknowns)
+    net.alg = [eqs[k] for k in alive]
+    net.z = [(unknowns[k], units[k], starts[k]) for k in range(len(unknowns))
+             if k not in solved]
+    net.eliminated = [unknowns[k] for k in solved]
+    net.values = [solved[k] for k in solved]
+    for n in ws.net_nodes:
+        dom = n.domain
+        for p in n.ports:
+            flow = explicit.get(p, ws.net_flow_sym.get(p))
+            net.records.append((f"{p.path}.{dom.potentials[0]}", n.potential,
+                                dom.potential_units[0]))
+            net.records.append((f"{p.path}.{dom.flows[0]}", flow, dom.flow_units[0]))
+    return net
+
+
+def _eliminate(eqs: list, unknowns: list):
+    """Solve trivial equations (see the module's docstring): the indices of the equations
+    left and {unknown index: its expression in the remaining unknowns}. ``eqs`` is updated
+    in place."""
+    index = {u.name(): k for k, u in enumerate(unknowns)}
+    vars_of = [{index[s.name()] for s in ca.symvar(e) if s.name() in index} for e in eqs]
+    rows_of: dict = {k: set() for k in range(len(unknowns))}
+    for r, vs in enumerate(vars_of):
+        for k in vs:
+            rows_of[k].add(r)
+    alive = set(range(len(eqs)))
+    solved: dict = {}
+    progress = True
+    while progress:
+        progress = False
+        for r in sorted(alive):
+            hit = _solvable(eqs[r], vars_of[r], rows_of, unknowns)
+            if hit is None:
+                continue
+            k, value = hit
+            u = unknowns[k]
+            for r2 in rows_of[k] - {r}:
+                eqs[r2] = ca.substitute(eqs[r2], u, value)
+                vars_of[r2] = (vars_of[r2] | vars_of[r]) - {k}
+                for j in vars_of[r] - {k}:
+                    rows_of[j].add(r2)
+            for j in list(solved):
+                if ca.depends_on(solved[j], u):
+                    solved[j] = ca.substitute(solved[j], u, value)
+            solved[k] = value
+            for j in vars_of[r]:
+                rows_of[j].discard(r)
+            rows_of[k] = set()
+            alive.discard(r)
+            progress = True
+    return sorted(alive), solved
+
+
+def _solvable(eq, vs: set, rows_of: dict, unknowns: list):
+    """(k, value) if eq is affine in unknown k with a numeric coefficient and is trivial for
+    it (at most one other unknown in it, or k in no other equation), else None."""
+    for k in sorted(vs):
+        if len(vs) > 2 and len(rows_of[k]) > 1:
+            continue
+        a = ca.jacobian(eq, unknowns[k])
+        if not a.is_constant():
+            continue
+        a = float(a)
+        if a == 0.0:
+            continue
+        return k, -ca.substitute(eq, unknowns[k], 0) / a
+    return None
+
+
+def _check_structure(eqs, unknowns, labels, what, explicit) -> None:
+    """Refuse a structurally singular network, naming the loop or cut set (module's
+    docstring)."""
+    n_eq, n_un = len(eqs), len(unknowns)
+    rows, cols = ca.jacobian_sparsity(_vc(*eqs), _vc(*unknowns)).get_triplet()
+    incidence = csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n_eq, n_un))
+    match = maximum_bipartite_matching(incidence, perm_type="column")   # row -> column
+    col_match = -np.ones(n_un, dtype=int)
+    for r, c in enumerate(match):
+        if c >= 0:
+            col_match[c] = r
+    unmatched_rows = [r for r in range(n_eq) if match[r] < 0]
+    unmatched_cols = [c for c in range(n_un) if col_match[c] < 0]
+    if not unmatched_rows and not unmatched_cols:
+        return
+    by_row = [[] for _ in range(n_eq)]
+    by_col = [[] for _ in range(n_un)]
+    for r, c in zip(rows, cols):
+        by_row[r].append(c)
+        by_col[c].append(r)
+    if unmatched_rows:                  # over-determined: rows reachable by alternating paths
+        seen, stack = set(unmatched_rows), list(unmatched_rows)
+        while stack:
+            r = stack.pop()
+            for c in by_row[r]:
+                r2 = col_match[c]
+                if r2 >= 0 and r2 not in seen:
+                    seen.add(r2)
+                    stack.append(r2)
+        raise StructureError(_over_message([labels[r] for r in sorted(seen)], explicit))
+    seen, stack = set(unmatched_cols), list(unmatched_cols)
+    while stack:
+        c = stack.pop()
+        for r in by_col[c]:
+            c2 = match[r]
+            if c2 >= 0 and c2 not in seen:
+                seen.add(c2)
+                stack.append(c2)
+    nodes = sorted({w.name for kind, w in (what[c] for c in seen) if kind == "node"})
+    others = sorted({w.path for kind, w in (what[c] for c in seen) if kind != "node"})
+    raise StructureError(
+        f"network not determined: the potentials of nodes {', '.join(nodes) or '-'}"
+        f"{' and the unknowns of ' + ', '.join(others) if others else ''} follow from no "
+        f"equation; give the circuit a reference potential (an electrical Ground, a "
+        f"FixedTemperature or a HeatCapacitor on a thermal network)")
+
+
+def _part(c) -> str:
+    return f"{type(c).__name__} '{c.path}'"
+
+
+def _over_message(labels, explicit) -> str:
+    nodes = [w for kind, w in labels if kind == "node"]
+    comps = []
+    for kind, w in labels:
+        if kind == "component" and w not in comps:
+            comps.append(w)
+    if nodes:                          # Kirchhoff's current law over given flows: a cut set
+        givers = []
+        for n in nodes:
+            for p in n.ports:
+                if p in explicit and p.owner not in givers:
+                    givers.append(p.owner)
+        dom = nodes[0].domain
+        return (f"higher-index network: the {dom.flows[0]} into node(s) "
+                f"{', '.join(n.name for n in nodes)} are all fixed by "
+                f"{', '.join(_part(c) for c in givers) or 'no component'}"
+                f"{' (through ' + ', '.join(_part(c) for c in comps) + ')' if comps else ''}: "
+                f"a cut set of inductors / flow sources, where Kirchhoff's current law "
+                f"constrains their states (index reduction is not done); put a resistor (or "
+                f"capacitor) across one of them, from the node to the ground, or merge "
+                f"inductors in series into one")
+    return (f"higher-index network: {', '.join(_part(c) for c in comps)} fix the same "
+            f"potentials in a loop (capacitors / voltage sources / grounds, or heat "
+            f"capacitors / fixed temperatures, joined directly): one of their potential "
+            f"differences follows from the others, Kirchhoff's voltage law constrains their "
+            f"states (index reduction is not done); put a resistor (thermal conductor) in "
+            f"series with one of them, or merge parallel capacitors into one")
