@@ -26,7 +26,10 @@ higher-index network, refused with a StructureError naming the parts (no index r
   elements (nodes whose flows are all given: inductors, current sources; Kirchhoff's
   current law constrains states). The error names the components and says what to change
   (a resistor in series, or across; or merging the elements into one);
-- unknowns left over (the under-determined part: no Ground in a circuit) name the nodes.
+- unknowns left over (the under-determined part) name the nodes.
+A circuit without a reference (no Ground: every equation keeps its value when all the
+potentials of a connected circuit are shifted together) is singular too, but not
+structurally: it is found by that shift and refused, naming the circuit's components.
 
 Elimination. Trivial equations are solved before the DAE is built, where cheap: an equation
 affine in an unknown with a numeric coefficient is solved for it when the rest holds at most
@@ -149,6 +152,7 @@ def build_network(ws, resolve) -> Network:
             labels.append(("component", owner))
     eqs = ca.vertsplit(resolve([_vc(*eqs)])[0])
     _check_structure(eqs, unknowns, labels, what, explicit)
+    _check_reference(ws.net_nodes, eqs)
     alive, solved = _eliminate(eqs, unknowns)
     net.alg = [eqs[k] for k in alive]
     net.z = [(unknowns[k], units[k], starts[k]) for k in range(len(unknowns))
@@ -264,6 +268,44 @@ def _check_structure(eqs, unknowns, labels, what, explicit) -> None:
         f"{' and the unknowns of ' + ', '.join(others) if others else ''} follow from no "
         f"equation; give the circuit a reference potential (an electrical Ground, a "
         f"FixedTemperature or a HeatCapacitor on a thermal network)")
+
+
+def _check_reference(nodes: list, eqs: list) -> None:
+    """Refuse a connected circuit (nodes of one domain joined through components) whose
+    potentials are not fixed: the equations do not change when they all shift by δ."""
+    parent = list(range(len(nodes)))
+
+    def find(k):
+        while parent[k] != k:
+            k = parent[k]
+        return k
+
+    first = {}
+    for k, n in enumerate(nodes):
+        for p in n.ports:
+            key = (id(p.owner), n.domain.name)
+            if key in first:
+                parent[find(k)] = find(first[key])
+            else:
+                first[key] = k
+    sets: dict = {}
+    for k in range(len(nodes)):
+        sets.setdefault(find(k), []).append(k)
+    rng = np.random.default_rng(0)
+    for members in sets.values():
+        delta = ca.SX.sym("delta")
+        pots = _vc(*[nodes[k].potential for k in members])
+        shifted = ca.substitute(_vc(*eqs), pots, pots + delta)
+        J = ca.jacobian(shifted, delta)
+        free = ca.symvar(J)
+        f = ca.Function("shift", [_vc(delta, *free)], [J])
+        if np.any(np.asarray(f(rng.uniform(0.5, 2.0, 1 + len(free))))):
+            continue
+        parts = sorted({_part(p.owner) for k in members for p in nodes[k].ports})
+        raise StructureError(f"{nodes[members[0]].domain.name} network without a reference "
+                             f"potential: {', '.join(parts)} float (every potential may shift "
+                             f"together); connect a Ground to it (electrical), or a "
+                             f"FixedTemperature / HeatCapacitor (thermal)")
 
 
 def _part(c) -> str:
