@@ -333,9 +333,8 @@ class PhysicsBuilder(_Base):
     def _node(self, port: PhysicalPort):
         self._mine(port)
         if port.domain.network:
-            raise StructureError(f"{self._owner.path}: port '{port.path}' is a "
-                                 f"{port.domain.name} port, it has no motion; read its "
-                                 f"potential with e.potential")
+            raise StructureError(f"{self._owner.path}: port '{port.path}' ({port.domain.name}) "
+                                 f"has no motion; read its potential with e.potential")
         return self._ws.node_of[port]
 
     def _net_port(self, port: PhysicalPort):

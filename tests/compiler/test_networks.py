@@ -1,0 +1,123 @@
+"""Potential/flow networks in the compiler: the DAE they give, its size after elimination,
+mixed electro-mechanical models, linearization and FMU export, and the errors for ports
+used the wrong way."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import acausal
+from acausal.analysis import linearize
+from acausal.components import electrical as el
+from acausal.components import rotational as rot
+from acausal.core import Component, Pin
+
+TIGHT = {"rtol": 1e-11, "atol": 1e-12}
+R, L, K, J = 0.05, 0.0015, 2.0 / math.pi, 0.15
+
+
+def model(name, pairs, **parts):
+    m = acausal.Model(name)
+    for k, v in parts.items():
+        setattr(m, k, v)
+    for a, b in pairs(m):
+        m.connect(a, b)
+    return m
+
+
+def rc(R=10.0, C=0.01):
+    return model("rc", lambda m: [(m.src.p, m.r.p), (m.r.n, m.c.p), (m.c.n, m.src.n),
+                                  (m.src.n, m.ground.p)],
+                 src=el.ConstantVoltage(V=2.0), r=el.Resistor(R=R), c=el.Capacitor(C=C),
+                 ground=el.Ground())
+
+
+def dc_circuit(source):
+    return model("dc_circuit", lambda m: [
+        (m.src.p, m.r.p), (m.r.n, m.l.p), (m.l.n, m.emf.p), (m.emf.n, m.src.n),
+        (m.src.n, m.ground.p), (m.emf.flange, m.rotor.flange_a)] + (
+        [(m.v.y, m.src.v)] if isinstance(source, el.SignalVoltage) else []),
+        src=source, r=el.Resistor(R=R), l=el.Inductor(L=L), emf=el.RotationalEMF(k=K),
+        rotor=rot.Inertia(J=J), ground=el.Ground(),
+        **({"v": acausal.Input(unit="V")} if isinstance(source, el.SignalVoltage) else {}))
+
+
+def test_trivial_equations_are_eliminated():
+    """RC: of 4 potentials, 4 currents and 8 equations one unknown current and the
+    resistor's equation remain (the capacitor's voltage is the state); the DC motor circuit
+    becomes an ODE (its current is the inductor's state). Every pin still records v and i."""
+    compiled = acausal.compile(rc())
+    assert compiled.x_names == ["c.v"]
+    assert len(compiled.z_names) == 1 and compiled.alg.numel() == 1
+    res = compiled.simulate(0.1, t=np.linspace(0, 0.1, 3))
+    for name in ("src.p.v", "src.n.v", "r.n.v", "ground.p.i", "c.n.i", "src.p.i"):
+        assert name in res.names
+    np.testing.assert_allclose(res["r.n.v"], res["c.v"], atol=1e-12)
+    np.testing.assert_allclose(res["src.p.i"], -res["r.p.i"], atol=1e-12)
+    motor = acausal.compile(dc_circuit(el.ConstantVoltage(V=10.0)))
+    assert motor.z_names == [] and motor.x_names == ["rotor.phi", "rotor.w", "l.i"]
+
+
+def test_dc_circuit_linearizes_to_the_hand_matrices():
+    """x = [phi, w, i]: phi' = w, J w' = k i, L i' = v − R i − k w."""
+    lm = linearize(acausal.compile(dc_circuit(el.SignalVoltage())), {"rotor.w": 0.0},
+                   u={"v": 0.0})
+    assert lm.states == ["rotor.phi", "rotor.w", "l.i"]
+    A = [[0, 1, 0], [0, 0, K / J], [0, -K / L, -R / L]]
+    np.testing.assert_allclose(lm.A, A, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(lm.B.ravel(), [0, 0, 1 / L], rtol=1e-12)
+
+
+def test_rc_with_an_algebraic_current_linearizes():
+    lm = linearize(acausal.compile(rc()), {"c.v": 1.0}, outputs=["r.i"])
+    np.testing.assert_allclose(lm.A, [[-1 / (10.0 * 0.01)]], rtol=1e-12)
+    np.testing.assert_allclose(lm.C, [[-1 / 10.0]], rtol=1e-12)
+
+
+@pytest.mark.parametrize("kind", ["ModelExchange", "CoSimulation"])
+def test_network_models_export_as_fmus(tmp_path, kind):
+    """The RC (a DAE with one algebraic current) and the DC motor circuit (an ODE with the
+    EMF's torque) as native FMUs, simulated by fmpy, equal the in-process simulation."""
+    fmpy = pytest.importorskip("fmpy")
+    cases = ((rc(), ["c.v", "r.i"], 0.3),
+             (dc_circuit(el.StepVoltage(V=10.0, startTime=0.01)), ["rotor.w", "l.i"], 0.3))
+    for m, names, T in cases:
+        compiled = acausal.compile(m)
+        path = compiled.export_fmu(tmp_path / f"{compiled.name}.fmu", stop_time=T)
+        res = fmpy.simulate_fmu(str(path), stop_time=T, output_interval=T / 100,
+                                fmi_type=kind, relative_tolerance=1e-10, output=names,
+                                record_events=False)
+        ref = compiled.simulate(T, t=np.linspace(0, T, 101), **TIGHT)
+        idx = np.searchsorted(res["time"], ref.t + 1e-9, side="right") - 1
+        for n in names:
+            err = np.max(np.abs(res[n][idx] - ref[n])) / np.max(np.abs(ref[n]))
+            assert err < 1e-6, (compiled.name, n, err)
+
+
+class _Floating(Component):
+    """A pin whose flow nobody sets."""
+    p = Pin("pin")
+
+
+class _Moving(Component):
+    p = Pin("pin")
+
+    def physics(self, e):
+        e.vel(self.p)
+
+
+def test_ports_used_the_wrong_way_are_named():
+    m = model("unset", lambda m: [(m.x.p, m.r.p), (m.r.n, m.ground.p)], x=_Floating(),
+              r=el.Resistor(), ground=el.Ground())
+    with pytest.raises(acausal.StructureError, match=r"_Floating 'x' sets no i.*'x.p'"):
+        acausal.compile(m)
+    m = model("moving", lambda m: [(m.x.p, m.ground.p)], x=_Moving(), ground=el.Ground())
+    with pytest.raises(acausal.StructureError,
+                       match=r"'x.p' \(electrical\) has no motion.*potential"):
+        acausal.compile(m)
+    m = acausal.Model("mixed")
+    m.r, m.j = el.Resistor(), rot.Inertia()
+    with pytest.raises(acausal.PortConnectionError):
+        m.connect(m.r.p, m.j.flange_a)
