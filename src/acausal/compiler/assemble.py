@@ -50,21 +50,23 @@ def _stack(items) -> ca.SX:
     return _vc(*items) if items else ca.SX(0, 1)
 
 
-def compile(model: Model, smooth: bool = False) -> CompiledModel:
+def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -> CompiledModel:
     """Compile ``model`` into a CompiledModel; ``smooth``: every component with events in its
-    smooth form (see ``PhysicsBuilder.smooth``)."""
+    smooth form (see ``PhysicsBuilder.smooth``); ``index_reduction``: reduce the loops of
+    capacitors / voltage sources and the cut sets of inductors / current sources of
+    networks instead of refusing them (see ``networks``)."""
     gc_was_enabled = gc.isenabled()
     gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
     try:
-        return _compile(model, smooth)
+        return _compile(model, smooth, index_reduction)
     finally:
         if gc_was_enabled:
             gc.enable()
 
 
-def _compile(model: Model, smooth: bool) -> CompiledModel:
+def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel:
     flat = flatten(model)
-    ws = Workspace(t=ca.SX.sym("t"), smooth=bool(smooth))
+    ws = Workspace(t=ca.SX.sym("t"), smooth=bool(smooth), index_reduction=bool(index_reduction))
     ws.der_table["t"] = 1
     ws.source = flat.signal_source
     ws.components = flat.components

@@ -63,6 +63,7 @@ class Workspace:
     """Everything components declare, collected for the assembly."""
     t: ca.SX
     smooth: bool = False                                    # components in smooth form
+    index_reduction: bool = False                           # of networks' loops, cut sets
     der_table: dict = field(default_factory=dict)
     relations: list = field(default_factory=list)
     internal_nodes: list = field(default_factory=list)
@@ -95,6 +96,7 @@ class Workspace:
     net_node_of: dict = field(default_factory=dict)         # network port -> NetNode
     net_flows: list = field(default_factory=list)           # (network port, explicit flow)
     net_flow_sym: dict = field(default_factory=dict)        # network port -> unknown flow
+    demoted_states: list = field(default_factory=list)      # StateInfo of reduced loops
     p: object = None                                        # parameter symbols, stacked
     p_default: list = field(default_factory=list)           # their default values
 

@@ -17,7 +17,7 @@ and heat capacitors declare states with derivatives (semi-explicit DAE).
 Structure. Before any elimination, the network's equations are matched to its unknowns
 (maximum bipartite matching of the incidence). A network is accepted when the matching is
 perfect: index 1, which IDAS integrates directly. Otherwise it is structurally singular, a
-higher-index network, refused with a StructureError naming the parts (no index reduction):
+higher-index network, refused by default with a StructureError naming the parts:
 
 - equations left over with no unknown of their own (Dulmage-Mendelsohn's over-determined
   part) are either a loop of potential-fixing elements (capacitors, voltage sources,
@@ -27,6 +27,16 @@ higher-index network, refused with a StructureError naming the parts (no index r
   current law constrains states). The error names the components and says what to change
   (a resistor in series, or across; or merging the elements into one);
 - unknowns left over (the under-determined part) name the nodes.
+
+Index reduction (``compile(model, index_reduction=True)``, opt-in: a state of the loop
+stops being one, so its start value is no longer used). A loop or cut set whose equations
+are linear in the potentials and flows with numeric coefficients (ideal capacitors,
+inductors, sources, grounds) gives a constraint h(x, t) = 0 on the states: the left null
+vector of its equations' Jacobian combines them into it. The last declared state in h with
+a numeric coefficient becomes an expression of the others (recorded under its name), and
+the equation it was in is replaced by dh/dt = 0 (its state derivative given by the others'):
+Dymola's choice of a dummy state in MSL's CauerLowPassAnalog. Loops through other
+elements, and constraints through model inputs (whose rate is unknown), stay refused.
 A circuit without a reference (no Ground: every equation keeps its value when all the
 potentials of a connected circuit are shifted together) is singular too, but not
 structurally: it is found by that shift and refused, naming the circuit's components.
@@ -44,10 +54,12 @@ from dataclasses import dataclass, field
 
 import casadi as ca
 import numpy as np
+from scipy.linalg import null_space
 from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import maximum_bipartite_matching
 
 from ..errors import StructureError
+from .symbolic import UnknownDerivative, der_with
 
 _vc = ca.vertcat
 
@@ -94,11 +106,15 @@ class Network:
     eliminated: list = field(default_factory=list)   # symbols
     values: list = field(default_factory=list)       # their expressions
     records: list = field(default_factory=list)
+    demoted: list = field(default_factory=list)      # (state symbol, expression of others)
 
     def substitute(self, exprs: list) -> list:
-        if not self.eliminated:
-            return exprs
-        return ca.substitute(exprs, [_vc(*self.eliminated)], [_vc(*self.values)])
+        if self.eliminated:
+            exprs = ca.substitute(exprs, [_vc(*self.eliminated)], [_vc(*self.values)])
+        if self.demoted:
+            exprs = ca.substitute(exprs, [_vc(*[s for s, _ in self.demoted])],
+                                  [_vc(*[v for _, v in self.demoted])])
+        return exprs
 
 
 def build_network(ws, resolve) -> Network:
@@ -151,7 +167,14 @@ def build_network(ws, resolve) -> Network:
             eqs.append(r)
             labels.append(("component", owner))
     eqs = ca.vertsplit(resolve([_vc(*eqs)])[0])
-    _check_structure(eqs, unknowns, labels, what, explicit)
+    while True:
+        over = _check_structure(eqs, unknowns, labels, what, explicit)
+        if over is None:
+            break
+        message = _over_message([labels[r] for r in over], explicit)
+        if not ws.index_reduction:
+            raise StructureError(message + " (or compile with index_reduction=True)")
+        _reduce_index(ws, resolve, eqs, unknowns, over, net.demoted, message)
     _check_reference(ws.net_nodes, eqs)
     alive, solved = _eliminate(eqs, unknowns)
     net.alg = [eqs[k] for k in alive]
@@ -159,6 +182,9 @@ def build_network(ws, resolve) -> Network:
              if k not in solved]
     net.eliminated = [unknowns[k] for k in solved]
     net.values = [solved[k] for k in solved]
+    for sym, _ in net.demoted:
+        info = next(i for i in ws.demoted_states if i.sym is sym)
+        net.records.append((sym.name(), sym, info.unit))
     for n in ws.net_nodes:
         dom = n.domain
         for p in n.ports:
@@ -167,6 +193,46 @@ def build_network(ws, resolve) -> Network:
                                 dom.potential_units[0]))
             net.records.append((f"{p.path}.{dom.flows[0]}", flow, dom.flow_units[0]))
     return net
+
+
+def _reduce_index(ws, resolve, eqs: list, unknowns: list, rows: list, demoted: list,
+                  message: str) -> None:
+    """Differentiate the constraint on the states that the over-determined equations
+    ``rows`` give, demote one of its states (module's docstring); ``eqs``, ``demoted`` and
+    ``ws.states`` are updated in place. Raises the StructureError ``message`` when the
+    loop is not of that kind."""
+    sub = _vc(*[eqs[r] for r in rows])
+    cols = [k for k, u in enumerate(unknowns) if ca.depends_on(sub, u)]
+    G = ca.jacobian(sub, _vc(*[unknowns[k] for k in cols]))
+    if not G.is_constant():
+        raise StructureError(message + " (index reduction needs a loop of elements linear "
+                                       "in their potentials and flows)")
+    N = null_space(np.array(ca.DM(G)).T)
+    if N.shape[1] == 0:
+        raise StructureError(message)
+    c = N[:, 0] / N[np.argmax(np.abs(N[:, 0])), 0]
+    c[np.abs(c) < 1e-12] = 0.0
+    h = ca.substitute(ca.dot(ca.DM(c), sub), _vc(*[unknowns[k] for k in cols]),
+                      ca.SX.zeros(len(cols)))
+    candidates = [i for i in ws.states if ca.depends_on(h, i.sym)
+                  and ca.jacobian(h, i.sym).is_constant()]
+    if not candidates:
+        raise StructureError(message + " (its constraint involves no state to demote)")
+    d = candidates[-1]
+    value = -ca.substitute(h, d.sym, 0) / float(ca.jacobian(h, d.sym))
+    try:
+        rate = resolve([der_with(value, ws.der_table) - d.der])[0]
+    except UnknownDerivative as e:
+        raise StructureError(f"{message}; index reduction: {e}") from None
+    r0 = next(r for r, ck in zip(rows, c) if ck != 0 and ca.depends_on(eqs[r], d.sym))
+    eqs[r0] = rate
+    for k, e in enumerate(eqs):
+        eqs[k] = ca.substitute(e, d.sym, value)
+    for k, (sym, v) in enumerate(demoted):
+        demoted[k] = (sym, ca.substitute(v, d.sym, value))
+    demoted.append((d.sym, value))
+    ws.states[:] = [i for i in ws.states if i is not d]
+    ws.demoted_states.append(d)
 
 
 def _eliminate(eqs: list, unknowns: list):
@@ -223,9 +289,9 @@ def _solvable(eq, vs: set, rows_of: dict, unknowns: list):
     return None
 
 
-def _check_structure(eqs, unknowns, labels, what, explicit) -> None:
-    """Refuse a structurally singular network, naming the loop or cut set (module's
-    docstring)."""
+def _check_structure(eqs, unknowns, labels, what, explicit):
+    """None for a structurally regular network; the over-determined equations (a loop or
+    cut set: module's docstring) if some are; refuses an under-determined one."""
     n_eq, n_un = len(eqs), len(unknowns)
     rows, cols = ca.jacobian_sparsity(_vc(*eqs), _vc(*unknowns)).get_triplet()
     incidence = csr_matrix((np.ones(len(rows)), (rows, cols)), shape=(n_eq, n_un))
@@ -237,7 +303,7 @@ def _check_structure(eqs, unknowns, labels, what, explicit) -> None:
     unmatched_rows = [r for r in range(n_eq) if match[r] < 0]
     unmatched_cols = [c for c in range(n_un) if col_match[c] < 0]
     if not unmatched_rows and not unmatched_cols:
-        return
+        return None
     by_row = [[] for _ in range(n_eq)]
     by_col = [[] for _ in range(n_un)]
     for r, c in zip(rows, cols):
@@ -252,7 +318,7 @@ def _check_structure(eqs, unknowns, labels, what, explicit) -> None:
                 if r2 >= 0 and r2 not in seen:
                     seen.add(r2)
                     stack.append(r2)
-        raise StructureError(_over_message([labels[r] for r in sorted(seen)], explicit))
+        return sorted(seen)
     seen, stack = set(unmatched_cols), list(unmatched_cols)
     while stack:
         c = stack.pop()
@@ -330,12 +396,12 @@ def _over_message(labels, explicit) -> str:
                 f"{', '.join(_part(c) for c in givers) or 'no component'}"
                 f"{' (through ' + ', '.join(_part(c) for c in comps) + ')' if comps else ''}: "
                 f"a cut set of inductors / flow sources, where Kirchhoff's current law "
-                f"constrains their states (index reduction is not done); put a resistor (or "
+                f"constrains their states; put a resistor (or "
                 f"capacitor) across one of them, from the node to the ground, or merge "
                 f"inductors in series into one")
     return (f"higher-index network: {', '.join(_part(c) for c in comps)} fix the same "
             f"potentials in a loop (capacitors / voltage sources / grounds, or heat "
             f"capacitors / fixed temperatures, joined directly): one of their potential "
             f"differences follows from the others, Kirchhoff's voltage law constrains their "
-            f"states (index reduction is not done); put a resistor (thermal conductor) in "
+            f"states; put a resistor (thermal conductor) in "
             f"series with one of them, or merge parallel capacitors into one")
