@@ -98,7 +98,8 @@ def test_source_energy_equals_resistive_heat_plus_stored_energy():
     R, L, C = 3.0, 0.2, 0.05
     m = model("energy", lambda m: [
         (m.src.p, m.ps.pc), (m.ps.nc, m.pr.pc), (m.ps.pv, m.src.p), (m.ps.nv, m.ground.p),
-        (m.pr.nc, m.r.p), (m.pr.pv, m.r.p), (m.pr.nv, m.r.n), (m.r.n, m.l.p), (m.l.n, m.c.p), (m.c.n, m.ground.p), (m.src.n, m.ground.p),
+        (m.pr.nc, m.r.p), (m.pr.pv, m.r.p), (m.pr.nv, m.r.n), (m.r.n, m.l.p), (m.l.n, m.c.p),
+        (m.c.n, m.ground.p), (m.src.n, m.ground.p),
         (m.ps.power, m.e_src.u), (m.pr.power, m.e_r.u)],
         src=el.SineVoltage(V=10.0, f=2.0), ps=el.PowerSensor(), pr=el.PowerSensor(),
         r=el.Resistor(R=R), l=el.Inductor(L=L), c=el.Capacitor(C=C), ground=el.Ground(),

@@ -27,6 +27,11 @@ higher-index network, refused by default with a StructureError naming the parts:
   current law constrains states). The error names the components and says what to change
   (a resistor in series, or across; or merging the elements into one);
 - unknowns left over (the under-determined part) name the nodes.
+A circuit without a reference (no Ground: every equation keeps its value when all the
+potentials of a connected circuit are shifted together) is singular too, but not
+structurally: it is found by that shift and refused, naming the circuit's components.
+The check is structural: a cut set through elements that give their flows explicitly in
+both potentials (Conductor, ThermalConductor) passes it and fails in the solver.
 
 Index reduction (``compile(model, index_reduction=True)``, opt-in: a state of the loop
 stops being one, so its start value is no longer used). A loop or cut set whose equations
@@ -34,12 +39,11 @@ are linear in the potentials and flows with numeric coefficients (ideal capacito
 inductors, sources, grounds) gives a constraint h(x, t) = 0 on the states: the left null
 vector of its equations' Jacobian combines them into it. The last declared state in h with
 a numeric coefficient becomes an expression of the others (recorded under its name), and
-the equation it was in is replaced by dh/dt = 0 (its state derivative given by the others'):
-Dymola's choice of a dummy state in MSL's CauerLowPassAnalog. Loops through other
-elements, and constraints through model inputs (whose rate is unknown), stay refused.
-A circuit without a reference (no Ground: every equation keeps its value when all the
-potentials of a connected circuit are shifted together) is singular too, but not
-structurally: it is found by that shift and refused, naming the circuit's components.
+the equation it was in is replaced by dh/dt = 0 (its state derivative given by the others').
+The states kept need not be those a Modelica tool keeps (in MSL's CauerLowPassAnalog C3 and
+C5 become expressions where the MSL fixes their start values; all start at 0 there, so the
+solution is the same). Loops through other elements, and constraints through model inputs
+(whose rate is unknown), stay refused.
 
 Elimination. Trivial equations are solved before the DAE is built, where cheap: an equation
 affine in an unknown with a numeric coefficient is solved for it when the rest holds at most
