@@ -272,6 +272,7 @@ def test_cauer_low_pass_matches_the_msl_reference(reference_result):
         acausal.compile(CauerLowPassAnalog())
     compiled = acausal.compile(CauerLowPassAnalog(), index_reduction=True)
     assert len(compiled.x_names) == 5                      # 7 storage elements, 2 loops
+    assert compiled.recompiled(smooth=True).x_names == compiled.x_names
     t = ref["time"]
     res = compiled.simulate(float(t[-1]), t=t, rtol=1e-8, atol=1e-10)
     at = np.searchsorted(res.t, t, side="right") - 1

@@ -308,6 +308,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         mode_params=list(range(n_before_modes, len(params))),
         state_events=events,
         smooth=ws.smooth,
+        index_reduction=ws.index_reduction,
         source=model,
     )
 
