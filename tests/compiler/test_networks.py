@@ -148,3 +148,10 @@ def test_minimum_energy_positioning_with_a_bounded_current_equals_the_compact_mo
     assert circuit.cost > 0.1
     assert abs(circuit.cost - ref.cost) < 1e-8 * ref.cost
     np.testing.assert_allclose(circuit.control("v"), ref.control("v"), atol=1e-6)
+
+
+def test_rc_equilibrium_is_the_charged_capacitor():
+    from acausal.analysis import equilibrium
+    op = equilibrium(acausal.compile(rc()))
+    np.testing.assert_allclose(op.x, [2.0], atol=1e-12)           # v = V, no current
+    np.testing.assert_allclose(op.z, [0.0], atol=1e-12)

@@ -389,6 +389,9 @@ class PhysicsBuilder(_Base):
         variables (a LossyGear's loss depends on flange_a.tau: an implicit equation the DAE
         solver closes), not forces of the model directly."""
         self._mine(port)
+        if port.domain.network:
+            raise StructureError(f"{self._owner.path}: cut_flow of the {port.domain.name} port "
+                                 f"'{port.path}'; read a network port's flow with e.flow_of")
         if port not in self._ws.cut_flow_sym:
             self._ws.cut_flow_sym[port] = ca.SX.sym(f"flow:{port.path}", port.domain.dim)
         return self._ws.cut_flow_sym[port]
