@@ -279,3 +279,21 @@ def test_cauer_low_pass_matches_the_msl_reference(reference_result):
     for name in ("C1.v", "C3.v", "C5.v", "L1.i", "L2.i"):
         err = np.max(np.abs(res[name][at] - ref[name])) / np.max(np.abs(ref[name]))
         assert err < 2e-3, (name, err)
+
+
+def test_translational_emf_accelerates_a_mass_to_the_back_emf_speed():
+    """V through R into a TranslationalEMF on a mass m: m·vel' = k·i, i = (V − k·vel)/R, so
+    vel = V/k·(1 − exp(−k² t/(m R))); the force on the flange is −k·i (MSL's sign)."""
+    from acausal.components import translational as tr
+    V, R, k, mass = 12.0, 2.0, 3.0, 0.5
+    m = model("linear_motor", lambda m: series(m, m.src, m.r, m.emf) + [
+        (m.emf.flange, m.slider.flange_a)],
+        src=el.ConstantVoltage(V=V), r=el.Resistor(R=R), emf=el.TranslationalEMF(k=k),
+        slider=tr.Mass(m=mass), ground=el.Ground())
+    t = np.linspace(0.0, 1.0, 41)
+    res = acausal.compile(m).simulate(1.0, t=t, **TIGHT)
+    vel = V / k * (1 - np.exp(-k * k * t / (mass * R)))
+    np.testing.assert_allclose(res["emf.vel"], vel, atol=1e-9)
+    np.testing.assert_allclose(res["slider.v"], vel, atol=1e-9)
+    np.testing.assert_allclose(res["emf.f"], -k * (V - k * vel) / R, atol=1e-8)
+    np.testing.assert_allclose(res["emf.flange.f"], res["emf.f"], atol=1e-12)

@@ -17,11 +17,11 @@ import casadi as ca
 
 from ..core import (Component, ConditionalPort, HeatPort_a, NegativePin, Parameter, Pin,
                     PositivePin, RealInput, RealOutput)
-from . import rotational
+from . import rotational, translational
 from .signals import _start
 
 __all__ = ["Ground", "OnePort", "Resistor", "Conductor", "Capacitor", "Inductor",
-           "RotationalEMF", "EMF", "ConstantVoltage", "SignalVoltage", "StepVoltage",
+           "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage", "StepVoltage",
            "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor", "CurrentSensor",
            "PowerSensor"]
 
@@ -154,23 +154,51 @@ class Inductor(OnePort):
         self._record(e, v=v)
 
 
-class RotationalEMF(rotational.PartialElementaryOneFlangeAndSupport2, OnePort):
+class _PartialEMF(OnePort):
+    """Electromotoric force between the pins and a mechanical ``flange`` (with the optional
+    ``support`` of the mechanical partial it is combined with): k·speed = v, the flange's
+    flow −k·i, its reaction on the support (``useSupport``) or the ground; speed relative
+    to the support."""
+
+    def _record_motion(self, e, flow):
+        raise NotImplementedError
+
+    def physics(self, e):
+        v, i = self._v(e), self._current(e)
+        flow = -self.k * i
+        e.residual(v - self.k * self._rel_speed(e, self.flange))
+        self._apply_flange_flow(e, flow)
+        self._record(e, v, i)
+        self._record_motion(e, flow)
+
+
+class RotationalEMF(rotational.PartialElementaryOneFlangeAndSupport2, _PartialEMF):
     """Electromotoric force, electrical to rotational (MSL Basic.RotationalEMF): k·w = v,
     tau = flange.tau = −k·i, the reaction k·i on the ``support`` (``useSupport``) or the
     ground. k [N.m/A] is the torque and the back-emf constant [V.s/rad]; w [rad/s] the
     flange's speed relative to the support. Records v, i, phi, w, tau, tauElectrical = k·i."""
     k = Parameter(1.0, "N.m/A", "transformation coefficient")
 
-    def physics(self, e):
-        v, i = self._v(e), self._current(e)
-        w = self._rel_speed(e, self.flange)
-        tau = -self.k * i
-        e.residual(v - self.k * w)
-        self._apply_flange_flow(e, tau)
-        self._record(e, v, i)
+    def _record_motion(self, e, tau):
         self._record_relative(e, "s", "v")
         e.variable("tau", tau, "N.m", "torque of flange")
         e.variable("tauElectrical", -tau, "N.m", "electrical torque")
+
+
+class TranslationalEMF(translational.PartialElementaryOneFlangeAndSupport2, _PartialEMF):
+    """Electromotoric force, electrical to translational (MSL Basic.TranslationalEMF):
+    k·vel = v, f = flange.f = −k·i, the reaction k·i on the ``support`` (``useSupport``) or
+    the ground. k [N/A] is the force and the back-emf constant [V.s/m]; vel [m/s] the
+    flange's velocity relative to the support. Records v, i, s, vel, f, fElectrical = k·i."""
+    k = Parameter(1.0, "N/A", "transformation coefficient")
+
+    def _record_motion(self, e, f):
+        e.variable("s", self._rel_position(e, self.flange), "m",
+                   "position of flange relative to support")
+        e.variable("vel", self._rel_speed(e, self.flange), "m/s",
+                   "velocity of flange relative to support")
+        e.variable("f", f, "N", "force of flange")
+        e.variable("fElectrical", -f, "N", "electrical force")
 
 
 #: MSL 3's name of RotationalEMF
