@@ -155,3 +155,32 @@ def test_rc_equilibrium_is_the_charged_capacitor():
     op = equilibrium(acausal.compile(rc()))
     np.testing.assert_allclose(op.x, [2.0], atol=1e-12)           # v = V, no current
     np.testing.assert_allclose(op.z, [0.0], atol=1e-12)
+
+
+def test_stiff_motor_circuit_gets_bdf_and_equals_the_compact_motor():
+    """L = 1 µH (electrical time constant L/R = 20 µs) next to a 1 Hz torsional mode: the
+    circuit compiles to an ODE for which BDF (cvodes) is chosen automatically, equal to the
+    compact DCMotor with the same data."""
+    Ls, c = 1e-6, J * (2 * math.pi) ** 2 / 2           # spring: 1 Hz with rotor and load
+
+    def with_load(m, flange):
+        m.spring, m.load, m.fixed = rot.Spring(c=c), rot.Inertia(J=J), rot.Fixed()
+        m.connect(flange, m.spring.flange_a)
+        m.connect(m.spring.flange_b, m.load.flange_a)
+        return m
+
+    circuit = dc_circuit(el.StepVoltage(V=1.0, startTime=0.0))
+    circuit.l.L = Ls
+    circuit = with_load(circuit, circuit.rotor.flange_b)
+    compact = acausal.Model("compact")
+    compact.v, compact.motor = acausal.Input(unit="V"), rot.DCMotor(L=Ls)
+    compact.connect(compact.v.y, compact.motor.v)
+    compact = with_load(compact, compact.motor.flange)
+    t = np.linspace(0.0, 2.0, 201)
+    res = acausal.compile(circuit).simulate(2.0, t=t, rtol=1e-10, atol=1e-12)
+    ref = acausal.compile(compact).simulate(2.0, t=t, inputs={"v": 1.0}, rtol=1e-10,
+                                             atol=1e-12)
+    assert res.solver == "cvodes" and ref.solver == "cvodes"
+    assert np.max(np.abs(ref["load.w"])) > 0.1
+    np.testing.assert_allclose(res["load.w"], ref["load.w"], atol=1e-7)
+    np.testing.assert_allclose(res["l.i"], ref["motor.i"], atol=1e-6)
