@@ -214,8 +214,7 @@ def _reduce_index(ws, resolve, eqs: list, unknowns: list, rows: list, demoted: l
     N = null_space(np.array(ca.DM(G)).T)
     if N.shape[1] == 0:
         raise StructureError(message)
-    c = N[:, 0] / N[np.argmax(np.abs(N[:, 0])), 0]
-    c[np.abs(c) < 1e-12] = 0.0
+    c = np.round(N[:, 0] / N[np.argmax(np.abs(N[:, 0])), 0], 12)   # ±1 for ideal loops
     h = ca.substitute(ca.dot(ca.DM(c), sub), _vc(*[unknowns[k] for k in cols]),
                       ca.SX.zeros(len(cols)))
     candidates = [i for i in ws.states if ca.depends_on(h, i.sym)
