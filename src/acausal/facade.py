@@ -39,13 +39,16 @@ class CompiledModel(compiler.CompiledModel):
         return self.mobility_at(t0, x, z, u0, p)[1]
 
 
-def compile(model: Model, smooth: bool = False) -> CompiledModel:
+def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -> CompiledModel:
     """Compile ``model`` into a CompiledModel: the CasADi equations of motion by name.
     ``smooth=True``: every component with events in its smooth form (a regularization with
     a named parameter instead of modes and events; what gradient-based optimal control
     needs). The result keeps a reference to ``model`` (``source``): acausal.ocp compiles
-    it again in smooth form when given the exact one (``recompiled``)."""
-    return CompiledModel.wrap(compiler.compile(model, smooth))
+    it again in smooth form when given the exact one (``recompiled``). ``index_reduction``:
+    loops of capacitors and voltage sources, cut sets of inductors and current sources
+    (higher-index networks, refused by default) are reduced by demoting one state each
+    (``acausal.compiler.networks``)."""
+    return CompiledModel.wrap(compiler.compile(model, smooth, index_reduction))
 
 
 __all__ = ["compile", "CompiledModel"]

@@ -10,6 +10,10 @@
    relaxations ε of the tree relations (``lagrange.residuals``);
 5. signals, state derivatives and relaxations are substituted (``resolve``); the loops are
    checked (``loops``) and the equations solved for the accelerations (``motion``);
+   potential/flow networks (electrical, thermal: ``networks``) add their node potentials
+   and unknown flows as algebraic variables, with Kirchhoff's laws, checked for structure
+   and reduced by their trivial equations before the accelerations are solved (a flow on a
+   mechanical flange, an EMF's torque, enters Lagrange's generalized forces);
 6. the DAE, its start values, nominals and time events, the recorded variables (``recorded``, built on
    first use) are put together into a CompiledModel.
 
@@ -33,6 +37,7 @@ from .kinematics import Node, choose_tree
 from .lagrange import Lagrange, Residuals, residuals
 from .loops import analyse_loops
 from .motion import solve_motion
+from .networks import build_network, declare_nodes, has_network_ports
 from .recorded import port_flows, recorded_variables
 from .resolve import make_resolver
 
@@ -45,21 +50,23 @@ def _stack(items) -> ca.SX:
     return _vc(*items) if items else ca.SX(0, 1)
 
 
-def compile(model: Model, smooth: bool = False) -> CompiledModel:
+def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -> CompiledModel:
     """Compile ``model`` into a CompiledModel; ``smooth``: every component with events in its
-    smooth form (see ``PhysicsBuilder.smooth``)."""
+    smooth form (see ``PhysicsBuilder.smooth``); ``index_reduction``: reduce the loops of
+    capacitors / voltage sources and the cut sets of inductors / current sources of
+    networks instead of refusing them (see ``networks``)."""
     gc_was_enabled = gc.isenabled()
     gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
     try:
-        return _compile(model, smooth)
+        return _compile(model, smooth, index_reduction)
     finally:
         if gc_was_enabled:
             gc.enable()
 
 
-def _compile(model: Model, smooth: bool) -> CompiledModel:
+def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel:
     flat = flatten(model)
-    ws = Workspace(t=ca.SX.sym("t"), smooth=bool(smooth))
+    ws = Workspace(t=ca.SX.sym("t"), smooth=bool(smooth), index_reduction=bool(index_reduction))
     ws.der_table["t"] = 1
     ws.source = flat.signal_source
     ws.components = flat.components
@@ -67,7 +74,9 @@ def _compile(model: Model, smooth: bool) -> CompiledModel:
     with symbolic_parameters(ws.param_symbols):
         for c in flat.components:
             c.structure(StructureBuilder(ws, c))
-        nodes = [Node(i, list(g)) for i, g in enumerate(flat.groups)]
+        mech, net = _split_groups(flat.groups)
+        declare_nodes(ws, net)
+        nodes = [Node(i, list(g)) for i, g in enumerate(mech)]
         for n in ws.internal_nodes:
             nodes.append(Node(len(nodes), [n]))
         for n in nodes:
@@ -81,6 +90,12 @@ def _compile(model: Model, smooth: bool) -> CompiledModel:
     ws.p = _stack([s for s, _ in params])
     ws.p_default = [v.start for _, v in params]
     return _assemble(model, ws, tree, params, fixed)
+
+
+def _split_groups(groups):
+    """Mechanical connection sets, then network ones (``Domain.network``)."""
+    return ([g for g in groups if not g[0].domain.network],
+            [g for g in groups if g[0].domain.network])
 
 
 def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
@@ -97,7 +112,9 @@ def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
     probe.param_symbols = dict(ws.param_symbols)
     for c in flat.components:
         c.structure(StructureBuilder(probe, c))
-    groups = [list(g) for g in flat.groups] + [[n] for n in probe.internal_nodes]
+    mech, net = _split_groups(flat.groups)
+    declare_nodes(probe, net)
+    groups = [list(g) for g in mech] + [[n] for n in probe.internal_nodes]
     if len(groups) != n_nodes:
         raise StructureError("internal: a component declared different nodes when asked "
                              "twice (please report)")
@@ -167,10 +184,12 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     phi = tree.loop_residual
     phi_eps = ca.jacobian(phi, eps)
     resolve = make_resolver(ws, [eps, epsd, epsdd])
-    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit = resolve([
+    network = build_network(ws, resolve)
+    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit = network.substitute(resolve([
         R.inertia, R.conservative, R.flows, phi, phi_eps,
-        _stack([i.der for i in ws.states]), _stack([r for _, r in ws.residuals]),
-        _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows])])
+        _stack([i.der for i in ws.states]),
+        _stack([r for o, r in ws.residuals if not has_network_ports(o)]),
+        _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows])]))
     R_all = R_T + R_V + R_Q
     R_q, R_eps = R_all[:nq], R_all[nq:]
     cut = _stack(list(ws.cut_flow_sym.values()))
@@ -208,7 +227,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
 
     def final(exprs: ca.SX) -> ca.SX:
         """Expressions of the motion as recorded: in (t, x, z, u, p)."""
-        exprs = resolve([exprs])[0]
+        exprs = network.substitute(resolve([exprs]))[0]
         return ca.substitute([ca.substitute(exprs, cut, cut_values)], sub_from, sub_to)[0]
 
     def recorder():
@@ -216,6 +235,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         first use: large models need not pay for it to be simulated or exported)."""
         names, exprs, units = recorded_variables(ws, tree)
         fl, _ = flows()
+        fl = fl + network.records
         names += [n for n, _, _ in fl]
         units += [u for _, _, u in fl]
         return names, final(_vc(exprs, *[e for _, e, _ in fl])), units
@@ -237,8 +257,10 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
                              f"has states, and no motion is prescribed; add a mass or inertia "
                              f"that is free to move")
     ode = _vc(motion.q_diff_dot, motion.qdd_diff, zdot)
-    z = _vc(motion.alg_vars, _stack([a.sym for a in ws.algebraics]))
-    alg = _vc(motion.alg_res, g_alg)
+    algebraics = [a for a in ws.algebraics if not has_network_ports(a.owner)]
+    z = _vc(motion.alg_vars, _stack([a.sym for a in algebraics]),
+            _stack([s for s, _, _ in network.z]))
+    alg = _vc(motion.alg_res, g_alg, _stack(network.alg))
     events = _state_events(ws, final, x, _vc(t, x, z, u), p)
     resolve.check([ode, alg, y_out, events.indicator, events.mode_update,
                    events.reinit_values])
@@ -249,7 +271,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
                              f"(please report)")
     starts = [0.0] * motion.n_x + [i.start for i in ws.states] \
-        + [0.0] * motion.n_z + [a.start for a in ws.algebraics]
+        + [0.0] * motion.n_z + [a.start for a in algebraics] + [v for _, _, v in network.z]
     nominal = _parameter_function("nominal", _nominals(model, ws, tree, final, _vc(x, z),
                                                        _vc(t, x, z, u)), p, "nominals")
     n0 = [float(v) for v in ca.vertsplit(nominal([v.start for _, v in params]))]
@@ -265,7 +287,8 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         algebraics=[ScalarVariable(s.name(), units.get(s.name(), ""), nominal=float(next(n_z)))
                     for s in ca.vertsplit(motion.alg_vars)]
         + [ScalarVariable(a.sym.name(), a.unit, a.description, nominal=float(next(n_z)))
-           for a in ws.algebraics],
+           for a in algebraics]
+        + [ScalarVariable(s.name(), unit, nominal=float(next(n_z))) for s, unit, _ in network.z],
         params=[v for _, v in params],
         inputs=[ScalarVariable(c.path, c.unit, c.description, c.start) for c, _ in ws.inputs],
         outputs=[ScalarVariable(c.path, c.unit, c.description) for c, _ in ws.outputs],
@@ -285,6 +308,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         mode_params=list(range(n_before_modes, len(params))),
         state_events=events,
         smooth=ws.smooth,
+        index_reduction=ws.index_reduction,
         source=model,
     )
 
@@ -341,10 +365,12 @@ def _check_declarations(ws: Workspace) -> None:
         if info.der is None:
             raise StructureError(f"{type(info.owner).__name__} '{info.owner.path}': state "
                                  f"'{info.sym.name()}' has no derivative (call e.derivative)")
-    if len(ws.residuals) != len(ws.algebraics):
-        raise StructureError(f"{len(ws.algebraics)} algebraic variables but "
-                             f"{len(ws.residuals)} residual equations: "
-                             f"{', '.join(a.sym.name() for a in ws.algebraics) or 'none'}")
+    algebraics = [a for a in ws.algebraics if not has_network_ports(a.owner)]
+    residuals = [r for o, r in ws.residuals if not has_network_ports(o)]
+    if len(residuals) != len(algebraics):        # networks: checked by build_network
+        raise StructureError(f"{len(algebraics)} algebraic variables but "
+                             f"{len(residuals)} residual equations: "
+                             f"{', '.join(a.sym.name() for a in algebraics) or 'none'}")
 
 
 def _nominals(model, ws: Workspace, tree, final, w: ca.SX, free: ca.SX) -> list:

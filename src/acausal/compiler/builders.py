@@ -2,6 +2,17 @@
 
 Both are thin views of the compiler's workspace for one component; every method documents
 its units through the ports it takes (translational: m, m/s, N; rotational: rad, rad/s, N.m).
+
+Network ports (electrical pins: v [V], i [A]; heat ports: T [K], Q_flow [W]) have no motion:
+a component reads a port's potential with ``e.potential(port)`` and gives each of its ports'
+flows (positive into the component) either explicitly, ``e.flow(port, value)`` (an
+inductor's state current, a heat flow source, a sensor's 0), or as an unknown it pins down
+with an equation of its own: ``i = e.flow_of(port)`` and ``e.residual(...)`` (a resistor's
+v − R·i, a voltage source's p.v − n.v − V). Storage elements declare states with ``s.state``
+and give their derivatives (a capacitor's der(v) = i/C; its residual p.v − n.v − v ties the
+state to the potentials). Kirchhoff's laws, the structural check and the elimination of
+trivial equations are the compiler's (``compiler.networks``). A component may mix domains:
+an EMF reads its pins and puts k·i on its mechanical flange with ``e.flow``.
 """
 from __future__ import annotations
 
@@ -52,6 +63,7 @@ class Workspace:
     """Everything components declare, collected for the assembly."""
     t: ca.SX
     smooth: bool = False                                    # components in smooth form
+    index_reduction: bool = False                           # of networks' loops, cut sets
     der_table: dict = field(default_factory=dict)
     relations: list = field(default_factory=list)
     internal_nodes: list = field(default_factory=list)
@@ -80,6 +92,11 @@ class Workspace:
     reinits: list = field(default_factory=list)             # (owner, variable, expr, when, dir.)
     components: list = field(default_factory=list)          # all of them, flattened
     param_symbols: dict = field(default_factory=dict)       # component -> {name: SX}
+    net_nodes: list = field(default_factory=list)           # networks.NetNode
+    net_node_of: dict = field(default_factory=dict)         # network port -> NetNode
+    net_flows: list = field(default_factory=list)           # (network port, explicit flow)
+    net_flow_sym: dict = field(default_factory=dict)        # network port -> unknown flow
+    demoted_states: list = field(default_factory=list)      # StateInfo of reduced loops
     p: object = None                                        # parameter symbols, stacked
     p_default: list = field(default_factory=list)           # their default values
 
@@ -317,7 +334,33 @@ class PhysicsBuilder(_Base):
 
     def _node(self, port: PhysicalPort):
         self._mine(port)
+        if port.domain.network:
+            raise StructureError(f"{self._owner.path}: port '{port.path}' ({port.domain.name}) "
+                                 f"has no motion; read its potential with e.potential")
         return self._ws.node_of[port]
+
+    def _net_port(self, port: PhysicalPort):
+        self._mine(port)
+        if not port.domain.network:
+            raise StructureError(f"{self._owner.path}: port '{port.path}' is mechanical; use "
+                                 f"e.pos / e.vel and e.flow")
+
+    def potential(self, port: PhysicalPort) -> ca.SX:
+        """The potential of a network port: v [V] of a pin, T [K] of a heat port."""
+        self._net_port(port)
+        return self._ws.net_node_of[port].potential
+
+    def flow_of(self, port: PhysicalPort) -> ca.SX:
+        """The flow through a network port (i [A], Q_flow [W]; positive into the component)
+        as an unknown of the DAE: this component gives one equation (``residual``) for it.
+        A port's flow is given either this way or by ``flow``, not both."""
+        self._net_port(port)
+        ws = self._ws
+        if port not in ws.net_flow_sym:
+            name = f"{port.path}.{port.domain.flows[0]}"
+            ws.net_flow_sym[port] = ca.SX.sym(name)
+            ws.der_table[name] = None
+        return ws.net_flow_sym[port]
 
     def pos(self, port: PhysicalPort) -> ca.SX:
         """Potential of a port: s [m], phi [rad], or (x, y, phi) for a planar frame."""
@@ -334,9 +377,10 @@ class PhysicsBuilder(_Base):
     def flow(self, port: PhysicalPort, value) -> None:
         """Set the flow (force [N] or torque [N.m]) acting on this component through
         ``port``, positive into the component (Modelica's sign): the component pushes the
-        connection with −value."""
+        connection with −value. On a network port: its current [A] or heat flow [W],
+        given explicitly."""
         self._mine(port)
-        self._ws.flows.append((port, sx(value)))
+        (self._ws.net_flows if port.domain.network else self._ws.flows).append((port, sx(value)))
 
     def cut_flow(self, port: PhysicalPort) -> ca.SX:
         """The total flow through one of this component's ports (force [N] / torque [N.m],
@@ -345,6 +389,9 @@ class PhysicsBuilder(_Base):
         variables (a LossyGear's loss depends on flange_a.tau: an implicit equation the DAE
         solver closes), not forces of the model directly."""
         self._mine(port)
+        if port.domain.network:
+            raise StructureError(f"{self._owner.path}: cut_flow of the {port.domain.name} port "
+                                 f"'{port.path}'; read a network port's flow with e.flow_of")
         if port not in self._ws.cut_flow_sym:
             self._ws.cut_flow_sym[port] = ca.SX.sym(f"flow:{port.path}", port.domain.dim)
         return self._ws.cut_flow_sym[port]

@@ -130,7 +130,9 @@ class CompiledModel:
     parameters of this model. ``mode_params``: positions in p of the discrete modes (last in
     p; their records in ``params`` hold their start values, ``component`` their owner).
     ``state_events``: indicators, mode updates and reinits (see ``StateEvents``).
-    ``smooth``: compiled in smooth form (``compile(model, smooth=True)``). ``source``: the
+    ``smooth``: compiled in smooth form (``compile(model, smooth=True)``);
+    ``index_reduction``: networks' loops and cut sets reduced (``compile(model,
+    index_reduction=True)``, kept by ``recompiled``). ``source``: the
     Model compiled (a reference, nothing of it copied: ``recompiled`` compiles it as it is
     then)."""
     name: str
@@ -163,6 +165,7 @@ class CompiledModel:
     mode_params: list[int] = field(default_factory=list)
     state_events: StateEvents = field(default_factory=StateEvents)
     smooth: bool = False    # compiled in smooth form (no events; see PhysicsBuilder.smooth)
+    index_reduction: bool = False   # networks' loops and cut sets reduced (compiler.networks)
     source: object = field(default=None, repr=False, compare=False)     # the Model compiled
     _cache: dict = field(default_factory=dict, repr=False)
 
@@ -174,13 +177,13 @@ class CompiledModel:
 
     def recompiled(self, smooth: bool) -> "CompiledModel":
         """The ``source`` model compiled again, in smooth form or not (``compile(model,
-        smooth)``), as a record of this class."""
+        smooth)``, with the same ``index_reduction``), as a record of this class."""
         if self.source is None:
             raise StructureError(f"compiled model '{self.name}' does not know the Model it "
                                  "was compiled from; compile the Model with "
                                  f"acausal.compile(model, smooth={bool(smooth)})")
         from .assemble import compile       # assemble builds records of this module
-        return type(self).wrap(compile(self.source, smooth))
+        return type(self).wrap(compile(self.source, smooth, self.index_reduction))
 
     # ---- names ----------------------------------------------------------------------------
     @property

@@ -1,5 +1,12 @@
 """Ports (connectors): what components are connected by.
 
+Mechanical ports (flanges, frames) carry a pose; the compiler gives their connection sets
+coordinates on a spanning tree. Network ports (``Domain.network``: electrical pins, heat
+ports) carry one potential and one flow (Modelica's across and through variables, e.g.
+v [V] and i [A]): a connection set has one potential, and its flows sum to zero
+(Kirchhoff's current law); the compiler makes the potentials and the flows algebraic
+variables of the DAE (``acausal.compiler.networks``).
+
 A physical port carries potential variables (equal at a connection) and flow variables (summed
 to zero at a connection; a flow is positive into the component, as in Modelica). A signal port
 carries one causal value: a Real signal, or a Boolean one (``BooleanInput`` /
@@ -22,6 +29,8 @@ class Domain:
     potential_units: tuple[str, ...]
     flow_units: tuple[str, ...]
     velocity_units: tuple[str, ...]
+    #: a potential/flow network (electrical, thermal), not a mechanical pose
+    network: bool = False
 
     @property
     def dim(self) -> int:
@@ -32,6 +41,8 @@ TRANSLATIONAL = Domain("translational", ("s",), ("f",), ("m",), ("N",), ("m/s",)
 ROTATIONAL = Domain("rotational", ("phi",), ("tau",), ("rad",), ("N.m",), ("rad/s",))
 PLANAR = Domain("planar", ("x", "y", "phi"), ("fx", "fy", "t"), ("m", "m", "rad"),
                 ("N", "N", "N.m"), ("m/s", "m/s", "rad/s"))
+ELECTRICAL = Domain("electrical", ("v",), ("i",), ("V",), ("A",), ("V/s",), network=True)
+THERMAL = Domain("thermal", ("T",), ("Q_flow",), ("K",), ("W",), ("K/s",), network=True)
 
 
 class Port:
@@ -81,6 +92,34 @@ class Frame(PhysicalPort):
     t [N.m] about the frame's origin, resolved in the world frame, positive into the
     component (t counter-clockwise, like phi)."""
     domain = PLANAR
+
+
+class Pin(PhysicalPort):
+    """Electrical pin (Modelica.Electrical.Analog.Interfaces.Pin): potential v [V], current
+    i [A] flowing into the pin (into the component)."""
+    domain = ELECTRICAL
+
+
+class PositivePin(Pin):
+    """Positive pin of an electrical component (same connector as Pin)."""
+
+
+class NegativePin(Pin):
+    """Negative pin of an electrical component (same connector as Pin)."""
+
+
+class HeatPort(PhysicalPort):
+    """Thermal port (Modelica.Thermal.HeatTransfer.Interfaces.HeatPort): temperature T [K],
+    heat flow rate Q_flow [W] into the component."""
+    domain = THERMAL
+
+
+class HeatPort_a(HeatPort):
+    """Thermal port, drawn filled (same connector as HeatPort)."""
+
+
+class HeatPort_b(HeatPort):
+    """Thermal port, drawn empty (same connector as HeatPort)."""
 
 
 class RealInput(Port):

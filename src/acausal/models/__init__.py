@@ -27,10 +27,13 @@ no compiler or simulation imports.
                         Translational Examples Brake, Friction (MassWithStopAndFriction) and
                         PreLoad (ElastoGap)
     gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
+    circuits            CauerLowPassAnalog: MSL's Cauer low-pass filter (capacitor loops:
+                        compiled with index_reduction=True)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
+from .circuits import CauerLowPassAnalog
 from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
@@ -54,4 +57,4 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
-           "LossyGearDemo3", "SampledPController", "Thermostat"]
+           "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog"]
