@@ -615,8 +615,9 @@ def test_options_not_available_yet_accept_only_their_off_value():
     with pytest.raises(ParameterError) as err:
         P.SpringDamper(useHeatPort=True)
     assert str(err.value) == ("SpringDamper: useHeatPort=True is not available yet (the "
-                              "heatPort: acausal has no thermal domain); leave "
-                              "useHeatPort=False, the default")
+                              "heatPort of mechanical components; the thermal domain is "
+                              "acausal.components.thermal); leave useHeatPort=False, the "
+                              "default")
     with pytest.raises(ParameterError, match=r"Damper: enableAssert=True is not available "
                                              r"yet .*run-time assertions"):
         P.Damper(enableAssert=True)

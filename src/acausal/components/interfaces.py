@@ -24,7 +24,8 @@ from ..core import Component, Parameter, Unavailable
 
 #: MSL's ``useHeatPort`` (PartialElementaryConditionalHeatPort): a dissipating element's heat
 #: port, only False (MSL's default: the heat goes nowhere) until acausal has a thermal domain.
-USE_HEAT_PORT = Unavailable(False, "the heatPort: acausal has no thermal domain")
+USE_HEAT_PORT = Unavailable(False, "the heatPort of mechanical components; the thermal "
+                                   "domain is acausal.components.thermal")
 
 __all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS", "USE_HEAT_PORT",
            "PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",

@@ -299,7 +299,7 @@ class SpringDamper(PartialXYCompliant):
 
     Records v_relx, v_rely [m/s], w_rel [rad/s], tau [N.m] and lossPower [W] =
     d_x·v_relx² + d_y·v_rely² + d_phi·w_rel² (PlanarMechanics leaves out the last term).
-    Options as Spring; ``useHeatPort`` only False (no thermal domain yet)."""
+    Options as Spring; ``useHeatPort`` only False (no heat port on mechanical components yet)."""
     options = {"enableAssert": True, "stateSelect": StateSelect.default,
                "useHeatPort": USE_HEAT_PORT}
     c_x = Parameter(1.0, "N/m", "spring constant in x dir", nonnegative=True)
