@@ -24,6 +24,11 @@ class CompiledModel(compiler.CompiledModel):
         """Simulate; see ``acausal.simulation.simulate`` for the arguments."""
         return simulate(self, t_final, **kwargs)
 
+    def recompiled(self, smooth: bool) -> "CompiledModel":
+        """The Model this was compiled from, compiled again in smooth form or not (see
+        ``compile``)."""
+        return compiler.recompile(self, smooth)
+
     def export_fmu(self, path, **kwargs) -> Path:
         """Export as an FMU; see ``acausal.fmu.export_fmu`` for the arguments."""
         from .fmu import export_fmu          # needs the 'fmu' extra only when used

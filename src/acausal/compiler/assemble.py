@@ -64,6 +64,16 @@ def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -
             gc.enable()
 
 
+def recompile(compiled: CompiledModel, smooth: bool) -> CompiledModel:
+    """``compiled``'s ``source`` model compiled again, in smooth form or not, with the same
+    ``index_reduction``, as a record of ``compiled``'s class."""
+    if compiled.source is None:
+        raise StructureError(f"compiled model '{compiled.name}' does not know the Model it "
+                             "was compiled from; compile the Model with "
+                             f"acausal.compile(model, smooth={bool(smooth)})")
+    return type(compiled).wrap(compile(compiled.source, smooth, compiled.index_reduction))
+
+
 def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel:
     flat = flatten(model)
     ws = Workspace(t=ca.SX.sym("t"), smooth=bool(smooth), index_reduction=bool(index_reduction))

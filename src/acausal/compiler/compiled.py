@@ -34,8 +34,7 @@ import casadi as ca
 import numpy as np
 
 from ..core.parameter import checked_value
-from ..errors import (ParameterError, SimulationError, StructureError, VariableNameError,
-                      did_you_mean)
+from ..errors import ParameterError, SimulationError, VariableNameError, did_you_mean
 from ..numerics import event_times
 from .lagrange import Lagrange
 from .loops import Mobility, mobility
@@ -132,8 +131,8 @@ class CompiledModel:
     ``state_events``: indicators, mode updates and reinits (see ``StateEvents``).
     ``smooth``: compiled in smooth form (``compile(model, smooth=True)``);
     ``index_reduction``: networks' loops and cut sets reduced (``compile(model,
-    index_reduction=True)``, kept by ``recompiled``). ``source``: the
-    Model compiled (a reference, nothing of it copied: ``recompiled`` compiles it as it is
+    index_reduction=True)``, kept by ``recompile``). ``source``: the
+    Model compiled (a reference, nothing of it copied: ``recompile`` compiles it as it is
     then)."""
     name: str
     t: ca.SX
@@ -174,16 +173,6 @@ class CompiledModel:
         """A record of this class with the fields of ``record`` (sharing its symbols and
         caches): how a subclass (the facade's) dresses the compiler's record."""
         return cls(**{f.name: getattr(record, f.name) for f in fields(record)})
-
-    def recompiled(self, smooth: bool) -> "CompiledModel":
-        """The ``source`` model compiled again, in smooth form or not (``compile(model,
-        smooth)``, with the same ``index_reduction``), as a record of this class."""
-        if self.source is None:
-            raise StructureError(f"compiled model '{self.name}' does not know the Model it "
-                                 "was compiled from; compile the Model with "
-                                 f"acausal.compile(model, smooth={bool(smooth)})")
-        from .assemble import compile       # assemble builds records of this module
-        return type(self).wrap(compile(self.source, smooth, self.index_reduction))
 
     # ---- names ----------------------------------------------------------------------------
     @property

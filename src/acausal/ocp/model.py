@@ -6,6 +6,7 @@ from collections.abc import Mapping
 import casadi as ca
 import numpy as np
 
+from ..compiler import recompile
 from ..errors import OCPError, ParameterError, VariableNameError, did_you_mean
 
 #: the OCP's word for each kind of name the compiled model resolves
@@ -141,10 +142,10 @@ def smooth_form(compiled):
     regularization parameters of a component are its parameters that the smooth form's
     equations use and the exact form's do not (``v_smooth``, a contact stiffness)."""
     if compiled.has_events:
-        smooth = compiled.recompiled(smooth=True)
+        smooth = recompile(compiled, smooth=True)
         return smooth, _regularized(compiled, smooth)
     if compiled.smooth and compiled.source is not None:
-        return compiled, _regularized(compiled.recompiled(smooth=False), compiled)
+        return compiled, _regularized(recompile(compiled, smooth=False), compiled)
     return compiled, {}
 
 
