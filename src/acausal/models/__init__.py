@@ -33,7 +33,7 @@ no compiler or simulation imports.
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
-from .circuits import CauerLowPassAnalog
+from .circuits import CauerLowPassAnalog, ChuaCircuit
 from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
@@ -57,4 +57,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
-           "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog"]
+           "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
+           "ChuaCircuit"]
