@@ -101,11 +101,30 @@ def test_opening_switch_in_an_rl_circuit_decays_through_goff():
     R1, R2 = R + Ron, R + 1 / Goff
     I0 = V / R1 * (1 - math.exp(-t0 * R1 / L))
     i = np.where(t < t0, V / R1 * (1 - np.exp(-t * R1 / L)),
-                 V / R2 + (I0 - V / R2) * np.exp(-(t - t0) * R2 / L))
+                 V / R2 + (I0 - V / R2) * np.exp(-np.clip(t - t0, 0, None) * R2 / L))
     np.testing.assert_allclose(res["l.i"][at], i, atol=1e-9 * I0)
     k = t != t0
     np.testing.assert_allclose(res["switch.v"][at][k], np.where(t < t0, Ron, 1 / Goff)[k] *
                                i[k], rtol=1e-8, atol=1e-12)
+
+
+def test_closing_switch_charges_a_capacitor_through_goff_then_ron():
+    """V — R — IdealClosingSwitch — C, closed at t0 by a BooleanStep: before, C charges
+    through R + 1/Goff (MSL's leakage), after through R + Ron: two exponentials."""
+    V, R, C, t0, Ron, Goff = 5.0, 10.0, 1e-3, 0.02, 1e-5, 1e-5
+    m = model("rc_switch", lambda m: [
+        (m.src.p, m.r.p), (m.r.n, m.switch.p), (m.switch.n, m.c.p), (m.c.n, m.src.n),
+        (m.src.n, m.ground.p), (m.step.y, m.switch.control)],
+        src=el.ConstantVoltage(V=V), r=el.Resistor(R=R), c=el.Capacitor(C=C),
+        switch=el.IdealClosingSwitch(), step=lg.BooleanStep(startTime=t0), ground=el.Ground())
+    t = np.linspace(0.0, 0.1, 101)
+    res = acausal.compile(m).simulate(0.1, t=t, **TIGHT)
+    at = np.searchsorted(res.t, t, side="right") - 1
+    v0 = V * (1 - math.exp(-t0 / ((R + 1 / Goff) * C)))
+    vc = np.where(t < t0, V * (1 - np.exp(-t / ((R + 1 / Goff) * C))),
+                  V - (V - v0) * np.exp(-np.clip(t - t0, 0, None) / ((R + Ron) * C)))
+    np.testing.assert_allclose(res["c.v"][at], vc, atol=1e-9)
+    np.testing.assert_allclose(res["switch.off"][at], t < t0)
 
 
 def test_ideal_transformer_is_power_conserving():
