@@ -196,7 +196,8 @@ def chua_by_hand(t):
 
 def test_chua_circuit_matches_a_scipy_model():
     """The first 2000 s of MSL's ChuaCircuit (the double scroll forming) against the same
-    equations in scipy: C1.v, C2.v, L.i within 2e-3 of each signal's peak."""
+    equations in scipy: C1.v, C2.v, L.i within 2e-3 of each signal's peak (6e-8 found;
+    the two part beyond 2e-3 after 8785 s, chaos amplifying the integration errors)."""
     from acausal.models import ChuaCircuit
     t = np.linspace(0.0, 2000.0, 2001)
     res = acausal.compile(ChuaCircuit()).simulate(2000.0, t=t, rtol=1e-10, atol=1e-12)
@@ -208,12 +209,17 @@ def test_chua_circuit_matches_a_scipy_model():
 
 
 def test_chua_circuit_matches_the_msl_reference(reference_result):
-    """MSL's ChuaCircuit against the Modelica Association's reference (comparisonSignals
-    C1.v, C2.v, L.i), within 2e-3 of each signal's peak. Chaotic: two correct solutions part
-    once their rounding differences have grown, so the comparison covers the first part
-    of the reference's 50000 s only (``T_AGREE``), where both stay within tolerance."""
+    """MSL's ChuaCircuit against the Modelica Association's reference (its comparisonSignals
+    C1.v, C2.v, L.i), within 2e-3 of each signal's peak, over the first T_AGREE = 2000 s of
+    the reference's 50000 s only: the circuit is chaotic, and two correct solutions part
+    once their integration errors have grown. The reference was computed with DASSL at a
+    tolerance of 1e-6: scipy's BDF and LSODA at 1e-6 leave the 2e-3 band around a 1e-12
+    solution after 3650 s and 3720 s (acausal at 1e-10 after 8785 s), so 2000 s is where
+    agreement can be asked for. Not run against the data yet (its file was not available
+    when this test was written)."""
     from acausal.models import ChuaCircuit
-    ref = reference_result("MAP-LIB_ReferenceResults", "Modelica.Electrical.Analog.Examples.ChuaCircuit")
+    ref = reference_result("MAP-LIB_ReferenceResults",
+                           "Modelica.Electrical.Analog.Examples.ChuaCircuit")
     t = ref["time"][ref["time"] <= T_AGREE]
     res = acausal.compile(ChuaCircuit()).simulate(float(t[-1]), t=t, rtol=1e-10, atol=1e-12)
     at = np.searchsorted(res.t, t, side="right") - 1
@@ -223,9 +229,37 @@ def test_chua_circuit_matches_the_msl_reference(reference_result):
         assert err < 2e-3, (name, err)
 
 
-T_AGREE = 2000.0      # [s] (not checked against the published data: see the docstring)
+T_AGREE = 2000.0      # [s] see test_chua_circuit_matches_the_msl_reference
 
 
 def test_switching_elements_refuse_smooth_compilation():
     with pytest.raises(acausal.StructureError, match="IdealDiode.*no smooth form"):
         acausal.compile(rectifier(), smooth=True)
+
+
+def test_limited_op_amp_inverts_and_clips_at_its_supply():
+    """Inverting amplifier (gain −Rf/Rin) on a sine, supplied with ±Vs, driving an RC load:
+    out = clip(−Rf/Rin·vs, −Vs, Vs), and C·vc' = (out − vc)/RL against scipy."""
+    A, f, Rin, Rf, Vs, RL, C = 2.0, 5.0, 1e3, 5e3, 6.0, 1e3, 2e-5
+    m = model("amplifier", lambda m: [
+        (m.src.p, m.rin.p), (m.rin.n, m.op.in_n), (m.op.in_n, m.rf.p), (m.rf.n, m.op.out),
+        (m.op.in_p, m.ground.p), (m.op.VMax, m.vmax.p), (m.op.VMin, m.vmin.n),
+        (m.vmax.n, m.ground.p), (m.vmin.p, m.ground.p), (m.src.n, m.ground.p),
+        (m.op.out, m.rl.p), (m.rl.n, m.c.p), (m.c.n, m.ground.p)],
+        src=el.SineVoltage(V=A, f=f), rin=el.Resistor(R=Rin), rf=el.Resistor(R=Rf),
+        op=el.IdealOpAmpLimited(), vmax=el.ConstantVoltage(V=Vs), vmin=el.ConstantVoltage(V=Vs),
+        rl=el.Resistor(R=RL), c=el.Capacitor(C=C), ground=el.Ground())
+    t = np.linspace(0.0, 0.4, 401)
+    res = acausal.compile(m).simulate(0.4, t=t, rtol=1e-10, atol=1e-12,
+                                      options={"suppress_algebraic": True})
+    out = np.clip(-Rf / Rin * A * np.sin(2 * np.pi * f * t), -Vs, Vs)
+    np.testing.assert_allclose(res["op.out.v"], out, atol=1e-8)
+    assert np.max(np.abs(res["op.vin"][np.abs(out) < Vs - 1e-3])) < 1e-9   # nullor
+    assert np.isclose(np.max(res["op.out.v"]), Vs) and np.isclose(np.min(res["op.out.v"]), -Vs)
+
+    def rhs(tt, x):
+        o = np.clip(-Rf / Rin * A * np.sin(2 * np.pi * f * tt), -Vs, Vs)
+        return [(o - x[0]) / (RL * C)]
+    vc = solve_ivp(rhs, (0.0, 0.4), [0.0], t_eval=t, rtol=1e-12, atol=1e-13,
+                   method="DOP853", max_step=1e-4).y[0]
+    np.testing.assert_allclose(res["c.v"], vc, atol=1e-7)

@@ -1,4 +1,5 @@
-"""Analog electrical components after Modelica.Electrical.Analog (Basic, Sources, Sensors).
+"""Analog electrical components after Modelica.Electrical.Analog (Basic, Ideal, Sources,
+Sensors).
 
 Pins carry the potential v [V] and the current i [A] flowing into the pin (MSL's sign); a
 connection set has one potential and its currents sum to zero (Kirchhoff), as compiled by
@@ -10,6 +11,11 @@ the states are constructor keywords (``Capacitor(C=1e-3, v_start=5)``, MSL's
 A circuit needs a ``Ground``; a loop of capacitors and voltage sources, or a node fed only
 by inductors and current sources, is a higher-index network, refused when compiled with
 an error naming its parts.
+
+The ideal switching elements (IdealDiode, IdealOpeningSwitch, IdealClosingSwitch) are MSL's
+parametric characteristics: an auxiliary unknown s places the element on one of two
+straight segments, chosen by the Boolean ``off`` (a mode switched at state events for the
+diode, the control input for the switches); they have no smooth form.
 """
 from __future__ import annotations
 
@@ -25,7 +31,7 @@ __all__ = ["Ground", "OnePort", "Resistor", "Conductor", "Capacitor", "Inductor"
            "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage", "StepVoltage",
            "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor", "CurrentSensor",
            "PowerSensor", "IdealDiode", "IdealOpeningSwitch", "IdealClosingSwitch",
-           "IdealTransformer", "Gyrator", "NonlinearResistor"]
+           "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmpLimited"]
 
 
 class Ground(Component):
@@ -484,8 +490,8 @@ class NonlinearResistor(OnePort):
     """Chua's resistor (MSL Electrical.Analog.Examples.Utilities.NonlinearResistor): the
     piecewise-linear i = Ga·v for |v| ≤ Ve, Gb·(v ∓ Ve) ± Ga·Ve outside [A]; Ga, Gb [S]
     inner and outer conductances, Ve [V] the inner range limit (MSL gives no defaults;
-    these are ChuaCircuit's). Events at v = ±Ve (indicators ``lower``, ``upper``), as the
-    relations of the MSL equation make in a Modelica tool."""
+    these are ChuaCircuit's). The law is continuous, its kinks at v = ±Ve are integrated
+    across (no modes: a crossing there would change nothing)."""
     Ga = Parameter(-0.757576, "S", "conductance in inner voltage range")
     Gb = Parameter(-0.409091, "S", "conductance in outer voltage range")
     Ve = Parameter(1.0, "V", "inner voltage range limit", positive=True)
@@ -495,7 +501,34 @@ class NonlinearResistor(OnePort):
         i = ca.if_else(v < -self.Ve, self.Gb * (v + self.Ve) - self.Ga * self.Ve,
                        ca.if_else(v > self.Ve, self.Gb * (v - self.Ve) + self.Ga * self.Ve,
                                   self.Ga * v))
-        if not e.smooth:
-            e.indicator("lower", v + self.Ve, "V", "v + Ve: the lower kink")
-            e.indicator("upper", v - self.Ve, "V", "v - Ve: the upper kink")
         self._record(e, v, self._current(e, i))
+
+
+class IdealOpAmpLimited(Component):
+    """Ideal operational amplifier with limitation (MSL Ideal.IdealOpAmpLimited): no input
+    or supply currents; an auxiliary s [1] (algebraic unknown) with vin = in_p.v − in_n.v =
+    (s + 1 if s < −1, s − 1 if s > 1, else 0) [V] and out.v = VMin.v if s < −1, VMax.v if
+    s > 1, else (VMax.v − VMin.v)·s/2 + (VMax.v + VMin.v)/2: a nullor (vin = 0) while the
+    output lies between the supply pins, the output at a supply pin (vin ≠ 0) otherwise.
+    Both laws are continuous in s; their kinks are integrated across. Records vin, s."""
+    in_p = PositivePin("positive pin of the input port")
+    in_n = NegativePin("negative pin of the input port")
+    out = PositivePin("output pin")
+    VMax = PositivePin("positive output voltage limitation")
+    VMin = NegativePin("negative output voltage limitation")
+
+    def structure(self, s):
+        s.algebraic("s", 0.0, "1", "auxiliary variable")
+
+    def physics(self, e):
+        sa = e.state("s")
+        for pin in (self.in_p, self.in_n, self.VMax, self.VMin):
+            e.flow(pin, 0.0)
+        e.flow_of(self.out)
+        vin = e.potential(self.in_p) - e.potential(self.in_n)
+        vmax, vmin = e.potential(self.VMax), e.potential(self.VMin)
+        e.residual(vin - ca.if_else(sa < -1, sa + 1, ca.if_else(sa > 1, sa - 1, 0.0)))
+        e.residual(e.potential(self.out) - ca.if_else(
+            sa < -1, vmin, ca.if_else(sa > 1, vmax, (vmax - vmin) * sa / 2 + (vmax + vmin) / 2)))
+        e.variable("vin", vin, "V", "input voltage")
+        e.variable("s", sa, "1", "auxiliary variable")

@@ -28,7 +28,7 @@ no compiler or simulation imports.
                         PreLoad (ElastoGap)
     gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     circuits            CauerLowPassAnalog: MSL's Cauer low-pass filter (capacitor loops:
-                        compiled with index_reduction=True)
+                        compiled with index_reduction=True); ChuaCircuit: MSL's Chua circuit
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
