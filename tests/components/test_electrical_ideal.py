@@ -103,7 +103,7 @@ def test_opening_switch_in_an_rl_circuit_decays_through_goff():
     i = np.where(t < t0, V / R1 * (1 - np.exp(-t * R1 / L)),
                  V / R2 + (I0 - V / R2) * np.exp(-np.clip(t - t0, 0, None) * R2 / L))
     np.testing.assert_allclose(res["l.i"][at], i, atol=1e-9 * I0)
-    k = t != t0
+    k = t != t0         # at the time event itself the output shows s's left limit
     np.testing.assert_allclose(res["switch.v"][at][k], np.where(t < t0, Ron, 1 / Goff)[k] *
                                i[k], rtol=1e-8, atol=1e-12)
 

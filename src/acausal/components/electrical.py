@@ -15,7 +15,7 @@ an error naming its parts.
 The ideal switching elements (IdealDiode, IdealOpeningSwitch, IdealClosingSwitch) are MSL's
 parametric characteristics: an auxiliary unknown s places the element on one of two
 straight segments, chosen by the Boolean ``off`` (a mode switched at state events for the
-diode, the control input for the switches); they have no smooth form.
+diode, the control input for the switches); the diode has no smooth form.
 """
 from __future__ import annotations
 
@@ -340,7 +340,7 @@ class _IdealSwitching(_ConditionalHeatPort, OnePort):
     two-segment characteristic, v = s·(1 if off else Ron) + Vknee [V], i = s·(Goff if off
     else 1) + Goff·Vknee [A]: a resistance Ron when on, a conductance Goff when off, both
     segments through the knee (Vknee, Goff·Vknee). Records v, i, s, off, LossPower = v·i,
-    T_heatPort. No smooth form (refused when compiled with smooth=True)."""
+    T_heatPort."""
     Ron = Parameter(1e-5, "Ohm", "forward state-on differential resistance (closed "
                                  "resistance)", nonnegative=True)
     Goff = Parameter(1e-5, "S", "backward state-off conductance (opened conductance)",
@@ -350,7 +350,6 @@ class _IdealSwitching(_ConditionalHeatPort, OnePort):
     _Vknee = 0.0
 
     def structure(self, s):
-        refuse_smooth(self, s)
         s.algebraic("s", 0.0, "1", "auxiliary variable for actual position on the ideal "
                                    "characteristic (s < 0: blocking, s > 0: conducting)")
 
@@ -377,7 +376,8 @@ class IdealDiode(_IdealSwitching):
     the Boolean mode off = s < 0 (start true, MSL's), switched at a state event (indicator
     ``s``) located where s has crossed 0 by ``S_NOISE`` (1e-10: a current of 1e-10 A, a
     voltage of 1e-10 V; the switching instant is late by S_NOISE/|ds/dt|, 3e-12 s in the
-    rectifier of the tests). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0."""
+    rectifier of the tests). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0. No smooth form
+    (refused when compiled with smooth=True)."""
     Vknee = Parameter(0.0, "V", "forward threshold voltage", nonnegative=True)
 
     @property
@@ -385,6 +385,7 @@ class IdealDiode(_IdealSwitching):
         return self.Vknee
 
     def structure(self, s):
+        refuse_smooth(self, s)
         super().structure(s)
         s.mode("off", 1, values=(0, 1), description="switching state (1: blocking)")
 
@@ -400,7 +401,8 @@ class IdealDiode(_IdealSwitching):
 class IdealOpeningSwitch(_IdealSwitching):
     """Ideal electrical opener (MSL Ideal.IdealOpeningSwitch): off = control (Boolean
     input ``control``: true opens p—n); Ron [Ohm] 1e-5, Goff [S] 1e-5. The switching
-    instants are the events of the block driving ``control``."""
+    instants are the events of the block driving ``control``; with smooth=True the law is
+    unchanged (smooth between the control's jumps)."""
     control = BooleanInput("true => switch open, false => p--n connected")
 
     def _off(self, e):
