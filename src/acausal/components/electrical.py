@@ -27,11 +27,12 @@ from . import rotational, translational
 from .logical import refuse_smooth
 from .signals import _start
 
-__all__ = ["Ground", "OnePort", "Resistor", "Conductor", "Capacitor", "Inductor",
-           "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage", "StepVoltage",
-           "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor", "CurrentSensor",
-           "PowerSensor", "IdealDiode", "IdealOpeningSwitch", "IdealClosingSwitch",
-           "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmpLimited"]
+__all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "Conductor", "Capacitor", "Inductor",
+           "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage",
+           "StepVoltage", "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor",
+           "CurrentSensor", "PowerSensor", "IdealDiode", "IdealOpeningSwitch",
+           "IdealClosingSwitch", "IdealTransformer", "Gyrator", "NonlinearResistor",
+           "IdealOpAmpLimited"]
 
 
 class Ground(Component):
