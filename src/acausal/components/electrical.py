@@ -1,4 +1,5 @@
-"""Analog electrical components after Modelica.Electrical.Analog (Basic, Sources, Sensors).
+"""Analog electrical components after Modelica.Electrical.Analog (Basic, Ideal, Sources,
+Sensors).
 
 Pins carry the potential v [V] and the current i [A] flowing into the pin (MSL's sign); a
 connection set has one potential and its currents sum to zero (Kirchhoff), as compiled by
@@ -10,20 +11,28 @@ the states are constructor keywords (``Capacitor(C=1e-3, v_start=5)``, MSL's
 A circuit needs a ``Ground``; a loop of capacitors and voltage sources, or a node fed only
 by inductors and current sources, is a higher-index network, refused when compiled with
 an error naming its parts.
+
+The ideal switching elements (IdealDiode, IdealOpeningSwitch, IdealClosingSwitch) are MSL's
+parametric characteristics: an auxiliary unknown s places the element on one of two
+straight segments, chosen by the Boolean ``off`` (a mode switched at state events for the
+diode, the control input for the switches); the diode has no smooth form.
 """
 from __future__ import annotations
 
 import casadi as ca
 
-from ..core import (Component, ConditionalPort, HeatPort_a, NegativePin, Parameter, Pin,
-                    PositivePin, RealInput, RealOutput)
+from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
+                    Parameter, Pin, PositivePin, RealInput, RealOutput)
 from . import rotational, translational
+from .logical import refuse_smooth
 from .signals import _start
 
-__all__ = ["Ground", "OnePort", "Resistor", "Conductor", "Capacitor", "Inductor",
-           "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage", "StepVoltage",
-           "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor", "CurrentSensor",
-           "PowerSensor"]
+__all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "Conductor", "Capacitor", "Inductor",
+           "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage",
+           "StepVoltage", "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor",
+           "CurrentSensor", "PowerSensor", "IdealDiode", "IdealOpeningSwitch",
+           "IdealClosingSwitch", "IdealTransformer", "Gyrator", "NonlinearResistor",
+           "IdealOpAmpLimited"]
 
 
 class Ground(Component):
@@ -324,3 +333,205 @@ class PowerSensor(Component):
         e.flow(self.pv, 0.0)
         e.flow(self.nv, 0.0)
         e.output(self.power, (e.potential(self.pv) - e.potential(self.nv)) * i)
+
+
+# ---- ideal switching elements (Modelica.Electrical.Analog.Ideal) --------------------------
+class _IdealSwitching(_ConditionalHeatPort, OnePort):
+    """MSL's IdealSemiconductor / IdealSwitch: a point s [1] (an algebraic unknown) on a
+    two-segment characteristic, v = s·(1 if off else Ron) + Vknee [V], i = s·(Goff if off
+    else 1) + Goff·Vknee [A]: a resistance Ron when on, a conductance Goff when off, both
+    segments through the knee (Vknee, Goff·Vknee). Records v, i, s, off, LossPower = v·i,
+    T_heatPort."""
+    Ron = Parameter(1e-5, "Ohm", "forward state-on differential resistance (closed "
+                                 "resistance)", nonnegative=True)
+    Goff = Parameter(1e-5, "S", "backward state-off conductance (opened conductance)",
+                     nonnegative=True)
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
+    _Vknee = 0.0
+
+    def structure(self, s):
+        s.algebraic("s", 0.0, "1", "auxiliary variable for actual position on the ideal "
+                                   "characteristic (s < 0: blocking, s > 0: conducting)")
+
+    def _off(self, e):
+        raise NotImplementedError
+
+    def physics(self, e):
+        sa, off, v, i = e.state("s"), self._off(e), self._v(e), self._current(e)
+        e.residual(v - (sa * ca.if_else(off, 1.0, self.Ron) + self._Vknee))
+        e.residual(i - (sa * ca.if_else(off, self.Goff, 1.0) + self.Goff * self._Vknee))
+        self._record(e, v, i)
+        e.variable("s", sa, "1", "auxiliary variable (s < 0: blocking, s > 0: conducting)")
+        e.variable("off", off, "", "switching state (1: off)")
+        self._losses(e, v * i, self._T_heatPort(e))
+
+
+#: how far past the knee [1: A when conducting, V when blocking] the diode's event is
+#: located, so that s < 0 is unambiguous at the event (at s = 0 itself both states hold)
+S_NOISE = 1e-10
+
+
+class IdealDiode(_IdealSwitching):
+    """Ideal diode (MSL Ideal.IdealDiode): the characteristic of ``_IdealSwitching`` with
+    the Boolean mode off = s < 0 (start true, MSL's), switched at a state event (indicator
+    ``s``) located where s has crossed 0 by ``S_NOISE`` (1e-10: a current of 1e-10 A, a
+    voltage of 1e-10 V; the switching instant is late by S_NOISE/|ds/dt|, 3e-12 s in the
+    rectifier of the tests). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0. No smooth form
+    (refused when compiled with smooth=True)."""
+    Vknee = Parameter(0.0, "V", "forward threshold voltage", nonnegative=True)
+
+    @property
+    def _Vknee(self):
+        return self.Vknee
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        super().structure(s)
+        s.mode("off", 1, values=(0, 1), description="switching state (1: blocking)")
+
+    def _off(self, e):
+        off, sa = e.mode("off"), e.state("s")
+        e.mode_update(off, sa < 0)
+        e.indicator("s", ca.if_else(off, sa - S_NOISE, sa + S_NOISE), "1",
+                    "position on the characteristic past the knee by S_NOISE: the diode "
+                    "switches where it crosses 0")
+        return off
+
+
+class IdealOpeningSwitch(_IdealSwitching):
+    """Ideal electrical opener (MSL Ideal.IdealOpeningSwitch): off = control (Boolean
+    input ``control``: true opens p—n); Ron [Ohm] 1e-5, Goff [S] 1e-5. The switching
+    instants are the events of the block driving ``control``; with smooth=True the law is
+    unchanged (smooth between the control's jumps)."""
+    control = BooleanInput("true => switch open, false => p--n connected")
+
+    def _off(self, e):
+        return e.input(self.control)
+
+
+class IdealClosingSwitch(_IdealSwitching):
+    """Ideal electrical closer (MSL Ideal.IdealClosingSwitch): off = not control (Boolean
+    input ``control``: true connects p—n); Ron [Ohm] 1e-5, Goff [S] 1e-5."""
+    control = BooleanInput("true => p--n connected, false => switch open")
+
+    def _off(self, e):
+        return 1 - e.input(self.control)
+
+
+# ---- two-ports ------------------------------------------------------------------------------
+class TwoPort(Component):
+    """Two pin pairs (MSL Interfaces.TwoPort): v1 = p1.v − n1.v, i1 = p1.i = −n1.i [V, A]
+    on the primary side, v2, i2 likewise on the secondary side."""
+    p1 = PositivePin("positive pin of the left port")
+    n1 = NegativePin("negative pin of the left port")
+    p2 = PositivePin("positive pin of the right port")
+    n2 = NegativePin("negative pin of the right port")
+
+    def _port(self, e, k, i=None):
+        """(v_k, i_k) of port k = 1, 2: i_k is ``i`` if given, else an unknown."""
+        p, n = (self.p1, self.n1) if k == 1 else (self.p2, self.n2)
+        if i is None:
+            i = e.flow_of(p)
+        else:
+            e.flow(p, i)
+        e.flow(n, -i)
+        return e.potential(p) - e.potential(n), i
+
+    def _record(self, e, v1, i1, v2, i2):
+        for name, value, unit in (("v1", v1, "V"), ("i1", i1, "A"), ("v2", v2, "V"),
+                                  ("i2", i2, "A")):
+            e.variable(name, value, unit, f"{'voltage drop' if unit == 'V' else 'current'} "
+                                          f"of port {name[1]}")
+
+
+class IdealTransformer(TwoPort):
+    """Ideal transformer core (MSL Ideal.IdealTransformer): v1 = n·v2 and the magnetization
+    current im1 = i1 + i2/n [A]; without magnetization (option ``considerMagnetization``
+    False, MSL's default) im1 = 0, so i1 = −i2/n and the power v1·i1 + v2·i2 = 0 exactly;
+    with it, v1 = Lm1·der(im1), im1 a state (start ``im1_start``, 0). n [1] turns ratio
+    primary:secondary voltage, Lm1 [H] magnetization inductance w.r.t. the primary side."""
+    options = {"considerMagnetization": False}
+    n = Parameter(1.0, "1", "turns ratio primary:secondary voltage")
+    Lm1 = Parameter(1.0, "H", "magnetization inductance w.r.t. primary side", positive=True)
+
+    def __init__(self, name: str | None = None, *, im1_start=0.0, **params):
+        super().__init__(name, **params)
+        self.__dict__["im1_start"] = _start(im1_start, f"{type(self).__name__}: im1_start")
+
+    def structure(self, s):
+        if self.considerMagnetization:
+            s.state("im1", self.im1_start, "A", "magnetization current w.r.t. primary side")
+
+    def physics(self, e):
+        v2, i2 = self._port(e, 2)
+        im1 = e.state("im1") if self.considerMagnetization else 0.0
+        v1, i1 = self._port(e, 1, im1 - i2 / self.n)
+        e.residual(v1 - self.n * v2)
+        if self.considerMagnetization:
+            e.derivative(im1, v1 / self.Lm1)
+        self._record(e, v1, i1, v2, i2)
+        e.variable("im1", im1, "A", "magnetization current w.r.t. primary side")
+        e.variable("psim1", self.Lm1 * im1, "Wb", "magnetic flux w.r.t. primary side")
+
+
+class Gyrator(TwoPort):
+    """Gyrator (MSL Basic.Gyrator): i1 = G2·v2, i2 = −G1·v1 [A]; G1, G2 [S] the primary and
+    secondary gyration conductances (1). With G1 = G2 it is lossless: v1·i1 + v2·i2 = 0."""
+    G1 = Parameter(1.0, "S", "primary gyration conductance")
+    G2 = Parameter(1.0, "S", "secondary gyration conductance")
+
+    def physics(self, e):
+        v1 = e.potential(self.p1) - e.potential(self.n1)
+        v2 = e.potential(self.p2) - e.potential(self.n2)
+        self._port(e, 1, self.G2 * v2)
+        self._port(e, 2, -self.G1 * v1)
+        self._record(e, v1, self.G2 * v2, v2, -self.G1 * v1)
+
+
+class NonlinearResistor(OnePort):
+    """Chua's resistor (MSL Electrical.Analog.Examples.Utilities.NonlinearResistor): the
+    piecewise-linear i = Ga·v for |v| ≤ Ve, Gb·(v ∓ Ve) ± Ga·Ve outside [A]; Ga, Gb [S]
+    inner and outer conductances, Ve [V] the inner range limit (MSL gives no defaults;
+    these are ChuaCircuit's). The law is continuous, its kinks at v = ±Ve are integrated
+    across (no modes: a crossing there would change nothing)."""
+    Ga = Parameter(-0.757576, "S", "conductance in inner voltage range")
+    Gb = Parameter(-0.409091, "S", "conductance in outer voltage range")
+    Ve = Parameter(1.0, "V", "inner voltage range limit", positive=True)
+
+    def physics(self, e):
+        v = self._v(e)
+        i = ca.if_else(v < -self.Ve, self.Gb * (v + self.Ve) - self.Ga * self.Ve,
+                       ca.if_else(v > self.Ve, self.Gb * (v - self.Ve) + self.Ga * self.Ve,
+                                  self.Ga * v))
+        self._record(e, v, self._current(e, i))
+
+
+class IdealOpAmpLimited(Component):
+    """Ideal operational amplifier with limitation (MSL Ideal.IdealOpAmpLimited): no input
+    or supply currents; an auxiliary s [1] (algebraic unknown) with vin = in_p.v − in_n.v =
+    (s + 1 if s < −1, s − 1 if s > 1, else 0) [V] and out.v = VMin.v if s < −1, VMax.v if
+    s > 1, else (VMax.v − VMin.v)·s/2 + (VMax.v + VMin.v)/2: a nullor (vin = 0) while the
+    output lies between the supply pins, the output at a supply pin (vin ≠ 0) otherwise.
+    Both laws are continuous in s; their kinks are integrated across. Records vin, s."""
+    in_p = PositivePin("positive pin of the input port")
+    in_n = NegativePin("negative pin of the input port")
+    out = PositivePin("output pin")
+    VMax = PositivePin("positive output voltage limitation")
+    VMin = NegativePin("negative output voltage limitation")
+
+    def structure(self, s):
+        s.algebraic("s", 0.0, "1", "auxiliary variable")
+
+    def physics(self, e):
+        sa = e.state("s")
+        for pin in (self.in_p, self.in_n, self.VMax, self.VMin):
+            e.flow(pin, 0.0)
+        e.flow_of(self.out)
+        vin = e.potential(self.in_p) - e.potential(self.in_n)
+        vmax, vmin = e.potential(self.VMax), e.potential(self.VMin)
+        e.residual(vin - ca.if_else(sa < -1, sa + 1, ca.if_else(sa > 1, sa - 1, 0.0)))
+        e.residual(e.potential(self.out) - ca.if_else(
+            sa < -1, vmin, ca.if_else(sa > 1, vmax, (vmax - vmin) * sa / 2 + (vmax + vmin) / 2)))
+        e.variable("vin", vin, "V", "input voltage")
+        e.variable("s", sa, "1", "auxiliary variable")

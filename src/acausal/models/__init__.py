@@ -28,12 +28,12 @@ no compiler or simulation imports.
                         PreLoad (ElastoGap)
     gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     circuits            CauerLowPassAnalog: MSL's Cauer low-pass filter (capacitor loops:
-                        compiled with index_reduction=True)
+                        compiled with index_reduction=True); ChuaCircuit: MSL's Chua circuit
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
-from .circuits import CauerLowPassAnalog
+from .circuits import CauerLowPassAnalog, ChuaCircuit
 from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
@@ -57,4 +57,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
-           "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog"]
+           "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
+           "ChuaCircuit"]

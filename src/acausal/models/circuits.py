@@ -31,3 +31,24 @@ class CauerLowPassAnalog(Model):
                      (self.C1.n, self.C5.n), (self.R2.n, self.C1.n), (self.R1.p, self.V.p),
                      (self.V.n, self.G.p)]:
             self.connect(a, b)
+
+
+class ChuaCircuit(Model):
+    """MSL's Electrical.Analog.Examples.ChuaCircuit: Chua's chaotic circuit, L (18 H, i = 0)
+    in series with Ro (12.5 mΩ) from the node of C2 (100 F, v = 0) to ground, the
+    Conductor G (0.565 S) to the node of C1 (10 F, v = 4 V) and the NonlinearResistor Nr
+    (Ga = −0.757576 S, Gb = −0.409091 S, Ve = 1 V); StopTime 50000 s."""
+
+    def __init__(self, name=None):
+        super().__init__(name)
+        self.L = el.Inductor(L=18.0)
+        self.Ro = el.Resistor(R=12.5e-3)
+        self.G = el.Conductor(G=0.565)
+        self.C1 = el.Capacitor(C=10.0, v_start=4.0)
+        self.C2 = el.Capacitor(C=100.0)
+        self.Nr = el.NonlinearResistor(Ga=-0.757576, Gb=-0.409091, Ve=1.0)
+        self.Gnd = el.Ground()
+        for a, b in [(self.L.n, self.Ro.p), (self.C2.p, self.G.p), (self.L.p, self.G.p),
+                     (self.G.n, self.Nr.p), (self.C1.p, self.G.n), (self.Ro.n, self.Gnd.p),
+                     (self.C2.n, self.Gnd.p), (self.Gnd.p, self.C1.n), (self.Gnd.p, self.Nr.n)]:
+            self.connect(a, b)
