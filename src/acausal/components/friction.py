@@ -52,7 +52,7 @@ import numpy as np
 
 from ..core import Component, Parameter
 from ..errors import ParameterError
-from .interfaces import Axis
+from .interfaces import Axis, PartialElementaryConditionalHeatPortWithoutT
 
 UNKNOWN, FREE, FORWARD, STUCK, BACKWARD = 3, 2, 1, 0, -1
 MODES = (BACKWARD, STUCK, FORWARD, FREE, UNKNOWN)
@@ -91,7 +91,7 @@ def table_value(tab: np.ndarray, x):
     return y
 
 
-class PartialFriction(Component):
+class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
     """Coulomb friction between two surfaces with MSL's mode machine (see the module).
 
     A subclass names its table (``table_name``, a constructor keyword with MSL's default
@@ -254,7 +254,7 @@ class PartialFriction(Component):
         e.variable(f"{x.f}0_max", tau0_max, x.f_unit,
                    f"maximum friction {x.flow} for {x.v}_relfric=0 and locked")
         e.variable("free", free, "", "= true, if frictional element is not active")
-        e.variable("lossPower", tau * w, "W", "loss power leaving component via heatPort")
+        self._loss_power(e, tau * w)
 
 
 class SupportedFriction(PartialFriction):
