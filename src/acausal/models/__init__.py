@@ -29,6 +29,8 @@ no compiler or simulation imports.
     gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     circuits            CauerLowPassAnalog: MSL's Cauer low-pass filter (capacitor loops:
                         compiled with index_reduction=True)
+    eddy_current_brakes RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake: MSL's
+                        EddyCurrentBrake examples (a brake heating a heat capacitor)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -38,6 +40,7 @@ from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
+from .eddy_current_brakes import RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake
 from .drivetrains import Drivetrain
 from .elastic_bearing import ElasticBearing
 from .event_blocks import SampledPController, Thermostat
@@ -57,4 +60,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
-           "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog"]
+           "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
+           "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake"]
