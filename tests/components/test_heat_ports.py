@@ -61,6 +61,29 @@ def test_a_braked_flywheel_heats_its_brake_until_it_sticks():
     assert abs(heat[-1] - total) < 1e-8 * total
 
 
+def test_a_brake_engaged_by_a_normal_force_rising_from_zero_slides_at_once():
+    """f_normalized = sin(2π t) from t = 0 (MSL's HeatLosses drives its brake so): fn = 0 is
+    free (MSL's relation fn <= 0, which changes at events only), fn > 0 an event right after
+    0; the flywheel (J = 1 kg.m², 10 rad/s) slides against tau = mu·fn_max·sin(2π t) while
+    fn > 0: w(t) = 10 − 5(1 − cos 2πt)/(2π), free again from 0.5 s; heat = kinetic energy lost."""
+    model = acausal.Model("sine_brake")
+    model.flywheel, model.brake = rot.Inertia(J=1.0), rot.Brake(fn_max=10.0, useHeatPort=True)
+    model.cap, model.sine = th.HeatCapacitor(C=1.0), sig.Sine(f=1.0)
+    for a, b in [(model.flywheel.flange_b, model.brake.flange_a),
+                 (model.brake.heatPort, model.cap.port), (model.sine.y, model.brake.f_normalized)]:
+        model.connect(a, b)
+    t = np.linspace(0.0, 0.75, 16)
+    res = acausal.compile(model).simulate(0.75, t=t, x0={"flywheel.w": 10.0}, **TIGHT)
+    at = np.searchsorted(res.t, t, side="right") - 1
+    w = 10.0 - 5.0 * (1 - np.cos(2 * np.pi * np.minimum(t, 0.5))) / (2 * np.pi)
+    np.testing.assert_allclose(res["flywheel.w"][at], w, atol=1e-8)
+    np.testing.assert_allclose(res["cap.T"] - T0, 0.5 * (100.0 - res["flywheel.w"] ** 2),
+                               atol=1e-8 * 50.0)
+    modes = [(ev.time, ev.modes["brake.mode"][1]) for ev in res.events if "brake.mode" in ev.modes]
+    assert [m for _, m in modes] == [2.0, 1.0, 2.0] and modes[1][0] < 1e-9
+    assert abs(modes[2][0] - 0.5) < 1e-9
+
+
 def test_a_clutch_heats_its_capacitor_by_the_energy_lost_while_it_slips():
     """Two inertias (1 and 3 kg.m², 40 and 0 rad/s) joined by a Clutch engaged from t = 0.2 s
     until they lock: the heat equals the kinetic energy lost, ½ J1 w1² + ½ J2 w2² below its

@@ -169,8 +169,11 @@ class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
         w, a = self._relfric(e)
         tau0 = self._sliding(e, 0.0)
         tau0_max = self.peak * tau0
-        free = self._free(e)
-        free = ca.SX(0) if free is None else free
+        free_now = self._free(e)
+        free_now = ca.SX(0) if free_now is None else free_now
+        # MSL's relation free = fn <= 0 changes at events only: between them the mode says
+        # it (an element engaged by a continuous fn stays free until the event at fn = 0)
+        free = ca.logic_or(mode == FREE, ca.logic_and(mode == UNKNOWN, free_now))
         fwd = ca.logic_or(mode == FORWARD, start_fwd)
         bwd = ca.logic_or(mode == BACKWARD, start_bwd)
         forward, backward = tau - self._sliding(e, w), tau + self._sliding(e, -w)
@@ -200,7 +203,7 @@ class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
         fwd_ok, bwd_ok = self._can_slide(e)
         breaks_fwd = ca.logic_and(ca.logic_and(mode == STUCK, tau > tau0_max), fwd_ok)
         breaks_bwd = ca.logic_and(ca.logic_and(mode == STUCK, tau < -tau0_max), bwd_ok)
-        active = ca.logic_not(free)
+        active = ca.logic_not(free_now)
         e.mode_update(start_fwd, ca.logic_and(active, ca.logic_or(breaks_fwd, ca.logic_and(
             start_fwd, ca.logic_and(mode == FORWARD, w <= W_NOISE)))))
         e.mode_update(start_bwd, ca.logic_and(active, ca.logic_or(breaks_bwd, ca.logic_and(
@@ -215,7 +218,7 @@ class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
                                                                       STUCK))
         from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,
                                                                          STUCK))
-        e.mode_update(mode, ca.if_else(free, FREE, ca.if_else(
+        e.mode_update(mode, ca.if_else(free_now, FREE, ca.if_else(
             mode == STUCK, from_stuck, ca.if_else(mode == FORWARD, from_forward, ca.if_else(
                 mode == BACKWARD, from_backward, sign_w)))))
 
@@ -325,7 +328,10 @@ class NormalForceFriction(PartialFriction):
         if e.smooth:
             mu = table_value(self.table, ca.fabs(w)) * self._smooth_sign(w)
         else:
-            e.indicator("fn", fn, "N", "normal force")
+            # positive exactly when engaged (fn > 0): fn = 0 counts as free, so that fn
+            # rising from 0 is an event
+            e.indicator("fn", ca.if_else(fn > 0, fn, fn - self.fn_max - 1.0), "N",
+                        "normal force, below 0 when free (fn <= 0)")
             mu = ca.if_else(e.mode("mode") == BACKWARD, -table_value(self.table, -w),
                             table_value(self.table, w))
         e.variable("mu", mu, "1", "friction coefficient")
