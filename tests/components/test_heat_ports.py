@@ -11,7 +11,8 @@ from acausal.components import rotational as rot
 from acausal.components import signals as sig
 from acausal.components import thermal as th
 from acausal.components import translational as tr
-from acausal.models import RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake
+from acausal.models import (RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake,
+                            TranslationalHeatLosses)
 from acausal.models.eddy_current_brakes import START_ROTATIONAL, START_TRANSLATIONAL
 
 TIGHT = dict(rtol=1e-10, atol=1e-12)
@@ -139,3 +140,48 @@ def test_eddy_current_brake_with_the_ramped_excitation_of_the_later_msl():
     T = res["heatCapacitor.T"]
     np.testing.assert_allclose(res["eddyCurrentTorque.w_normalized"],
                                res["inertia.w"] / (10.0 * (1 + 3.92e-3 * (T - T0))), rtol=1e-12)
+
+
+HEAT_LOSSES_SIGNALS = ("damper.s_rel", "damper.v_rel", "massWithStopAndFriction.s",
+                       "massWithStopAndFriction.v", "springDamper.s_rel", "springDamper.v_rel",
+                       "springDamper1.s_rel", "springDamper1.v_rel")
+HEAT_LOSSES_MODES = ("brake.mode", "massWithStopAndFriction.mode", "supportFriction.mode")
+STOP_HIT = 0.4285           # s: massWithStopAndFriction reaches its stop (see the model)
+
+
+def _clusters(times):
+    """The first time of each run of mode changes closer than 1e-4 s to the previous one (a
+    start from rest settles in a few changes: the reference's 2 → 1 → 0, acausal's 2 → −1 → 0
+    within 1e-6 s)."""
+    times = list(times)
+    return [x for k, x in enumerate(times) if k == 0 or x - times[k - 1] > 1e-4]
+
+
+def test_translational_heat_losses_matches_the_msl_reference_until_the_stop(reference_result):
+    """MSL's Translational.Examples.HeatLosses: every compared signal within 2e-3 of its peak
+    and every mode change within 1e-4 s of the reference's, up to the stop's impact (after it
+    the reference keeps springDamper1's relative states, see the model); the convection takes
+    the sum of the seven elements' lossPower: solid.T = 298.15 K + Σ lossPower/20 W/K."""
+    ref = reference_result("MAP-LIB_ReferenceResults",
+                           "Modelica.Mechanics.Translational.Examples.HeatLosses")
+    t = ref["time"]
+    res = acausal.compile(TranslationalHeatLosses()).simulate(
+        float(t[-1]), t=t, x0=TranslationalHeatLosses.START, rtol=1e-10, atol=1e-12)
+    at = np.searchsorted(res.t, t, side="right") - 1
+    before = t < STOP_HIT
+    for name in HEAT_LOSSES_SIGNALS:
+        err = np.max(np.abs(res[name][at][before] - ref[name][before]))
+        assert err < 2e-3 * np.max(np.abs(ref[name])), (name, err)
+    for name in HEAT_LOSSES_MODES:
+        ref_changes = t[1:][(np.diff(ref[name]) != 0) & (t[1:] < STOP_HIT)]
+        ours = [ev.time for ev in res.events
+                if name in ev.modes and ev.modes[name][0] != ev.modes[name][1]
+                and 0 < ev.time < STOP_HIT]
+        ours, theirs = _clusters(ours), _clusters(ref_changes)
+        assert len(ours) == len(theirs), (name, ours, theirs)
+        assert np.max(np.abs(np.array(ours) - theirs), initial=0) < 1e-4, name
+    losses = sum(res[f"{c}.lossPower"] for c in (
+        "damper", "springDamper", "elastoGap", "supportFriction", "brake",
+        "massWithStopAndFriction", "springDamper1"))
+    np.testing.assert_allclose(res["convection.Q_flow"], losses, atol=1e-9)
+    np.testing.assert_allclose(res["convection.solid.T"], 298.15 + losses / 20.0, atol=1e-10)

@@ -31,6 +31,8 @@ no compiler or simulation imports.
                         compiled with index_reduction=True)
     eddy_current_brakes RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake: MSL's
                         EddyCurrentBrake examples (a brake heating a heat capacitor)
+    heat_losses         TranslationalHeatLosses: MSL's Translational HeatLosses (every
+                        dissipating element's heatPort to one convection)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -40,12 +42,13 @@ from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
-from .eddy_current_brakes import RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake
 from .drivetrains import Drivetrain
+from .eddy_current_brakes import RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake
 from .elastic_bearing import ElasticBearing
 from .event_blocks import SampledPController, Thermostat
 from .friction import RotationalFriction
 from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
+from .heat_losses import TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .oscillators import Oscillator
@@ -61,4 +64,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
-           "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake"]
+           "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
+           "TranslationalHeatLosses"]
