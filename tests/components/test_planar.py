@@ -612,12 +612,6 @@ def test_state_select_is_a_hint_that_changes_nothing():
 def test_options_not_available_yet_accept_only_their_off_value():
     assert P.Damper(enableAssert=False, useHeatPort=False).enableAssert is False
     assert P.Spring(enableAssert=False).enableAssert is False     # a warning: no effect
-    with pytest.raises(ParameterError) as err:
-        P.SpringDamper(useHeatPort=True)
-    assert str(err.value) == ("SpringDamper: useHeatPort=True is not available yet (the "
-                              "heatPort of mechanical components; the thermal domain is "
-                              "acausal.components.thermal); leave useHeatPort=False, the "
-                              "default")
     with pytest.raises(ParameterError, match=r"Damper: enableAssert=True is not available "
                                              r"yet .*run-time assertions"):
         P.Damper(enableAssert=True)

@@ -227,13 +227,15 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         return port_flows(ws, tree, explicit, lam_tree, lam)
 
     cut_values = ca.SX(0, 1)
+    net_alg = _stack(network.alg)       # a heat flow may carry accelerations (friction losses)
     if ws.cut_flow_sym:
         _, flow_of = flows()
         cut_values = _stack([flow_of[p] for p in ws.cut_flow_sym])
         if ca.depends_on(cut_values, cut):
             raise StructureError("force sensors measure each other in a loop; not supported")
-        zdot, g_alg, y_out = ca.substitute([zdot, g_alg, y_out], [cut], [cut_values])
-    zdot, g_alg, y_out = ca.substitute([zdot, g_alg, y_out], sub_from, sub_to)
+        zdot, g_alg, y_out, net_alg = ca.substitute([zdot, g_alg, y_out, net_alg], [cut],
+                                                    [cut_values])
+    zdot, g_alg, y_out, net_alg = ca.substitute([zdot, g_alg, y_out, net_alg], sub_from, sub_to)
 
     def final(exprs: ca.SX) -> ca.SX:
         """Expressions of the motion as recorded: in (t, x, z, u, p)."""
@@ -270,7 +272,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     algebraics = [a for a in ws.algebraics if not has_network_ports(a.owner)]
     z = _vc(motion.alg_vars, _stack([a.sym for a in algebraics]),
             _stack([s for s, _, _ in network.z]))
-    alg = _vc(motion.alg_res, g_alg, _stack(network.alg))
+    alg = _vc(motion.alg_res, g_alg, net_alg)
     events = _state_events(ws, final, x, _vc(t, x, z, u), p)
     resolve.check([ode, alg, y_out, events.indicator, events.mode_update,
                    events.reinit_values])

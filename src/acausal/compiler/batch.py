@@ -49,6 +49,8 @@ class _TraceBuilder(PhysicsBuilder):
 
     def flow(self, port, value):
         self._mine(port)
+        if port.domain.network:         # a heat port's flow goes to the network equations
+            raise _NotBatchable
         self.out.append(("flow", port.name, ca.vec(ca.SX(value))))
 
     def kinetic_energy(self, T):

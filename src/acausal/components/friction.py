@@ -50,9 +50,9 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
-from ..core import Component, Parameter
+from ..core import Parameter
 from ..errors import ParameterError
-from .interfaces import Axis
+from .interfaces import Axis, PartialElementaryConditionalHeatPortWithoutT
 
 UNKNOWN, FREE, FORWARD, STUCK, BACKWARD = 3, 2, 1, 0, -1
 MODES = (BACKWARD, STUCK, FORWARD, FREE, UNKNOWN)
@@ -91,7 +91,7 @@ def table_value(tab: np.ndarray, x):
     return y
 
 
-class PartialFriction(Component):
+class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
     """Coulomb friction between two surfaces with MSL's mode machine (see the module).
 
     A subclass names its table (``table_name``, a constructor keyword with MSL's default
@@ -169,8 +169,11 @@ class PartialFriction(Component):
         w, a = self._relfric(e)
         tau0 = self._sliding(e, 0.0)
         tau0_max = self.peak * tau0
-        free = self._free(e)
-        free = ca.SX(0) if free is None else free
+        free_now = self._free(e)
+        free_now = ca.SX(0) if free_now is None else free_now
+        # MSL's relation free = fn <= 0 changes at events only: between them the mode says
+        # it (an element engaged by a continuous fn stays free until the event at fn = 0)
+        free = ca.logic_or(mode == FREE, ca.logic_and(mode == UNKNOWN, free_now))
         fwd = ca.logic_or(mode == FORWARD, start_fwd)
         bwd = ca.logic_or(mode == BACKWARD, start_bwd)
         forward, backward = tau - self._sliding(e, w), tau + self._sliding(e, -w)
@@ -200,7 +203,7 @@ class PartialFriction(Component):
         fwd_ok, bwd_ok = self._can_slide(e)
         breaks_fwd = ca.logic_and(ca.logic_and(mode == STUCK, tau > tau0_max), fwd_ok)
         breaks_bwd = ca.logic_and(ca.logic_and(mode == STUCK, tau < -tau0_max), bwd_ok)
-        active = ca.logic_not(free)
+        active = ca.logic_not(free_now)
         e.mode_update(start_fwd, ca.logic_and(active, ca.logic_or(breaks_fwd, ca.logic_and(
             start_fwd, ca.logic_and(mode == FORWARD, w <= W_NOISE)))))
         e.mode_update(start_bwd, ca.logic_and(active, ca.logic_or(breaks_bwd, ca.logic_and(
@@ -215,7 +218,7 @@ class PartialFriction(Component):
                                                                       STUCK))
         from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,
                                                                          STUCK))
-        e.mode_update(mode, ca.if_else(free, FREE, ca.if_else(
+        e.mode_update(mode, ca.if_else(free_now, FREE, ca.if_else(
             mode == STUCK, from_stuck, ca.if_else(mode == FORWARD, from_forward, ca.if_else(
                 mode == BACKWARD, from_backward, sign_w)))))
 
@@ -254,7 +257,7 @@ class PartialFriction(Component):
         e.variable(f"{x.f}0_max", tau0_max, x.f_unit,
                    f"maximum friction {x.flow} for {x.v}_relfric=0 and locked")
         e.variable("free", free, "", "= true, if frictional element is not active")
-        e.variable("lossPower", tau * w, "W", "loss power leaving component via heatPort")
+        self._loss_power(e, tau * w)
 
 
 class SupportedFriction(PartialFriction):
@@ -325,7 +328,10 @@ class NormalForceFriction(PartialFriction):
         if e.smooth:
             mu = table_value(self.table, ca.fabs(w)) * self._smooth_sign(w)
         else:
-            e.indicator("fn", fn, "N", "normal force")
+            # positive exactly when engaged (fn > 0): fn = 0 counts as free, so that fn
+            # rising from 0 is an event
+            e.indicator("fn", ca.if_else(fn > 0, fn, fn - self.fn_max - 1.0), "N",
+                        "normal force, below 0 when free (fn <= 0)")
             mu = ca.if_else(e.mode("mode") == BACKWARD, -table_value(self.table, -w),
                             table_value(self.table, w))
         e.variable("mu", mu, "1", "friction coefficient")

@@ -20,14 +20,11 @@ from dataclasses import dataclass
 
 import casadi as ca
 
-from ..core import Component, Parameter, Unavailable
+from ..core import Component, ConditionalPort, HeatPort_a, Parameter, RealInput
 
-#: MSL's ``useHeatPort`` (PartialElementaryConditionalHeatPort): a dissipating element's heat
-#: port, only False (MSL's default: the heat goes nowhere) until acausal has a thermal domain.
-USE_HEAT_PORT = Unavailable(False, "the heatPort of mechanical components; the thermal "
-                                   "domain is acausal.components.thermal")
-
-__all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS", "USE_HEAT_PORT",
+__all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS",
+           "PartialElementaryConditionalHeatPortWithoutT", "PartialElementaryConditionalHeatPort",
+           "linearTemperatureDependency", "PartialEddyCurrent",
            "PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
            "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law",
            "Position", "Speed", "Accelerate", "Move", "ConstantSpeed"]
@@ -56,6 +53,76 @@ ROTATIONAL_AXIS = Axis("phi", "w", "tau", "rad", "rad/s", "rad/s2", "N.m",
 
 
 # =========================================================================================
+# The conditional heat port of a dissipating element
+# =========================================================================================
+class PartialElementaryConditionalHeatPortWithoutT(Component):
+    """MSL's Thermal.HeatTransfer.Interfaces.PartialElementaryConditionalHeatPortWithoutT:
+    the element records ``lossPower`` [W] (> 0 when heat flows out of the component); with
+    ``useHeatPort=True`` the ``heatPort`` (HeatPort_a) exists, must be connected, and takes
+    it: heatPort.Q_flow = −lossPower (the heat leaves the component into the thermal
+    network). With False (MSL's default) the heat goes nowhere. The element's law does not
+    depend on the port's temperature."""
+    options = {"useHeatPort": False}
+    heatPort = ConditionalPort(
+        HeatPort_a("optional port to which dissipated losses are transported in form of heat",
+                   required=True), "useHeatPort")
+
+    def _loss_power(self, e, loss) -> None:
+        """Record lossPower = ``loss`` [W] and, with the heat port, heatPort.Q_flow = −loss."""
+        if self.useHeatPort:
+            e.flow(self.heatPort, -loss)
+        e.variable("lossPower", loss, "W", "loss power leaving component via heatPort (> 0, "
+                                           "if heat is flowing out of component)")
+
+
+class PartialElementaryConditionalHeatPort(PartialElementaryConditionalHeatPortWithoutT):
+    """MSL's Thermal.HeatTransfer.Interfaces.PartialElementaryConditionalHeatPort: as
+    PartialElementaryConditionalHeatPortWithoutT, and the element's law may depend on its
+    temperature TheatPort [K] = heatPort.T with the port, the parameter T (293.15 K) without
+    it (recorded)."""
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
+
+    def _TheatPort(self, e):
+        """TheatPort [K], recorded."""
+        T = e.potential(self.heatPort) if self.useHeatPort else self.T
+        e.variable("TheatPort", T, "K", "temperature of heatPort")
+        return T
+
+
+def linearTemperatureDependency(RRef, TRef, alpha20, T):
+    """MSL's Electrical.Machines.Thermal.linearTemperatureDependency: a value RRef at TRef [K]
+    at the temperature T [K], RRef·(1 + alphaRef·(T − TRef)) with the coefficient alpha20
+    [1/K] at 20 °C converted to TRef (convertAlpha): alphaRef = alpha20/(1 + alpha20·(TRef −
+    293.15))."""
+    return RRef * (1 + alpha20 / (1 + alpha20 * (TRef - 293.15)) * (T - TRef))
+
+
+class PartialEddyCurrent(PartialElementaryConditionalHeatPort):
+    """The law shared by MSL's Translational.Sources.EddyCurrentForce and
+    Rotational.Sources.EddyCurrentTorque (Kloss' equation): the braking flow
+    2·nominal·excitation²·x/(1 + x²), x = speed/(speed_nominal·linearTemperatureDependency(1,
+    TRef, alpha20, TheatPort)): the speed of maximum braking moves with the disc's
+    temperature. lossPower = flow·speed [W]. The excitation is ``constantExcitation`` or, with
+    ``useExcitationInput``, the input ``excitation``."""
+    options = {"useExcitationInput": False}
+    constantExcitation = Parameter(1.0, "1", "excitation=1 to reach maximum force or torque")
+    TRef = Parameter(293.15, "K", "reference temperature", positive=True)
+    alpha20 = Parameter(0.0, "1/K", "temperature coefficient of material")
+    excitation = ConditionalPort(RealInput("excitation"), "useExcitationInput")
+
+    def _braking(self, e, nominal, speed, speed_nominal):
+        """(the braking flow [N, N.m], the normalized speed x)."""
+        excitation = (e.input(self.excitation) if self.useExcitationInput
+                      else self.constantExcitation)
+        x = speed / (speed_nominal * linearTemperatureDependency(1, self.TRef, self.alpha20,
+                                                                  self._TheatPort(e)))
+        flow = 2 * nominal * excitation ** 2 * x / (1 + x * x)
+        self._loss_power(e, flow * speed)
+        return flow, x
+
+
+# =========================================================================================
 # Two flanges
 # =========================================================================================
 class PartialTwoFlanges(Component):
@@ -74,7 +141,8 @@ class PartialCompliant(PartialTwoFlanges):
 
     Records ``s_rel``/``phi_rel``, ``v_rel``/``w_rel``, ``f``/``tau`` (and ``a_rel`` when
     ``records_a_rel``, as MSL's rotational PartialCompliantWithRelativeStates), and
-    ``lossPower`` [W] when ``loss_power`` gives one. The domain names the law
+    ``lossPower`` [W] when ``loss_power`` gives one (a dissipating element also extends
+    PartialElementaryConditionalHeatPortWithoutT). The domain names the law
     (``force(s_rel, v_rel)``, ``torque(phi_rel, w_rel)``) and maps ``flange_b_flow`` to it.
     ``rel_nominal`` gives the relative position's nominal (MSL's
     PartialCompliantWithRelativeStates: ``s_nominal``, ``phi_nominal``).
@@ -114,7 +182,7 @@ class PartialCompliant(PartialTwoFlanges):
                        f"relative {x.acceleration} (= der({x.v}_rel))")
         e.variable(x.f, flow, x.f_unit, f"{x.flow} between flanges (= flange_b.{x.f})")
         if loss is not None:
-            e.variable("lossPower", loss, "W", "loss power leaving component via heatPort")
+            self._loss_power(e, loss)
 
 
 # =========================================================================================

@@ -40,8 +40,10 @@ as a separate input ``torque``, as PlanarMechanics 2 (PlanarMechanics 1 had ``fo
 
 MSL options that change nothing here are accepted (``stateSelect``, a hint; Spring's
 ``enableAssert``, a warning); those acausal does not implement yet accept only their "off"
-value (``useHeatPort=False``, Damper's ``enableAssert=False``) and refuse the other with a
-ParameterError saying what is missing. Body's ``enableGravity`` is implemented.
+value (Damper's ``enableAssert=False``) and refuse the other with a ParameterError saying
+what is missing. The dissipating elements (SpringDamper, Damper, LineSpringDamper) have
+MSL's conditional ``heatPort`` (``useHeatPort=True``: heatPort.Q_flow = −lossPower).
+Body's ``enableGravity`` is implemented.
 
 Not here: visualization parameters (animate, color, ...), IdealRolling/slip-based wheels,
 gear components, QuadraticSpeedDependentForce, the prescribed-motion sources. Differences
@@ -59,7 +61,7 @@ from ..core import (Component, ConditionalPort, Frame, Parameter, PortVector, Re
 from ..core.component import who
 from ..core.ports import ROTATIONAL, TRANSLATIONAL
 from ..errors import ParameterError
-from .interfaces import USE_HEAT_PORT
+from .interfaces import PartialElementaryConditionalHeatPortWithoutT
 
 __all__ = [
     # types
@@ -289,7 +291,7 @@ class Spring(PartialXYCompliant):
                 ca.SX(0))
 
 
-class SpringDamper(PartialXYCompliant):
+class SpringDamper(PartialXYCompliant, PartialElementaryConditionalHeatPortWithoutT):
     """PlanarMechanics' linear 2-D spring-damper along the world axes and in rotation:
     f_x = c_x·(s_relx − s_relx0) + d_x·v_relx, f_y = c_y·(s_rely − s_rely0) + d_y·v_rely
     [N],
@@ -299,9 +301,8 @@ class SpringDamper(PartialXYCompliant):
 
     Records v_relx, v_rely [m/s], w_rel [rad/s], tau [N.m] and lossPower [W] =
     d_x·v_relx² + d_y·v_rely² + d_phi·w_rel² (PlanarMechanics leaves out the last term).
-    Options as Spring; ``useHeatPort`` only False (no heat port on mechanical components yet)."""
-    options = {"enableAssert": True, "stateSelect": StateSelect.default,
-               "useHeatPort": USE_HEAT_PORT}
+    Options as Spring; ``useHeatPort``: heatPort.Q_flow = −lossPower."""
+    options = {"enableAssert": True, "stateSelect": StateSelect.default}
     c_x = Parameter(1.0, "N/m", "spring constant in x dir", nonnegative=True)
     c_y = Parameter(1.0, "N/m", "spring constant in y dir", nonnegative=True)
     c_phi = Parameter(1.0e5, "N.m/rad", "spring constant in phi dir", nonnegative=True)
@@ -322,8 +323,8 @@ class SpringDamper(PartialXYCompliant):
         e.variable("v_rely", v_rely, "m/s", "spring velocity in y")
         e.variable("w_rel", w_rel, "rad/s", "spring angular velocity")
         e.variable("tau", tau, "N.m", "torque between frames (= frame_b.t)")
-        e.variable("lossPower", self.d_x * v_relx ** 2 + self.d_y * v_rely ** 2
-                   + self.d_phi * w_rel ** 2, "W", "dissipated power")
+        self._loss_power(e, self.d_x * v_relx ** 2 + self.d_y * v_rely ** 2
+                         + self.d_phi * w_rel ** 2)
 
 
 # ---- line-force elements ----------------------------------------------------------------
@@ -362,18 +363,17 @@ class PartialLineForce(Component):
         self.record(e, length, v, f)
 
 
-class Damper(PartialLineForce):
+class Damper(PartialLineForce, PartialElementaryConditionalHeatPortWithoutT):
     """PlanarMechanics' linear damper acting as a line force between frame_a and frame_b:
     the force f = −d·v [N] (v = der(length)) acts on the origin of frame_b along the line
     from frame_a to frame_b, −f on frame_a. d [N.s/m], default 1. Records length [m], v,
     f [N] (PlanarMechanics' sign: f < 0 when the frames separate) and lossPower = −f·v [W].
-    ``stateSelect`` is accepted (StateSelect); ``enableAssert`` and ``useHeatPort`` only as
-    False, PlanarMechanics' defaults (no run-time assertions or thermal domain yet)."""
+    ``stateSelect`` is accepted (StateSelect); ``useHeatPort``: heatPort.Q_flow = −lossPower;
+    ``enableAssert`` only False, PlanarMechanics' default (no run-time assertions yet)."""
     options = {"stateSelect": StateSelect.default,
                "enableAssert": Unavailable(False, "an assertion stopping the simulation when "
                                                   "the origins come closer than s_small: "
-                                                  "acausal has no run-time assertions"),
-               "useHeatPort": USE_HEAT_PORT}
+                                                  "acausal has no run-time assertions")}
     d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
 
     def tension(self, length, v):
@@ -381,7 +381,7 @@ class Damper(PartialLineForce):
 
     def record(self, e, length, v, tension):
         e.variable("f", -tension, "N", "force on frame_b along the line from frame_a")
-        e.variable("lossPower", tension * v, "W", "dissipated power")
+        self._loss_power(e, tension * v)
 
 
 class LineSpring(PartialLineForce):
@@ -400,7 +400,7 @@ class LineSpring(PartialLineForce):
         e.variable("f", tension, "N", "spring force (tension > 0)")
 
 
-class LineSpringDamper(PartialLineForce):
+class LineSpringDamper(PartialLineForce, PartialElementaryConditionalHeatPortWithoutT):
     """Linear spring and damper in parallel along the line between the origins of frame_a
     and frame_b (not in PlanarMechanics; after MultiBody.Forces.SpringDamperParallel):
     tension f = c·(length − s_rel0) + d·v [N], v = der(length). c [N/m], d [N.s/m]
@@ -414,7 +414,7 @@ class LineSpringDamper(PartialLineForce):
 
     def record(self, e, length, v, tension):
         e.variable("f", tension, "N", "spring-damper force (tension > 0)")
-        e.variable("lossPower", self.d * v ** 2, "W", "dissipated power")
+        self._loss_power(e, self.d * v ** 2)
 
 
 # =========================================================================================

@@ -39,7 +39,7 @@ from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput
 from ..core.ports import ROTATIONAL
 from ..errors import ParameterError
 from . import friction, interfaces
-from .interfaces import ROTATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
+from .interfaces import ROTATIONAL_AXIS, linear_law, quadratic_law
 
 Flange = RotationalFlange
 _EPS = 2.220446049250313e-16      # Modelica.Constants.eps
@@ -57,7 +57,8 @@ __all__ = [
     "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2",
     # sources
     "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
-    "LinearSpeedDependentTorque", "TorqueStep", "Position", "Speed", "Accelerate", "Move",
+    "LinearSpeedDependentTorque", "TorqueStep", "EddyCurrentTorque", "Position", "Speed",
+    "Accelerate", "Move",
     "ConstantSpeed",
     # sensors
     "AngleSensor", "SpeedSensor", "AccSensor", "TorqueSensor", "PowerSensor", "MultiSensor",
@@ -258,10 +259,11 @@ class Spring(PartialCompliant):
         return self.c * (phi_rel - self.phi_rel0)
 
 
-class Damper(PartialCompliantWithRelativeStates):
+class Damper(PartialCompliantWithRelativeStates,
+             interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """Linear 1-D rotational damper: tau = d·w_rel; lossPower = tau·w_rel.
-    d [N.m.s/rad] ≥ 0 (default 0 = MSL start value). useHeatPort only False."""
-    options = {"useHeatPort": USE_HEAT_PORT}
+    d [N.m.s/rad] ≥ 0 (default 0 = MSL start value).
+    useHeatPort: heatPort.Q_flow = −lossPower."""
     batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
 
@@ -272,11 +274,11 @@ class Damper(PartialCompliantWithRelativeStates):
         return tau * w_rel
 
 
-class SpringDamper(PartialCompliantWithRelativeStates):
+class SpringDamper(PartialCompliantWithRelativeStates,
+                   interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """Linear spring and damper in parallel: tau = c·(phi_rel − phi_rel0) + d·w_rel;
     lossPower = d·w_rel². Defaults c = 1e5 N.m/rad, d = 0 N.m.s/rad (MSL's start values).
-    useHeatPort only False."""
-    options = {"useHeatPort": USE_HEAT_PORT}
+    useHeatPort: heatPort.Q_flow = −lossPower."""
     batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0e5, "N.m/rad", "spring constant", nonnegative=True)
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
@@ -357,8 +359,9 @@ class BearingFriction(PartialElementaryTwoFlangesAndSupport2, friction.Supported
     """Coulomb friction in bearings: flange_b.phi = flange_a.phi, the friction torque tau
     [N.m] against the support, tau_pos(w) [N.m] when sliding forward (w ≥ 0, a table
     constructor keyword of rows [w, tau], default [[0, 1]]), up to tau0_max = peak·tau_pos(0)
-    when stuck. Records phi, w, a relative to the support. useHeatPort only False."""
-    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    when stuck. Records phi, w, a relative to the support.
+    useHeatPort: heatPort.Q_flow = −lossPower."""
+    options = {"useSupport": False}
     table_name = "tau_pos"
     table_default = ((0.0, 1.0),)
 
@@ -368,8 +371,9 @@ class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
     """Brake based on Coulomb friction: flange_b.phi = flange_a.phi, the brake torque tau
     [N.m] against the support, mu·cgeo·fn when sliding, fn = fn_max·f_normalized [N];
     ``mu_pos`` (constructor keyword, rows [w, mu], default [[0, 0.5]]); free (mode 2, tau = 0)
-    when fn ≤ 0. fn_max defaults to 1 N (MSL's start value). useHeatPort only False."""
-    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    when fn ≤ 0. fn_max defaults to 1 N (MSL's start value).
+    useHeatPort: heatPort.Q_flow = −lossPower."""
+    options = {"useSupport": False}
     f_normalized = RealInput("normalized force signal 0..1 (normal force = "
                              "fn_max*f_normalized; brake is active if > 0)")
 
@@ -381,8 +385,8 @@ class Clutch(PartialCompliantWithRelativeStates, friction.NormalForceFriction,
     when sliding, fn = fn_max·f_normalized [N]; ``mu_pos`` (constructor keyword, rows
     [w_rel, mu], default [[0, 0.5]]); free (disengaged, mode 2) when fn ≤ 0. Records phi_rel,
     w_rel, a_rel. When it sticks, flange_b's speed is set to flange_a's: flange_b's speed must
-    be a state. useHeatPort only False."""
-    options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
+    be a state. useHeatPort: heatPort.Q_flow = −lossPower."""
+    options = {"stateSelect": StateSelect.prefer}
     f_normalized = RealInput("normalized force signal 0..1 (normal force = "
                              "fn_max*f_normalized; clutch is engaged if > 0)")
 
@@ -406,11 +410,12 @@ class Clutch(PartialCompliantWithRelativeStates, friction.NormalForceFriction,
         e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
 
 
-class _Overrunning(PartialCompliantWithRelativeStates):
+class _Overrunning(PartialCompliantWithRelativeStates,
+                   interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """The mode machine of MSL's OneWayClutch, shared by OneWayClutch and Freewheel (see
     OneWayClutch). A subclass gives ``_engagement(e, w)``: (free, tau0, tau0_max, tau_slide)
     with tau_slide the friction torque [N.m] when sliding forward at w_rel = w."""
-    options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
+    options = {"stateSelect": StateSelect.prefer}
     w_small = Parameter(1.0e10, "rad/s", "relative angular velocity near to zero if jumps due "
                                          "to a reinit(..) of the velocity can occur",
                         positive=True)
@@ -482,7 +487,7 @@ class _Overrunning(PartialCompliantWithRelativeStates):
         e.variable("free", free, "", "= true, if frictional element is not active")
         e.variable("tau0", tau0, "N.m", "friction torque for w=0 and sliding")
         e.variable("tau0_max", tau0_max, "N.m", "maximum friction torque for w=0 and locked")
-        e.variable("lossPower", loss, "W", "loss power leaving component via heatPort")
+        self._loss_power(e, loss)
 
 
 class OneWayClutch(_Overrunning):
@@ -496,7 +501,7 @@ class OneWayClutch(_Overrunning):
     tau0 = mu0·cgeo·fn, mu0 = mu_pos(0), peak2 = max(peak, 1 + 1e-4) (free: up to
     tau0_max_low = 1e-4·mu0·cgeo·fn_max). ``mu_pos``: constructor keyword, rows [w_rel, mu]
     (w_rel ≥ 0), default [[0, 0.5]], linear with extrapolation through the last two rows.
-    fn_max defaults to 1 N (MSL's start value). useHeatPort only False.
+    fn_max defaults to 1 N (MSL's start value). useHeatPort: heatPort.Q_flow = −lossPower.
 
     MSL's equations, on state events: the Boolean modes ``stuck`` and ``startForward`` (both
     start false, as MSL's start values) and the algebraic path parameter ``sa``:
@@ -592,6 +597,28 @@ class Torque(PartialElementaryOneFlangeAndSupport2):
 
     def physics(self, e):
         self._apply_flange_flow(e, -e.input(self.tau))
+
+
+class EddyCurrentTorque(PartialElementaryOneFlangeAndSupport2,
+                        interfaces.PartialEddyCurrent):
+    """MSL's simple rotational eddy current brake: the braking torque tau = flange.tau =
+    2·tau_nominal·excitation²·w_normalized/(1 + w_normalized²) [N.m], w_normalized =
+    w/(w_nominal·(1 + alphaRef·(TheatPort − TRef))) (see interfaces.PartialEddyCurrent);
+    lossPower = tau·w [W], to the heatPort with useHeatPort. Required: tau_nominal [N.m],
+    w_nominal [rad/s] > 0 (MSL gives no defaults); TRef 293.15 K, alpha20 0 1/K, T 293.15 K.
+    Records phi, w (relative to the support), tau, w_normalized, lossPower, TheatPort."""
+    required = ("tau_nominal", "w_nominal")
+    tau_nominal = Parameter(0.0, "N.m", "maximum torque (always braking)")
+    w_nominal = Parameter(1.0, "rad/s", "nominal speed (leads to maximum torque) at "
+                                        "reference temperature", positive=True)
+
+    def physics(self, e):
+        tau, x = self._braking(e, self.tau_nominal, self._rel_speed(e, self.flange),
+                               self.w_nominal)
+        self._apply_flange_flow(e, tau)
+        self._record_relative(e, "s", "v")
+        e.variable("tau", tau, "N.m", "accelerating torque acting at flange (= flange.tau)")
+        e.variable("w_normalized", x, "1", "relative speed w/w_nominal")
 
 
 class Torque2(PartialTwoFlanges):
@@ -875,7 +902,8 @@ class DCMotor(PartialElementaryOneFlangeAndSupport2):
 # =========================================================================================
 # Gears with losses, backlash
 # =========================================================================================
-class LossyGear(PartialElementaryTwoFlangesAndSupport2):
+class LossyGear(PartialElementaryTwoFlangesAndSupport2,
+                interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """Gear with mesh efficiency and bearing friction, stuck or rolling (MSL 4.1's
     LossyGear): phi_a = ratio·phi_b (relative to the support), 0 = flange_b.tau +
     ratio·(flange_a.tau − tauLoss), support.tau = −(flange_a.tau + flange_b.tau).
@@ -921,9 +949,9 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
     tauLossMin_m, tau_aPos, tau_etaPos, startForward, startBackward, locked, ideal, mode,
     lossPower [W] (MSL's interpolation_result matrix is not recorded: its columns are
     eta_mf1, eta_mf2, tau_bf1, tau_bf2). The ideal table gives an IdealGear without events
-    (mode 2, tauLoss 0). useHeatPort only False.
+    (mode 2, tauLoss 0). useHeatPort: heatPort.Q_flow = −lossPower.
     """
-    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    options = {"useSupport": False}
     ratio = Parameter(1.0, "1", "transmission ratio (flange_a.phi/flange_b.phi)", nonzero=True)
     w_smooth = Parameter(1.0e-3, "rad/s", "smooth form (compile(smooth=True)): speed over "
                                           "which the loss changes from rolling backward to "
@@ -993,14 +1021,14 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2):
         if self.ideal:
             e.variable("mode", friction.FREE, "", "mode of friction element")
             e.variable("tauLoss", 0.0, "N.m", "torque loss")
-            e.variable("lossPower", 0.0, "W", "loss power leaving component via heatPort")
+            self._loss_power(e, 0.0)
             return
         tau_loss = e.state("tauLoss")
         e.flow(self.flange_a, tau_loss)
         if self.useSupport:
             e.flow(self.support, -tau_loss)
         tau_a = e.cut_flow(self.flange_a)                      # flange_a.tau
-        e.variable("lossPower", tau_loss * w, "W", "loss power leaving component via heatPort")
+        self._loss_power(e, tau_loss * w)
         if e.smooth:
             self._smooth(e, tau_loss, tau_a, w, a)
         else:
@@ -1123,7 +1151,8 @@ def _smin(x, y, eps):
     return -_smax(-x, -y, eps)
 
 
-class _ElastoBacklash(PartialCompliantWithRelativeStates):
+class _ElastoBacklash(PartialCompliantWithRelativeStates,
+                      interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """Backlash b [rad] in series with a linear spring c [N.m/rad] and damper d [N.m.s/rad]
     (MSL's ElastoBacklash and ElastoBacklash2): no torque while bMin ≤ phi_diff ≤ bMax
     (phi_diff = phi_rel − phi_rel0 [rad], bMax = b/2 = −bMin); in contact the spring torque
@@ -1141,9 +1170,9 @@ class _ElastoBacklash(PartialCompliantWithRelativeStates):
     Smooth form (``e.smooth``): the contacts' kinks rounded over ``phi_smooth`` [rad] (and
     the torques' over c·phi_smooth [N.m]) by √(x² + ε²) maxima, no modes nor events (the
     subclasses give the error). Records tau_c, tau_d, phi_diff (MSL's protected variables),
-    contact, pushing, tau, lossPower [W]. useHeatPort only False.
+    contact, pushing, tau, lossPower [W]. useHeatPort: heatPort.Q_flow = −lossPower.
     """
-    options = {"stateSelect": StateSelect.prefer, "useHeatPort": USE_HEAT_PORT}
+    options = {"stateSelect": StateSelect.prefer}
     c = Parameter(1.0e5, "N.m/rad", "spring constant (c > 0 required)", positive=True)
     d = Parameter(0.0, "N.m.s/rad", "damping constant", nonnegative=True)
     b = Parameter(0.0, "rad", "total backlash", nonnegative=True)

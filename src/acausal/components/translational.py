@@ -40,7 +40,7 @@ from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput
 from ..core.ports import TRANSLATIONAL
 from ..errors import ParameterError
 from . import friction, interfaces
-from .interfaces import TRANSLATIONAL_AXIS, USE_HEAT_PORT, linear_law, quadratic_law
+from .interfaces import TRANSLATIONAL_AXIS, linear_law, quadratic_law
 
 Flange = TranslationalFlange
 
@@ -55,7 +55,7 @@ __all__ = [
     "MassWithStopAndFriction", "ElastoGap", "HardStop", "contact_force",
     # sources
     "Force", "Force2", "ConstantForce", "ForceStep", "LinearSpeedDependentForce",
-    "QuadraticSpeedDependentForce", "Position", "Speed", "Accelerate", "Move",
+    "QuadraticSpeedDependentForce", "EddyCurrentForce", "Position", "Speed", "Accelerate", "Move",
     "ConstantSpeed",
     # sensors
     "PositionSensor", "SpeedSensor", "AccSensor", "ForceSensor", "PowerSensor",
@@ -220,10 +220,10 @@ class Spring(PartialCompliant):
         return self.c * (s_rel - self.s_rel0)
 
 
-class Damper(PartialCompliantWithRelativeStates):
+class Damper(PartialCompliantWithRelativeStates,
+             interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """Linear damper: f = d·v_rel; d [N.s/m] ≥ 0 (default 0 = MSL start value).
-    lossPower = f·v_rel [W]. useHeatPort only False."""
-    options = {"useHeatPort": USE_HEAT_PORT}
+    lossPower = f·v_rel [W]. useHeatPort: heatPort.Q_flow = −lossPower."""
     batch_physics = True       # physics: port motion and parameters only
     d = Parameter(0.0, "N.s/m", "damping constant", nonnegative=True)
 
@@ -234,11 +234,11 @@ class Damper(PartialCompliantWithRelativeStates):
         return f * v_rel
 
 
-class SpringDamper(PartialCompliantWithRelativeStates):
+class SpringDamper(PartialCompliantWithRelativeStates,
+                   interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """Linear spring and damper in parallel: f = c·(s_rel − s_rel0) + d·v_rel;
     c [N/m], d [N.s/m] ≥ 0 (defaults 1 = MSL start values). lossPower = d·v_rel² [W].
-    useHeatPort only False."""
-    options = {"useHeatPort": USE_HEAT_PORT}
+    useHeatPort: heatPort.Q_flow = −lossPower."""
     batch_physics = True       # physics: port motion and parameters only
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
@@ -257,8 +257,8 @@ class SupportFriction(PartialElementaryTwoFlangesAndSupport2, friction.Supported
     """Coulomb friction in the support: flange_b.s = flange_a.s, the friction force f [N]
     against the support, f_pos(v) [N] when sliding forward (v ≥ 0, a table constructor
     keyword of rows [v, f], default [[0, 1]]), up to f0_max = peak·f_pos(0) when stuck.
-    Records s, v, a relative to the support. useHeatPort only False."""
-    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    Records s, v, a relative to the support. useHeatPort: heatPort.Q_flow = −lossPower."""
+    options = {"useSupport": False}
     table_name = "f_pos"
     table_default = ((0.0, 1.0),)
 
@@ -268,8 +268,9 @@ class Brake(PartialElementaryTwoFlangesAndSupport2, friction.SupportedFriction,
     """Brake based on Coulomb friction: flange_b.s = flange_a.s, the brake force f [N]
     against the support, mu·cgeo·fn when sliding, fn = fn_max·f_normalized [N]; ``mu_pos``
     (constructor keyword, rows [v, mu], default [[0, 0.5]]); free (mode 2, f = 0) when
-    fn ≤ 0. fn_max defaults to 1 N (MSL's start value). useHeatPort only False."""
-    options = {"useSupport": False, "useHeatPort": USE_HEAT_PORT}
+    fn ≤ 0. fn_max defaults to 1 N (MSL's start value).
+    useHeatPort: heatPort.Q_flow = −lossPower."""
+    options = {"useSupport": False}
     f_normalized = RealInput("normalized force signal 0..1 (normal force = "
                              "fn_max*f_normalized; brake is active if > 0)")
 
@@ -318,9 +319,8 @@ class MassWithStopAndFriction(PartialRigid, PartialFriction):
     pulls, ``contact_force``): at a stop hit at speed v the mass goes past it by about
     |v|·√(m/(2·c_smooth)) (while it goes in, the limited damping force equals the spring's)
     and comes back nearly at rest; pressed by a force F it stays past it by F/c_smooth.
-    useHeatPort only False.
+    useHeatPort: heatPort.Q_flow = −lossPower.
     """
-    options = {"useHeatPort": USE_HEAT_PORT}
     smax = Parameter(25.0, "m", "right stop for (right end of) sliding mass")
     smin = Parameter(-25.0, "m", "left stop for (left end of) sliding mass")
     m = Parameter(1.0, "kg", "mass", positive=True)
@@ -393,7 +393,8 @@ class MassWithStopAndFriction(PartialRigid, PartialFriction):
                    "flange_b)")
 
 
-class ElastoGap(PartialCompliantWithRelativeStates):
+class ElastoGap(PartialCompliantWithRelativeStates,
+                interfaces.PartialElementaryConditionalHeatPortWithoutT):
     """Spring and damper in parallel with a gap (MSL's ElastoGap): they act only in contact,
     s_rel < s_rel0, and only push.
 
@@ -408,7 +409,7 @@ class ElastoGap(PartialCompliantWithRelativeStates):
     MSL's noEvent expressions), not switched on the mode: while the integrator runs ahead
     of a crossing not located yet, the bodies keep touching as they should (switched off,
     two plates preloaded by a spring would ring undamped for the rest of the run). The
-    limit of f_d has no events (MSL: noEvent). useHeatPort only False.
+    limit of f_d has no events (MSL: noEvent). useHeatPort: heatPort.Q_flow = −lossPower.
 
     Smooth form (``compile(model, smooth=True)``): no mode and no event; the compression
     is δ⁺ = s_smooth·log(1 + exp(δ/s_smooth)) (named parameter s_smooth [m], default 1e-6)
@@ -421,7 +422,6 @@ class ElastoGap(PartialCompliantWithRelativeStates):
     0.24·|f_c| (where d·|v_rel| ≈ |f_c|), and by less than |d·v_rel|³/(3·|f_c|²) +
     |d·v_rel|·f_s/|f_c| below it.
     """
-    options = {"useHeatPort": USE_HEAT_PORT}
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     d = Parameter(1.0, "N.s/m", "damping constant", nonnegative=True)
     s_rel0 = Parameter(0.0, "m", "unstretched spring length")
@@ -616,6 +616,25 @@ class _SpeedDependentForce(PartialForce):
     def flange_force(self, e):
         self._record_relative(e, "v")
         return -self.f_nominal * self.law(self._rel_speed(e, self.flange) / self.v_nominal)
+
+
+class EddyCurrentForce(PartialForce, interfaces.PartialEddyCurrent):
+    """MSL's simple translational eddy current brake: the braking force f = flange.f =
+    2·f_nominal·excitation²·v_normalized/(1 + v_normalized²) [N], v_normalized =
+    v/(v_nominal·(1 + alphaRef·(TheatPort − TRef))) (see interfaces.PartialEddyCurrent);
+    lossPower = f·v [W], to the heatPort with useHeatPort. Required: f_nominal [N],
+    v_nominal [m/s] > 0 (MSL gives no defaults); TRef 293.15 K, alpha20 0 1/K, T 293.15 K.
+    Records s, v (relative to the support), f, v_normalized, lossPower, TheatPort."""
+    required = ("f_nominal", "v_nominal")
+    f_nominal = Parameter(0.0, "N", "constant maximum force (always braking)")
+    v_nominal = Parameter(1.0, "m/s", "nominal speed (leads to maximum force) at reference "
+                                      "temperature", positive=True)
+
+    def flange_force(self, e):
+        self._record_relative(e, "v")
+        f, x = self._braking(e, self.f_nominal, self._rel_speed(e, self.flange), self.v_nominal)
+        e.variable("v_normalized", x, "1", "relative speed v/v_nominal")
+        return f
 
 
 class LinearSpeedDependentForce(_SpeedDependentForce):

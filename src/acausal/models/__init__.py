@@ -29,6 +29,10 @@ no compiler or simulation imports.
     gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     circuits            CauerLowPassAnalog: MSL's Cauer low-pass filter (capacitor loops:
                         compiled with index_reduction=True); ChuaCircuit: MSL's Chua circuit
+    eddy_current_brakes RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake: MSL's
+                        EddyCurrentBrake examples (a brake heating a heat capacitor)
+    heat_losses         TranslationalHeatLosses: MSL's Translational HeatLosses (every
+                        dissipating element's heatPort to one convection)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
 """
 from .bouncing_ball import BouncingBall, Floor
@@ -39,10 +43,12 @@ from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
 from .drivetrains import Drivetrain
+from .eddy_current_brakes import RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake
 from .elastic_bearing import ElasticBearing
 from .event_blocks import SampledPController, Thermostat
 from .friction import RotationalFriction
 from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
+from .heat_losses import TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .oscillators import Oscillator
@@ -58,4 +64,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
-           "ChuaCircuit"]
+           "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
+           "TranslationalHeatLosses"]
