@@ -18,7 +18,6 @@ CoupledClutches (models/clutches.py; three clutches sticking and slipping, 1.5 s
 from __future__ import annotations
 
 import re
-import subprocess
 
 import numpy as np
 import pytest
@@ -33,8 +32,8 @@ from acausal.errors import FmuExportError                                # noqa:
 from acausal.models import CoupledClutches, SampledPController, Thermostat  # noqa: E402
 from acausal.models.clutches import START as CLUTCHES_START              # noqa: E402
 from fmi_calls import init, instance                                     # noqa: E402
-from test_native_events import (EVENT_TOL, RTOL, VERSIONS, at, csv, fmu_check,  # noqa: E402,I001
-                                mode_changes, tool)
+from test_native_events import (EVENT_TOL, RTOL, VERSIONS, at, fmu_check,  # noqa: E402,I001
+                                fmusim, mode_changes)
 
 RAMP = (0.5, 0.2)              # offset, slope [1/s]
 HOLD = (0.105, 0.25)           # the ZeroOrderHold's first instant and period [s]
@@ -150,19 +149,7 @@ def test_fmpy_reproduces_simulate_with_its_samples(fmus, name, version, kind):
 def test_fmusim_reproduces_simulate_with_its_samples(fmus, name, version, kind, tmp_path):
     """The Reference FMUs' fmusim (CVODE for model exchange), tolerance 1e-10: as fmpy."""
     _, T, dt, x0, signals, discrete = CASES[name]
-    out = tmp_path / "out.csv"
-    cmd = [str(tool("fmusim")), "--interface-type", kind, "--tolerance", "1e-10",
-           "--stop-time", repr(T), "--output-interval", repr(dt), "--output-file", str(out)]
-    for n, v in x0.items():
-        cmd += ["--start-value", n, repr(v)]
-    for n in signals + discrete:
-        cmd += ["--output-variable", n]
-    if kind == "me":
-        cmd += ["--solver", "cvode"]
-    r = subprocess.run(cmd + [str(fmus[name, version])], capture_output=True, text=True,
-                       timeout=600)
-    assert r.returncode == 0, r.stdout + r.stderr
-    res = csv(out)
+    res = fmusim(fmus[name, version], kind, T, dt, x0, signals + discrete, tmp_path)
     check(name, fmus[name], res["time"], lambda n: res[n], kind == "me")
 
 

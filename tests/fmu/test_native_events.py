@@ -143,15 +143,7 @@ def test_fmpy_reproduces_simulate_with_its_events(fmus, name, version, kind):
     r = fmpy.simulate_fmu(str(fmus[name, version]), fmi_type=kind, stop_time=T,
                           output_interval=dt, start_values=x0, relative_tolerance=1e-10,
                           output=signals + modes)
-    t = r["time"]
-    grid = np.linspace(0.0, T, int(round(T / dt)) + 1)
-    if kind == "ModelExchange":
-        events = model_events(name, t, lambda n: r[n])
-    elif not modes:
-        events = {"impacts": impacts_from_samples(t, r["ball.s"], r["ball.v"])}
-    else:
-        events = None        # between samples: bracketed by the modes at the output points
-    check(name, ref, t, lambda n: r[n], grid, events)
+    check_importer(name, ref, r, kind == "ModelExchange")
 
 
 def test_the_event_instants_are_those_of_the_closed_form():
@@ -184,28 +176,42 @@ def test_fmusim_reproduces_simulate_with_its_events(fmus, name, version, kind, t
     """The Reference FMUs' fmusim (CVODE for model exchange), tolerance 1e-10: as fmpy."""
     ref = fmus[name][1]
     _, T, dt, x0, signals, modes = CASES[name]
-    out = tmp_path / "out.csv"
-    cmd = [str(tool("fmusim")), "--interface-type", kind, "--tolerance", "1e-10",
-           "--stop-time", repr(T), "--output-interval", repr(dt), "--output-file", str(out)]
-    for n, v in x0.items():
-        cmd += ["--start-value", n, repr(v)]
-    for n in signals + modes:
-        cmd += ["--output-variable", n]
-    if kind == "me":
-        cmd += ["--solver", "cvode"]
-    r = subprocess.run(cmd + [str(fmus[name, version])], capture_output=True, text=True,
-                       timeout=600)
-    assert r.returncode == 0, r.stdout + r.stderr
-    res = csv(out)
+    res = fmusim(fmus[name, version], kind, T, dt, x0, signals + modes, tmp_path)
+    check_importer(name, ref, res, kind == "me")
+
+
+def check_importer(name, ref, res, model_exchange: bool):
+    """``check`` of an importer's result ``res`` (columns by name, "time"): event instants
+    from its rows in model exchange; in co-simulation the ball's impacts extrapolated back
+    from the samples after them, the modes' changes bracketed by the output points."""
+    _, T, dt, _, _, modes = CASES[name]
     t = res["time"]
     grid = np.linspace(0.0, T, int(round(T / dt)) + 1)
-    if kind == "me":
+    if model_exchange:
         events = model_events(name, t, lambda n: res[n])
     elif not modes:
         events = {"impacts": impacts_from_samples(t, res["ball.s"], res["ball.v"])}
     else:
         events = None
     check(name, ref, t, lambda n: res[n], grid, events)
+
+
+def fmusim(fmu: Path, kind: str, T: float, dt: float, x0: dict, outputs: list,
+           tmp_path: Path) -> np.ndarray:
+    """The Reference FMUs' fmusim on ``fmu`` ("me" with CVODE, or "cs"), tolerance 1e-10:
+    its result, columns by name."""
+    out = tmp_path / "out.csv"
+    cmd = [str(tool("fmusim")), "--interface-type", kind, "--tolerance", "1e-10",
+           "--stop-time", repr(T), "--output-interval", repr(dt), "--output-file", str(out)]
+    for n, v in x0.items():
+        cmd += ["--start-value", n, repr(v)]
+    for n in outputs:
+        cmd += ["--output-variable", n]
+    if kind == "me":
+        cmd += ["--solver", "cvode"]
+    r = subprocess.run(cmd + [str(fmu)], capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stdout + r.stderr
+    return csv(out)
 
 
 def fmu_check(fmu: Path, kind: str, T: float, h: float, out: Path) -> np.ndarray:

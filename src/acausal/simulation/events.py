@@ -56,6 +56,7 @@ from .result import Event
 CHECKS = 4                 # indicator checks per output interval, and at least
 CHECKS_PER_RUN = 2000      # this many over the simulated time (coarse output grids)
 EVENT_TOL = 1e-12          # event location: the bracket's width over max(1, |t|) [s]
+SINGULAR = 1e-10           # relative singular value below which a Jacobian is singular
 MAX_ITERATIONS = 50        # event iteration: rounds of mode updates at one instant
 FIRST_WINDOW = 2 * CHECKS  # checks integrated at once after an event (at least) ...
 MAX_WINDOW = 512           # ... doubled while none happens, up to this many
@@ -77,6 +78,13 @@ def instants(times) -> list[float]:
         if not out or t - out[-1] > instant(t):
             out.append(float(t))
     return out
+
+
+def null_space(J: np.ndarray) -> np.ndarray:
+    """The rows spanning the null space of J (none at full column rank); singular values
+    below SINGULAR of the largest (at least 1) count as 0."""
+    sv, vt = np.linalg.svd(J)[1:]
+    return vt[int(np.sum(sv > SINGULAR * max(sv.max(initial=0.0), 1.0))):]
 
 
 def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
@@ -210,7 +218,7 @@ class EventSimulation(ModeIteration):
                                             [ca.jacobian(alg, model.z)])
         self.regular = self._integrators(alg)
         self.dae, self.step = self.regular
-        self._g_map, self._u_map = {}, {}
+        self._maps = {}       # Functions mapped over n points, by (kind, n)
         self.g = model.indicator_function
         self.reinits = model.state_events.reinits
         self.owner = [v.component for v in model.state_events.indicators]
@@ -249,15 +257,13 @@ class EventSimulation(ModeIteration):
             return
         xs, zs = x / self.Nx, z / self.Nz
         J = np.array(self.alg_jacobian(xs, zs, t, d), dtype=float)
-        sv, vt = np.linalg.svd(J)[1:]
-        rank = int(np.sum(sv > 1e-10 * max(sv.max(initial=0.0), 1.0)))
-        if rank == J.shape[1]:
+        held = null_space(J)                        # the indeterminate combinations
+        if not len(held):
             return
-        rows = []
+        rows, tol = [], SINGULAR * max(np.linalg.norm(J, 2), 1.0)
         for k in range(J.shape[0]):                 # the first independent rows
-            if np.linalg.matrix_rank(J[rows + [k]], tol=1e-10 * sv[0]) > len(rows):
+            if np.linalg.matrix_rank(J[rows + [k]], tol=tol) > len(rows):
                 rows.append(k)
-        held = vt[rank:]                            # the null space: indeterminate
         alg = ca.vertcat(self.alg[rows], ca.mtimes(ca.DM(held), self.model.z - ca.DM(zs)))
         self.dae, self.step = self._integrators(alg)
 
@@ -267,16 +273,16 @@ class EventSimulation(ModeIteration):
     def indicators_along(self, times, X, Z, d) -> np.ndarray:
         """The indicators at each of ``times`` (columns of X, Z), in one call."""
         n = len(times)
-        if n not in self._g_map:
-            self._g_map[n] = self.g.map(n)
+        if ("g", n) not in self._maps:
+            self._maps["g", n] = self.g.map(n)
         T = np.asarray(times, dtype=float).reshape(1, -1)
         U = np.array(self.u_map(n)(T), dtype=float)
-        return self._g_map[n](T, X, Z, U, self.params(d)).full()
+        return self._maps["g", n](T, X, Z, U, self.params(d)).full()
 
     def u_map(self, n: int) -> ca.Function:
-        if n not in self._u_map:
-            self._u_map[n] = self.u.map(n)
-        return self._u_map[n]
+        if ("u", n) not in self._maps:
+            self._maps["u", n] = self.u.map(n)
+        return self._maps["u", n]
 
     # ---- integration ---------------------------------------------------------------------
     def integrate(self, t0, times, x, z, d):
@@ -305,11 +311,11 @@ class EventSimulation(ModeIteration):
         Newton step per round; a row no algebraic variable enters left out, a singular
         system by least squares)."""
         n, nz = len(times), Z.shape[0]
-        if ("newton", n) not in self._g_map:
+        if ("newton", n) not in self._maps:
             F = self.newton.map(n)
             i, j = F.sparsity_out(1).get_triplet()                   # J: nz x (n·nz)
-            self._g_map["newton", n] = F, (np.array(j) // nz, np.array(i), np.array(j) % nz)
-        F, at = self._g_map["newton", n]
+            self._maps["newton", n] = F, (np.array(j) // nz, np.array(i), np.array(j) % nz)
+        F, at = self._maps["newton", n]
         T = np.asarray(times, dtype=float).reshape(1, -1)
         U, P = np.array(self.u_map(n)(T), dtype=float), self.params(d)
         Z = np.array(Z, dtype=float)
@@ -452,10 +458,7 @@ class EventSimulation(ModeIteration):
         if not self.has_alg:
             return ""
         J = np.array(self.newton(*self.point(t, x, z, d))[1], dtype=float)
-        _, sv, vt = np.linalg.svd(J[np.any(J != 0, axis=1)])
-        rank = int(np.sum(sv > 1e-10 * max(sv.max(initial=0.0), 1.0)))
-        free = np.abs(vt[rank:]).max(axis=0, initial=0.0) > 1e-8 if rank < J.shape[1] \
-            else np.zeros(J.shape[1], bool)
+        free = np.abs(null_space(J[np.any(J != 0, axis=1)])).max(axis=0, initial=0.0) > 1e-8
         names = [self.model.z_names[k] for k in np.flatnonzero(free)]
         if not names:
             return ""
