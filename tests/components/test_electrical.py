@@ -205,6 +205,13 @@ def test_higher_index_networks_are_refused_naming_the_parts():
     with pytest.raises(acausal.StructureError, match=r"ConstantCurrent 'src', Inductor 'l'.*"
                                                      r"cut set"):
         acausal.compile(m)
+    # the same cut set through a conductor, which gives its current from both potentials:
+    # structurally regular, numerically singular (the start current would be overridden)
+    m = model("gcut", lambda m: series(m, m.src, m.g, m.l), src=el.ConstantCurrent(),
+              g=el.Conductor(), l=el.Inductor(), ground=el.Ground())
+    with pytest.raises(acausal.StructureError, match=r"ConstantCurrent 'src', Conductor 'g', "
+                                                     r"Inductor 'l'.*cut set"):
+        acausal.compile(m)
     # no ground
     m = acausal.Model("floating")
     m.src, m.r, m.c = el.ConstantVoltage(), el.Resistor(), el.Capacitor()

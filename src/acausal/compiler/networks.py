@@ -30,8 +30,10 @@ higher-index network, refused by default with a StructureError naming the parts:
 A circuit without a reference (no Ground: every equation keeps its value when all the
 potentials of a connected circuit are shifted together) is singular too, but not
 structurally: it is found by that shift and refused, naming the circuit's components.
-The check is structural: a cut set through elements that give their flows explicitly in
-both potentials (Conductor, ThermalConductor) passes it and fails in the solver.
+A loop or cut set the structure cannot see (a cut set through elements that give their
+flows explicitly in both potentials: an inductor, a Conductor and a current source in
+series) leaves the Jacobian of the equations in the unknowns singular: it is found
+numerically, at random values of the states, and reported and reduced as above.
 
 Index reduction (``compile(model, index_reduction=True)``, opt-in: a state of the loop
 stops being one, so its start value is no longer used). A loop or cut set whose equations
@@ -174,12 +176,14 @@ def build_network(ws, resolve) -> Network:
     while True:
         over = _check_structure(eqs, unknowns, labels, what, explicit)
         if over is None:
+            _check_reference(ws.net_nodes, eqs)
+            over = _singular_rows(eqs, unknowns)
+        if over is None:
             break
         message = _over_message([labels[r] for r in over], explicit)
         if not ws.index_reduction:
             raise StructureError(message + " (or compile with index_reduction=True)")
         _reduce_index(ws, resolve, eqs, unknowns, over, net.demoted, message)
-    _check_reference(ws.net_nodes, eqs)
     alive, solved = _eliminate(eqs, unknowns)
     net.alg = [eqs[k] for k in alive]
     net.z = [(unknowns[k], units[k], starts[k]) for k in range(len(unknowns))
@@ -337,6 +341,27 @@ def _check_structure(eqs, unknowns, labels, what, explicit):
         f"{' and the unknowns of ' + ', '.join(others) if others else ''} follow from no "
         f"equation; give the circuit a reference potential (an electrical Ground, a "
         f"FixedTemperature or a HeatCapacitor on a thermal network)")
+
+
+def _singular_rows(eqs: list, unknowns: list):
+    """None when the network's Jacobian in its unknowns is regular; else the equations a
+    left null vector combines into a relation free of unknowns (a loop or cut set the
+    structure cannot see: through elements that give their flows in both potentials). The
+    Jacobian is equilibrated and evaluated at two random points of the other symbols
+    (states, time, modes); singular at both counts as singular."""
+    J = ca.jacobian(_vc(*eqs), _vc(*unknowns))
+    others = _vc(*ca.symvar(J))
+    f = ca.Function("network_jacobian", [others], [J])
+    rng = np.random.default_rng(1)
+    for _ in range(2):
+        Jn = np.array(f(rng.uniform(0.5, 2.0, others.numel())))
+        Jn /= np.maximum(np.abs(Jn).max(axis=1, keepdims=True), 1e-300)
+        Jn /= np.maximum(np.abs(Jn).max(axis=0, keepdims=True), 1e-300)
+        N = null_space(Jn.T, rcond=1e-12)
+        if N.shape[1] == 0:
+            return None
+    w = np.abs(N[:, 0])
+    return [r for r in range(len(eqs)) if w[r] > 1e-9 * w.max()]
 
 
 def _check_reference(nodes: list, eqs: list) -> None:
