@@ -142,10 +142,7 @@ def test_ideal_transformer_is_power_conserving():
             tr=el.IdealTransformer(n=n, Lm1=Lm1, considerMagnetization=magnetize),
             ground=el.Ground(), ground2=el.Ground())
         t = np.linspace(0.0, 0.04, 81)
-        # the algebraic potential starts with a nonzero rate that IDAS's initial-value
-        # computation leaves at 0: kept out of the error test, as for index-1 DAEs
-        res = acausal.compile(m).simulate(0.04, t=t, rtol=1e-10, atol=1e-12,
-                                          options={"suppress_algebraic": True})
+        res = acausal.compile(m).simulate(0.04, t=t, rtol=1e-10, atol=1e-12)
         v1 = V * np.sin(w * t)
         i = V / n / (R ** 2 + (w * L) ** 2) * (R * np.sin(w * t) - w * L * np.cos(w * t)
                                                + w * L * np.exp(-R * t / L))
@@ -250,8 +247,7 @@ def test_limited_op_amp_inverts_and_clips_at_its_supply():
         op=el.IdealOpAmpLimited(), vmax=el.ConstantVoltage(V=Vs), vmin=el.ConstantVoltage(V=Vs),
         rl=el.Resistor(R=RL), c=el.Capacitor(C=C), ground=el.Ground())
     t = np.linspace(0.0, 0.4, 401)
-    res = acausal.compile(m).simulate(0.4, t=t, rtol=1e-10, atol=1e-12,
-                                      options={"suppress_algebraic": True})
+    res = acausal.compile(m).simulate(0.4, t=t, rtol=1e-10, atol=1e-12)
     out = np.clip(-Rf / Rin * A * np.sin(2 * np.pi * f * t), -Vs, Vs)
     np.testing.assert_allclose(res["op.out.v"], out, atol=1e-8)
     assert np.max(np.abs(res["op.vin"][np.abs(out) < Vs - 1e-3])) < 1e-9   # nullor
