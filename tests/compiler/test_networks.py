@@ -70,6 +70,30 @@ def test_dc_circuit_linearizes_to_the_hand_matrices():
     np.testing.assert_allclose(lm.B.ravel(), [0, 0, 1 / L], rtol=1e-12)
 
 
+def test_motor_driven_arm_linearizes_to_the_hand_matrices():
+    """The circuit's rotor drives a planar arm (a Revolute's axis; a body m, I at l from
+    the pivot; the revolute's support is its frame_a) hanging under gravity: x = [phi, w, i]
+    about phi = −π/2,
+    (J + I + m l²)·w' = k·i − m·g·l·δphi, L·i' = v − R·i − k·w."""
+    from acausal.components import planar as pl
+    m_arm, I_arm, l_arm, g = 2.0, 0.05, 0.4, 9.81
+    arm = dc_circuit(el.SignalVoltage())
+    arm.world, arm.base = pl.World(), pl.Fixed()
+    arm.revolute, arm.rod = pl.Revolute(useFlange=True), pl.FixedTranslation(r=(l_arm, 0))
+    arm.body = pl.Body(m=m_arm, I=I_arm)
+    for a, b in [(arm.base.frame, arm.revolute.frame_a),
+                 (arm.revolute.frame_b, arm.rod.frame_a), (arm.rod.frame_b, arm.body.frame_a),
+                 (arm.rotor.flange_b, arm.revolute.axis)]:
+        arm.connect(a, b)
+    lm = linearize(acausal.compile(arm), {"rotor.phi": -math.pi / 2, "rotor.w": 0.0},
+                   u={"v": 0.0})
+    assert lm.states == ["rotor.phi", "rotor.w", "l.i"]
+    Jt = J + I_arm + m_arm * l_arm ** 2
+    A = [[0, 1, 0], [-m_arm * g * l_arm / Jt, 0, K / Jt], [0, -K / L, -R / L]]
+    np.testing.assert_allclose(lm.A, A, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(lm.B.ravel(), [0, 0, 1 / L], rtol=1e-12)
+
+
 def test_rc_with_an_algebraic_current_linearizes():
     lm = linearize(acausal.compile(rc()), {"c.v": 1.0}, outputs=["r.i"])
     np.testing.assert_allclose(lm.A, [[-1 / (10.0 * 0.01)]], rtol=1e-12)
