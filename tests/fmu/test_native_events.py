@@ -19,7 +19,6 @@ import re
 import subprocess
 from pathlib import Path
 
-import casadi as ca
 import numpy as np
 import pytest
 
@@ -28,10 +27,11 @@ from fmpy.fmi1 import FMICallException                             # noqa: E402
 
 import acausal                                                     # noqa: E402
 from acausal.components import translational as tr                 # noqa: E402
-from acausal.core import Component, Parameter, TranslationalFlange  # noqa: E402
+from acausal.core import Component, TranslationalFlange             # noqa: E402
 from acausal.errors import FmuExportError                          # noqa: E402
 from acausal.models.bouncing_ball import G, BouncingBall           # noqa: E402
 from acausal.models.friction import START, RotationalFriction      # noqa: E402
+from faulty_components import Relay, Toggle, on_a_mass             # noqa: E402
 from fmi_calls import unzipped                                      # noqa: E402
 
 VERSIONS = ("2.0", "3.0")
@@ -245,28 +245,12 @@ def test_fmu_compliance_checker(fmus, name, tmp_path):
 
 
 # ---- errors -------------------------------------------------------------------------------------
-class Toggle(Component):
-    """A mode whose update always flips it: the event iteration cannot settle."""
-    flange = TranslationalFlange("any flange")
-
-    def structure(self, s):
-        s.mode("on", 0, values=(0, 1))
-
-    def physics(self, e):
-        on = e.mode("on")
-        e.mode_update(on, 1 - on)
-
-
 @pytest.mark.parametrize("version", VERSIONS)
 @pytest.mark.parametrize("kind", ["ModelExchange", "CoSimulation"])
 def test_an_event_iteration_that_never_settles_names_the_component(fmu_dir, version, kind,
                                                                     capsys):
-    model = acausal.Model("toggle")
-    model.mass = tr.Mass(m=1.0)
-    model.toggle = Toggle()
-    model.connect(model.mass.flange_a, model.toggle.flange)
-    path = acausal.compile(model).export_fmu(fmu_dir / f"toggle{version[0]}.fmu",
-                                             fmi_version=version)
+    path = acausal.compile(on_a_mass("toggle", Toggle())).export_fmu(
+        fmu_dir / f"toggle{version[0]}.fmu", fmi_version=version)
     with pytest.raises(FMICallException, match="status 3"):
         fmpy.simulate_fmu(unzipped(path), fmi_type=kind, stop_time=1.0)
     log = capsys.readouterr().out
@@ -274,33 +258,13 @@ def test_an_event_iteration_that_never_settles_names_the_component(fmu_dir, vers
                      r"changing \(50 rounds\)", log), log
 
 
-class Relay(Component):
-    """Ideal Coulomb friction without a stuck mode: the force ∓F_c switches with the sign of
-    the speed, which chatters about 0."""
-    F_c = Parameter(1.0, "N", "sliding friction force")
-    flange = TranslationalFlange("the sliding body")
-
-    def structure(self, s):
-        s.mode("direction", 1, values=(-1, 1))
-
-    def physics(self, e):
-        v, mode = e.vel(self.flange), e.mode("direction")
-        e.flow(self.flange, self.F_c * mode)
-        e.indicator("v", v, "m/s")
-        e.mode_update(mode, ca.if_else(v > 0, 1, -1))
-
-
 @pytest.mark.parametrize("version", VERSIONS)
 @pytest.mark.parametrize("kind", ["ModelExchange", "CoSimulation"])
 def test_chattering_names_the_component(fmu_dir, version, kind, capsys):
     """A relay stops the mass at t = 1 s and then switches without end: fmiError, the log
     naming it, as simulate() does, not an importer stepping forever."""
-    model = acausal.Model("relay")
-    model.mass = tr.Mass(m=1.0)
-    model.relay = Relay()
-    model.connect(model.mass.flange_a, model.relay.flange)
-    path = acausal.compile(model).export_fmu(fmu_dir / f"relay{version[0]}.fmu",
-                                             fmi_version=version)
+    path = acausal.compile(on_a_mass("relay", Relay())).export_fmu(
+        fmu_dir / f"relay{version[0]}.fmu", fmi_version=version)
     with pytest.raises(FMICallException, match="status 3"):
         fmpy.simulate_fmu(unzipped(path), fmi_type=kind, stop_time=2.0,
                           start_values={"mass.v": 1.0})

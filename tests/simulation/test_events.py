@@ -13,6 +13,7 @@ from acausal.components.translational import ConstantForce, Force, ForceStep, Ma
 from acausal.core import Component, Parameter, RotationalFlange, TranslationalFlange
 from acausal.errors import SimulationError, StructureError
 from acausal.models import BouncingBall, Floor, FourBar
+from faulty_components import Relay, Toggle, on_a_mass
 
 G, E, H0 = 9.81, 0.8, 1.0
 
@@ -189,48 +190,14 @@ def test_time_event_with_state_events():
     assert np.sum(t == 1.0) == 2                              # both limits kept
 
 
-class Relay(Component):
-    """Ideal Coulomb friction without a stuck mode: the force ∓F_c switches with the sign of
-    the speed, which chatters about 0."""
-    F_c = Parameter(1.0, "N", "sliding friction force")
-    flange = TranslationalFlange("the sliding body")
-
-    def structure(self, s):
-        s.mode("direction", 1, values=(-1, 1))
-
-    def physics(self, e):
-        v, mode = e.vel(self.flange), e.mode("direction")
-        e.flow(self.flange, self.F_c * mode)
-        e.indicator("v", v, "m/s")
-        e.mode_update(mode, ca.if_else(v > 0, 1, -1))
-
-
 def test_chattering_names_the_component():
-    model = acausal.Model("relay")
-    model.mass = Mass(m=1.0)
-    model.relay = Relay()
-    model.connect(model.mass.flange_a, model.relay.flange)
+    model = on_a_mass("relay", Relay())
     with pytest.raises(SimulationError, match=r"chattering.*'relay'.*relay\.v"):
         acausal.compile(model).simulate(3.0, x0={"mass.v": 1.0})
 
 
-class Toggle(Component):
-    """A mode whose update always flips it: the event iteration cannot settle."""
-    flange = TranslationalFlange("any flange")
-
-    def structure(self, s):
-        s.mode("on", 0, values=(0, 1))
-
-    def physics(self, e):
-        on = e.mode("on")
-        e.mode_update(on, 1 - on)
-
-
 def test_event_iteration_that_never_settles_names_the_component():
-    model = acausal.Model("toggle")
-    model.mass = Mass(m=1.0)
-    model.toggle = Toggle()
-    model.connect(model.mass.flange_a, model.toggle.flange)
+    model = on_a_mass("toggle", Toggle())
     with pytest.raises(SimulationError, match="does not settle.*toggle"):
         acausal.compile(model).simulate(1.0)
 
