@@ -134,7 +134,7 @@ def build_network(ws, resolve) -> Network:
     for n in ws.net_nodes:
         unknowns.append(n.potential)
         units.append(n.domain.potential_units[0])
-        starts.append(0.0)
+        starts.append(n.domain.potential_start)
         what.append(("node", n))
     for p, s in ws.net_flow_sym.items():
         if p in explicit:
