@@ -28,7 +28,9 @@ no compiler or simulation imports.
                         PreLoad (ElastoGap)
     gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     circuits            CauerLowPassAnalog: MSL's Cauer low-pass filter (capacitor loops:
-                        compiled with index_reduction=True); ChuaCircuit: MSL's Chua circuit
+                        compiled with index_reduction=True); ChuaCircuit: MSL's Chua circuit;
+                        ResistorExample, HeatingRectifier: MSL's Resistor (a resistor heating
+                        through a thermal conductor) and HeatingRectifier (a heating diode)
     eddy_current_brakes RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake: MSL's
                         EddyCurrentBrake examples (a brake heating a heat capacitor)
     heat_losses         TranslationalHeatLosses: MSL's Translational HeatLosses (every
@@ -37,7 +39,7 @@ no compiler or simulation imports.
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
-from .circuits import CauerLowPassAnalog, ChuaCircuit
+from .circuits import CauerLowPassAnalog, ChuaCircuit, HeatingRectifier, ResistorExample
 from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
@@ -65,4 +67,4 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
-           "TranslationalHeatLosses"]
+           "TranslationalHeatLosses", "ResistorExample", "HeatingRectifier"]
