@@ -62,6 +62,7 @@ from scipy.linalg import null_space
 from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import maximum_bipartite_matching
 
+from ..core.component import Model
 from ..errors import StructureError
 from .symbolic import UnknownDerivative, der_with
 
@@ -92,6 +93,12 @@ def declare_nodes(ws, groups: list) -> None:
         ws.net_nodes.append(node)
         for p in g:
             ws.net_node_of[p] = node
+
+
+def _is_junction(port) -> bool:
+    """A port of a model made of parts (Modelica's outside connector of a sub-model): the
+    connections inside and outside it are one set, where it carries no flow of its own."""
+    return isinstance(port.owner, Model) and bool(port.owner.children)
 
 
 def has_network_ports(component) -> bool:
@@ -155,6 +162,8 @@ def build_network(ws, resolve) -> Network:
     for n in ws.net_nodes:
         flows = []
         for p in n.ports:
+            if _is_junction(p):
+                continue
             if p in explicit:
                 flows.append(explicit[p])
             elif p in ws.net_flow_sym:
@@ -195,7 +204,8 @@ def build_network(ws, resolve) -> Network:
             flow = explicit.get(p, ws.net_flow_sym.get(p))
             net.records.append((f"{p.path}.{dom.potentials[0]}", n.potential,
                                 dom.potential_units[0]))
-            net.records.append((f"{p.path}.{dom.flows[0]}", flow, dom.flow_units[0]))
+            if not _is_junction(p):          # a junction's flow is its parts' (recorded)
+                net.records.append((f"{p.path}.{dom.flows[0]}", flow, dom.flow_units[0]))
     return net
 
 

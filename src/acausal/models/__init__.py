@@ -15,6 +15,8 @@ no compiler or simulation imports.
                         KinematicLoop, PistonEngine (PlanarMechanics' examples)
     pendulums           PendulumChain: N-link planar pendulum
     drivetrains         Drivetrain: DC motor, gear, elastic shaft, fan drum
+    dc_motors           DCMotorCircuit: the DC motor composed of Resistor, Inductor,
+                        RotationalEMF and Inertia (equal to rotational.DCMotor)
     elastic_bearing     ElasticBearing: MSL's gearbox on an elastic bearing (nominals)
     oscillators         Oscillator: mass on a spring and a damper
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
@@ -44,6 +46,7 @@ from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
+from .dc_motors import DCMotorCircuit
 from .drivetrains import Drivetrain
 from .eddy_current_brakes import RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake
 from .elastic_bearing import ElasticBearing
@@ -67,4 +70,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
-           "TranslationalHeatLosses", "ResistorExample", "HeatingRectifier"]
+           "TranslationalHeatLosses", "ResistorExample", "HeatingRectifier",
+           "DCMotorCircuit"]
