@@ -12,7 +12,11 @@ potential (v [V], T [K]); the unknowns and equations the network adds to the DAE
 A component gives each of its network ports' flows either explicitly
 (``PhysicsBuilder.flow``: an inductor's state current, a heat flow source) or as the unknown
 ``flow_of(port)`` with an equation of its own (a resistor's v = R·i). Capacitors, inductors
-and heat capacitors declare states with derivatives (semi-explicit DAE).
+and heat capacitors declare states with derivatives (semi-explicit DAE). A network port
+of a model made of parts (an outside connector, e.g. the heatPort of a composed motor) is a
+junction: the connections inside and outside it form one node, where it adds no flow (its
+potential is recorded). A node's potential starts at its domain's ``potential_start``
+(0 V; 288.15 K, SI.Temperature's start) where nothing fixes it.
 
 Structure. Before any elimination, the network's equations are matched to its unknowns
 (maximum bipartite matching of the incidence). A network is accepted when the matching is

@@ -52,6 +52,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
     ODEs, IDAS for DAEs); the Result then has the event log ``events`` and both limits at
     every event (its time twice in ``t``); the modes' start values are read from ``params``.
+    A model without states whose equations depend on time (a resistive circuit on a source)
+    is solved by Newton's method at each output time.
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
