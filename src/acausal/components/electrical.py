@@ -632,7 +632,7 @@ class Diode(_ConditionalHeatPort, OnePort):
     Vt = Parameter(0.04, "V", "voltage equivalent of temperature (kT/qn)")
     Maxexp = Parameter(15.0, "1", "max. exponent for linear continuation", positive=True)
     R = Parameter(1e8, "Ohm", "parallel ohmic resistance")
-    EG = Parameter(1.11, "1", "activation energy")
+    EG = Parameter(1.11, "", "activation energy (MSL: a Real; in eV, as EG/(N*vt_t))")
     N = Parameter(1.0, "1", "emission coefficient")
     TNOM = Parameter(300.15, "K", "parameter measurement temperature", positive=True)
     XTI = Parameter(3.0, "1", "temperature exponent of saturation current")
