@@ -28,12 +28,12 @@ from . import rotational, translational
 from .logical import refuse_smooth
 from .signals import _start
 
-__all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor", "Capacitor", "Inductor",
-           "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage",
-           "StepVoltage", "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor",
-           "CurrentSensor", "PowerSensor", "IdealDiode", "IdealOpeningSwitch",
-           "IdealClosingSwitch", "IdealTransformer", "Gyrator", "NonlinearResistor",
-           "IdealOpAmpLimited", "Diode"]
+__all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
+           "Capacitor", "Inductor", "RotationalEMF", "EMF", "TranslationalEMF",
+           "ConstantVoltage", "SignalVoltage", "StepVoltage", "SineVoltage", "ConstantCurrent",
+           "SignalCurrent", "VoltageSensor", "CurrentSensor", "PowerSensor", "IdealDiode",
+           "IdealOpeningSwitch", "IdealClosingSwitch", "IdealTransformer", "Gyrator",
+           "NonlinearResistor", "IdealOpAmpLimited", "Diode"]
 
 
 class Ground(Component):
