@@ -39,6 +39,9 @@ CASES = {
     "thermostat_hysteresis": (lambda: models.Thermostat(kind="Hysteresis"), [], ["plant.y"],
                               []),
     "sampled_p_controller": (models.SampledPController, ["mass.s"], [], []),
+    "resistor_example": (models.ResistorExample, [], [], []),
+    "heating_rectifier": (models.HeatingRectifier, [], ["Capacitor1.v", "HeatCapacitor1.T"],
+                          []),
 }
 
 

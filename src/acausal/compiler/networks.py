@@ -12,7 +12,11 @@ potential (v [V], T [K]); the unknowns and equations the network adds to the DAE
 A component gives each of its network ports' flows either explicitly
 (``PhysicsBuilder.flow``: an inductor's state current, a heat flow source) or as the unknown
 ``flow_of(port)`` with an equation of its own (a resistor's v = R·i). Capacitors, inductors
-and heat capacitors declare states with derivatives (semi-explicit DAE).
+and heat capacitors declare states with derivatives (semi-explicit DAE). A network port
+of a model made of parts (an outside connector, e.g. the heatPort of a composed motor) is a
+junction: the connections inside and outside it form one node, where it adds no flow (its
+potential is recorded). A node's potential starts at its domain's ``potential_start``
+(0 V; 288.15 K, SI.Temperature's start) where nothing fixes it.
 
 Structure. Before any elimination, the network's equations are matched to its unknowns
 (maximum bipartite matching of the incidence). A network is accepted when the matching is
@@ -64,6 +68,7 @@ from scipy.linalg import null_space
 from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import maximum_bipartite_matching
 
+from ..core.component import Model
 from ..errors import StructureError
 from .symbolic import UnknownDerivative, der_with
 
@@ -94,6 +99,12 @@ def declare_nodes(ws, groups: list) -> None:
         ws.net_nodes.append(node)
         for p in g:
             ws.net_node_of[p] = node
+
+
+def _is_junction(port) -> bool:
+    """A port of a model made of parts (Modelica's outside connector of a sub-model): the
+    connections inside and outside it are one set, where it carries no flow of its own."""
+    return isinstance(port.owner, Model) and bool(port.owner.children)
 
 
 def has_network_ports(component) -> bool:
@@ -136,7 +147,7 @@ def build_network(ws, resolve) -> Network:
     for n in ws.net_nodes:
         unknowns.append(n.potential)
         units.append(n.domain.potential_units[0])
-        starts.append(0.0)
+        starts.append(n.domain.potential_start)
         what.append(("node", n))
     for p, s in ws.net_flow_sym.items():
         if p in explicit:
@@ -157,6 +168,8 @@ def build_network(ws, resolve) -> Network:
     for n in ws.net_nodes:
         flows = []
         for p in n.ports:
+            if _is_junction(p):
+                continue
             if p in explicit:
                 flows.append(explicit[p])
             elif p in ws.net_flow_sym:
@@ -199,7 +212,8 @@ def build_network(ws, resolve) -> Network:
             flow = explicit.get(p, ws.net_flow_sym.get(p))
             net.records.append((f"{p.path}.{dom.potentials[0]}", n.potential,
                                 dom.potential_units[0]))
-            net.records.append((f"{p.path}.{dom.flows[0]}", flow, dom.flow_units[0]))
+            if not _is_junction(p):          # a junction's flow is its parts' (recorded)
+                net.records.append((f"{p.path}.{dom.flows[0]}", flow, dom.flow_units[0]))
     return net
 
 

@@ -23,16 +23,17 @@ import casadi as ca
 
 from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
                     Parameter, Pin, PositivePin, RealInput, RealOutput)
+from ..errors import ParameterError
 from . import rotational, translational
 from .logical import refuse_smooth
 from .signals import _start
 
-__all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "Conductor", "Capacitor", "Inductor",
-           "RotationalEMF", "EMF", "TranslationalEMF", "ConstantVoltage", "SignalVoltage",
-           "StepVoltage", "SineVoltage", "ConstantCurrent", "SignalCurrent", "VoltageSensor",
-           "CurrentSensor", "PowerSensor", "IdealDiode", "IdealOpeningSwitch",
-           "IdealClosingSwitch", "IdealTransformer", "Gyrator", "NonlinearResistor",
-           "IdealOpAmpLimited"]
+__all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
+           "Capacitor", "Inductor", "RotationalEMF", "EMF", "TranslationalEMF",
+           "ConstantVoltage", "SignalVoltage", "StepVoltage", "SineVoltage", "ConstantCurrent",
+           "SignalCurrent", "VoltageSensor", "CurrentSensor", "PowerSensor", "IdealDiode",
+           "IdealOpeningSwitch", "IdealClosingSwitch", "IdealTransformer", "Gyrator",
+           "NonlinearResistor", "IdealOpAmpLimited", "Diode"]
 
 
 class Ground(Component):
@@ -71,7 +72,8 @@ class OnePort(Component):
 class _ConditionalHeatPort(Component):
     """MSL's ConditionalHeatPort: with ``useHeatPort`` the ``heatPort`` (HeatPort_a) takes
     the loss power LossPower [W] (heatPort.Q_flow = −LossPower) and sets the device
-    temperature T_heatPort = heatPort.T; without it T_heatPort = T (a parameter)."""
+    temperature T_heatPort = heatPort.T; without it T_heatPort = T, the fixed device
+    temperature [K] each subclass declares as MSL binds it."""
     options = {"useHeatPort": False}
     heatPort = ConditionalPort(HeatPort_a("conditional heat port", required=True),
                                "useHeatPort")
@@ -86,20 +88,46 @@ class _ConditionalHeatPort(Component):
         e.variable("T_heatPort", T_heatPort, "K", "temperature of heatPort")
 
 
-class Resistor(_ConditionalHeatPort, OnePort):
-    """Ideal linear resistor: v = R_actual·i, R_actual = R·(1 + alpha·(T_heatPort − T_ref))
-    [Ohm]. ``T`` [K] is the fixed device temperature without heat port; it defaults to
-    300.15 K, T_ref's default (MSL sets T = T_ref: give both if T_ref is changed)."""
-    R = Parameter(1.0, "Ohm", "resistance at temperature T_ref")
+class _TemperatureDependent(_ConditionalHeatPort, OnePort):
+    """MSL's ConditionalHeatPort(T=T_ref) of the Resistor and the Conductor: without heat
+    port the device sits at T = T_ref [K], which follows T_ref also when T_ref is changed at
+    simulation time (so R_actual = R, G_actual = G there); ``T`` given at construction is a
+    parameter of its own (``Resistor(T=350)``, MSL's modifier: the class's twin declaring
+    T, registered by ``_with_parameter_T``)."""
     T_ref = Parameter(300.15, "K", "reference temperature", positive=True)
+
+    def __new__(cls, name=None, **params):
+        twin = vars(cls).get("_with_T")
+        return super().__new__(twin if "T" in params and twin else cls)
+
+    @property
+    def T(self):
+        """Fixed device temperature if useHeatPort = false [K]: T_ref (MSL's binding)."""
+        return self.T_ref
+
+
+def _with_parameter_T(cls):
+    """Register on ``cls`` its twin with the parameter T [K] (named like ``cls`` in
+    messages), which ``cls(T=...)`` builds."""
+    twin = type(cls.__name__, (cls,), {
+        "__module__": cls.__module__, "__qualname__": f"{cls.__qualname__}._with_T",
+        "__doc__": cls.__doc__,
+        "T": Parameter(300.15, "K", "fixed device temperature if useHeatPort = false",
+                       positive=True)})
+    cls._with_T = twin
+    return cls
+
+
+class _PartialResistor(_TemperatureDependent):
+    """The law of MSL's Resistor, v = R_actual·i, R_actual = R·(1 + alpha·(T_heatPort −
+    T_ref)) [Ohm], for the Resistor and MSL 3's HeatingResistor, which name the
+    resistance at T_ref differently (``_R``)."""
     alpha = Parameter(0.0, "1/K", "temperature coefficient of resistance (R_actual = "
                                   "R*(1 + alpha*(T_heatPort - T_ref)))")
-    T = Parameter(300.15, "K", "fixed device temperature if useHeatPort = false",
-                  positive=True)
 
     def physics(self, e):
         v, i, T = self._v(e), self._current(e), self._T_heatPort(e)
-        R_actual = self.R * (1 + self.alpha * (T - self.T_ref))
+        R_actual = self._R * (1 + self.alpha * (T - self.T_ref))
         e.residual(v - R_actual * i)
         self._record(e, v, i)
         e.variable("R_actual", R_actual, "Ohm", "actual resistance = R*(1 + alpha*(T_heatPort "
@@ -107,15 +135,25 @@ class Resistor(_ConditionalHeatPort, OnePort):
         self._losses(e, v * i, T)
 
 
-class Conductor(_ConditionalHeatPort, OnePort):
+@_with_parameter_T
+class Resistor(_PartialResistor):
+    """Ideal linear resistor: v = R_actual·i, R_actual = R·(1 + alpha·(T_heatPort − T_ref))
+    [Ohm]; T_heatPort [K] is heatPort.T with ``useHeatPort``, otherwise T, which is T_ref
+    unless given (MSL's T = T_ref)."""
+    R = Parameter(1.0, "Ohm", "resistance at temperature T_ref")
+
+    @property
+    def _R(self):
+        return self.R
+
+
+@_with_parameter_T
+class Conductor(_TemperatureDependent):
     """Ideal linear conductor: i = G_actual·v, G_actual = G/(1 + alpha·(T_heatPort − T_ref))
-    [S]; ``T`` as for the Resistor."""
+    [S]; T_heatPort as for the Resistor."""
     G = Parameter(1.0, "S", "conductance at temperature T_ref")
-    T_ref = Parameter(300.15, "K", "reference temperature", positive=True)
     alpha = Parameter(0.0, "1/K", "temperature coefficient of conductance (G_actual = "
                                   "G/(1 + alpha*(T_heatPort - T_ref)))")
-    T = Parameter(300.15, "K", "fixed device temperature if useHeatPort = false",
-                  positive=True)
 
     def physics(self, e):
         v, T = self._v(e), self._T_heatPort(e)
@@ -125,6 +163,27 @@ class Conductor(_ConditionalHeatPort, OnePort):
         e.variable("G_actual", G_actual, "S", "actual conductance = G/(1 + alpha*(T_heatPort "
                                               "- T_ref))")
         self._losses(e, v * i, T)
+
+
+class HeatingResistor(_PartialResistor):
+    """MSL 3's Basic.HeatingResistor, which MSL 4 converts to its Resistor with
+    useHeatPort=true (ConvertModelica_from_3.2.3_to_4.0.0.mos: class HeatingResistor ->
+    Resistor, parameter R_ref -> R): the Resistor's law (``_PartialResistor``) with its
+    ``heatPort`` always present and MSL 3's parameter names, R_ref [Ohm] the resistance at
+    T_ref [K], alpha [1/K]: R_actual = R_ref·(1 + alpha·(heatPort.T − T_ref)). Records what
+    the Resistor records (MSL 3 called R_actual R)."""
+    options = {"useHeatPort": True}
+    R_ref = Parameter(1.0, "Ohm", "resistance at temperature T_ref")
+
+    def __init__(self, name: str | None = None, **params):
+        if params.get("useHeatPort", True) is not True:
+            raise ParameterError("HeatingResistor always has its heatPort; for a resistor "
+                                 "without one use Resistor(R=R_ref)")
+        super().__init__(name, **params)
+
+    @property
+    def _R(self):
+        return self.R_ref
 
 
 class Capacitor(OnePort):
@@ -346,8 +405,9 @@ class _IdealSwitching(_ConditionalHeatPort, OnePort):
                                  "resistance)", nonnegative=True)
     Goff = Parameter(1e-5, "S", "backward state-off conductance (opened conductance)",
                      nonnegative=True)
-    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
-                  positive=True)
+    #: fixed device temperature if useHeatPort = false [K]: MSL's IdealSwitch has final
+    #: T = 293.15 (IdealDiode declares it a parameter)
+    T = 293.15
     _Vknee = 0.0
 
     def structure(self, s):
@@ -380,6 +440,8 @@ class IdealDiode(_IdealSwitching):
     rectifier of the tests). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0. No smooth form
     (refused when compiled with smooth=True)."""
     Vknee = Parameter(0.0, "V", "forward threshold voltage", nonnegative=True)
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
 
     @property
     def _Vknee(self):
@@ -535,3 +597,64 @@ class IdealOpAmpLimited(Component):
             sa < -1, vmin, ca.if_else(sa > 1, vmax, (vmax - vmin) * sa / 2 + (vmax + vmin) / 2)))
         e.variable("vin", vin, "V", "input voltage")
         e.variable("s", sa, "1", "auxiliary variable")
+
+
+# ---- semiconductors (Modelica.Electrical.Analog.Semiconductors) ---------------------------
+#: Boltzmann constant [J/K] and elementary charge [A.s], Modelica.Constants.k and .q
+K_BOLTZMANN, Q_ELECTRON = 1.380649e-23, 1.602176634e-19
+
+
+def exlin(x, Maxexp):
+    """MSL's Semiconductors.exlin: exp(x), continued linearly (value and slope) above
+    Maxexp; written exp(m)·(1 + x − m) with m = min(x, Maxexp), one expression whose
+    derivative is exp(x) below Maxexp and exp(Maxexp) above (no exp of a large x)."""
+    m = ca.fmin(x, Maxexp)
+    return ca.exp(m) * (1 + x - m)
+
+
+class Diode(_ConditionalHeatPort, OnePort):
+    """Simple diode (MSL Semiconductors.Diode): an exponential diode in parallel with the
+    ohmic resistance R [Ohm], i = id + v/R with id = Ids·(exlin(v/Vt, Maxexp) − 1) [A];
+    Ids [A] saturation current, Vt [V] voltage equivalent of temperature (kT/qn), Maxexp
+    [1] the exponent above which the characteristic is continued linearly (``exlin``).
+
+    With the option ``useTemperatureDependency`` the device temperature T_heatPort [K]
+    enters: vt_t = k·T_heatPort/q, id = Ids·(exlin(v/(N·vt_t), Maxexp) − 1) and
+    i = id·(T_heatPort/TNOM)^(XTI/N)·exp((T_heatPort/TNOM − 1)·EG/(N·vt_t)) + v/R, with EG
+    [eV] the activation energy, N [1] the emission coefficient, TNOM [K] the parameter
+    measurement temperature, XTI [1] the saturation current's temperature exponent.
+    ``useHeatPort`` defaults to useTemperatureDependency (MSL's binding); T_heatPort is
+    heatPort.T with it, the parameter T (293.15 K) without. LossPower = v·i [W]. Records v,
+    i, id, vt_t, LossPower, T_heatPort. The law is smooth (C1 at the knee of exlin): no
+    events, and the same form with smooth=True."""
+    options = {"useHeatPort": False, "useTemperatureDependency": False}
+    Ids = Parameter(1e-6, "A", "saturation current")
+    Vt = Parameter(0.04, "V", "voltage equivalent of temperature (kT/qn)")
+    Maxexp = Parameter(15.0, "1", "max. exponent for linear continuation", positive=True)
+    R = Parameter(1e8, "Ohm", "parallel ohmic resistance")
+    EG = Parameter(1.11, "", "activation energy (MSL: a Real; in eV, as EG/(N*vt_t))")
+    N = Parameter(1.0, "1", "emission coefficient")
+    TNOM = Parameter(300.15, "K", "parameter measurement temperature", positive=True)
+    XTI = Parameter(3.0, "1", "temperature exponent of saturation current")
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
+
+    def __init__(self, name: str | None = None, **params):
+        params.setdefault("useHeatPort", params.get("useTemperatureDependency", False))
+        super().__init__(name, **params)
+
+    def physics(self, e):
+        v, T = self._v(e), self._T_heatPort(e)
+        vt_t = K_BOLTZMANN * T / Q_ELECTRON
+        if self.useTemperatureDependency:
+            i_d = self.Ids * (exlin(v / (self.N * vt_t), self.Maxexp) - 1)
+            aux = (T / self.TNOM - 1) * self.EG / (self.N * vt_t)
+            law = i_d * (T / self.TNOM) ** (self.XTI / self.N) * ca.exp(aux) + v / self.R
+        else:
+            i_d = self.Ids * (exlin(v / self.Vt, self.Maxexp) - 1)
+            law = i_d + v / self.R
+        i = self._current(e, law)
+        self._record(e, v, i)
+        e.variable("id", i_d, "A", "diode current")
+        e.variable("vt_t", vt_t, "V", "temperature voltage")
+        self._losses(e, v * i, T)

@@ -31,6 +31,9 @@ class Domain:
     velocity_units: tuple[str, ...]
     #: a potential/flow network (electrical, thermal), not a mechanical pose
     network: bool = False
+    #: start value of a network node's potential where nothing fixes it (Modelica's type
+    #: start: SI.Temperature's 288.15 K, 0 V)
+    potential_start: float = 0.0
 
     @property
     def dim(self) -> int:
@@ -42,7 +45,8 @@ ROTATIONAL = Domain("rotational", ("phi",), ("tau",), ("rad",), ("N.m",), ("rad/
 PLANAR = Domain("planar", ("x", "y", "phi"), ("fx", "fy", "t"), ("m", "m", "rad"),
                 ("N", "N", "N.m"), ("m/s", "m/s", "rad/s"))
 ELECTRICAL = Domain("electrical", ("v",), ("i",), ("V",), ("A",), ("V/s",), network=True)
-THERMAL = Domain("thermal", ("T",), ("Q_flow",), ("K",), ("W",), ("K/s",), network=True)
+THERMAL = Domain("thermal", ("T",), ("Q_flow",), ("K",), ("W",), ("K/s",), network=True,
+                 potential_start=288.15)
 
 
 class Port:

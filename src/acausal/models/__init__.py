@@ -15,6 +15,8 @@ no compiler or simulation imports.
                         KinematicLoop, PistonEngine (PlanarMechanics' examples)
     pendulums           PendulumChain: N-link planar pendulum
     drivetrains         Drivetrain: DC motor, gear, elastic shaft, fan drum
+    dc_motors           DCMotorCircuit: the DC motor composed of Resistor, Inductor,
+                        RotationalEMF and Inertia (equal to rotational.DCMotor)
     elastic_bearing     ElasticBearing: MSL's gearbox on an elastic bearing (nominals)
     oscillators         Oscillator: mass on a spring and a damper
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
@@ -28,7 +30,9 @@ no compiler or simulation imports.
                         PreLoad (ElastoGap)
     gears               LossyGearDemo1..3, Backlash: MSL's gear-loss and backlash examples
     circuits            CauerLowPassAnalog: MSL's Cauer low-pass filter (capacitor loops:
-                        compiled with index_reduction=True); ChuaCircuit: MSL's Chua circuit
+                        compiled with index_reduction=True); ChuaCircuit: MSL's Chua circuit;
+                        ResistorExample, HeatingRectifier: MSL's Resistor (a resistor heating
+                        through a thermal conductor) and HeatingRectifier (a heating diode)
     eddy_current_brakes RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake: MSL's
                         EddyCurrentBrake examples (a brake heating a heat capacitor)
     heat_losses         TranslationalHeatLosses: MSL's Translational HeatLosses (every
@@ -37,11 +41,12 @@ no compiler or simulation imports.
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
-from .circuits import CauerLowPassAnalog, ChuaCircuit
+from .circuits import CauerLowPassAnalog, ChuaCircuit, HeatingRectifier, ResistorExample
 from .clutches import CoupledClutches, OneWayClutchDisengaged, OneWayClutchDrive
 from .crane import GantryCrane
 from .custom_components import CubicSpring, Flywheel, SimpleDCMotor, duffing_model, motor_model
 from .disk_drive import DiskDriveHead
+from .dc_motors import DCMotorCircuit
 from .drivetrains import Drivetrain
 from .eddy_current_brakes import RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake
 from .elastic_bearing import ElasticBearing
@@ -65,4 +70,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
-           "TranslationalHeatLosses"]
+           "TranslationalHeatLosses", "ResistorExample", "HeatingRectifier",
+           "DCMotorCircuit"]

@@ -1,8 +1,9 @@
-"""MSL's Electrical.Analog examples rebuilt from acausal.components.electrical."""
+"""MSL's Electrical.Analog examples rebuilt from acausal.components.electrical (and thermal)."""
 from __future__ import annotations
 
 from ..core import Model
 from ..components import electrical as el
+from ..components import thermal as th
 
 L1, L2 = 1.304, 0.8586
 C1, C3, C5 = 1.072, 1.682, 0.7262
@@ -51,4 +52,51 @@ class ChuaCircuit(Model):
         for a, b in [(self.L.n, self.Ro.p), (self.C2.p, self.G.p), (self.L.p, self.G.p),
                      (self.G.n, self.Nr.p), (self.C1.p, self.G.n), (self.Ro.n, self.Gnd.p),
                      (self.C2.n, self.Gnd.p), (self.Gnd.p, self.C1.n), (self.Gnd.p, self.Nr.n)]:
+            self.connect(a, b)
+
+
+class ResistorExample(Model):
+    """MSL's Electrical.Analog.Examples.Resistor ("Resistor with simple thermal network",
+    MSL 3's Examples.HeatingResistor): SineVoltage1 (220 V, 1 Hz) across ``resistor`` (R =
+    100 Ω at T_ref = 293.15 K, alpha = 1e-3 1/K, useHeatPort), whose heat flows through
+    ``thermalConductor`` (G = 50 W/K) to ``fixedTemperature`` (Celsius 20 °C = 293.15 K).
+    No states: the resistor's temperature and current solve 0 = v − R_actual·i,
+    T = 293.15 K + v·i/G at every instant. StopTime 5 s."""
+
+    def __init__(self, name=None):
+        super().__init__(name)
+        self.resistor = el.Resistor(R=100.0, alpha=1e-3, T_ref=293.15, useHeatPort=True)
+        self.G = el.Ground()
+        self.SineVoltage1 = el.SineVoltage(V=220.0, f=1.0)
+        self.thermalConductor = th.ThermalConductor(G=50.0)
+        self.fixedTemperature = th.FixedTemperature(T=293.15)
+        for a, b in [(self.SineVoltage1.n, self.G.p),
+                     (self.resistor.heatPort, self.thermalConductor.port_a),
+                     (self.SineVoltage1.p, self.resistor.p), (self.G.p, self.resistor.n),
+                     (self.thermalConductor.port_b, self.fixedTemperature.port)]:
+            self.connect(a, b)
+
+
+class HeatingRectifier(Model):
+    """MSL's Electrical.Analog.Examples.HeatingRectifier: SineVoltage1 (1 V, 1 Hz) through
+    HeatingDiode1 (a Diode with useTemperatureDependency and useHeatPort, MSL's defaults
+    otherwise) onto Capacitor1 (1 F, v = 0) in parallel with R (1 Ω); the diode's heat flows
+    through ThermalConductor1 (10 W/K) into HeatCapacitor1 (1 J/K, T = 293.15 K). StopTime
+    5 s."""
+
+    def __init__(self, name=None):
+        super().__init__(name)
+        self.HeatingDiode1 = el.Diode(useTemperatureDependency=True, useHeatPort=True)
+        self.G = el.Ground()
+        self.SineVoltage1 = el.SineVoltage(V=1.0, f=1.0)
+        self.Capacitor1 = el.Capacitor(C=1.0)
+        self.HeatCapacitor1 = th.HeatCapacitor(C=1.0, T_start=293.15)
+        self.ThermalConductor1 = th.ThermalConductor(G=10.0)
+        self.R = el.Resistor(R=1.0)
+        for a, b in [(self.SineVoltage1.p, self.HeatingDiode1.p),
+                     (self.SineVoltage1.n, self.G.p), (self.Capacitor1.n, self.G.p),
+                     (self.HeatingDiode1.n, self.Capacitor1.p),
+                     (self.HeatingDiode1.heatPort, self.ThermalConductor1.port_a),
+                     (self.ThermalConductor1.port_b, self.HeatCapacitor1.port),
+                     (self.R.p, self.Capacitor1.p), (self.R.n, self.Capacitor1.n)]:
             self.connect(a, b)

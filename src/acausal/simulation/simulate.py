@@ -52,6 +52,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
     ODEs, IDAS for DAEs); the Result then has the event log ``events`` and both limits at
     every event (its time twice in ``t``); the modes' start values are read from ``params``.
+    A model without states whose equations depend on time (a resistive circuit on a source)
+    is solved by Newton's method at each output time.
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
@@ -118,6 +120,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
             return np.zeros((0, grid.size)), np.zeros((0, grid.size))
         x, z = X[0][:, 0], Z[0][:, 0]
+        if not model.x.numel():     # algebraic only (a resistive circuit on a source):
+            return np.zeros((0, grid.size)), _algebraic_only(model, alg, grid, z) * scale[
+                nx:, None]
         events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
             e for s in signals for e in s.events if grid[0] < e < grid[-1]))
         for a, b, pts in _segments(grid, events):
@@ -198,6 +203,24 @@ def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, 
     res.mobility = mobility
     res.solver = solver
     return res
+
+
+def _algebraic_only(model, alg, grid, z0) -> np.ndarray:
+    """The algebraic variables (scaled, one column per output time) of a model without
+    states: 0 = alg(t, z) solved by Newton's method at each output time from the solution
+    at the previous one (``z0`` at the first)."""
+    solve = ca.rootfinder("alg", "newton", {"x": model.z, "p": model.t, "g": alg},
+                          {"abstol": 1e-14, "max_iter": 100, "error_on_fail": True})
+    Z, z = [np.asarray(z0, dtype=float)], np.asarray(z0, dtype=float)
+    for tk in grid[1:]:
+        try:
+            z = np.array(solve(z, tk), dtype=float).ravel()
+        except RuntimeError:
+            raise SimulationError(f"the algebraic equations of '{model.name}' have no solution "
+                                  f"near the one at the previous output time, at t = {tk:g} s: "
+                                  f"check the parameters or give a finer grid t") from None
+        Z.append(z)
+    return np.column_stack(Z)
 
 
 def scaled(model, ode, alg, nominal):
