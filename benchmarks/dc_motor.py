@@ -62,7 +62,7 @@ def run_hand():
     """(wall, CPU, speed [rad/s]): the ODE as CasADi expressions, CVODES on the grid."""
     w0, c0 = time.perf_counter(), time.process_time()
     x = ca.SX.sym("x", 3)
-    phi, w, i = x[0], x[1], x[2]
+    w, i = x[1], x[2]                      # x = [phi, w, i]
     ode = ca.vertcat(w, (K * i - D * w) / (J + J_L), (V - R * i - K * w) / L)
     F = ca.integrator("motor", "cvodes", {"x": x, "ode": ode}, 0.0, GRID[1:],
                       {"abstol": TOL["atol"], "reltol": TOL["rtol"]})
