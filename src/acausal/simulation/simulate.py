@@ -52,6 +52,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
     ODEs, IDAS for DAEs); the Result then has the event log ``events`` and both limits at
     every event (its time twice in ``t``); the modes' start values are read from ``params``.
+    A component's termination condition (MSL's TerminateSimulation) ends the run at the
+    event where it holds: ``Result.terminated`` says when and why, ``t`` ends there.
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
@@ -189,6 +191,7 @@ def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, 
     P[model.mode_params] = D
     res = Result(model, T, X, Z, U, P)
     res.events = run.log
+    res.terminated = run.terminated
     res.mobility = mobility
     res.solver = solver
     return res
