@@ -528,7 +528,8 @@ class EventSimulation(ModeIteration):
                     cols.append((t, x, z, d))
                 x, z, d = x1, z1, d1
                 ends = self._ends(t, x, z, d)
-                if t in grid or len(self.log) > n_log or ends:
+                on_grid = np.any(np.abs(grid - t) <= instant(t))    # to rounding: kept
+                if on_grid or len(self.log) > n_log or ends:
                     cols.append((t, x, z, d))
                 if ends:
                     return self._columns(cols)
