@@ -432,7 +432,8 @@ class TerminateSimulation(Component):
     holds the block; here it is a Boolean input, connected to what computes it (a relation
     block, whose switching is located as a state event, or a Boolean signal that changes
     at time events). Checked at events only, never at the start (a Modelica when-clause is
-    inactive at initialization)."""
+    inactive at initialization). Compiled in smooth form (``compile(model, smooth=True)``,
+    for optimal control over a horizon of its own) it ends nothing."""
     condition = BooleanInput("terminate simulation when condition becomes true")
 
     def __init__(self, name: str | None = None, *,
@@ -441,4 +442,5 @@ class TerminateSimulation(Component):
         self.__dict__["terminationText"] = str(terminationText)
 
     def physics(self, e):
-        e.terminate(e.input(self.condition), self.terminationText)
+        if not e.smooth:
+            e.terminate(e.input(self.condition), self.terminationText)

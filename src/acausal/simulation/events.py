@@ -528,7 +528,9 @@ class EventSimulation(ModeIteration):
                     cols.append((t, x, z, d))
                 x, z, d = x1, z1, d1
                 ends = self._ends(t, x, z, d)
-                on_grid = np.any(np.abs(grid - t) <= instant(t))    # to rounding: kept
+                # an output time at the event, or just before it (to rounding, where the
+                # integration towards the event stops short of it): the right limit there
+                on_grid = np.any((grid > t - instant(t)) & (grid <= t))
                 if on_grid or len(self.log) > n_log or ends:
                     cols.append((t, x, z, d))
                 if ends:

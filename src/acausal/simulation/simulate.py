@@ -28,7 +28,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              interpolation='linear' | 'hold')``, (times, values) or values on t (see
              ``acausal.simulation.inputs``);
     x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``),
-             held exactly;
+             held exactly, as the components' initial equations (``PhysicsBuilder.initial``)
+             are;
     guess    start values by the dotted name of any variable, used where x0 and the
              constraints leave freedom (closed loops: fix the driver in x0, guess the other
              joints, or a joint angle that is no coordinate, e.g. the loop-closing one);
@@ -69,7 +70,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     u0 = np.array(ca.evalf(ca.substitute(u_expr, model.t, grid[0]))).ravel()
     for name, values in (("x0", x0), ("guess", guess)):
         _check_finite(name, values)
-    xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess)
+    xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess,
+                           initial_equations=True)
     scale = model.nominals(p, nominal)           # the integrator works on [x; z] / scale
     nx = model.x.numel()
     mobility = None
