@@ -15,7 +15,7 @@ from acausal.components import logical as lg
 from acausal.components import rotational as rot
 from acausal.components import signals as sig
 from acausal.errors import FmuExportError, InitializationError, ParameterError, StructureError
-from acausal.models.robot_axis import STOP_TIME, Motor, OneAxis
+from acausal.models.robot_axis import STOP_TIME, GearType2, Motor, OneAxis
 
 ONE_AXIS = "Modelica.Mechanics.MultiBody.Examples.Systems.RobotR3.OneAxis"
 FRICTION = "axis.gear.bearingFriction."
@@ -91,6 +91,30 @@ def test_motor_starts_in_steady_state_and_stays_there():
     # and hall1 drop nothing): Ra·i = 5·(−C.v)
     assert v[0] == pytest.approx(-250 * 2.0 / 5, rel=1e-9)
     assert np.ptp(i) < 1e-9 and np.ptp(v) < 1e-6
+
+
+@pytest.mark.parametrize("tau", [0.2, 0.3])
+def test_gear_type2_holds_below_its_peak_and_slides_above(tau):
+    """GearType2 (ratio −99, bearing friction Rv0 = 21.8 N.m, Rv1 = 9.8 N.m.s/rad, peak
+    26.7/21.8 on the driven side) between a motor inertia J1 = 1e-3 kg.m² under tau and a
+    load J2 = 1 kg.m²: the driven side sees i·tau, 19.8 N.m (above Rv0, below the peak
+    26.7 N.m: held) or 29.7 N.m (breaks away at once and slides backward); sliding,
+    (J1·i² + J2)·dw/dt = i·tau + Rv0 − Rv1·w, so w = w_end·(1 − exp(−Rv1·t/(J1·i² + J2)))
+    with w_end = (i·tau + Rv0)/Rv1."""
+    m = model("gear2", lambda m: [(m.src.y, m.torque.tau), (m.torque.flange, m.J1.flange_a),
+                                  (m.J1.flange_b, m.gear.flange_a),
+                                  (m.gear.flange_b, m.J2.flange_a)],
+              src=sig.Constant(k=tau), torque=rot.Torque(), J1=rot.Inertia(J=1e-3),
+              gear=GearType2(), J2=rot.Inertia(J=1.0))
+    res = acausal.compile(m).simulate(2.0, rtol=1e-10, atol=1e-12)
+    w = res["J2.w"]
+    if tau * 99 < 26.7:
+        assert np.abs(w).max() < 1e-12
+        assert set(res["gear.bearingFriction.mode"][1:]) == {0}
+        return
+    J, w_end = 1e-3 * 99 ** 2 + 1.0, (-99 * tau + 21.8) / 9.8
+    assert np.abs(w - w_end * (1 - np.exp(-9.8 * res.t / J))).max() < 1e-8
+    assert np.abs(res["J1.w"] + 99 * w).max() < 1e-9
 
 
 # ---- KinematicPTP2 -----------------------------------------------------------------------
@@ -216,6 +240,18 @@ def test_ideal_op_amp_integrator_ramps():
         amp=el.IdealOpAmp(), g=el.Ground())
     res = acausal.compile(m).simulate(0.2)
     assert np.abs(res["amp.v2"] + V * res.t / (R * C)).max() < 1e-9
+
+
+def test_ideal_op_amp_without_feedback_is_refused():
+    """Open loop, nothing fixes the norator's output (the nullator's v1 = 0 contradicts the
+    source through R): the structural check names the amplifier."""
+    m = model("open_loop", lambda m: [
+        (m.src.p, m.r.p), (m.r.n, m.amp.p1), (m.amp.n1, m.g.p), (m.src.n, m.g.p),
+        (m.amp.p2, m.load.p), (m.load.n, m.g.p), (m.amp.n2, m.g.p)],
+        src=el.ConstantVoltage(V=1.0), r=el.Resistor(R=1.0), amp=el.IdealOpAmp(),
+        load=el.Resistor(R=1.0), g=el.Ground())
+    with pytest.raises(StructureError, match="IdealOpAmp 'amp'"):
+        acausal.compile(m)
 
 
 # ---- InitializeFlange, initial equations ---------------------------------------------------
