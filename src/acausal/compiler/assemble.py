@@ -274,10 +274,12 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
             _stack([s for s, _, _ in network.z]))
     alg = _vc(motion.alg_res, g_alg, net_alg)
     events = _state_events(ws, final, x, _vc(t, x, z, u), p)
+    initial = final(_stack([ex for _, ex, _ in ws.initials]))
     resolve.check([ode, alg, y_out, events.indicator, events.mode_update,
-                   events.reinit_values])
+                   events.reinit_values, events.terminate, initial])
     check = ca.Function("check", [t, x, z, u, p], [ode, alg, y_out, events.indicator,
-                                                    events.mode_update, events.reinit_values],
+                                                    events.mode_update, events.reinit_values,
+                                                    events.terminate, initial],
                         {"allow_free": True})
     if check.has_free():
         raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
@@ -319,6 +321,9 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         fixed_params=fixed,
         mode_params=list(range(n_before_modes, len(params))),
         state_events=events,
+        initial_equations=initial,
+        initial_labels=[f"{o.path or model.name or type(model).__name__}: {n}"
+                        for o, _, n in ws.initials],
         smooth=ws.smooth,
         index_reduction=ws.index_reduction,
         source=model,
@@ -334,9 +339,9 @@ def _mode_record(m) -> ScalarVariable:
 
 
 def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX) -> StateEvents:
-    """The indicators, mode updates (a mode without one keeps its value) and reinits of the
-    components, in (t, x, z, u, p); a reinit's variable resolved to the state it is; the
-    sample triggers' instants as a Function of p."""
+    """The indicators, mode updates (a mode without one keeps its value), reinits and
+    termination conditions of the components, in (t, x, z, u, p); a reinit's variable
+    resolved to the state it is; the sample triggers' instants as a Function of p."""
     indicators = [ScalarVariable(f"{o.path}.{n}" if o.path else n, unit, descr, component=o.path)
                   for o, n, _, unit, descr in ws.indicators]
     index = {(o, n): i for i, (o, n, *_) in enumerate(ws.indicators)}
@@ -365,10 +370,12 @@ def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX) -> Stat
     values = {m.sym.name(): m.values for m in ws.modes if m.values is not None}
     clocks = [k for k, m in enumerate(ws.modes) if m.clock is not None]
     clock_times = _events([ws.modes[k].clock for k in clocks], p)
+    terminate = final(_stack([c for _, c, _ in ws.terminations]))
     return StateEvents(indicators, g, upd, rows, reinit_values, values,
                        real_modes=tuple(m.sym.name() for m in ws.modes if m.real),
                        clocks=clocks, clock_initial=[ws.modes[k].initial for k in clocks],
-                       clock_times=clock_times)
+                       clock_times=clock_times, terminate=terminate,
+                       terminations=[(o.path, text) for o, _, text in ws.terminations])
 
 
 def _check_declarations(ws: Workspace) -> None:

@@ -90,6 +90,8 @@ class Workspace:
     modes: list[ModeInfo] = field(default_factory=list)
     indicators: list = field(default_factory=list)          # (owner, name, expr, unit, descr.)
     reinits: list = field(default_factory=list)             # (owner, variable, expr, when, dir.)
+    initials: list = field(default_factory=list)            # (owner, expr, name) at the start
+    terminations: list = field(default_factory=list)        # (owner, condition, text)
     components: list = field(default_factory=list)          # all of them, flattened
     param_symbols: dict = field(default_factory=dict)       # component -> {name: SX}
     net_nodes: list = field(default_factory=list)           # networks.NetNode
@@ -478,6 +480,42 @@ class PhysicsBuilder(_Base):
     def residual(self, expr) -> None:
         """Add an equation expr = 0 (for algebraic variables)."""
         self._ws.residuals.append((self._owner, sx(expr)))
+
+    def initial(self, expr, name: str = "") -> None:
+        """Modelica's ``initial equation expr = 0``: an equation held at the start of a
+        simulation only, next to the values given in x0 (it must not contradict them), the
+        states otherwise closest to their start values (``simulation.initialization``).
+        ``expr`` may use time, the motion (``pos``/``vel``/``acc`` of ports), states,
+        algebraic variables, inputs, parameters and derivatives: ``e.der(state)`` (so
+        ``e.initial(e.der(C_v))`` starts a capacitor in steady state). A model writes its
+        initial equations over its parts with ``part`` (MSL's RobotR3 motor: der(C.v) = 0,
+        der(La.i) = 0). Solved with the modes at their start values, before the event
+        iteration at the start; ``name`` labels it in errors (``<component>: <name>``).
+        Only a simulation's start holds them (not the operating points of the analyses,
+        nor the FMUs yet, whose export refuses them)."""
+        self._ws.initials.append((self._owner, sx(expr), name or "initial equation"))
+
+    def terminate(self, condition, text: str) -> None:
+        """Modelica's ``when condition then terminate(text)``: the simulation ends at the
+        first event (state or time event, not the start) after which the Boolean
+        ``condition`` (of time, motion, states, inputs, parameters and modes) is true; the
+        Result says so (``Result.terminated``). The condition changes at events only when
+        it is built from modes and time-evented signals (a relation block's output, a
+        time event of this component at the instant it becomes true)."""
+        self._ws.terminations.append((self._owner, sx(condition), str(text)))
+
+    def part(self, component: Component) -> "PhysicsBuilder":
+        """A builder for reading the variables of ``component``, a part of this one (a
+        model's parts, at any depth): its ports' motion and potentials, its states, its
+        inputs, in this component's equations (a model's ``initial`` equations)."""
+        c = component
+        while c is not None and c is not self._owner:
+            c = c.owner
+        if c is None or component is self._owner:
+            raise StructureError(f"{self._owner.path or type(self._owner).__name__}: "
+                                 f"part({getattr(component, 'path', component)!r}) is not a "
+                                 f"part of it")
+        return PhysicsBuilder(self._ws, component)
 
     def output(self, port: RealOutput, expr) -> None:
         """Set the value of a signal output."""

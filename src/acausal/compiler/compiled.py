@@ -100,7 +100,9 @@ class StateEvents:
     declared with ``values``); ``real_modes``: the names of the discrete Real variables
     (sampled values, never rounded); ``clocks``: positions among the modes of the sample
     triggers (``StructureBuilder.sample``), ``clock_times`` the Function p -> (first
-    instants, periods) of them, ``clock_initial`` whether each is true at the start too."""
+    instants, periods) of them, ``clock_initial`` whether each is true at the start too;
+    ``terminate``: the Boolean conditions that end the simulation at an event
+    (``PhysicsBuilder.terminate``), ``terminations`` their (component, text)."""
     indicators: list = field(default_factory=list)
     indicator: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
     mode_update: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
@@ -111,6 +113,8 @@ class StateEvents:
     clocks: list = field(default_factory=list)
     clock_initial: list = field(default_factory=list)
     clock_times: ca.Function | None = None
+    terminate: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
+    terminations: list = field(default_factory=list)
 
 
 @dataclass
@@ -129,6 +133,8 @@ class CompiledModel:
     parameters of this model. ``mode_params``: positions in p of the discrete modes (last in
     p; their records in ``params`` hold their start values, ``component`` their owner).
     ``state_events``: indicators, mode updates and reinits (see ``StateEvents``).
+    ``initial_equations``: the components' initial equations (= 0 at the start, in (t, x,
+    z, u, p); ``PhysicsBuilder.initial``), ``initial_labels`` one label each.
     ``smooth``: compiled in smooth form (``compile(model, smooth=True)``);
     ``index_reduction``: networks' loops and cut sets reduced (``compile(model,
     index_reduction=True)``, kept by ``recompile``). ``source``: the
@@ -163,6 +169,8 @@ class CompiledModel:
     fixed_params: list[str] = field(default_factory=list)
     mode_params: list[int] = field(default_factory=list)
     state_events: StateEvents = field(default_factory=StateEvents)
+    initial_equations: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
+    initial_labels: list[str] = field(default_factory=list)
     smooth: bool = False    # compiled in smooth form (no events; see PhysicsBuilder.smooth)
     index_reduction: bool = False   # networks' loops and cut sets reduced (compiler.networks)
     source: object = field(default=None, repr=False, compare=False)     # the Model compiled
@@ -224,8 +232,10 @@ class CompiledModel:
 
     @property
     def has_events(self) -> bool:
-        """Whether the model has state events (indicators) or modes to update."""
-        return bool(self.state_events.indicators or self.mode_params)
+        """Whether the model has state events (indicators), modes to update or conditions
+        that end the simulation."""
+        return bool(self.state_events.indicators or self.mode_params
+                    or self.state_events.terminations)
 
     @property
     def indicator_function(self) -> ca.Function:

@@ -33,7 +33,7 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "ConstantVoltage", "SignalVoltage", "StepVoltage", "SineVoltage", "ConstantCurrent",
            "SignalCurrent", "VoltageSensor", "CurrentSensor", "PowerSensor", "IdealDiode",
            "IdealOpeningSwitch", "IdealClosingSwitch", "IdealTransformer", "Gyrator",
-           "NonlinearResistor", "IdealOpAmpLimited", "Diode"]
+           "NonlinearResistor", "IdealOpAmp", "IdealOpAmpLimited", "Diode"]
 
 
 class Ground(Component):
@@ -569,6 +569,27 @@ class NonlinearResistor(OnePort):
         self._record(e, v, self._current(e, i))
 
 
+def _nullator(e, p, n):
+    """The input port of an ideal operational amplifier: no current into the pins p, n;
+    its voltage p.v − n.v [V] (0 for the nullator: the amplifier's equations fix it)."""
+    e.flow(p, 0.0)
+    e.flow(n, 0.0)
+    return e.potential(p) - e.potential(n)
+
+
+class IdealOpAmp(TwoPort):
+    """Ideal operational amplifier (MSL Ideal.IdealOpAmp), a norator–nullator pair: the
+    left port p1, n1 a nullator, v1 = 0 [V] and i1 = 0 [A]; the right port p2, n2 a
+    norator, v2 [V] and i2 [A] (i2 = p2.i = −n2.i) whatever the circuit needs. Records
+    v1, i1, v2, i2."""
+
+    def physics(self, e):
+        v1 = _nullator(e, self.p1, self.n1)
+        v2, i2 = self._port(e, 2)
+        e.residual(v1)
+        self._record(e, v1, 0.0, v2, i2)
+
+
 class IdealOpAmpLimited(Component):
     """Ideal operational amplifier with limitation (MSL Ideal.IdealOpAmpLimited): no input
     or supply currents; an auxiliary s [1] (algebraic unknown) with vin = in_p.v − in_n.v =
@@ -587,10 +608,10 @@ class IdealOpAmpLimited(Component):
 
     def physics(self, e):
         sa = e.state("s")
-        for pin in (self.in_p, self.in_n, self.VMax, self.VMin):
+        vin = _nullator(e, self.in_p, self.in_n)
+        for pin in (self.VMax, self.VMin):
             e.flow(pin, 0.0)
         e.flow_of(self.out)
-        vin = e.potential(self.in_p) - e.potential(self.in_n)
         vmax, vmin = e.potential(self.VMax), e.potential(self.VMin)
         e.residual(vin - ca.if_else(sa < -1, sa + 1, ca.if_else(sa > 1, sa - 1, 0.0)))
         e.residual(e.potential(self.out) - ca.if_else(

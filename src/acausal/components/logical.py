@@ -23,8 +23,11 @@ StructureError naming the block; a switching law for optimal control is written 
 smooth expression instead (e.g. a tanh blend of the two signals of a Switch). The logical
 blocks and the Boolean sources (expressions of their inputs and of time) compile either way.
 
+``TerminateSimulation`` ends a simulation at the event where its condition becomes true
+(``PhysicsBuilder.terminate``; ``Result.terminated``).
+
 Not here yet: Edge, FallingEdge, Change, ZeroCrossing (true only at event instants),
-Timer, RSFlipFlop, TriggeredTrapezoid, LogicalDelay, TerminateSimulation, SampleTrigger;
+Timer, RSFlipFlop, TriggeredTrapezoid, LogicalDelay, SampleTrigger;
 Integer signals; model-level Boolean inputs and outputs (``Input`` / ``Output`` are Real: put
 a BooleanToReal in between).
 """
@@ -47,7 +50,7 @@ __all__ = [
     "Greater", "GreaterEqual", "Less", "LessEqual", "Hysteresis", "OnOffController",
     "Switch", "LogicalSwitch",
     "BooleanConstant", "BooleanStep", "BooleanPulse", "BooleanTable",
-    "BooleanToReal", "RealToBoolean",
+    "BooleanToReal", "RealToBoolean", "BooleanPassThrough", "TerminateSimulation",
 ]
 
 
@@ -408,3 +411,36 @@ class BooleanTable(partialBooleanSO):
         e.output(self.y, ca.fmod(flips + int(self.startValue), 2))
         for tk in self.table:
             e.time_event(self.shiftTime + tk)
+
+
+# ---- routing (Modelica.Blocks.Routing) ---------------------------------------------------------
+class BooleanPassThrough(partialBooleanSISO):
+    """y = u (MSL Routing.BooleanPassThrough): a Boolean signal passed on under another
+    name."""
+
+    def physics(self, e):
+        e.output(self.y, e.input(self.u))
+
+
+# ---- terminate (Modelica.Blocks.Logical) --------------------------------------------------------
+class TerminateSimulation(Component):
+    """Ends the simulation when ``condition`` becomes true (MSL
+    Logical.TerminateSimulation: ``when condition then terminate(terminationText)``): the
+    run stops at the event where it holds (the right limit there is the last point of the
+    Result) and ``Result.terminated`` gives the time, this block and ``terminationText``
+    (constructor argument). MSL binds ``condition`` to an expression in the model that
+    holds the block; here it is a Boolean input, connected to what computes it (a relation
+    block, whose switching is located as a state event, or a Boolean signal that changes
+    at time events). Checked at events only, never at the start (a Modelica when-clause is
+    inactive at initialization). Compiled in smooth form (``compile(model, smooth=True)``,
+    for optimal control over a horizon of its own) it ends nothing."""
+    condition = BooleanInput("terminate simulation when condition becomes true")
+
+    def __init__(self, name: str | None = None, *,
+                 terminationText: str = "... End condition reached", **params):
+        super().__init__(name, **params)
+        self.__dict__["terminationText"] = str(terminationText)
+
+    def physics(self, e):
+        if not e.smooth:
+            e.terminate(e.input(self.condition), self.terminationText)

@@ -55,6 +55,7 @@ __all__ = [
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
     "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2",
+    "InitializeFlange",
     # sources
     "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "TorqueStep", "EddyCurrentTorque", "Position", "Speed",
@@ -748,6 +749,36 @@ class ConstantSpeed(PartialElementaryOneFlangeAndSupport2, interfaces.ConstantSp
         super().physics(e)
         e.variable("tau", -e.cut_flow(self.flange), "N.m",
                    "torque the source applies to the flange (= -flange.tau)")
+
+
+class InitializeFlange(Component):
+    """Initializes ``flange`` from the inputs at the start (MSL
+    Components.InitializeFlange): initial equations flange.phi = phi_start [rad] (option
+    ``use_phi_start``), der(flange.phi) = w_start [rad/s] (``use_w_start``) and
+    der(der(flange.phi)) = a_start [rad/s²] (``use_a_start``), each input existing only with
+    its option (all True, MSL's defaults); no torque on the flange (flange.tau = 0). Records
+    phi_flange and w_flange. ``stateSelect`` is accepted as a hint (the compiler chooses
+    the coordinates). The initial equations hold with the modes at their start values
+    (``PhysicsBuilder.initial``)."""
+    options = {"use_phi_start": True, "use_w_start": True, "use_a_start": True,
+               "stateSelect": StateSelect.default}
+    phi_start = ConditionalPort(RealInput("initial angle of flange [rad]"), "use_phi_start")
+    w_start = ConditionalPort(RealInput("initial speed of flange [rad/s]"), "use_w_start")
+    a_start = ConditionalPort(RealInput("initial angular acceleration of flange [rad/s2]"),
+                              "use_a_start")
+    flange = Flange("flange that is initialized")
+
+    def physics(self, e):
+        e.flow(self.flange, 0.0)
+        phi, w, a = e.pos(self.flange), e.vel(self.flange), e.acc(self.flange)
+        for use, port, value, what in (
+                (self.use_phi_start, "phi_start", phi, "flange.phi = phi_start"),
+                (self.use_w_start, "w_start", w, "der(flange.phi) = w_start"),
+                (self.use_a_start, "a_start", a, "der(w) = a_start")):
+            if use:
+                e.initial(value - e.input(getattr(self, port)), what)
+        e.variable("phi_flange", phi, "rad", "flange angle")
+        e.variable("w_flange", w, "rad/s", "= der(phi_flange)")
 
 
 # =========================================================================================

@@ -37,8 +37,8 @@ from enum import Enum
 import casadi as ca
 import numpy as np
 
-from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput, Unavailable,
-                    VectorPort)
+from ..core import (BooleanOutput, Component, ConditionalPort, Parameter, RealInput, RealOutput,
+                    Unavailable, VectorPort)
 from ..core.component import who
 from ..errors import ParameterError
 
@@ -48,11 +48,12 @@ EPS = 1e-15
 __all__ = [
     "SO", "SISO", "SI2SO", "SignalSource",
     "Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid", "TimeTable",
-    "CombiTimeTable", "Smoothness", "Extrapolation", "TimeEvents",
+    "CombiTimeTable", "Smoothness", "Extrapolation", "TimeEvents", "KinematicPTP2",
     "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
     "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID", "LimPID",
     "SimpleController", "Init",
     "Limiter", "VariableLimiter", "DeadZone", "LimiterHomotopy", "VariableLimiterHomotopy",
+    "RealPassThrough",
 ]
 
 
@@ -532,6 +533,173 @@ def _columns(tab: np.ndarray, columns) -> list[int]:
         raise ParameterError(f"CombiTimeTable: columns must be integers in 2..{ncol} (the "
                              f"table's value columns; column 1 is time), got {columns!r}")
     return [int(c) for c in cols]
+
+
+class KinematicPTP2(Component):
+    """Point-to-point motion as fast as the limits allow (MSL Sources.KinematicPTP2): from
+    q_begin to q_end, each axis's speed within qd_max and acceleration within qdd_max
+    (> 0), all axes on one normalized path s(t) ∈ [0, 1] (only the axis at its limit is at
+    it): accelerate at the largest rate, cruise at the largest speed, brake to rest
+    (bang–bang, without cruise phase, when the largest speed is not reached). Outputs
+    q = q_begin + Δq·s, qd = Δq·der(s), qdd = Δq·der(der(s)) and moving = time < endTime
+    (false for an axis that does not move), vectors of nout = the longest of q_begin,
+    q_end, qd_max, qdd_max (a one-element one holds for every axis: MSL's rule); records
+    endTime [s] = startTime + duration (0 if nothing moves). Time events at the phase
+    changes (the acceleration jumps there).
+
+    Constructor arguments ``q_begin``, ``q_end``, ``qd_max``, ``qdd_max`` (numbers or
+    sequences; MSL's defaults 0, 1, 1, 1) give the parameters ``q_begin[i]`` ... (per
+    element, changeable at simulation time); ``startTime`` [s]. Ports ``q[i]``, ``qd[i]``,
+    ``qdd[i]``, ``moving[i]``, numbered from 1.
+    """
+    _classes: dict = {}
+    _vectors = {"q_begin": ("", "start position", {}, 0.0),
+                "q_end": ("", "end position", {}, 1.0),
+                "qd_max": ("", "maximum velocity der(q)", {"positive": True}, 1.0),
+                "qdd_max": ("", "maximum acceleration der(qd)", {"positive": True}, 1.0)}
+    startTime = Parameter(0.0, "s", "time instant at which movement starts")
+
+    def __new__(cls, name=None, **kwargs):
+        if cls is KinematicPTP2:
+            cls = KinematicPTP2._sized(KinematicPTP2._nout(kwargs))
+        return super().__new__(cls)
+
+    @staticmethod
+    def _values(kwargs) -> dict:
+        out = {}
+        for key, (*_, default) in KinematicPTP2._vectors.items():
+            try:
+                v = np.atleast_1d(np.asarray(kwargs.get(key, default), dtype=float)).ravel()
+            except (TypeError, ValueError):
+                v = None
+            if v is None or v.size < 1:
+                raise ParameterError(f"KinematicPTP2: {key} must be a number or a sequence of "
+                                     f"numbers, got {kwargs.get(key)!r}")
+            out[key] = v
+        return out
+
+    @staticmethod
+    def _nout(kwargs) -> int:
+        values = KinematicPTP2._values(kwargs)
+        nout = max(v.size for v in values.values())
+        wrong = [k for k, v in values.items() if v.size not in (1, nout)]
+        if wrong:
+            raise ParameterError(f"KinematicPTP2: {wrong[0]} has {values[wrong[0]].size} "
+                                 f"elements; give 1 or nout = {nout} (the longest of q_begin, "
+                                 f"q_end, qd_max, qdd_max)")
+        return nout
+
+    @staticmethod
+    def _sized(nout: int) -> type:
+        if nout not in KinematicPTP2._classes:
+            attrs = {"__doc__": KinematicPTP2.__doc__, "__module__": KinematicPTP2.__module__,
+                     "__qualname__": "KinematicPTP2", "nout": nout}
+            for key, (unit, text, rule, default) in KinematicPTP2._vectors.items():
+                for i in range(1, nout + 1):
+                    p = Parameter(default, unit, f"{text} [{i}]", **rule)
+                    p.__set_name__(None, f"{key}[{i}]")
+                    attrs[f"{key}[{i}]"] = p
+            for key, cls, text in (("q", RealOutput, "reference position of path planning"),
+                                   ("qd", RealOutput, "reference speed of path planning"),
+                                   ("qdd", RealOutput, "reference acceleration of path "
+                                                       "planning"),
+                                   ("moving", BooleanOutput, "= true, if end position not yet "
+                                                             "reached")):
+                attrs[key] = VectorPort(cls, nout, text)
+            KinematicPTP2._classes[nout] = type("KinematicPTP2", (KinematicPTP2,), attrs)
+        return KinematicPTP2._classes[nout]
+
+    def __init__(self, name: str | None = None, **kwargs):
+        values = self._values(kwargs)
+        params = {k: v for k, v in kwargs.items() if k not in self._vectors}
+        for key, v in values.items():
+            for i in range(1, self.nout + 1):
+                params[f"{key}[{i}]"] = v[0] if v.size == 1 else v[i - 1]
+        super().__init__(name, **params)
+
+    def __reduce_ex__(self, protocol):          # the class is made per nout: rebuild it by nout
+        return _new_ptp2, (self.nout,), self.__dict__
+
+    def _vector(self, key: str) -> list:
+        return [getattr(self, f"{key}[{i}]") for i in range(1, self.nout + 1)]
+
+    def profile(self) -> dict:
+        """The normalized path's data, expressions of the parameters (MSL's names): sd_max,
+        sdd_max, noWphase, the phase ends Ta1s, Ta2s, Tvs, Tes [s], s1, s2, s3, sd_max2 and
+        ``moves`` (false when no axis moves: then s = 0 and endTime = 0)."""
+        eps = 10 * 2.220446049250313e-16                     # MSL: 10*Modelica.Constants.eps
+        dq = [b - a for a, b in zip(self._vector("q_begin"), self._vector("q_end"))]
+        sd_inv = _vmax([ca.fabs(d / v) for d, v in zip(dq, self._vector("qd_max"))])
+        sdd_inv = _vmax([ca.fabs(d / a) for d, a in zip(dq, self._vector("qdd_max"))])
+        moves = ca.logic_and(sd_inv > eps, sdd_inv > eps)
+        sd_max, sdd_max = 1 / ca.fmax(sd_inv, eps), 1 / ca.fmax(sdd_inv, eps)
+        Ta1, Ta2 = ca.sqrt(1 / sdd_max), sd_max / sdd_max
+        noW = Ta2 >= Ta1
+        Tv = ca.if_else(noW, Ta1, 1 / sd_max)
+        Te = ca.if_else(noW, Ta1 + Ta1, Tv + Ta2)
+        sd_max2 = sdd_max * Ta1
+        s1 = sdd_max * ca.if_else(noW, Ta1 * Ta1, Ta2 * Ta2) / 2
+        s2 = s1 + ca.if_else(noW, sd_max2 * (Te - Ta1) - sdd_max / 2 * (Te - Ta1) ** 2,
+                             sd_max * (Tv - Ta2))
+        s3 = s2 + sd_max * (Te - Tv) - sdd_max / 2 * (Te - Tv) ** 2
+        t0 = self.startTime
+        return dict(dq=dq, moves=moves, sd_max=sd_max, sdd_max=sdd_max, noWphase=noW,
+                    Ta1s=Ta1 + t0, Ta2s=Ta2 + t0, Tvs=Tv + t0, Tes=Te + t0, sd_max2=sd_max2,
+                    s1=s1, s2=s2, s3=s3)
+
+    def end_time(self):
+        """endTime [s]: the instant the motion stops (an expression of the parameters)."""
+        p = self.profile()
+        return ca.if_else(p["moves"], p["Tes"], 0.0)
+
+    def physics(self, e):
+        p, t, t0 = self.profile(), e.time, self.startTime
+        a, v, noW = p["sdd_max"], p["sd_max"], p["noWphase"]
+        tau = t - t0
+        up = (a / 2 * tau ** 2, a * tau, a)                                # accelerating
+        # bang-bang: braking from Ta1s; with a cruise phase: cruising to Tvs, then braking
+        tb = t - ca.if_else(noW, p["Ta1s"], p["Tvs"])
+        sb, vb = ca.if_else(noW, p["s1"], p["s2"]), ca.if_else(noW, p["sd_max2"], v)
+        down = (sb + vb * tb - a / 2 * tb ** 2, vb - a * tb, -a)
+        cruise = (p["s1"] + v * (t - p["Ta2s"]), v, 0.0)
+        rest = (ca.if_else(noW, p["s2"], p["s3"]), 0.0, 0.0)
+        phases = [(t < t0, (0.0, 0.0, 0.0)), (t < ca.if_else(noW, p["Ta1s"], p["Ta2s"]), up),
+                  (ca.logic_and(ca.logic_not(noW), t < p["Tvs"]), cruise),
+                  (t < p["Tes"], down)]
+        s = list(rest)
+        for cond, values in reversed(phases):
+            s = [ca.if_else(cond, x, y) for x, y in zip(values, s)]
+        s = [ca.if_else(p["moves"], x, 0.0) for x in s]
+        end = self.end_time()
+        for k, (qb, dq) in enumerate(zip(self._vector("q_begin"), p["dq"]), start=1):
+            e.output(self.q[k], qb + dq * s[0])
+            e.output(self.qd[k], dq * s[1])
+            e.output(self.qdd[k], dq * s[2])
+            e.output(self.moving[k], ca.logic_and(ca.fabs(dq) > 10 * 2.220446049250313e-16,
+                                                  t < end))
+        for time in (t0, ca.if_else(noW, p["Ta1s"], p["Ta2s"]),
+                     ca.if_else(noW, p["Tes"], p["Tvs"]), p["Tes"]):
+            e.time_event(ca.if_else(p["moves"], time, t0))
+        e.variable("endTime", end, "s", "time instant at which movement stops")
+
+
+def _vmax(values: list):
+    out = values[0]
+    for v in values[1:]:
+        out = ca.fmax(out, v)
+    return out
+
+
+def _new_ptp2(nout: int) -> KinematicPTP2:
+    return object.__new__(KinematicPTP2._sized(nout))
+
+
+# ---- routing (Modelica.Blocks.Routing) ---------------------------------------------------------
+class RealPassThrough(SISO):
+    """y = u (MSL Routing.RealPassThrough): a signal passed on under another name."""
+
+    def physics(self, e):
+        e.output(self.y, e.input(self.u))
 
 
 # ---- math (Modelica.Blocks.Math) ---------------------------------------------------------------

@@ -355,9 +355,16 @@ def _check_connectable(a, b) -> None:
             f"cannot connect '{a.path}' ({a.kind}) to '{b.path}' ({b.kind}): a Boolean signal "
             f"connects to Boolean ports only; convert it with a BooleanToReal or RealToBoolean "
             f"block")
-    if isinstance(a, RealOutput) and isinstance(b, RealOutput):
+    if isinstance(a, RealOutput) and isinstance(b, RealOutput) and not (
+            _exports(a, b) or _exports(b, a)):
         raise PortConnectionError(
             f"cannot connect two outputs '{a.path}' and '{b.path}': an output drives inputs")
+
+
+def _exports(outer: Port, inner: Port) -> bool:
+    """Whether ``outer`` is an output of a model that holds ``inner``'s component: the
+    model's output, driven from inside by ``inner``."""
+    return isinstance(outer.owner, Model) and outer.owner in _ancestors(inner.owner)[1:]
 
 
 def _ancestors(c):

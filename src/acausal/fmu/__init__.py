@@ -27,6 +27,14 @@ def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None
     options      native: ``stop_time`` [s] of the DefaultExperiment (default 1), ``description``.
     Returns the Path of the written .fmu.
     """
+    unsupported = compiled.initial_labels + [f"{c}: terminate" for c, _ in
+                                             compiled.state_events.terminations]
+    if unsupported:
+        raise FmuExportError(
+            f"model '{compiled.name}' has initial equations or termination conditions "
+            f"({', '.join(unsupported[:3])}), which the FMUs do not carry yet (their "
+            f"initialization and event update would ignore them): export a model without "
+            f"them, its start values given as parameters")
     if backend == "native":
         from .export import export_native
         try:

@@ -38,6 +38,9 @@ no compiler or simulation imports.
     heat_losses         TranslationalHeatLosses: MSL's Translational HeatLosses (every
                         dissipating element's heatPort to one convection)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
+    robot_axis          OneAxis: MSL's RobotR3.OneAxis (path planning, P-PI controller,
+                        op-amp current-controlled Motor, GearType1 with bearing friction),
+                        with AxisType1/2, GearType1/2, Controller, PathPlanning1
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
@@ -59,6 +62,7 @@ from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, Pis
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
+from .robot_axis import OneAxis
 from .translational_friction import PreLoad, TranslationalBrake, TranslationalFriction
 
 __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane", "CubicSpring",
@@ -71,4 +75,4 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
            "TranslationalHeatLosses", "ResistorExample", "HeatingRectifier",
-           "DCMotorCircuit"]
+           "DCMotorCircuit", "OneAxis"]

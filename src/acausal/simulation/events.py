@@ -34,6 +34,11 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    iteration runs once more with the trigger false. Time events closer than the event
    tolerance are one instant (sample instants of two rates, 3·0.1 and 0.3).
 
+A component's termination condition (``PhysicsBuilder.terminate``, MSL's
+TerminateSimulation) is checked at the right limit of every event (not the start): once it
+holds, the run ends there (``terminated``: when, whose, why), the output grid after it left
+out.
+
 A crossing that can change nothing (a model without modes, no reinit of that indicator in
 that direction: a ball leaving the floor) is no event: not located, not logged.
 ``CHATTER_EVENTS`` state events within ``CHATTER_SPAN`` of the simulated time is chattering:
@@ -51,7 +56,7 @@ import numpy as np
 from ..errors import SimulationError
 from ..numerics import event_times, just_before, short_error
 from .initialization import model_equations
-from .result import Event
+from .result import Event, Termination
 
 CHECKS = 4                 # indicator checks per output interval, and at least
 CHECKS_PER_RUN = 2000      # this many over the simulated time (coarse output grids)
@@ -224,6 +229,10 @@ class EventSimulation(ModeIteration):
         self.owner = [v.component for v in model.state_events.indicators]
         self.names = [v.name for v in model.state_events.indicators]
         self.clocks = list(model.state_events.clocks)
+        self.terminations = model.state_events.terminations
+        if self.terminations:
+            self.terminate = model.function("terminate", [model.state_events.terminate])
+        self.terminated: Termination | None = None
         self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
         self.log: list[Event] = []
 
@@ -503,6 +512,8 @@ class EventSimulation(ModeIteration):
                 x, z, d = self.event(te, xe, ze, d, crossed)
                 cols.append((te, x, z, d))
                 t = te
+                if self._ends(t, x, z, d):
+                    return self._columns(cols)
                 sides = side(self.indicators(t, x, z, d), new)
                 recent.extend((te, k) for k in crossed)
                 self._chattering(recent, span)
@@ -516,12 +527,35 @@ class EventSimulation(ModeIteration):
                 if len(self.log) > n_log:
                     cols.append((t, x, z, d))
                 x, z, d = x1, z1, d1
-                if t in grid or len(self.log) > n_log:
+                ends = self._ends(t, x, z, d)
+                # an output time at the event, or just before it (to rounding, where the
+                # integration towards the event stops short of it): the right limit there
+                on_grid = np.any((grid > t - instant(t)) & (grid <= t))
+                if on_grid or len(self.log) > n_log or ends:
                     cols.append((t, x, z, d))
+                if ends:
+                    return self._columns(cols)
                 sides = side(self.indicators(t, x, z, d), new)
+        return self._columns(cols)
+
+    @staticmethod
+    def _columns(cols):
+        """(T, X, Z, D) of the columns (t, x, z, d) collected by ``run``."""
         T = np.array([c[0] for c in cols])
         return (T, *(np.column_stack([np.asarray(c[k], dtype=float).reshape(-1) for c in cols])
                      .reshape(-1, len(cols)) for k in (1, 2, 3)))
+
+    def _ends(self, t, x, z, d) -> bool:
+        """Whether a termination condition holds at the right limit of the event at t
+        (then recorded in ``terminated``: the first such condition)."""
+        if not self.terminations:
+            return False
+        held = np.array(self.terminate(*self.point(t, x, z, d)), dtype=float).ravel()
+        hit = np.flatnonzero(held > 0.5)
+        if hit.size:
+            component, text = self.terminations[hit[0]]
+            self.terminated = Termination(float(t), component, text)
+        return bool(hit.size)
 
     def _clock_instants(self, t0: float, t1: float) -> list[np.ndarray]:
         """The instants of each sample trigger: its time events in (t0, t1) (the same

@@ -9,7 +9,10 @@ that are not fixed) replace the start values first: a guessed state's start is t
 guess on any other variable g(x, z) = value (a joint angle that is no coordinate, a port's
 position) moves the start values the least that gives it that value, the given values held,
 so that it pulls the projection towards it as a start value does, without being held.
-The cost grows with the number of equations k (a k × k system), not with the model size.
+At a simulation's start the components' initial equations (``PhysicsBuilder.initial``: a
+motor started in steady state, der(C.v) = 0) are hard equations too, next to x0 (with the
+modes at their start values). The cost grows with the number of equations k (a k × k system), not with the model
+size.
 """
 from __future__ import annotations
 
@@ -21,10 +24,12 @@ from ..numerics import ProjectionError, moved_note, project
 
 
 def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
-                  guess: dict | None = None):
+                  guess: dict | None = None, initial_equations: bool = False):
     """(x, z) consistent with ``x0`` (names → values, held exactly) at time t0 with
     parameters p, closest to the start values, moved first by ``guess`` (names of any
-    variables → values, see the module's docstring). Closed loops are assembled this way:
+    variables → values, see the module's docstring); with ``initial_equations`` (a
+    simulation's start) the components' initial equations held too (an operating point of
+    the analyses is where its x puts it). Closed loops are assembled this way:
     fix the driving joint in x0, guess the other joints (or the joint that closes the loop)
     on the branch wanted. Warns, naming them, when loop assembly moved states off their
     guess or start value."""
@@ -35,6 +40,8 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     eqs = [h - v for h, v in zip(given, x0.values())]
     labels, targets = list(x0), [float(v) for v in x0.values()]
     more, more_labels = model_equations(model)
+    if initial_equations and model.initial_equations.numel():
+        more, more_labels = more + [model.initial_equations], more_labels + model.initial_labels
     start = np.array(model.start(p), dtype=float).ravel()
     guess = dict(guess or {})
     soft = {n: v for n, v in guess.items() if n not in names}

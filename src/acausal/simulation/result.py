@@ -28,6 +28,19 @@ class Event:
         return f"t = {self.time:.12g} s: {what}" + (f"; {', '.join(changes)}" if changes else "")
 
 
+@dataclass(frozen=True)
+class Termination:
+    """Why a simulation ended before its final time: at ``time`` [s] the condition of
+    ``component`` (Modelica's ``terminate(message)``, ``PhysicsBuilder.terminate``) held
+    after an event."""
+    time: float
+    component: str
+    message: str
+
+    def __str__(self):
+        return f"terminated at t = {self.time:.12g} s by '{self.component}': {self.message}"
+
+
 class Result:
     """Trajectories on the output grid: ``res.t`` [s], ``res["mass.s"]`` (numpy arrays) for
     any variable of the model by its dotted name.
@@ -40,7 +53,9 @@ class Result:
 
     A model with events: ``events`` is the event log (``Event``s in time order), the modes
     are read like any variable (``res["block.mode"]``), and at each event the time appears
-    twice in ``t``: the left limit, then the right limit.
+    twice in ``t``: the left limit, then the right limit. ``terminated``: a ``Termination``
+    when a component's condition ended the simulation early (``t`` then ends at its
+    instant, the right limit there last), else None.
     """
 
     def __init__(self, model, t, X, Z, U, P):
@@ -54,6 +69,7 @@ class Result:
         self._values = None
         self._units = None
         self.events: list[Event] = []
+        self.terminated: Termination | None = None
 
     @property
     def names(self) -> list[str]:

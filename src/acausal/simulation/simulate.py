@@ -28,7 +28,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              interpolation='linear' | 'hold')``, (times, values) or values on t (see
              ``acausal.simulation.inputs``);
     x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``),
-             held exactly;
+             held exactly, as the components' initial equations (``PhysicsBuilder.initial``)
+             are;
     guess    start values by the dotted name of any variable, used where x0 and the
              constraints leave freedom (closed loops: fix the driver in x0, guess the other
              joints, or a joint angle that is no coordinate, e.g. the loop-closing one);
@@ -53,7 +54,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     ODEs, IDAS for DAEs); the Result then has the event log ``events`` and both limits at
     every event (its time twice in ``t``); the modes' start values are read from ``params``.
     A model without states whose equations depend on time (a resistive circuit on a source)
-    is solved by Newton's method at each output time.
+    is solved by Newton's method at each output time. A component's termination condition
+    (MSL's TerminateSimulation) ends the run at the event where it holds:
+    ``Result.terminated`` says when and why, ``t`` ends there.
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
@@ -69,7 +72,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     u0 = np.array(ca.evalf(ca.substitute(u_expr, model.t, grid[0]))).ravel()
     for name, values in (("x0", x0), ("guess", guess)):
         _check_finite(name, values)
-    xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess)
+    xs, zs = initial_state(model, dict(x0 or {}), p, u0, grid[0], guess,
+                           initial_equations=True)
     scale = model.nominals(p, nominal)           # the integrator works on [x; z] / scale
     nx = model.x.numel()
     mobility = None
@@ -200,6 +204,7 @@ def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, 
     P[model.mode_params] = D
     res = Result(model, T, X, Z, U, P)
     res.events = run.log
+    res.terminated = run.terminated
     res.mobility = mobility
     res.solver = solver
     return res
