@@ -932,9 +932,10 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2,
     PartialFriction); here it runs on the state-event engine as PartialFriction's does
     (``acausal.components.friction``): events ``rolling`` (w_a falling through 0 while
     rolling, setting w_a to 0 exactly), ``breakaway`` (the holding torque leaving
-    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 by more than
-    friction.W_NOISE after breaking away: startForward/startBackward, Boolean modes set at
-    breakaway, are cleared then) and ``tau_eta`` (the driving side changing: the kink
+    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving the round-off
+    band friction.W_NOISE around 0 after breaking away: startForward/startBackward, Boolean
+    modes set at breakaway, are cleared then; rolling on forward out of it, stuck again the
+    other way, see ``friction.start_indicator``) and ``tau_eta`` (the driving side changing: the kink
     between quadrants, past a band of round-off; a mode only of a gear with losses). Two
     elements stuck on one shaft (a LossyGear and a BearingFriction) leave the split of their
     holding torque undetermined: the simulator keeps the split they stuck with (see
@@ -1073,14 +1074,13 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2,
         tau_eta = ca.if_else(locked, tau_a, ca.if_else(fwd, tau_a - tau_bf_a, tau_a + tau_bf_a))
 
         stuck = ca.logic_and(locked, mode == STUCK)
-        e.indicator("rolling", ca.if_else(fwd, w, ca.if_else(bwd, -w, 1.0)), "rad/s",
-                    "w_a while rolling, in its direction")
+        starting = ca.logic_or(start_fwd, start_bwd)
+        e.indicator("rolling", ca.if_else(starting, 1.0, ca.if_else(fwd, w, ca.if_else(
+            bwd, -w, 1.0))), "rad/s", "w_a while rolling (not starting), in its direction")
         e.indicator("breakaway", ca.if_else(stuck, ca.fmin(loss_max_p - tau_loss,
                                                            tau_loss - loss_min_m), 1.0),
                     "N.m", "distance of the holding torque to its bounds while stuck")
-        e.indicator("start", ca.if_else(start_fwd, w - friction.W_NOISE, ca.if_else(
-            start_bwd, -w - friction.W_NOISE, -1.0)), "rad/s",
-            "w_a after breaking away, in its direction, past W_NOISE")
+        friction.start_indicator(e, w, starting, "rad/s", "angular velocity w_a")
         # MSL's relation tau_eta >= 0 with a hysteresis of its round-off (as a simulator's
         # crossing functions): in LossyGearDemo3 tau_eta is 0 while rolling, up to noise
         band = 1e-10 * (ca.fabs(tau_a) + ca.fabs(tau_bf_a) + 1.0)
@@ -1094,13 +1094,13 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2,
         breaks_fwd = ca.logic_and(stuck, tau_loss > loss_max_p)
         breaks_bwd = ca.logic_and(stuck, tau_loss < loss_min_m)
         e.mode_update(start_fwd, ca.logic_or(breaks_fwd, ca.logic_and(
-            start_fwd, ca.logic_and(mode == FORWARD, ca.fabs(w) <= friction.W_NOISE))))
+            mode == FORWARD, friction.still_starting(start_fwd, w))))
         e.mode_update(start_bwd, ca.logic_or(breaks_bwd, ca.logic_and(
-            start_bwd, ca.logic_and(mode == BACKWARD, ca.fabs(w) <= friction.W_NOISE))))
+            mode == BACKWARD, friction.still_starting(start_bwd, w))))
         e.mode_update(pos, ca.if_else(pos, tau_eta + band >= 0, tau_eta - band > 0))
         keeps_fwd = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
         keeps_bwd = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
-        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
+        sign_w = friction.direction(w)
         e.mode_update(mode, ca.if_else(
             mode == STUCK, ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD,
                                                                         STUCK)),

@@ -349,11 +349,20 @@ class EventSimulation(ModeIteration):
 
     def state_at(self, t0, x, z, d, t):
         """(x, z) at t from (t0, x, z), by the normalized integrator (t − t0 may be tiny);
-        closed loops: by an integrator from t0 to t."""
+        closed loops, or where IDAS's own initial-value search fails on the consistent start
+        (IDA_LINESEARCH_FAIL: the normalized integrator, built once, cannot be given the
+        start's derivatives), by an integrator from t0 to t with them."""
         if self.loops or self.static:
             X, Z = self.integrate(t0, [t], x, z, d)
             return X[:, 0], Z[:, 0]
-        sol = self.step(x0=x / self.Nx, z0=z / self.Nz, p=np.concatenate([[t0, t - t0], d]))
+        try:
+            sol = self.step(x0=x / self.Nx, z0=z / self.Nz,
+                            p=np.concatenate([[t0, t - t0], d]))
+        except RuntimeError:
+            if not self.has_alg:
+                raise
+            X, Z = self.integrate(t0, [t], x, z, d)
+            return X[:, 0], Z[:, 0]
         xf = np.array(sol["xf"], dtype=float).ravel() * self.Nx
         zf = np.array(sol["zf"], dtype=float).ravel() * self.Nz if self.has_alg else z
         return xf, zf
