@@ -142,9 +142,10 @@ class PartialCompliant(interfaces.PartialCompliant):
 
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
-    """MSL's variant of PartialCompliant with phi_rel, w_rel as preferred states (here the
-    compiler chooses the coordinates: ``stateSelect``, default prefer, is a hint, see
-    StateSelect); records also a_rel = der(w_rel) [rad/s²].
+    """MSL's variant of PartialCompliant with phi_rel, w_rel as preferred states (the
+    compiler chooses the coordinates; ``stateSelect``, default prefer, see StateSelect, says
+    that w_rel keeps its value at another component's reinit); records also a_rel =
+    der(w_rel) [rad/s²].
 
     phi_rel has MSL's nominal: phi_nominal [rad] (default 1e-4; 1 if below machine epsilon),
     the scale of the error control of the state phi_rel is (e.g. the housing's angle when
@@ -405,8 +406,9 @@ class Clutch(PartialCompliantWithRelativeStates, friction.NormalForceFriction,
         w_rel, a_rel = self._relfric(e)
         e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad",
                    "relative rotation angle (= flange_b.phi - flange_a.phi)",
-                   nominal=self.rel_nominal())
-        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))")
+                   nominal=self.rel_nominal(), stateSelect=self.state_select())
+        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))",
+                   stateSelect=self.state_select())
         e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
 
 
@@ -480,8 +482,9 @@ class _Overrunning(PartialCompliantWithRelativeStates,
         self._apply_opposite_flows(e, tau)
         e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad",
                    "relative rotation angle (= flange_b.phi - flange_a.phi)",
-                   nominal=self.rel_nominal())
-        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))")
+                   nominal=self.rel_nominal(), stateSelect=self.state_select())
+        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))",
+                   stateSelect=self.state_select())
         e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
         e.variable("tau", tau, "N.m", "torque between flanges (= flange_b.tau)")
         e.variable("free", free, "", "= true, if frictional element is not active")

@@ -18,7 +18,9 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    ``EVENT_TOL``·max(1, |t|); every indicator that changed sign over that last bracket crossed
    at the event (simultaneous events), the bracket's end is the event's left limit;
 3. at the event instant: the reinits of the crossed indicators (in their direction, their
-   values at the left limit), then the event iteration on the reinitialized states: all
+   values at the left limit; a reinit of a velocity comes with the reinits of the
+   velocities that follow it, so that the states a Modelica tool keeps keep their values:
+   ``PhysicsBuilder.reinit``), then the event iteration on the reinitialized states: all
    modes updated together from the present ones, the algebraic variables solved in between,
    until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine); in closed loops
    the states are projected onto the loop constraints and their rates (the reinitialized
