@@ -1212,7 +1212,8 @@ class _ElastoBacklash(PartialCompliantWithRelativeStates,
             tc, td = contact * tau_c, contact * tau_d            # in its direction
             tau, loss = self._contact_law(e, contact, tc, td)
             tau = ca.if_else(pushing, contact * tau, 0.0)
-            loss = ca.if_else(pushing, loss * w_rel, 0.0)
+            loss = ca.if_else(pushing, contact * loss * w_rel, 0.0)    # back from the
+            # contact's direction: at bMin (contact −1) the loss torque is −loss
             tau_c = ca.if_else(contact == 0, 0.0, tau_c)
             touching = ca.logic_and(contact != 0, ca.logic_not(plain))
             e.indicator("bMax", ca.if_else(plain, 1.0, phi_diff - b_max), "rad",

@@ -45,7 +45,10 @@ Result (its time appears twice).
 """
 from __future__ import annotations
 
+import os
+import sys
 from collections import deque
+from contextlib import contextmanager
 
 import casadi as ca
 import numpy as np
@@ -357,14 +360,16 @@ class EventSimulation(ModeIteration):
         if self.loops or self.static:
             X, Z = self.integrate(t0, [t], x, z, d)
             return X[:, 0], Z[:, 0]
-        try:
-            sol = self.step(x0=x / self.Nx, z0=z / self.Nz,
-                            p=np.concatenate([[t0, t - t0], d]))
-        except RuntimeError:
-            if not self.has_alg:
-                raise
-            X, Z = self.integrate(t0, [t], x, z, d)
-            return X[:, 0], Z[:, 0]
+        if not self.has_alg:
+            sol = self.step(x0=x / self.Nx, p=np.concatenate([[t0, t - t0], d]))
+        else:
+            try:
+                with _quiet_stderr():         # IDAS prints the failed search's reason
+                    sol = self.step(x0=x / self.Nx, z0=z / self.Nz,
+                                    p=np.concatenate([[t0, t - t0], d]))
+            except RuntimeError:
+                X, Z = self.integrate(t0, [t], x, z, d)
+                return X[:, 0], Z[:, 0]
         xf = np.array(sol["xf"], dtype=float).ravel() * self.Nx
         zf = np.array(sol["zf"], dtype=float).ravel() * self.Nz if self.has_alg else z
         return xf, zf
@@ -566,6 +571,20 @@ class EventSimulation(ModeIteration):
             f"(indicators {', '.join(names)}): its modes switch back and forth without end "
             f"(an ideal relay, a sliding mode, a Zeno accumulation of impacts); give it a mode "
             f"that holds at the switching surface (a stuck mode) or end the simulation before")
+
+
+@contextmanager
+def _quiet_stderr():
+    """The process's standard error (file descriptor 2, where SUNDIALS writes) discarded."""
+    sys.stderr.flush()
+    saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(null, 2)
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(null)
 
 
 def _checks(grid, t, end, limit: int):
