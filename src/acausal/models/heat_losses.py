@@ -1,6 +1,7 @@
-"""MSL's Translational.Examples.HeatLosses: every dissipating element of a translational
-drive line sends its lossPower through its heatPort (useHeatPort=True) to one convection
-element (Gc = 20 W/K) to an ambient of 25 °C.
+"""MSL's Translational.Examples.HeatLosses (below) and Rotational.Examples.HeatLosses
+(``RotationalHeatLosses``): every dissipating element of a drive line sends its lossPower
+through its heatPort (useHeatPort=True) to one convection element (Gc = 20 W/K) to an
+ambient of 25 °C.
 
     sine1 → force ─ mass1 ─ springDamper ─ mass2 ─ supportFriction ─ spring ─ mass3 ─ brake
                      │  │                                                sine2 ─┘ │
