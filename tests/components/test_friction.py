@@ -7,12 +7,13 @@ block on a support friction at rest below breakaway and sliding to a stop, a tra
 brake free without normal force and braking after a step of it."""
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 import acausal
 from acausal.components import rotational as rot
 from acausal.components import translational as tr
 from acausal.components.friction import table_value, check_table
-from acausal.components.signals import Constant, Ramp, Step
+from acausal.components.signals import Constant, Ramp, Sine, Step
 from acausal.errors import ParameterError
 from acausal.models import RotationalFriction
 from acausal.models.friction import START
@@ -313,3 +314,53 @@ def test_stuck_cart_breaks_away_at_a_force_step_whatever_the_roundoff_of_its_spe
              if "friction.mode" in ev.modes]
     assert modes == [(0.0, (3.0, 0.0)), (t1, (0.0, 1.0))]
     assert np.all(res["rail.v"][res.t > t1] > 0)
+
+
+def _grazing_bearing(eps):
+    """A flywheel (J = 1 kg.m², at rest) on a BearingFriction (tau0 = tau0_max = 1 N.m),
+    driven by T = (1 + eps)·sin(π t) N.m: T exceeds tau0 for |t − 0.5| < arccos(1/(1 + eps))/π."""
+    model = acausal.Model("grazing")
+    model.flywheel, model.bearing = rot.Inertia(J=1.0), rot.BearingFriction()
+    model.torque = rot.Torque()
+    model.sine = Sine(f=0.5, amplitude=1.0 + eps)
+    for a, b in [(model.sine.y, model.torque.tau), (model.torque.flange, model.flywheel.flange_a),
+                 (model.flywheel.flange_b, model.bearing.flange_a)]:
+        model.connect(a, b)
+    return model
+
+
+@pytest.mark.parametrize("eps", [1e-7, 1e-3])
+def test_a_start_that_turns_back_at_once_sticks_again_instead_of_chattering(eps):
+    """T = (1 + eps)·sin(π t) just exceeds the breakaway torque 1 N.m around t = 0.5 s: the
+    flywheel breaks away at t_a = 0.5 − arccos(1/(1 + eps))/π, slides with
+    w = (1 + eps)(cos π t_a − cos π t)/π − (t − t_a) while w > 0 and sticks again at the
+    root t_r of w (closed form). eps = 1e-7: the slide peaks at 1.9e-11 rad/s, within the
+    round-off band friction.W_NOISE: its acceleration reverses while the element is still
+    starting (startForward). The mode machine used to read w falling through 0 then as a
+    sliding element reaching w = 0, set w to 0 and, startForward being set, kept it sliding
+    forward: the friction then drove the flywheel backward (w = −0.18 rad/s at t = 1 s,
+    energy from nowhere), or, where w stayed at 0 within round-off, the same event came
+    again and again (MSL's Rotational HeatLosses: chattering, a SimulationError). It sticks
+    again now, its speed within W_NOISE of 0. eps = 1e-3: a visible slide
+    (2e-5 rad/s) that sticks again at t_r to 1e-9 s."""
+    A = 1.0 + eps
+    t_a = 0.5 - np.arccos(1.0 / A) / np.pi
+
+    def w(t):
+        return A * (np.cos(np.pi * t_a) - np.cos(np.pi * t)) / np.pi - (t - t_a)
+    t_r = brentq(w, 0.5 + 1e-9, 0.5 + 10 * (0.5 - t_a))
+    t = np.linspace(0.0, 1.0, 2001)
+    res = acausal.compile(_grazing_bearing(eps)).simulate(1.0, t=t, **TOL)
+    at = np.searchsorted(res.t, t, side="right") - 1
+    ref = np.where((t > t_a) & (t < t_r), w(t), 0.0)
+    np.testing.assert_allclose(res["flywheel.w"][at], ref, atol=2e-10 + 1e-6 * ref.max(),
+                               rtol=0)
+    modes = [(ev.time, ev.modes["bearing.mode"][1]) for ev in res.events
+             if "bearing.mode" in ev.modes]
+    assert [m for _, m in modes] == [0.0, 1.0, 0.0], modes       # stuck, slides, stuck
+    assert abs(modes[1][0] - t_a) < 1e-9
+    if eps > 1e-6:
+        assert abs(modes[2][0] - t_r) < 1e-9
+    else:           # stuck again where w leaves the band: w ≈ −3·eps·(t − t_r)
+        assert t_r < modes[2][0] < t_r + 2 * 1e-10 / (3 * eps)
+    assert res["bearing.mode"][-1] == 0 and abs(res["flywheel.w"][-1]) <= 1.01e-10

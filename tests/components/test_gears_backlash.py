@@ -12,6 +12,7 @@ import pytest
 
 import acausal
 from acausal.components import rotational as rot
+from acausal.components import thermal as th
 from acausal.components.signals import Sine
 from acausal.errors import ParameterError
 from acausal.models.gears import (START, Backlash, LossyGearDemo1, LossyGearDemo2,
@@ -281,3 +282,36 @@ def test_backlash_example_matches_the_msl_reference(reference_result):
                         "springDamper.phi_rel", "springDamper.w_rel"), ())
     # ElastoBacklash2 differs from ElastoBacklash only by the damping at contact
     assert np.abs(res["elastoBacklash2.phi_rel"] - res["elastoBacklash.phi_rel"]).max() > 1e-3
+
+
+@pytest.mark.parametrize("w0", [1.0, -1.0])
+def test_elasto_backlash_loss_power_is_the_energy_its_damper_takes_at_either_contact(w0):
+    """An inertia (J = 1 kg.m², w0 = ±1 rad/s) rebounding off an ElastoBacklash (c = 1e4
+    N.m/rad, d = 30 N.m.s/rad, b = 0.1 rad) to the ground: contact at bMax (w0 > 0) or at
+    bMin (w0 < 0); lossPower ≥ 0 and its integral, taken by a heat capacitor (C = 1 J/K),
+    closes the energy balance ½ J w0² = ½ J w² + ½ c (phi_diff ∓ b/2)² (while it pushes)
+    + heat + the spring energy MSL's law drops when it stops pushing while still deflected
+    (the jumps of the pushing energy at those events), to 1e-8 of the energy; the
+    same at either side."""
+    model = acausal.Model("rebound")
+    model.inertia, model.fixed = rot.Inertia(J=1.0), rot.Fixed()
+    model.backlash = rot.ElastoBacklash(c=1e4, d=30.0, b=0.1, useHeatPort=True)
+    model.cap = th.HeatCapacitor(C=1.0)
+    for a, b in [(model.fixed.flange, model.backlash.flange_a),
+                 (model.backlash.flange_b, model.inertia.flange_a),
+                 (model.backlash.heatPort, model.cap.port)]:
+        model.connect(a, b)
+    # the capacitor starts at 1 K: the relative error control of its state resolves 1e-10 J
+    res = acausal.compile(model).simulate(0.2, t=np.linspace(0, 0.2, 201),
+                                          x0={"inertia.w": w0, "cap.T": 1.0}, rtol=1e-10,
+                                          atol=1e-12)
+    assert np.min(res["backlash.lossPower"]) >= 0 and np.max(res["backlash.lossPower"]) > 0.1
+    assert abs(res["inertia.w"][-1]) < abs(w0) and res["inertia.w"][-1] * w0 < 0   # rebound
+    pushing = 0.5 * 1e4 * (res["backlash.phi_diff"] - res["backlash.contact"] * 0.05) ** 2 \
+        * res["backlash.pushing"]
+    dropped = np.zeros_like(res.t)
+    for k in np.flatnonzero(np.diff(res.t) == 0):
+        dropped[k + 1:] += pushing[k] - pushing[k + 1]
+    heat = res["cap.T"] - 1.0
+    balance = 0.5 * w0 ** 2 - 0.5 * res["inertia.w"] ** 2 - pushing - heat - dropped
+    assert np.max(np.abs(balance)) < 1e-8 * 0.5 * w0 ** 2

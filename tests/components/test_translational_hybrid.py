@@ -415,3 +415,37 @@ def test_elasto_gap_smooth_form_is_within_its_documented_error():
 def test_bad_parameters_are_refused_naming_component_and_parameter(make, match):
     with pytest.raises(ParameterError, match=match):
         make()
+
+
+@pytest.mark.parametrize("joint", ["SpringDamper", "Spring"])
+def test_a_reinit_keeps_the_relative_states_a_modelica_tool_keeps(joint):
+    """Two masses (1 kg, 2 kg) at 1 m/s side by side, joined by a SpringDamper (c = 100 N/m,
+    d = 1 N.s/m: MSL's relative states s_rel, v_rel, stateSelect prefer) or by a Spring
+    (PartialCompliant: no relative states); mass1 hits a HardStop (e = 0.5) at s = 0.5 m,
+    t = 0.5 s: reinit(v, −e·v). With the SpringDamper, v_rel is a state Modelica keeps:
+    mass2 jumps by the same −1.5 m/s (to −0.5 m/s); with the Spring, only mass1's v changes
+    (mass2 keeps 1 m/s). Only the reinit'd variable and the velocities that are no kept
+    state change: positions, and v_rel with the SpringDamper, are continuous."""
+    model = acausal.Model("pair")
+    model.mass1, model.mass2 = tr.Mass(m=1.0), tr.Mass(m=2.0)
+    model.joint = tr.SpringDamper(c=100.0, d=1.0) if joint == "SpringDamper" \
+        else tr.Spring(c=100.0)
+    model.stop = tr.HardStop(smax=0.5, e=0.5)
+    for a, b in [(model.mass1.flange_b, model.joint.flange_a),
+                 (model.joint.flange_b, model.mass2.flange_a),
+                 (model.mass1.flange_a, model.stop.flange)]:
+        model.connect(a, b)
+    res = acausal.compile(model).simulate(
+        0.6, t=np.linspace(0, 0.6, 61), x0={"mass1.s": 0.0, "mass1.v": 1.0, "mass2.s": 0.0,
+                                            "mass2.v": 1.0}, rtol=1e-10, atol=1e-12)
+    impact = res.events[0]
+    assert impact.indicator == "stop.gap_max" and abs(impact.time - 0.5) < 1e-9
+    k = np.flatnonzero(res.t == impact.time)
+    assert len(k) == 2
+    before, after = k
+    np.testing.assert_allclose(res["mass1.v"][[before, after]], [1.0, -0.5], atol=1e-9)
+    expected = -0.5 if joint == "SpringDamper" else 1.0
+    np.testing.assert_allclose(res["mass2.v"][[before, after]], [1.0, expected], atol=1e-9)
+    assert res["mass2.s"][after] == res["mass2.s"][before]
+    if joint == "SpringDamper":
+        assert abs(res["joint.v_rel"][after] - res["joint.v_rel"][before]) < 1e-12

@@ -25,6 +25,7 @@ from __future__ import annotations
 import gc
 
 import casadi as ca
+import numpy as np
 
 from ..core.component import Model
 from ..core.parameter import Parameter, symbolic_parameters
@@ -273,7 +274,8 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     z = _vc(motion.alg_vars, _stack([a.sym for a in algebraics]),
             _stack([s for s, _, _ in network.z]))
     alg = _vc(motion.alg_res, g_alg, net_alg)
-    events = _state_events(ws, final, x, _vc(t, x, z, u), p)
+    events = _state_events(ws, final, x, _vc(t, x, z, u), p,
+                           range(motion.q_diff.numel(), motion.n_x), [v.start for _, v in params])
     initial = final(_stack([ex for _, ex, _ in ws.initials]))
     resolve.check([ode, alg, y_out, events.indicator, events.mode_update,
                    events.reinit_values, events.terminate, initial])
@@ -338,10 +340,13 @@ def _mode_record(m) -> ScalarVariable:
                           declaration=declaration, component=m.owner.path)
 
 
-def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX) -> StateEvents:
+def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX, velocities: range,
+                  p0: list) -> StateEvents:
     """The indicators, mode updates (a mode without one keeps its value), reinits and
     termination conditions of the components, in (t, x, z, u, p); a reinit's variable
-    resolved to the state it is; the sample triggers' instants as a Function of p."""
+    resolved to the state it is, a reinit of a generalized velocity (x[velocities]) followed
+    by the reinits of the velocities that follow it (``_followers``, chosen at the
+    parameters' start values p0); the sample triggers' instants as a Function of p."""
     indicators = [ScalarVariable(f"{o.path}.{n}" if o.path else n, unit, descr, component=o.path)
                   for o, n, _, unit, descr in ws.indicators]
     index = {(o, n): i for i, (o, n, *_) in enumerate(ws.indicators)}
@@ -364,8 +369,10 @@ def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX) -> Stat
                                  f"one state scaled and offset by parameters); reinit a state "
                                  f"or the velocity of a flange that has one")
         k, a = hit
-        rows.append(Reinit(k, index[(owner, when)], direction,
-                           (value - ca.substitute(v, x[k], 0)) / a))
+        new = (value - ca.substitute(v, x[k], 0)) / a
+        rows.append(Reinit(k, index[(owner, when)], direction, new))
+        rows += [Reinit(j, index[(owner, when)], direction, x[j] + dj * (new - x[k]))
+                 for j, dj in _followers(ws, final, owner, k, x, free, p, velocities, p0)]
     reinit_values = _stack([r.value for r in rows])
     values = {m.sym.name(): m.values for m in ws.modes if m.values is not None}
     clocks = [k for k, m in enumerate(ws.modes) if m.clock is not None]
@@ -376,6 +383,48 @@ def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX) -> Stat
                        clocks=clocks, clock_initial=[ws.modes[k].initial for k in clocks],
                        clock_times=clock_times, terminate=terminate,
                        terminations=[(o.path, text) for o, _, text in ws.terminations])
+
+
+def _followers(ws: Workspace, final, owner, k: int, x: ca.SX, free: ca.SX, p: ca.SX,
+               velocities: range, p0: list) -> list:
+    """[(j, d_j)]: the generalized velocities x[j] that a reinit of x[k] by ``owner`` moves,
+    by d_j times its jump, so that the states a Modelica tool keeps keep their values (see
+    PhysicsBuilder.reinit): the velocities other components declare stateSelect always,
+    then prefer (``ws.state_selects``: expressions linear in x[velocities]), then the
+    generalized velocities themselves, each kept where independent of those before (rank
+    at p0 and a generic point). None when x[k] is no generalized velocity or nothing
+    declared is kept."""
+    if k not in velocities or not ws.state_selects:
+        return []
+    w = x[list(velocities)]
+    rows = []
+    for other, _, expr, rank in sorted(ws.state_selects, key=lambda r: r[3]):
+        if other is owner:
+            continue
+        J = ca.jacobian(final(expr), w)
+        if J.nnz() and not ca.depends_on(J, w):         # a velocity: linear in them
+            rows.append(J)
+    if not rows:
+        return []
+    n, at = w.numel(), k - velocities.start
+    unit = ca.DM.eye(n)
+    rows = [ca.SX(unit[at, :])] + rows + [ca.SX(unit[j, :]) for j in range(n) if j != at]
+    probe = ca.Function("kept", [free, p], [ca.vertcat(*rows)], {"allow_free": True})
+    rng = np.random.default_rng(0)
+    A = np.array(probe(rng.uniform(0.5, 1.5, free.numel()), p0), dtype=float)
+    chosen = []
+    for r in range(A.shape[0]):
+        if np.linalg.matrix_rank(A[chosen + [r]]) > len(chosen):
+            chosen.append(r)
+    if all(r == 0 or r > len(rows) - n for r in chosen):      # only coordinates: no change
+        return []
+    rhs = ca.DM.zeros(n, 1)
+    rhs[0] = 1.0
+    d = ca.solve(ca.vertcat(*[rows[r] for r in chosen]), rhs)
+    d0 = np.array(ca.Function("d", [free, p], [d], {"allow_free": True})(
+        rng.uniform(0.5, 1.5, free.numel()), p0), dtype=float).ravel()
+    return [(velocities.start + j, d[j]) for j in range(n)
+            if j != at and (abs(d0[j]) > 1e-12 or ca.depends_on(d[j], ca.vertcat(free, p)))]
 
 
 def _check_declarations(ws: Workspace) -> None:

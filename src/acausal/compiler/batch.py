@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import casadi as ca
 
-from .builders import PhysicsBuilder, Workspace
+from .builders import KEPT, PhysicsBuilder, Workspace
 
 #: fewer instances than this are not worth a batch
 MIN_BATCH = 8
@@ -59,10 +59,13 @@ class _TraceBuilder(PhysicsBuilder):
     def potential_energy(self, V):
         self.out.append(("V", None, ca.SX(V)))
 
-    def variable(self, name, expr, unit="", description="", nominal=None):
+    def variable(self, name, expr, unit="", description="", nominal=None, stateSelect=None):
         self.out.append(("var", (name, unit, description), ca.vec(ca.SX(expr))))
         if nominal is not None:
             self.out.append(("nominal", name, ca.SX(nominal)))
+        rank = KEPT.get(getattr(stateSelect, "value", stateSelect))
+        if rank is not None:
+            self.out.append(("kept", (name, rank), ca.vec(ca.SX(expr))))
 
     def _refuse(self, *args, **kwargs):
         raise _NotBatchable
@@ -151,6 +154,10 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
         elif kind == "nominal":
             for c, col in zip(members, cols):
                 ws.nominals[f"{c.path}.{what}" if c.path else what] = col
+        elif kind == "kept":
+            name, rank = what
+            for c, col in zip(members, cols):
+                ws.state_selects.append((c, f"{c.path}.{name}" if c.path else name, col, rank))
         else:
             name, unit, desc = what
             for c, col in zip(members, cols):

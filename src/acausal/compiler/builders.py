@@ -92,6 +92,7 @@ class Workspace:
     reinits: list = field(default_factory=list)             # (owner, variable, expr, when, dir.)
     initials: list = field(default_factory=list)            # (owner, expr, name) at the start
     terminations: list = field(default_factory=list)        # (owner, condition, text)
+    state_selects: list = field(default_factory=list)       # (owner, name, expr, rank) kept
     components: list = field(default_factory=list)          # all of them, flattened
     param_symbols: dict = field(default_factory=dict)       # component -> {name: SX}
     net_nodes: list = field(default_factory=list)           # networks.NetNode
@@ -112,6 +113,10 @@ class Workspace:
             self.signal_sym[src] = s
             self.der_table[s.name()] = _lazy_signal_rate(self, s)
         return self.signal_sym[src]
+
+
+#: Modelica's stateSelect values of the variables a reinit keeps, by rank (first kept first)
+KEPT = {"always": 0, "prefer": 1}
 
 
 def _lazy_signal_rate(ws: Workspace, s: ca.SX) -> ca.SX:
@@ -471,7 +476,22 @@ class PhysicsBuilder(_Base):
         from negative to positive, 0: either), the state ``variable`` (a state, or a
         variable that is one state scaled and offset by parameters: ``e.vel(flange)``) jumps
         to ``expr``, evaluated at the event's left limit (every value in it is its ``pre``),
-        in the variable's units."""
+        in the variable's units.
+
+        What else a reinit of a velocity changes follows Modelica: a reinit changes only the
+        reinitialized variable and keeps every other state, where the states are those a
+        Modelica tool selects. Here the generalized velocities are the states; the velocities
+        other components declare ``stateSelect`` prefer or always (``variable``: MSL's
+        relative states v_rel / w_rel of its compliant elements with relative states,
+        clutches) are kept first (always before prefer, then in declaration order, each
+        where it is independent of the ones before), then the generalized velocities, as
+        far as they are independent; the velocities that are no such state follow. E.g. a
+        mass stopped by reinit(v, 0) that a SpringDamper (relative states) joins to another
+        mass takes that mass along: the spring damper's v_rel is kept (MSL's
+        Translational HeatLosses). The compiler writes this as reinits of the velocities
+        that follow (``CompiledModel.state_events.reinits``, logged with the event);
+        simultaneous reinits that move the same velocity are applied one after the other,
+        each from the left limit."""
         if direction not in (-1, 0, 1):
             raise StructureError(f"{self._owner.path}: reinit direction must be -1, 0 or 1, "
                                  f"got {direction!r}")
@@ -524,13 +544,20 @@ class PhysicsBuilder(_Base):
         self._ws.signal_expr[port] = sx(expr)
 
     def variable(self, name: str, expr, unit: str = "", description: str = "",
-                 nominal=None) -> None:
+                 nominal=None, stateSelect=None) -> None:
         """Record ``expr`` as ``<component>.<name>`` in results. ``nominal``: its magnitude (a
         number or an expression of parameters), Modelica's ``nominal`` attribute: the scale
-        of the error control of the state it is (``CompiledModel.nominal``)."""
+        of the error control of the state it is (``CompiledModel.nominal``).
+        ``stateSelect``: Modelica's attribute (a ``StateSelect``); a velocity (an expression
+        linear in the generalized velocities) declared ``prefer`` or ``always`` is one a
+        Modelica tool keeps as a state, and so keeps its value at another component's
+        reinit (see ``reinit``)."""
         self._ws.variables.append((self._name(name), sx(expr), unit, description))
         if nominal is not None:
             self._ws.nominals[self._name(name)] = _start(nominal)
+        rank = KEPT.get(getattr(stateSelect, "value", stateSelect))
+        if rank is not None:
+            self._ws.state_selects.append((self._owner, self._name(name), sx(expr), rank))
 
     def outer(self, cls) -> Component:
         """The one component of class ``cls`` in the model (Modelica's inner/outer), e.g. the

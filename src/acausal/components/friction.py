@@ -12,9 +12,9 @@ sliding characteristic tau = F(w_relfric); backward, tau = −F(−w_relfric); f
 Events: ``sliding`` (the relative speed falling through 0 while sliding), ``breakaway``
 (tau0_max − |tau| falling through 0 while stuck), both setting the relative speed to 0
 exactly (the stuck element's speed drifts by the integrator's tolerance otherwise), ``start``
-(the relative speed leaving 0, by more than the round-off W_NOISE, after breaking away),
-``fn`` (the
-normal force crossing 0, for elements that can be free). At every event the modes are updated
+(the relative speed leaving the round-off band W_NOISE around 0 after breaking away: sliding
+on in the starting direction, stuck again the other way, see ``start_indicator``), ``fn``
+(the normal force crossing 0, for elements that can be free). At every event the modes are updated
 as MSL does: a stuck element slides forward when the torque that holds it exceeds tau0_max
 (backward below −tau0_max; ``startForward``/``startBackward``, Boolean modes, are set then and
 cleared at the next event), a sliding element that reaches w_relfric = 0 keeps sliding only
@@ -59,6 +59,39 @@ MODES = (BACKWARD, STUCK, FORWARD, FREE, UNKNOWN)
 #: [rad/s, m/s] how far the relative speed must leave 0 to clear startForward/startBackward:
 #: above the round-off a speed set to 0 drifts by while other elements hold the motion
 W_NOISE = 1e-10
+
+
+def start_indicator(e, w, starting, unit: str, speed: str) -> None:
+    """The indicator ``start`` of an element that has just broken away (startForward or
+    startBackward, ``starting``): W_NOISE − |w|, w its relative speed, falling through 0
+    when w leaves the round-off band [−W_NOISE, W_NOISE] around 0, either way (1 otherwise).
+
+    At breakaway the sliding acceleration is ~0 (peak = 1: the holding torque has just
+    reached tau0_max = tau0), so the speed decides, as MSL's relations on w_relfric do: out
+    of the band in the starting direction the element slides; back out of it on the other
+    side the acceleration reversed before the element got going (the holding torque fell
+    below tau0 again: MSL's ``pre(startForward) and sa > tau0`` turning false), and it
+    sticks again, its speed left at the band's edge (as MSL leaves it: no reinit). While
+    starting the element's sliding indicator is off: read as sliding, w dipping below 0 was
+    a sliding element reaching w = 0, reinit to 0 and kept sliding by startForward, again
+    and again (chattering)."""
+    e.indicator("start", ca.if_else(starting, W_NOISE - ca.fabs(w), 1.0), unit,
+                f"W_NOISE - |relative {speed}| after breaking away (leaving the round-off "
+                f"band around 0)")
+
+
+def direction(w):
+    """The mode an element that engages (from Free or Unknown) takes from its relative speed
+    w: FORWARD beyond W_NOISE, BACKWARD below −W_NOISE, STUCK within the round-off band
+    (MSL: the sign of w_relfric; here parts at rest have speeds of round-off, ~1e-30, whose
+    sign is noise: a clutch engaging between shafts at rest would slide either way)."""
+    return ca.if_else(w > W_NOISE, FORWARD, ca.if_else(w < -W_NOISE, BACKWARD, STUCK))
+
+
+def still_starting(start, w):
+    """Whether a start (startForward or startBackward, pre-value ``start``) goes on: the
+    relative speed w is still within the round-off band W_NOISE around 0."""
+    return ca.logic_and(start, ca.fabs(w) <= W_NOISE)
 
 
 def check_table(table, name: str, where: str) -> np.ndarray:
@@ -183,32 +216,30 @@ class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
         self._apply(e, tau)
 
         locked = ca.logic_and(ca.logic_not(free), mode == STUCK)
-        e.indicator("sliding", ca.if_else(fwd, w, ca.if_else(bwd, -w, 1.0)), x.v_unit,
-                    f"relative {x.speed} while sliding, in its direction")
+        starting = ca.logic_or(start_fwd, start_bwd)
+        e.indicator("sliding", ca.if_else(starting, 1.0, ca.if_else(fwd, w, ca.if_else(
+            bwd, -w, 1.0))), x.v_unit,
+            f"relative {x.speed} while sliding (not starting), in its direction")
         e.indicator("breakaway", ca.if_else(locked, tau0_max - ca.fabs(tau), 1.0), x.f_unit,
                     f"{x.f}0_max - |{x.f}| while stuck")
-        e.indicator("start", ca.if_else(start_fwd, w - W_NOISE, ca.if_else(
-            start_bwd, -w - W_NOISE, -1.0)), x.v_unit,
-            f"relative {x.speed} after breaking away, in its direction, past W_NOISE")
+        start_indicator(e, w, starting, x.v_unit, x.speed)
         state, zero = self._stop(e)
         e.reinit(state, zero, when="sliding", direction=-1)
         e.reinit(state, zero, when="breakaway", direction=-1)      # at rest exactly
 
         # startForward: broken away from stuck (the torque that held it beyond tau0_max),
-        # kept until w_relfric leaves 0 forward past W_NOISE (the event of indicator "start";
-        # MSL: mode becomes Forward when w_relfric > 0), so that sliding that starts with an
-        # acceleration ~0 (peak = 1) does not fall back to stuck, nor a stuck element whose
-        # speed the integrator left a roundoff below 0 (no reinit at a time event)
+        # kept while w_relfric stays within W_NOISE of 0 (see start_indicator): forward out
+        # of the band it slides, backward out of it the start failed and it sticks again
         small = self._small()
         fwd_ok, bwd_ok = self._can_slide(e)
         breaks_fwd = ca.logic_and(ca.logic_and(mode == STUCK, tau > tau0_max), fwd_ok)
         breaks_bwd = ca.logic_and(ca.logic_and(mode == STUCK, tau < -tau0_max), bwd_ok)
         active = ca.logic_not(free_now)
         e.mode_update(start_fwd, ca.logic_and(active, ca.logic_or(breaks_fwd, ca.logic_and(
-            start_fwd, ca.logic_and(mode == FORWARD, w <= W_NOISE)))))
+            mode == FORWARD, still_starting(start_fwd, w)))))
         e.mode_update(start_bwd, ca.logic_and(active, ca.logic_or(breaks_bwd, ca.logic_and(
-            start_bwd, ca.logic_and(mode == BACKWARD, w >= -W_NOISE)))))
-        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
+            mode == BACKWARD, still_starting(start_bwd, w)))))
+        sign_w = direction(w)
         from_stuck = ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD, STUCK))
         keeps_forward = ca.logic_and(fwd_ok, ca.logic_or(ca.logic_or(w > 0, start_fwd),
                                                          ca.logic_and(w == 0, a > 0)))

@@ -157,6 +157,12 @@ class PartialCompliant(PartialTwoFlanges):
         """The flow into flange_b [N, N.m] (flange_a gets the opposite)."""
         raise NotImplementedError
 
+    def state_select(self):
+        """MSL's stateSelect of the relative states (the option of the elements with
+        relative states: prefer by default), or None (no such option): what a reinit of
+        another component keeps (see PhysicsBuilder.reinit)."""
+        return self.stateSelect if "stateSelect" in self.all_options() else None
+
     def loss_power(self, rel_pos, rel_speed, flow):
         """Dissipated power [W] (MSL's lossPower), or None for a lossless element."""
         return None
@@ -175,8 +181,9 @@ class PartialCompliant(PartialTwoFlanges):
         self._apply_opposite_flows(e, flow)
         e.variable(f"{x.s}_rel", rel_pos, x.s_unit,
                    f"relative {x.position} (= flange_b.{x.s} - flange_a.{x.s})",
-                   nominal=self.rel_nominal())
-        e.variable(f"{x.v}_rel", rel_speed, x.v_unit, f"relative {x.speed} (= der({x.s}_rel))")
+                   nominal=self.rel_nominal(), stateSelect=self.state_select())
+        e.variable(f"{x.v}_rel", rel_speed, x.v_unit, f"relative {x.speed} (= der({x.s}_rel))",
+                   stateSelect=self.state_select())
         if self.records_a_rel:
             e.variable("a_rel", e.acc(self.flange_b) - e.acc(self.flange_a), x.a_unit,
                        f"relative {x.acceleration} (= der({x.v}_rel))")

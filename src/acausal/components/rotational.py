@@ -143,9 +143,10 @@ class PartialCompliant(interfaces.PartialCompliant):
 
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
-    """MSL's variant of PartialCompliant with phi_rel, w_rel as preferred states (here the
-    compiler chooses the coordinates: ``stateSelect``, default prefer, is a hint, see
-    StateSelect); records also a_rel = der(w_rel) [rad/s²].
+    """MSL's variant of PartialCompliant with phi_rel, w_rel as preferred states (the
+    compiler chooses the coordinates; ``stateSelect``, default prefer, see StateSelect, says
+    that w_rel keeps its value at another component's reinit); records also a_rel =
+    der(w_rel) [rad/s²].
 
     phi_rel has MSL's nominal: phi_nominal [rad] (default 1e-4; 1 if below machine epsilon),
     the scale of the error control of the state phi_rel is (e.g. the housing's angle when
@@ -406,8 +407,9 @@ class Clutch(PartialCompliantWithRelativeStates, friction.NormalForceFriction,
         w_rel, a_rel = self._relfric(e)
         e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad",
                    "relative rotation angle (= flange_b.phi - flange_a.phi)",
-                   nominal=self.rel_nominal())
-        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))")
+                   nominal=self.rel_nominal(), stateSelect=self.state_select())
+        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))",
+                   stateSelect=self.state_select())
         e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
 
 
@@ -481,8 +483,9 @@ class _Overrunning(PartialCompliantWithRelativeStates,
         self._apply_opposite_flows(e, tau)
         e.variable("phi_rel", e.pos(self.flange_b) - e.pos(self.flange_a), "rad",
                    "relative rotation angle (= flange_b.phi - flange_a.phi)",
-                   nominal=self.rel_nominal())
-        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))")
+                   nominal=self.rel_nominal(), stateSelect=self.state_select())
+        e.variable("w_rel", w_rel, "rad/s", "relative angular velocity (= der(phi_rel))",
+                   stateSelect=self.state_select())
         e.variable("a_rel", a_rel, "rad/s2", "relative angular acceleration (= der(w_rel))")
         e.variable("tau", tau, "N.m", "torque between flanges (= flange_b.tau)")
         e.variable("free", free, "", "= true, if frictional element is not active")
@@ -969,9 +972,10 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2,
     PartialFriction); here it runs on the state-event engine as PartialFriction's does
     (``acausal.components.friction``): events ``rolling`` (w_a falling through 0 while
     rolling, setting w_a to 0 exactly), ``breakaway`` (the holding torque leaving
-    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving 0 by more than
-    friction.W_NOISE after breaking away: startForward/startBackward, Boolean modes set at
-    breakaway, are cleared then) and ``tau_eta`` (the driving side changing: the kink
+    [tauLossMin_m, tauLossMax_p] while stuck), ``start`` (w_a leaving the round-off
+    band friction.W_NOISE around 0 after breaking away: startForward/startBackward, Boolean
+    modes set at breakaway, are cleared then; rolling on forward out of it, stuck again the
+    other way, see ``friction.start_indicator``) and ``tau_eta`` (the driving side changing: the kink
     between quadrants, past a band of round-off; a mode only of a gear with losses). Two
     elements stuck on one shaft (a LossyGear and a BearingFriction) leave the split of their
     holding torque undetermined: the simulator keeps the split they stuck with (see
@@ -1110,14 +1114,13 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2,
         tau_eta = ca.if_else(locked, tau_a, ca.if_else(fwd, tau_a - tau_bf_a, tau_a + tau_bf_a))
 
         stuck = ca.logic_and(locked, mode == STUCK)
-        e.indicator("rolling", ca.if_else(fwd, w, ca.if_else(bwd, -w, 1.0)), "rad/s",
-                    "w_a while rolling, in its direction")
+        starting = ca.logic_or(start_fwd, start_bwd)
+        e.indicator("rolling", ca.if_else(starting, 1.0, ca.if_else(fwd, w, ca.if_else(
+            bwd, -w, 1.0))), "rad/s", "w_a while rolling (not starting), in its direction")
         e.indicator("breakaway", ca.if_else(stuck, ca.fmin(loss_max_p - tau_loss,
                                                            tau_loss - loss_min_m), 1.0),
                     "N.m", "distance of the holding torque to its bounds while stuck")
-        e.indicator("start", ca.if_else(start_fwd, w - friction.W_NOISE, ca.if_else(
-            start_bwd, -w - friction.W_NOISE, -1.0)), "rad/s",
-            "w_a after breaking away, in its direction, past W_NOISE")
+        friction.start_indicator(e, w, starting, "rad/s", "angular velocity w_a")
         # MSL's relation tau_eta >= 0 with a hysteresis of its round-off (as a simulator's
         # crossing functions): in LossyGearDemo3 tau_eta is 0 while rolling, up to noise
         band = 1e-10 * (ca.fabs(tau_a) + ca.fabs(tau_bf_a) + 1.0)
@@ -1131,13 +1134,13 @@ class LossyGear(PartialElementaryTwoFlangesAndSupport2,
         breaks_fwd = ca.logic_and(stuck, tau_loss > loss_max_p)
         breaks_bwd = ca.logic_and(stuck, tau_loss < loss_min_m)
         e.mode_update(start_fwd, ca.logic_or(breaks_fwd, ca.logic_and(
-            start_fwd, ca.logic_and(mode == FORWARD, ca.fabs(w) <= friction.W_NOISE))))
+            mode == FORWARD, friction.still_starting(start_fwd, w))))
         e.mode_update(start_bwd, ca.logic_or(breaks_bwd, ca.logic_and(
-            start_bwd, ca.logic_and(mode == BACKWARD, ca.fabs(w) <= friction.W_NOISE))))
+            mode == BACKWARD, friction.still_starting(start_bwd, w))))
         e.mode_update(pos, ca.if_else(pos, tau_eta + band >= 0, tau_eta - band > 0))
         keeps_fwd = ca.logic_or(w > 0, ca.logic_and(w == 0, ca.logic_or(a > 0, start_fwd)))
         keeps_bwd = ca.logic_or(w < 0, ca.logic_and(w == 0, ca.logic_or(a < 0, start_bwd)))
-        sign_w = ca.if_else(w > 0, FORWARD, ca.if_else(w < 0, BACKWARD, STUCK))
+        sign_w = friction.direction(w)
         e.mode_update(mode, ca.if_else(
             mode == STUCK, ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD,
                                                                         STUCK)),
@@ -1246,7 +1249,8 @@ class _ElastoBacklash(PartialCompliantWithRelativeStates,
             tc, td = contact * tau_c, contact * tau_d            # in its direction
             tau, loss = self._contact_law(e, contact, tc, td)
             tau = ca.if_else(pushing, contact * tau, 0.0)
-            loss = ca.if_else(pushing, loss * w_rel, 0.0)
+            loss = ca.if_else(pushing, contact * loss * w_rel, 0.0)    # back from the
+            # contact's direction: at bMin (contact −1) the loss torque is −loss
             tau_c = ca.if_else(contact == 0, 0.0, tau_c)
             touching = ca.logic_and(contact != 0, ca.logic_not(plain))
             e.indicator("bMax", ca.if_else(plain, 1.0, phi_diff - b_max), "rad",

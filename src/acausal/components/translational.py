@@ -107,9 +107,10 @@ class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
 
 
 class PartialCompliantWithRelativeStates(PartialCompliant):
-    """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states. Here the same
-    as PartialCompliant: the compiler chooses the coordinates (``stateSelect``, default
-    prefer, is a hint, see StateSelect). s_rel has MSL's nominal: s_nominal [m] (default
+    """MSL's variant of PartialCompliant that prefers s_rel, v_rel as states. The compiler
+    chooses the coordinates; ``stateSelect`` (default prefer, see StateSelect) says that
+    v_rel keeps its value at another component's reinit (a stop's reinit(v, 0) takes the
+    mass on the other side along). s_rel has MSL's nominal: s_nominal [m] (default
     1e-4), the scale of the error control of the state s_rel is (see
     ``CompiledModel.nominals``)."""
     options = {"stateSelect": StateSelect.prefer}

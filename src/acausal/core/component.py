@@ -43,10 +43,12 @@ def _shown(value) -> str:
 
 class StateSelect(str, Enum):
     """Modelica's StateSelect, the priority of a variable as a state, accepted as the option
-    ``stateSelect`` where MSL / PlanarMechanics declare it. In acausal it is a hint and
-    changes nothing: the compiler chooses the coordinates itself (joint coordinates where
-    the joint graph is a tree, one node per rigid cluster), and which coordinates are
-    states does not change the results."""
+    ``stateSelect`` where MSL / PlanarMechanics declare it. The compiler chooses the
+    coordinates itself (joint coordinates where the joint graph is a tree, one node per
+    rigid cluster); stateSelect matters only where the choice of states changes the results
+    in Modelica, at a reinit: a velocity a component records with stateSelect prefer or
+    always (MSL's relative states v_rel, w_rel) keeps its value at another component's
+    reinit, as a Modelica tool's state would (``PhysicsBuilder.reinit``)."""
     never = "never"
     avoid = "avoid"
     default = "default"

@@ -35,8 +35,8 @@ no compiler or simulation imports.
                         through a thermal conductor) and HeatingRectifier (a heating diode)
     eddy_current_brakes RotationalEddyCurrentBrake, TranslationalEddyCurrentBrake: MSL's
                         EddyCurrentBrake examples (a brake heating a heat capacitor)
-    heat_losses         TranslationalHeatLosses: MSL's Translational HeatLosses (every
-                        dissipating element's heatPort to one convection)
+    heat_losses         TranslationalHeatLosses, RotationalHeatLosses: MSL's HeatLosses
+                        examples (every dissipating element's heatPort to one convection)
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
     robot_axis          OneAxis: MSL's RobotR3.OneAxis (path planning, P-PI controller,
                         op-amp current-controlled Motor, GearType1 with bearing friction),
@@ -56,7 +56,7 @@ from .elastic_bearing import ElasticBearing
 from .event_blocks import SampledPController, Thermostat
 from .friction import RotationalFriction
 from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
-from .heat_losses import TranslationalHeatLosses
+from .heat_losses import RotationalHeatLosses, TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .oscillators import Oscillator
@@ -74,5 +74,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
-           "TranslationalHeatLosses", "ResistorExample", "HeatingRectifier",
-           "DCMotorCircuit", "OneAxis"]
+           "TranslationalHeatLosses", "RotationalHeatLosses", "ResistorExample",
+           "HeatingRectifier", "DCMotorCircuit", "OneAxis"]

@@ -18,7 +18,9 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    ``EVENT_TOL``·max(1, |t|); every indicator that changed sign over that last bracket crossed
    at the event (simultaneous events), the bracket's end is the event's left limit;
 3. at the event instant: the reinits of the crossed indicators (in their direction, their
-   values at the left limit), then the event iteration on the reinitialized states: all
+   values at the left limit; a reinit of a velocity comes with the reinits of the
+   velocities that follow it, so that the states a Modelica tool keeps keep their values:
+   ``PhysicsBuilder.reinit``), then the event iteration on the reinitialized states: all
    modes updated together from the present ones, the algebraic variables solved in between,
    until no mode changes (``MAX_ITERATIONS``; MSL's friction mode machine); in closed loops
    the states are projected onto the loop constraints and their rates (the reinitialized
@@ -48,7 +50,10 @@ Result (its time appears twice).
 """
 from __future__ import annotations
 
+import os
+import sys
 from collections import deque
+from contextlib import contextmanager
 
 import casadi as ca
 import numpy as np
@@ -358,11 +363,22 @@ class EventSimulation(ModeIteration):
 
     def state_at(self, t0, x, z, d, t):
         """(x, z) at t from (t0, x, z), by the normalized integrator (t − t0 may be tiny);
-        closed loops: by an integrator from t0 to t."""
+        closed loops, or where IDAS's own initial-value search fails on the consistent start
+        (IDA_LINESEARCH_FAIL: the normalized integrator, built once, cannot be given the
+        start's derivatives), by an integrator from t0 to t with them."""
         if self.loops or self.static:
             X, Z = self.integrate(t0, [t], x, z, d)
             return X[:, 0], Z[:, 0]
-        sol = self.step(x0=x / self.Nx, z0=z / self.Nz, p=np.concatenate([[t0, t - t0], d]))
+        if not self.has_alg:
+            sol = self.step(x0=x / self.Nx, p=np.concatenate([[t0, t - t0], d]))
+        else:
+            try:
+                with _quiet_stderr():         # IDAS prints the failed search's reason
+                    sol = self.step(x0=x / self.Nx, z0=z / self.Nz,
+                                    p=np.concatenate([[t0, t - t0], d]))
+            except RuntimeError:
+                X, Z = self.integrate(t0, [t], x, z, d)
+                return X[:, 0], Z[:, 0]
         xf = np.array(sol["xf"], dtype=float).ravel() * self.Nx
         zf = np.array(sol["zf"], dtype=float).ravel() * self.Nz if self.has_alg else z
         return xf, zf
@@ -589,6 +605,20 @@ class EventSimulation(ModeIteration):
             f"(indicators {', '.join(names)}): its modes switch back and forth without end "
             f"(an ideal relay, a sliding mode, a Zeno accumulation of impacts); give it a mode "
             f"that holds at the switching surface (a stuck mode) or end the simulation before")
+
+
+@contextmanager
+def _quiet_stderr():
+    """The process's standard error (file descriptor 2, where SUNDIALS writes) discarded."""
+    sys.stderr.flush()
+    saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(null, 2)
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(null)
 
 
 def _checks(grid, t, end, limit: int):
