@@ -10,7 +10,10 @@ ones, not tighter.
 """
 from __future__ import annotations
 
+import os
 import re
+import sys
+from contextlib import contextmanager
 
 import numpy as np
 
@@ -64,3 +67,18 @@ def _singular_configuration(model, t, x, z, u, p) -> str | None:
             f"determine the motion. Start the mechanism on another assembly branch (guess), "
             f"keep it away from that configuration (less energy, a stop), or, when a loop is "
             f"redundant only there, build the mechanism without that redundant link")
+
+
+@contextmanager
+def quiet_stderr():
+    """The process's standard error (file descriptor 2, where SUNDIALS writes) discarded:
+    around a solve whose failure is handled (a retry, a fallback), not reported."""
+    sys.stderr.flush()
+    saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(null, 2)
+        yield
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(null)

@@ -50,16 +50,14 @@ Result (its time appears twice).
 """
 from __future__ import annotations
 
-import os
-import sys
 from collections import deque
-from contextlib import contextmanager
 
 import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import event_times, just_before, short_error
+from .diagnosis import quiet_stderr
 from .initialization import model_equations
 from .result import Event, Termination
 
@@ -373,7 +371,7 @@ class EventSimulation(ModeIteration):
             sol = self.step(x0=x / self.Nx, p=np.concatenate([[t0, t - t0], d]))
         else:
             try:
-                with _quiet_stderr():         # IDAS prints the failed search's reason
+                with quiet_stderr():         # IDAS prints the failed search's reason
                     sol = self.step(x0=x / self.Nx, z0=z / self.Nz,
                                     p=np.concatenate([[t0, t - t0], d]))
             except RuntimeError:
@@ -605,20 +603,6 @@ class EventSimulation(ModeIteration):
             f"(indicators {', '.join(names)}): its modes switch back and forth without end "
             f"(an ideal relay, a sliding mode, a Zeno accumulation of impacts); give it a mode "
             f"that holds at the switching surface (a stuck mode) or end the simulation before")
-
-
-@contextmanager
-def _quiet_stderr():
-    """The process's standard error (file descriptor 2, where SUNDIALS writes) discarded."""
-    sys.stderr.flush()
-    saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
-    try:
-        os.dup2(null, 2)
-        yield
-    finally:
-        os.dup2(saved, 2)
-        os.close(saved)
-        os.close(null)
 
 
 def _checks(grid, t, end, limit: int):

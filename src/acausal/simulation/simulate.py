@@ -1,12 +1,14 @@
 """simulate(): a compiled model through a CasADi integrator onto a time grid."""
 from __future__ import annotations
 
+from contextlib import nullcontext
+
 import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before
-from .diagnosis import failure_message
+from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
 from .inputs import input_signal
@@ -167,14 +169,16 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     if model.has_events:
         return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
                             signals, solver, mobility)
+    retry = plugin == "idas" and "suppress_algebraic" not in opts
     try:
-        X, Z = integrate(plugin, opts)
+        with quiet_stderr() if retry else nullcontext():
+            X, Z = integrate(plugin, opts)
     except SimulationError:
         if auto and solver == "adams":
             solver = "cvodes"            # misjudged as non-stiff: BDF with Newton iterations
             plugin, opts, _ = integrator_settings(model, solver, rtol, atol, max_step)
             opts.update(options or {})
-        elif plugin == "idas" and "suppress_algebraic" not in opts:
+        elif retry:
             # IDAS starts the algebraic variables with a zero rate (CasADi takes initial
             # rates of x only): a fast one fails the error test at every step size. Out of
             # it, they follow x (index 1) to the accuracy of x.
