@@ -39,6 +39,7 @@ from .loops import analyse_loops
 from .motion import solve_motion
 from .networks import build_network, declare_nodes, has_network_ports
 from .recorded import port_flows, recorded_variables
+from .relations import pose_rate
 from .resolve import make_resolver
 
 _vc = ca.vertcat
@@ -131,11 +132,11 @@ def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
     vels = []
     for i, ports in enumerate(groups):
         node = Node(i, ports)
-        dim = node.domain.dim
-        node.pos, node.vel, node.acc = (ca.SX.sym(f"probe{i}.{k}", dim)
-                                        for k in ("pos", "vel", "acc"))
-        for a, b in ((node.pos, node.vel), (node.vel, node.acc), (node.acc, None)):
-            for k in range(dim):
+        node.pos, node.vel, node.acc = (ca.SX.sym(f"probe{i}.{k}", d) for k, d in (
+            ("pos", node.domain.dim), ("vel", node.domain.dof), ("acc", node.domain.dof)))
+        for a, b in ((node.pos, pose_rate(node.pos, node.vel)), (node.vel, node.acc),
+                     (node.acc, None)):
+            for k in range(a.numel()):
                 probe.der_table[a[k].name()] = b[k] if b is not None else None
         for p in ports:
             probe.node_of[p] = node

@@ -50,6 +50,8 @@ from dataclasses import dataclass, field
 import casadi as ca
 
 from ..core.ports import Domain, PhysicalPort
+from ..errors import StructureError
+from .relations import relax_spatial
 from .symbolic import combine, der_with
 
 
@@ -295,13 +297,15 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
             return None
         j = unknown[0]
         node = r.nodes[j]
-        e, ed, edd = relax(node.domain.dim if not r.linear else 1)
+        e, ed, edd = relax(node.domain.dof if not r.linear else 1)
         if r.linear:
             node.form = r.solve(j, atoms, atoms.add(e, ed, edd))
         else:
             (pos, vel, acc), extra = r.fire(j, values)
             if node.domain.dim == 1:
                 node.form = {atoms.add(pos + e, vel + ed, acc + edd): 1.0}
+            elif node.domain.dof != node.domain.dim:          # a 3-D frame: a virtual twist
+                node.pos, node.vel, node.acc = relax_spatial(pos, vel, acc, e, ed, edd)
             else:
                 node.pos, node.vel, node.acc = pos + e, vel + ed, acc + edd
             if extra is not None:
@@ -337,6 +341,11 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     for n in order:
         if known(n):
             continue
+        if n.domain.dof != n.domain.dim:
+            raise StructureError(
+                f"3-D frame '{n.name}' has no path through joints to the world: free bodies "
+                f"(orientation states) are not supported yet; connect it to the World "
+                f"through joints")
         dim = n.domain.dim
         syms = []
         for pot in n.domain.potentials:

@@ -1,0 +1,25 @@
+"""Connectors of 3-D multibody systems (Modelica.Mechanics.MultiBody.Interfaces).
+
+``Frame`` is core's ``MultiBodyFrame``: r_0[3] [m] (world), orientation R (R.T[3,3], the
+transformation matrix from the world to the frame; R.w [rad/s] its angular velocity
+resolved in the frame), cut force f[3] [N] and cut torque t[3] [N.m] about its origin,
+resolved in the frame, positive into the component. Frame_a and Frame_b are the same
+connector (MSL draws them differently).
+"""
+from __future__ import annotations
+
+from ...core.ports import MultiBodyFrame
+
+__all__ = ["Frame", "Frame_a", "Frame_b"]
+
+Frame = MultiBodyFrame
+
+
+class Frame_a(MultiBodyFrame):
+    """Coordinate system fixed to the component with one cut-force and cut-torque (filled
+    icon in MSL; the same connector as Frame)."""
+
+
+class Frame_b(MultiBodyFrame):
+    """Coordinate system fixed to the component with one cut-force and cut-torque (empty
+    icon in MSL; the same connector as Frame)."""
