@@ -51,7 +51,7 @@ import casadi as ca
 
 from ..core.ports import Domain, PhysicalPort
 from ..errors import StructureError
-from .relations import relax_spatial
+from .relations import pose_rate, relax_spatial
 from .symbolic import combine, der_with
 
 
@@ -63,6 +63,19 @@ class InternalNode(PhysicalPort):
         super().__init__()
         self.domain = domain
         self.velocity, self.acceleration, self.preferred = velocity, acceleration, preferred
+
+
+def motion_symbols(prefix: str, domain: Domain, der_table: dict) -> tuple[ca.SX, ca.SX, ca.SX]:
+    """Free position, velocity and acceleration symbols ``<prefix>.pos`` / ``.vel`` /
+    ``.acc`` of a node of ``domain`` (not on any tree: the dry run for masses, batched
+    physics), their rates entered in ``der_table`` (a 3-D frame's position rate from its
+    twist: ``relations.pose_rate``)."""
+    pos, vel, acc = (ca.SX.sym(f"{prefix}.{k}", d) for k, d in (
+        ("pos", domain.dim), ("vel", domain.dof), ("acc", domain.dof)))
+    for a, b in ((pos, pose_rate(pos, vel)), (vel, acc), (acc, None)):
+        for k in range(a.numel()):
+            der_table[a[k].name()] = b[k] if b is not None else None
+    return pos, vel, acc
 
 
 @dataclass
