@@ -219,3 +219,37 @@ def test_models_the_compiler_cannot_take_yet_are_refused_naming_the_part():
         Body(r_CM=(1, 0, 0))
     with pytest.raises(ParameterError, match="sequence"):
         FixedRotation(rotationType="PlanarRotationSequence", sequence=(1, 1, 2))
+
+
+@pytest.mark.parametrize("backwards", [False, True])
+def test_parts_and_joints_used_from_frame_b_work_as_from_frame_a(backwards):
+    """A FixedRotation, a Revolute and a Prismatic between the world and a Body, connected
+    frame_a to the world or (``backwards``) frame_b to the world: the reaction recorded at
+    the frame that carries the body equals minus MSL's Newton–Euler of the body (its motion
+    is then right), and the energy is conserved."""
+    I = np.array([[0.05, 0.01, 0.0], [0.01, 0.03, 0.0], [0.0, 0.0, 0.04]])
+    c = np.array([0.3, -0.2, 0.1])
+    m = Model("backwards")
+    m.world = World(n=(0.3, -1, 0.2))
+    m.rot = FixedRotation(r=(0.1, 0.2, 0.3), n=(1, 2, 3), angle=40)
+    m.rev, m.prism = Revolute(n=(0.2, 0.5, 1)), Prismatic(n=(1, 1, 0))
+    m.body = Body(m=1.3, r_CM=tuple(c), I_11=0.05, I_22=0.03, I_33=0.04, I_21=0.01)
+    a, b = ("frame_b", "frame_a") if backwards else ("frame_a", "frame_b")
+    m.connect(m.world.frame_b, getattr(m.rot, a))
+    m.connect(getattr(m.rot, b), getattr(m.rev, a))
+    m.connect(getattr(m.rev, b), getattr(m.prism, a))
+    m.connect(getattr(m.prism, b), m.body.frame_a)
+    res = acausal.compile(m).simulate(2.0, x0={"rev.w": 1.0, "prism.v": 0.3}, **TOL)
+    T = _T(res, "body.frame_a")
+    w, z = _vec(res, "body.w_a"), _vec(res, "body.z_a")
+    acc = np.einsum("nij,nj->ni", T, _vec(res, "body.a_0") - _vec(res, "body.g_0"))
+    f = 1.3 * (acc + np.cross(z, c) + np.cross(w, np.cross(w, c)))
+    t = z @ I + np.cross(w, w @ I) + np.cross(c, f)
+    assert np.max(np.abs(_vec(res, f"prism.{b}.f") + f)) < 1e-9 * np.max(np.abs(f))
+    assert np.max(np.abs(_vec(res, f"prism.{b}.t") + t)) < 1e-9 * np.max(np.abs(t))
+    g = 9.80665 * np.array([0.3, -1, 0.2]) / np.linalg.norm([0.3, -1, 0.2])
+    r_cm = _vec(res, "body.r_0") + np.einsum("nji,j->ni", T, c)
+    v_cm = _vec(res, "body.v_0") + np.einsum("nji,nj->ni", T, np.cross(w, c))
+    kinetic = 0.5 * 1.3 * np.sum(v_cm ** 2, 1) + 0.5 * np.einsum("ni,ij,nj->n", w, I, w)
+    potential = -1.3 * r_cm @ g
+    assert np.ptp(kinetic + potential) < 1e-8 * np.max(np.abs(kinetic) + np.abs(potential))
