@@ -253,3 +253,24 @@ def test_parts_and_joints_used_from_frame_b_work_as_from_frame_a(backwards):
     kinetic = 0.5 * 1.3 * np.sum(v_cm ** 2, 1) + 0.5 * np.einsum("ni,ij,nj->n", w, I, w)
     potential = -1.3 * r_cm @ g
     assert np.ptp(kinetic + potential) < 1e-8 * np.max(np.abs(kinetic) + np.abs(potential))
+
+
+def test_double_pendulum_hanging_modes_equal_the_compound_pendulum_closed_form():
+    """MSL's DoublePendulum (two steel boxes 0.5 × 0.06 × 0.06 m) hanging at rest: the
+    equilibrium is phi1 = −π/2, phi2 = 0, and its undamped natural frequencies (acausal's
+    analysis: linearize, modes) are those of two compound pendulums in series,
+    det(K − ω²M) = 0 with M = [[J + m l²/4 + m l², m l²/2], [m l²/2, J + m l²/4]],
+    K = g·diag(3 m l/2, m l/2), J = m(l² + w²)/12 about the box's centre."""
+    from acausal.analysis import equilibrium, linearize, modes
+    from acausal.models import MultiBodyDoublePendulum
+    compiled = acausal.compile(MultiBodyDoublePendulum())
+    eq = equilibrium(compiled, guess={"revolute1.phi": -1.4, "revolute2.phi": 0.1})
+    assert abs(eq["revolute1.phi"] + np.pi / 2) < 1e-12 and abs(eq["revolute2.phi"]) < 1e-12
+    l, w, g = 0.5, 0.06, 9.80665
+    m = 7700 * l * w * w
+    J = m * (l * l + w * w) / 12
+    M = np.array([[J + m * l * l / 4 + m * l * l, m * l * l / 2], [m * l * l / 2, J + m * l * l / 4]])
+    K = g * np.diag([1.5 * m * l, 0.5 * m * l])
+    f_exact = np.sqrt(np.sort(np.linalg.eigvals(np.linalg.solve(M, K)).real)) / (2 * np.pi)
+    f = np.sort(modes(linearize(compiled, eq)).frequencies)
+    assert np.max(np.abs(f - f_exact)) < 1e-9 * f_exact.max()
