@@ -274,3 +274,36 @@ def test_double_pendulum_hanging_modes_equal_the_compound_pendulum_closed_form()
     f_exact = np.sqrt(np.sort(np.linalg.eigvals(np.linalg.solve(M, K)).real)) / (2 * np.pi)
     f = np.sort(modes(linearize(compiled, eq)).frequencies)
     assert np.max(np.abs(f - f_exact)) < 1e-9 * f_exact.max()
+
+
+def _rot(axis, deg):
+    e = np.eye(3)[axis - 1] if isinstance(axis, int) else np.asarray(axis) / np.linalg.norm(axis)
+    K = np.array([[0, -e[2], e[1]], [e[2], 0, -e[0]], [-e[1], e[0], 0]])
+    a = np.radians(deg)
+    return np.outer(e, e) + (np.eye(3) - np.outer(e, e)) * np.cos(a) - K * np.sin(a)
+
+
+@pytest.mark.parametrize("kw, T_rel", [
+    (dict(n=(1, 2, 2), angle=75.0), _rot((1, 2, 2), 75.0)),
+    (dict(rotationType="TwoAxesVectors", n_x=(1, 1, 0), n_y=(0, 1, 1)),
+     _from_nxy((1, 1, 0), (0, 1, 1))),
+    (dict(rotationType="PlanarRotationSequence", sequence=(3, 1, 3), angles=(20, -40, 65)),
+     _rot(3, 65) @ _rot(1, -40) @ _rot(3, 20)),
+])
+def test_fixed_rotation_forms_are_msl_s(kw, T_rel):
+    """FixedRotation's three rotation types give MSL's R_rel (planarRotation for an axis and
+    an angle in degrees, from_nxy for two axes, axesRotations for a sequence): frame_b.r_0 =
+    r_0a + R_aᵀ r and frame_b.R.T = T_rel·R_a.T, behind a tilted FixedRotation."""
+    m = Model("rotations")
+    m.world = World()
+    m.tilt = FixedRotation(n=(0, 0, 1), angle=30.0)
+    m.rot = FixedRotation(r=(0.2, -0.1, 0.4), **kw)
+    m.rev, m.body = Revolute(), Body(m=1.0, r_CM=(0.3, 0, 0))
+    m.connect(m.world.frame_b, m.tilt.frame_a)
+    m.connect(m.tilt.frame_b, m.rot.frame_a)
+    m.connect(m.rot.frame_b, m.rev.frame_a)
+    m.connect(m.rev.frame_b, m.body.frame_a)
+    res = acausal.compile(m).simulate(0.1)
+    Ta = _rot(3, 30.0)
+    assert np.max(np.abs(_T(res, "rot.frame_b")[0] - T_rel @ Ta)) < 1e-14
+    assert np.max(np.abs(_vec(res, "rot.frame_b.r_0", 0) - Ta.T @ [0.2, -0.1, 0.4])) < 1e-14
