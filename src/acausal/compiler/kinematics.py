@@ -12,6 +12,13 @@ Every relation that determines a node is relaxed by a virtual coordinate ε (zer
 model); the generalized force conjugate to ε is the relation's reaction, from which the flows
 (cut forces, torques) at its ports are recovered.
 
+A node's velocity is conjugate to its flows: der(pos) for 1-D and planar nodes, the twist
+(v, w) resolved in the frame for a 3-D frame, whose position is r_0 and R.T
+(``Domain.dof`` ≠ ``Domain.dim``; ``relations.pose_rate``). A 3-D node's relaxation ε is a
+virtual twist (``relations.relax_spatial``). 3-D frames get their motion from relations
+only: a 3-D frame the tree cannot reach (a free body) is refused, as orientation states are
+not implemented yet.
+
 Where the graph has closed loops, the tree is a choice: the relation that closes a loop
 decides which joints' coordinates the tree keeps. Taking relations in declaration order
 would let that order decide whether the coordinates carry mass (PlanarMechanics'

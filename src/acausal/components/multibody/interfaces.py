@@ -8,9 +8,10 @@ connector (MSL draws them differently).
 """
 from __future__ import annotations
 
+from ...core import Component
 from ...core.ports import MultiBodyFrame
 
-__all__ = ["Frame", "Frame_a", "Frame_b"]
+__all__ = ["Frame", "Frame_a", "Frame_b", "Animated"]
 
 Frame = MultiBodyFrame
 
@@ -23,3 +24,10 @@ class Frame_a(MultiBodyFrame):
 class Frame_b(MultiBodyFrame):
     """Coordinate system fixed to the component with one cut-force and cut-torque (empty
     icon in MSL; the same connector as Frame)."""
+
+
+class Animated(Component):
+    """MSL's ``animation`` switch of a part or joint, accepted so that MSL models translate
+    as they are; acausal has no animation yet, so it changes nothing (nor do the other
+    visualization parameters MSL has, which are not accepted)."""
+    options = {"animation": True}

@@ -10,20 +10,21 @@ and drive trains of the Rotational and Translational libraries drive and load th
 ``tau`` / ``f`` is then the drive torque/force (= axis.tau / axis.f), 0 without the flange,
 as MSL's ``tau = -frame_b.t*e``.
 
-Not here yet: the other joints (Cylindrical, Universal, Spherical, FreeMotion, ...), loops
-of 3-D frames, animation parameters.
+``animation`` is accepted and changes nothing. Not here yet: the other joints
+(Cylindrical, Universal, Spherical, FreeMotion, ...), loops of 3-D frames, the other
+visualization parameters.
 """
 from __future__ import annotations
 
 from ...core import Parameter, RotationalFlange, StateSelect, TranslationalFlange
 from ...core.ports import ROTATIONAL, TRANSLATIONAL
 from ..interfaces import PartialDrivenJoint, drive_flanges, unit_direction
-from .interfaces import Frame_a, Frame_b
+from .interfaces import Animated, Frame_a, Frame_b
 
 __all__ = ["Revolute", "Prismatic"]
 
 
-class _Joint(PartialDrivenJoint):
+class _Joint(PartialDrivenJoint, Animated):
     """frame_a, frame_b and the optional drive flanges (``useAxisFlange``); ``stateSelect``
     is accepted as a hint (StateSelect)."""
     drive_option = "useAxisFlange"

@@ -11,9 +11,10 @@ records MSL's variables: r_0, v_0, a_0 [m, m/s, m/s²] (frame_a, world frame), w
 [rad/s, rad/s²] (resolved in frame_a) and g_0 (gravity at the centre of mass); BodyShape,
 BodyBox and BodyCylinder record the last three under ``body.`` as their MSL inner Body.
 
-Not here yet: the start-value parameters of free bodies (angles_fixed, angles_start,
-w_0_fixed, ... need orientation states: a body must be connected to the World through
-joints), animation parameters, Rotor1D, Mounting1D, RollingWheel.
+``animation`` is accepted and changes nothing (``interfaces.Animated``). Not here yet: the
+start-value parameters of free bodies (angles_fixed, angles_start, w_0_fixed, ... need
+orientation states: a body must be connected to the World through joints), the other
+visualization parameters, Rotor1D, Mounting1D, RollingWheel.
 """
 from __future__ import annotations
 
@@ -22,11 +23,11 @@ from enum import Enum
 import casadi as ca
 
 from ... import frames
-from ...core import Component, Parameter
+from ...core import Parameter
 from ...core.component import who
 from ...errors import ParameterError
 from ..interfaces import unit_direction
-from .interfaces import Frame_a, Frame_b
+from .interfaces import Animated, Frame_a, Frame_b
 from .world import World
 
 __all__ = ["Fixed", "FixedTranslation", "RotationTypes", "FixedRotation", "Body", "BodyShape",
@@ -78,7 +79,7 @@ def _inertia(c) -> ca.SX:
                       ca.horzcat(c.I_31, c.I_32, c.I_33))
 
 
-class Fixed(Component):
+class Fixed(Animated):
     """Frame ``frame_b`` fixed in the world frame at position r [m] (default 0), with the
     world's orientation."""
     r = Parameter((0.0, 0.0, 0.0), "m", "position vector from world frame to frame_b, "
@@ -89,7 +90,7 @@ class Fixed(Component):
         s.transform(None, self.frame_b, self.r)
 
 
-class FixedTranslation(Component):
+class FixedTranslation(Animated):
     """Fixed translation of frame_b with respect to frame_a: frame_b.r_0 = frame_a.r_0 +
     resolve1(frame_a.R, r), same orientation; massless. r [m] has no default (as in MSL)."""
     required = ("r",)
@@ -110,7 +111,7 @@ class RotationTypes(str, Enum):
     PlanarRotationSequence = "PlanarRotationSequence"
 
 
-class FixedRotation(Component):
+class FixedRotation(Animated):
     """Fixed translation r [m] (resolved in frame_a) and fixed rotation of frame_b with
     respect to frame_a; massless. ``rotationType`` (RotationTypes):
 
@@ -161,7 +162,7 @@ class FixedRotation(Component):
         s.transform(self.frame_a, self.frame_b, self.r, T=self.R_rel())
 
 
-class _Body(Component):
+class _Body(Animated):
     """Mass properties of MSL's Body: m [kg], r_CM [m], I_11..I_32 [kg.m²] (defaults 0.001
     on the diagonal, 0 off it)."""
     r_CM = Parameter((0.0, 0.0, 0.0), "m", "vector from frame_a to center of mass, resolved "
@@ -202,7 +203,7 @@ class BodyShape(_Body):
         rigid_body(e, self.frame_a, self.m, self.r_CM, _inertia(self), "body.")
 
 
-class _ShapedBody(Component):
+class _ShapedBody(Animated):
     """A body of homogeneous ``density`` [kg/m³] (default 7700, steel) shaped along
     ``lengthDirection`` from r_shape [m] (both resolved in frame_a), with frame_b at r [m]
     from frame_a. Defaults that follow other parameters (MSL's lengthDirection = r −
@@ -304,7 +305,7 @@ class BodyCylinder(_ShapedBody):
         return mo - mi, self._r_CM(), frames.resolve_dyade1(R, D)
 
 
-class PointMass(Component):
+class PointMass(Animated):
     """Rigid body whose mass m [kg] is concentrated at the origin of frame_a (no inertia:
     frame_a.t = 0). m has no default (as in MSL). Records r_0, v_0, a_0. Difference from
     MSL: frame_a must get its orientation from what it is connected to (MSL lets a lone

@@ -31,8 +31,11 @@ class World(Component):
     - NoGravity.
 
     Bodies use it as a potential energy (``potential``): −g·n/|n|·r, −mu/|r| or 0 per
-    unit mass. Not here: the animation parameters, a redeclared gravity function."""
-    options = {"gravityType": GravityTypes.UniformGravity}
+    unit mass. The animation switches (enableAnimation, animateWorld, animateGravity,
+    animateGround) are accepted and change nothing (no animation yet); not here: the other
+    animation parameters, a redeclared gravity function."""
+    options = {"gravityType": GravityTypes.UniformGravity, "enableAnimation": True,
+               "animateWorld": True, "animateGravity": True, "animateGround": False}
     g = Parameter(9.80665, "m/s2", "constant gravity acceleration", nonnegative=True)
     n = Parameter((0.0, -1.0, 0.0), "1", "direction of gravity resolved in world frame "
                                          "(gravity = g*n/length(n))")
