@@ -55,17 +55,20 @@ class MultiBodyDoublePendulum(Model):
         self.connect(self.world.frame_b, self.revolute1.frame_a)
 
 
-def chain(links: Sequence[dict], name: str = "chain", **world) -> Model:
+def chain(links: Sequence[dict], name: str = "chain", useAxisFlange: bool = False,
+          **world) -> Model:
     """A tree of joints and bodies: link i (``joint{i}``, ``body{i}``) hangs from link
     ``parent`` (-1: the world) through a FixedRotation ``mount{i}`` (r [m], n, angle [deg])
-    and a Revolute or Prismatic (``kind`` "R" / "P", axis ``axis``), its Body (m [kg],
-    r_CM [m], I_11..I_32 [kg.m²]) at the joint's frame_b. ``world``: World parameters."""
+    and a Revolute or Prismatic (``kind`` "R" / "P", axis ``axis``, with the drive flanges
+    if ``useAxisFlange``), its Body (m [kg], r_CM [m], I_11..I_32 [kg.m²]) at the joint's
+    frame_b. ``world``: World parameters."""
     model = Model(name)
     model.world = World(**world)
     ends = []
     for i, link in enumerate(links):
         mount = FixedRotation(r=link["r"], n=link["n"], angle=link["angle"])
-        joint = (Revolute if link["kind"] == "R" else Prismatic)(n=link["axis"])
+        joint = (Revolute if link["kind"] == "R" else Prismatic)(n=link["axis"],
+                                                                useAxisFlange=useAxisFlange)
         body = Body(**link["body"])
         setattr(model, f"mount{i}", mount)
         setattr(model, f"joint{i}", joint)
