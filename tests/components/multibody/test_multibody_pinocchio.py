@@ -2,7 +2,7 @@
 rigid-body dynamics library): the mass matrix M(q) of ``compiled.lagrange`` equals
 Pinocchio's CRBA to 1e-10 and the accelerations of the compiled model's right-hand side
 (gravity, Coriolis and centrifugal terms included) equal Pinocchio's ABA to 1e-9, at random
-states. The models are built from acausal's MultiBody components (``acausal.models.chain``:
+states; the drive torques of inverse dynamics equal its RNEA. The models are built from acausal's MultiBody components (``acausal.models.chain``:
 FixedRotation mounts, Revolute/Prismatic joints, Bodies with full inertia tensors) and the
 same data are given to Pinocchio directly (joint placements, unaligned axes, inertias)."""
 from __future__ import annotations
