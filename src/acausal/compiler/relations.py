@@ -17,9 +17,11 @@ velocity ``vel`` conjugate to its flows. For 1-D and planar nodes ``vel`` = der(
 frame's position is r_0 and R.T (12 numbers, ``frames.pose``) but its velocity is the
 twist (v, w) resolved in the frame (6 numbers), conjugate to MSL's (f, t) resolved in the
 frame; ``pose_rate`` maps the twist to der(pos) and ``twist`` maps der(pos) back. A relation
-gives node j's position from the others'; its velocity, acceleration and the Jacobian that
-maps reactions to flows (∂vel_j/∂vel_i) follow by AD through these two maps, so the 3-D
-relations only write their positions, exactly as the planar ones. The relaxation ε of a 3-D
+gives node j's position from the others'; its velocity follows by AD through these two maps
+(or from the closed form a class may give, ``velocity_local``: the 3-D relations do, as the
+AD route builds equations five times larger; tests compare the two), and its acceleration
+and the Jacobian that maps reactions to flows (∂vel_j/∂vel_i) by AD from the velocity, for
+planar and 3-D relations alike. The relaxation ε of a 3-D
 node that a relation determines is a virtual twist: r_0 + R.Tᵀ·ε_r and (I − [ε_θ×])·R.T
 (first order in ε, all the reactions need; ``relax_spatial``), whose conjugate reaction is
 the cut force and torque at the frame.

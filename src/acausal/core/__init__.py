@@ -8,8 +8,9 @@ from .interface import Input, Output
 from .parameter import Parameter
 from .ports import (ELECTRICAL, MULTIBODY, PLANAR, ROTATIONAL, THERMAL, TRANSLATIONAL,
                     BooleanInput, BooleanOutput, Domain, Frame, HeatPort, HeatPort_a,
-                    HeatPort_b, MultiBodyFrame, NegativePin, PhysicalPort, Pin, Port, PortVector, PositivePin, RealInput,
-                    RealOutput, RotationalFlange, TranslationalFlange, VectorPort)
+                    HeatPort_b, MultiBodyFrame, NegativePin, PhysicalPort, Pin, Port,
+                    PortVector, PositivePin, RealInput, RealOutput, RotationalFlange,
+                    TranslationalFlange, VectorPort)
 
 __all__ = [
     "Component", "ConditionalPort", "Model", "StateSelect", "Unavailable", "connect", "Input",

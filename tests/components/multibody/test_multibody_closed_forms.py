@@ -90,8 +90,9 @@ def test_cut_forces_at_the_joints_are_msl_newton_euler():
         e = np.array(LINKS[i]["axis"]) / np.linalg.norm(LINKS[i]["axis"])
         if LINKS[i]["kind"] == "R":
             R_rel = np.einsum("nij,nkj->nik", T, _T(res, f"joint{i}.frame_a"))  # T_b T_aᵀ
-            assert np.max(np.abs(fa + np.einsum("nji,nj->ni", R_rel, fb))) < 1e-9 * np.max(np.abs(f))
-            assert np.max(np.abs(ta + np.einsum("nji,nj->ni", R_rel, tb))) < 1e-9 * np.max(np.abs(t))
+            back = lambda x: np.einsum("nji,nj->ni", R_rel, x)              # noqa: E731
+            assert np.max(np.abs(fa + back(fb))) < 1e-9 * np.max(np.abs(f))
+            assert np.max(np.abs(ta + back(tb))) < 1e-9 * np.max(np.abs(t))
         else:
             es = np.outer(res[f"joint{i}.s"], e)
             assert np.max(np.abs(fa + fb)) < 1e-9 * np.max(np.abs(f))
@@ -137,8 +138,8 @@ def test_body_box_and_cylinder_mass_properties_are_msl_s():
     I22 = (mco * (L * L + 3 * (d / 2) ** 2) - mci * (L * L + 3 * (di / 2) ** 2)) / 12
     Dc = np.diag([(mco * (d / 2) ** 2 - mci * (di / 2) ** 2) / 2, I22, I22])
     cyl = BodyCylinder(r=tuple(r), diameter=d, innerDiameter=di)
-    for shape, mass, I in ((box, mo - mi, R.T @ D @ R),
-                           (cyl, mco - mci, _from_nxy(r, (0, 1, 0)).T @ Dc @ _from_nxy(r, (0, 1, 0)))):
+    Rc = _from_nxy(r, (0, 1, 0))
+    for shape, mass, I in ((box, mo - mi, R.T @ D @ R), (cyl, mco - mci, Rc.T @ Dc @ Rc)):
         c = r / 2
         expected = e @ (I + mass * (c @ c * np.eye(3) - np.outer(c, c))) @ e
         got, _ = _about_joint(shape, tuple(e))
@@ -269,7 +270,8 @@ def test_double_pendulum_hanging_modes_equal_the_compound_pendulum_closed_form()
     l, w, g = 0.5, 0.06, 9.80665
     m = 7700 * l * w * w
     J = m * (l * l + w * w) / 12
-    M = np.array([[J + m * l * l / 4 + m * l * l, m * l * l / 2], [m * l * l / 2, J + m * l * l / 4]])
+    M = np.array([[J + m * l * l / 4 + m * l * l, m * l * l / 2],
+                  [m * l * l / 2, J + m * l * l / 4]])
     K = g * np.diag([1.5 * m * l, 0.5 * m * l])
     f_exact = np.sqrt(np.sort(np.linalg.eigvals(np.linalg.solve(M, K)).real)) / (2 * np.pi)
     f = np.sort(modes(linearize(compiled, eq)).frequencies)

@@ -2,9 +2,10 @@
 rigid-body dynamics library): the mass matrix M(q) of ``compiled.lagrange`` equals
 Pinocchio's CRBA to 1e-10 and the accelerations of the compiled model's right-hand side
 (gravity, Coriolis and centrifugal terms included) equal Pinocchio's ABA to 1e-9, at random
-states; the drive torques of inverse dynamics equal its RNEA. The models are built from acausal's MultiBody components (``acausal.models.chain``:
-FixedRotation mounts, Revolute/Prismatic joints, Bodies with full inertia tensors) and the
-same data are given to Pinocchio directly (joint placements, unaligned axes, inertias)."""
+states; the drive torques of inverse dynamics equal its RNEA. The models are built from
+acausal's MultiBody components (``acausal.models.chain``: FixedRotation mounts,
+Revolute/Prismatic joints, Bodies with full inertia tensors) and the same data are given
+to Pinocchio directly (joint placements, unaligned axes, inertias)."""
 from __future__ import annotations
 
 import numpy as np
@@ -56,7 +57,8 @@ def pinocchio_model(links, gravity):
         b = link["body"]
         I = np.array([[b["I_11"], b["I_21"], b["I_31"]], [b["I_21"], b["I_22"], b["I_32"]],
                       [b["I_31"], b["I_32"], b["I_33"]]])
-        model.appendBodyToJoint(jid, pin.Inertia(b["m"], np.array(b["r_CM"]), I), pin.SE3.Identity())
+        model.appendBodyToJoint(jid, pin.Inertia(b["m"], np.array(b["r_CM"]), I),
+                                pin.SE3.Identity())
         ids.append(jid)
     model.gravity.linear = np.asarray(gravity)
     return model
