@@ -1,6 +1,7 @@
 """3-D chains and trees of revolute and prismatic joints against Pinocchio (an independent
 rigid-body dynamics library): the mass matrix M(q) of ``compiled.lagrange`` equals
-Pinocchio's CRBA to 1e-10 and the accelerations of the compiled model's right-hand side
+Pinocchio's CRBA to 1e-10 (its gravity and Coriolis terms Pinocchio's generalized gravity
+and nonlinear effects), and the accelerations of the compiled model's right-hand side
 (gravity, Coriolis and centrifugal terms included) equal Pinocchio's ABA to 1e-9, at random
 states; the drive torques of inverse dynamics equal its RNEA. The models are built from
 acausal's MultiBody components (``acausal.models.chain``: FixedRotation mounts,
@@ -75,7 +76,7 @@ def test_mass_matrix_and_accelerations_equal_pinocchio(n, tree, seed):
     data = pmodel.createData()
     names = [f"joint{i}.{'phi' if link['kind'] == 'R' else 's'}" for i, link in enumerate(links)]
     order = [compiled.coordinates.index(nm) for nm in names]       # ours -> Pinocchio's order
-    M_fun = compiled.lagrange.function("M")
+    M_fun = compiled.lagrange.function("M", "gravity", "coriolis")
     p = compiled.param_vector()
     qd_names = compiled.lagrange.qd_names
     x_index = [compiled.x_names.index(nm) for nm in compiled.coordinates] + \
@@ -84,10 +85,16 @@ def test_mass_matrix_and_accelerations_equal_pinocchio(n, tree, seed):
         q, v = rng.uniform(-np.pi, np.pi, n), rng.normal(size=n)
         qa, va = np.empty(n), np.empty(n)             # in acausal's coordinate order
         qa[order], va[order] = q, v
-        M = np.array(M_fun(0.0, qa, va, [], p))[np.ix_(order, order)]
+        M, grav, cor = (np.array(x) for x in M_fun(0.0, qa, va, [], p))
         M_pin = pin.crba(pmodel, data, q)
         M_pin = np.triu(M_pin) + np.triu(M_pin, 1).T
-        assert np.max(np.abs(M - M_pin)) < 1e-10 * max(1.0, np.max(np.abs(M_pin)))
+        assert np.max(np.abs(M[np.ix_(order, order)] - M_pin)) < 1e-10 * max(
+            1.0, np.max(np.abs(M_pin)))
+        g_pin = pin.computeGeneralizedGravity(pmodel, data, q)       # torques holding it
+        c_pin = pin.nonLinearEffects(pmodel, data, q, v) - g_pin       # C(q, q̇) q̇
+        for ours, theirs in ((grav, g_pin), (cor, c_pin)):
+            assert np.max(np.abs(ours.ravel()[order] + theirs)) < 1e-10 * max(
+                1.0, np.max(np.abs(theirs)))
         x = np.empty(2 * n)
         x[x_index] = np.concatenate([qa, va])
         xdot = np.array(compiled.f(x=x, p=p)["xdot"]).ravel()[x_index]
