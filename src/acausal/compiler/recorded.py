@@ -84,6 +84,9 @@ def recorded_variables(ws, tree):
                 continue
             for j, pot in enumerate(dom.potentials):
                 rec(f"{p.path}.{pot}", n.pos[j], dom.potential_units[j])
+            for j, name in enumerate(dom.velocity_names):
+                if name:
+                    rec(f"{p.path}.{name}", n.vel[j], dom.velocity_units[j])
     for info in ws.states:
         rec(info.sym.name(), info.sym, info.unit)
     for a in ws.algebraics:

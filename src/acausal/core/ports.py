@@ -34,6 +34,9 @@ class Domain:
     #: start value of a network node's potential where nothing fixes it (Modelica's type
     #: start: SI.Temperature's 288.15 K, 0 V)
     potential_start: float = 0.0
+    #: names under which the components of a port's velocity are recorded ("" not), for
+    #: domains whose velocity is no potential's rate (the 3-D frame's R.w)
+    velocity_names: tuple[str, ...] = ()
 
     @property
     def dim(self) -> int:
@@ -56,12 +59,14 @@ PLANAR = Domain("planar", ("x", "y", "phi"), ("fx", "fy", "t"), ("m", "m", "rad"
 #: world, the orientation R.T (transformation matrix from the world to the frame, row by
 #: row); cut force f [N] and torque t [N.m] resolved in the frame. Its velocity (the
 #: compiler's node velocity) is (v, w) [m/s, rad/s] resolved in the frame: v = R.T·der(r_0),
-#: w the angular velocity (MSL's R.w), so that f·v + t·w is the power into the frame.
+#: w the angular velocity (MSL's R.w, recorded), so that f·v + t·w is the power into the
+#: frame.
 MULTIBODY = Domain(
     "multibody",
     ("r_0[1]", "r_0[2]", "r_0[3]") + tuple(f"R.T[{i},{j}]" for i in (1, 2, 3) for j in (1, 2, 3)),
     ("f[1]", "f[2]", "f[3]", "t[1]", "t[2]", "t[3]"),
-    ("m",) * 3 + ("1",) * 9, ("N",) * 3 + ("N.m",) * 3, ("m/s",) * 3 + ("rad/s",) * 3)
+    ("m",) * 3 + ("1",) * 9, ("N",) * 3 + ("N.m",) * 3, ("m/s",) * 3 + ("rad/s",) * 3,
+    velocity_names=("", "", "", "R.w[1]", "R.w[2]", "R.w[3]"))
 ELECTRICAL = Domain("electrical", ("v",), ("i",), ("V",), ("A",), ("V/s",), network=True)
 THERMAL = Domain("thermal", ("T",), ("Q_flow",), ("K",), ("W",), ("K/s",), network=True,
                  potential_start=288.15)

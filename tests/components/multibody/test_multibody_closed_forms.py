@@ -84,6 +84,7 @@ def test_cut_forces_at_the_joints_are_msl_newton_euler():
         f = m * (a + np.cross(z, c) + np.cross(w, np.cross(w, c)))
         t = z @ I + np.cross(w, w @ I) + np.cross(c, f)
         fb, tb = _vec(res, f"joint{i}.frame_b.f"), _vec(res, f"joint{i}.frame_b.t")
+        assert np.max(np.abs(_vec(res, f"joint{i}.frame_b.R.w") - w)) == 0.0    # MSL's R.w
         assert np.max(np.abs(fb + f)) < 1e-7 * np.max(np.abs(f))
         assert np.max(np.abs(tb + t)) < 1e-7 * np.max(np.abs(t))
         fa, ta = _vec(res, f"joint{i}.frame_a.f"), _vec(res, f"joint{i}.frame_a.t")
