@@ -23,7 +23,7 @@ from enum import Enum
 import casadi as ca
 
 from ... import frames
-from ...core import Parameter
+from ...core import Parameter, StateSelect
 from ...core.component import who
 from ...errors import ParameterError
 from ..interfaces import unit_direction
@@ -164,7 +164,9 @@ class FixedRotation(Animated):
 
 class _Body(Animated):
     """Mass properties of MSL's Body: m [kg], r_CM [m], I_11..I_32 [kg.m²] (defaults 0.001
-    on the diagonal, 0 off it)."""
+    on the diagonal, 0 off it). The options choosing a free body's states (enforceStates,
+    useQuaternions) are accepted and change nothing: bodies are moved by joints here."""
+    options = {"enforceStates": False, "useQuaternions": True}
     r_CM = Parameter((0.0, 0.0, 0.0), "m", "vector from frame_a to center of mass, resolved "
                                            "in frame_a")
     m = Parameter(1.0, "kg", "mass of rigid body", nonnegative=True)
@@ -309,7 +311,8 @@ class PointMass(Animated):
     """Rigid body whose mass m [kg] is concentrated at the origin of frame_a (no inertia:
     frame_a.t = 0). m has no default (as in MSL). Records r_0, v_0, a_0. Difference from
     MSL: frame_a must get its orientation from what it is connected to (MSL lets a lone
-    PointMass have none)."""
+    PointMass have none). ``stateSelect`` is accepted (a hint, StateSelect)."""
+    options = {"stateSelect": StateSelect.avoid}
     required = ("m",)
     m = Parameter(1.0, "kg", "mass of mass point", nonnegative=True)
     frame_a = Frame_a("coordinate system fixed at center of mass point")
