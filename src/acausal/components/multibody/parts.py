@@ -162,11 +162,15 @@ class FixedRotation(Animated):
         s.transform(self.frame_a, self.frame_b, self.r, T=self.R_rel())
 
 
-class _Body(Animated):
-    """Mass properties of MSL's Body: m [kg], r_CM [m], I_11..I_32 [kg.m²] (defaults 0.001
-    on the diagonal, 0 off it). The options choosing a free body's states (enforceStates,
-    useQuaternions) are accepted and change nothing: bodies are moved by joints here."""
+class _BodyStates(Animated):
+    """The options choosing a free body's states (enforceStates, useQuaternions), accepted
+    and changing nothing: bodies are moved by joints here."""
     options = {"enforceStates": False, "useQuaternions": True}
+
+
+class _Body(_BodyStates):
+    """Mass properties of MSL's Body: m [kg], r_CM [m], I_11..I_32 [kg.m²] (defaults 0.001
+    on the diagonal, 0 off it)."""
     r_CM = Parameter((0.0, 0.0, 0.0), "m", "vector from frame_a to center of mass, resolved "
                                            "in frame_a")
     m = Parameter(1.0, "kg", "mass of rigid body", nonnegative=True)
@@ -205,7 +209,7 @@ class BodyShape(_Body):
         rigid_body(e, self.frame_a, self.m, self.r_CM, _inertia(self), "body.")
 
 
-class _ShapedBody(Animated):
+class _ShapedBody(_BodyStates):
     """A body of homogeneous ``density`` [kg/m³] (default 7700, steel) shaped along
     ``lengthDirection`` from r_shape [m] (both resolved in frame_a), with frame_b at r [m]
     from frame_a. Defaults that follow other parameters (MSL's lengthDirection = r −
