@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import casadi as ca
 
-__all__ = ["skew", "vee", "pose", "parts", "planar_rotation", "resolve1", "resolve2",
-           "resolve_dyade1", "from_nxy", "axis_direction"]
+__all__ = ["skew", "vee", "pose", "parts", "planar_rotation", "resolve1", "resolve_dyade1",
+           "from_nxy"]
 
 
 def _sx(v) -> ca.SX:
@@ -56,21 +56,10 @@ def resolve1(T, v) -> ca.SX:
     return ca.mtimes(_sx(T).T, _sx(v))
 
 
-def resolve2(T, v) -> ca.SX:
-    """v resolved in frame 1 -> resolved in frame 2: T·v (MSL's resolve2)."""
-    return ca.mtimes(_sx(T), _sx(v))
-
-
 def resolve_dyade1(T, D) -> ca.SX:
     """A second-order tensor resolved in frame 2 -> frame 1: Tᵀ·D·T (MSL's resolveDyade1)."""
     T = _sx(T)
     return ca.mtimes([T.T, _sx(D), T])
-
-
-def axis_direction(n) -> ca.SX:
-    """The unit vector n/|n| (MSL's normalizeWithAssert; the caller refuses n = 0)."""
-    n = _sx(n)
-    return n / ca.norm_2(n)
 
 
 def from_nxy(n_x, n_y) -> ca.SX:
