@@ -34,7 +34,7 @@ from .batch import run_physics
 from .builders import StructureBuilder, Workspace
 from .compiled import CompiledModel, Reinit, ScalarVariable, StateEvents, coinciding
 from .flatten import flatten
-from .kinematics import Node, choose_tree
+from .kinematics import Node, choose_tree, motion_symbols
 from .lagrange import Lagrange, Residuals, residuals
 from .loops import analyse_loops
 from .motion import solve_motion
@@ -132,12 +132,8 @@ def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
     vels = []
     for i, ports in enumerate(groups):
         node = Node(i, ports)
-        dim = node.domain.dim
-        node.pos, node.vel, node.acc = (ca.SX.sym(f"probe{i}.{k}", dim)
-                                        for k in ("pos", "vel", "acc"))
-        for a, b in ((node.pos, node.vel), (node.vel, node.acc), (node.acc, None)):
-            for k in range(dim):
-                probe.der_table[a[k].name()] = b[k] if b is not None else None
+        node.pos, node.vel, node.acc = motion_symbols(f"probe{i}", node.domain,
+                                                      probe.der_table)
         for p in ports:
             probe.node_of[p] = node
         vels.append(node.vel)

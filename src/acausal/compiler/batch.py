@@ -13,6 +13,7 @@ from __future__ import annotations
 import casadi as ca
 
 from .builders import KEPT, PhysicsBuilder, Workspace
+from .kinematics import motion_symbols
 
 #: fewer instances than this are not worth a batch
 MIN_BATCH = 8
@@ -105,11 +106,7 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
     rep_ports = _ports_of(rep, points)
     slots, table, inputs, names = {}, {}, [], sorted(rep_ports)
     for name in names:
-        dim = rep_ports[name].domain.dim
-        trio = [ca.SX.sym(f"{name}.{k}", dim) for k in ("pos", "vel", "acc")]
-        for a, b in zip(trio, trio[1:] + [None]):
-            for i in range(dim):
-                table[a[i].name()] = b[i] if b is not None else None
+        trio = list(motion_symbols(name, rep_ports[name].domain, table))
         slots[name] = trio
         inputs += trio
     saved = ws.param_symbols[rep]

@@ -24,9 +24,10 @@ import casadi as ca
 from ..core.component import Component
 from ..errors import StructureError
 from ..core.interface import Input, Output
-from ..core.ports import Domain, PhysicalPort, Port, RealInput, RealOutput
+from ..core.ports import MULTIBODY, Domain, PhysicalPort, Port, RealInput, RealOutput
 from .kinematics import InternalNode
-from .relations import LinearRelation, PrismaticJoint, RevoluteJoint, RigidTransform
+from .relations import (LinearRelation, PrismaticJoint, RevoluteJoint, RigidTransform,
+                        SpatialPrismatic, SpatialRevolute, SpatialTransform)
 from .symbolic import der_with, sx
 
 
@@ -181,27 +182,40 @@ class StructureBuilder(_Base):
         self._ws.relations.append(LinearRelation(self._owner, list(coeffs), list(coeffs.values()),
                                                  rhs, name or f"{self._owner.path}"))
 
-    def transform(self, frame_a, frame_b, r=(0.0, 0.0), phi=0.0, name: str = "") -> None:
-        """Planar frames rigidly joined: frame_b = frame_a translated by r [m] (resolved in
-        frame_a) and rotated by phi [rad]. With frame_a None, frame_b is fixed in the world
-        at position r and angle phi."""
+    def transform(self, frame_a, frame_b, r=(0.0, 0.0), phi=0.0, name: str = "", *,
+                  T=None) -> None:
+        """Frames rigidly joined: frame_b = frame_a translated by r [m] (resolved in frame_a)
+        and rotated, by phi [rad] for planar frames, by the 3×3 matrix ``T`` for 3-D frames
+        (MSL's R_rel.T: v_b = T·v_a; default the identity; r then has 3 elements). With
+        frame_a None, frame_b is fixed in the world at position r and that rotation."""
         for p in (frame_a, frame_b):
             if p is not None:
                 self._mine(p)
-        self._ws.relations.append(RigidTransform(self._owner, frame_a, frame_b, r, phi, name))
+        if frame_b.domain is MULTIBODY:
+            T = ca.SX.eye(3) if T is None else sx(T)
+            rel = SpatialTransform(self._owner, frame_a, frame_b, r, T, name)
+        else:
+            rel = RigidTransform(self._owner, frame_a, frame_b, r, phi, name)
+        self._ws.relations.append(rel)
 
-    def revolute(self, frame_a, frame_b, angle, name: str = "") -> None:
-        """frame_b = frame_a rotated by the 1-D node ``angle`` [rad] about their common origin."""
+    def revolute(self, frame_a, frame_b, angle, name: str = "", *, n=None) -> None:
+        """frame_b = frame_a rotated by the 1-D node ``angle`` [rad] about their common
+        origin; for 3-D frames about the unit axis ``n`` (resolved in frame_a)."""
         for p in (frame_a, frame_b, angle):
             self._mine(p)
-        self._ws.relations.append(RevoluteJoint(self._owner, frame_a, frame_b, angle, name))
+        if frame_b.domain is MULTIBODY:
+            rel = SpatialRevolute(self._owner, frame_a, frame_b, angle, n, name)
+        else:
+            rel = RevoluteJoint(self._owner, frame_a, frame_b, angle, name)
+        self._ws.relations.append(rel)
 
     def prismatic(self, frame_a, frame_b, s, e=(1.0, 0.0), name: str = "") -> None:
         """frame_b = frame_a translated by s·e: ``s`` a 1-D node [m], ``e`` a unit axis
-        resolved in frame_a; no relative rotation."""
+        resolved in frame_a (3 elements for 3-D frames); no relative rotation."""
         for p in (frame_a, frame_b, s):
             self._mine(p)
-        self._ws.relations.append(PrismaticJoint(self._owner, frame_a, frame_b, s, e, name))
+        cls = SpatialPrismatic if frame_b.domain is MULTIBODY else PrismaticJoint
+        self._ws.relations.append(cls(self._owner, frame_a, frame_b, s, e, name))
 
     def states(self, port: PhysicalPort, positions: tuple, velocities: tuple) -> None:
         """Name the coordinates a port gets if its connection group needs free coordinates
@@ -370,15 +384,17 @@ class PhysicsBuilder(_Base):
         return ws.net_flow_sym[port]
 
     def pos(self, port: PhysicalPort) -> ca.SX:
-        """Potential of a port: s [m], phi [rad], or (x, y, phi) for a planar frame."""
+        """Potential of a port: s [m], phi [rad], (x, y, phi) for a planar frame, (r_0, R.T
+        row by row) for a 3-D frame (``acausal.frames.parts`` splits it)."""
         return self._node(port).pos
 
     def vel(self, port: PhysicalPort) -> ca.SX:
-        """Time derivative of the port's potential [m/s, rad/s]."""
+        """Time derivative of the port's potential [m/s, rad/s]; for a 3-D frame its twist
+        (v, w) resolved in the frame (v = R.T·der(r_0), w the angular velocity)."""
         return self._node(port).vel
 
     def acc(self, port: PhysicalPort) -> ca.SX:
-        """Second time derivative of the port's potential [m/s², rad/s²]."""
+        """Time derivative of ``vel`` [m/s², rad/s²]."""
         return self._node(port).acc
 
     def flow(self, port: PhysicalPort, value) -> None:
@@ -400,7 +416,7 @@ class PhysicsBuilder(_Base):
             raise StructureError(f"{self._owner.path}: cut_flow of the {port.domain.name} port "
                                  f"'{port.path}'; read a network port's flow with e.flow_of")
         if port not in self._ws.cut_flow_sym:
-            self._ws.cut_flow_sym[port] = ca.SX.sym(f"flow:{port.path}", port.domain.dim)
+            self._ws.cut_flow_sym[port] = ca.SX.sym(f"flow:{port.path}", port.domain.dof)
         return self._ws.cut_flow_sym[port]
 
     def kinetic_energy(self, T) -> None:

@@ -12,6 +12,13 @@ Every relation that determines a node is relaxed by a virtual coordinate ε (zer
 model); the generalized force conjugate to ε is the relation's reaction, from which the flows
 (cut forces, torques) at its ports are recovered.
 
+A node's velocity is conjugate to its flows: der(pos) for 1-D and planar nodes, the twist
+(v, w) resolved in the frame for a 3-D frame, whose position is r_0 and R.T
+(``Domain.dof`` ≠ ``Domain.dim``; ``relations.pose_rate``). A 3-D node's relaxation ε is a
+virtual twist (``relations.relax_spatial``). 3-D frames get their motion from relations
+only: a 3-D frame the tree cannot reach (a free body) is refused, as orientation states are
+not implemented yet.
+
 Where the graph has closed loops, the tree is a choice: the relation that closes a loop
 decides which joints' coordinates the tree keeps. Taking relations in declaration order
 would let that order decide whether the coordinates carry mass (PlanarMechanics'
@@ -50,6 +57,8 @@ from dataclasses import dataclass, field
 import casadi as ca
 
 from ..core.ports import Domain, PhysicalPort
+from ..errors import StructureError
+from .relations import pose_rate, relax_spatial
 from .symbolic import combine, der_with
 
 
@@ -61,6 +70,19 @@ class InternalNode(PhysicalPort):
         super().__init__()
         self.domain = domain
         self.velocity, self.acceleration, self.preferred = velocity, acceleration, preferred
+
+
+def motion_symbols(prefix: str, domain: Domain, der_table: dict) -> tuple[ca.SX, ca.SX, ca.SX]:
+    """Free position, velocity and acceleration symbols ``<prefix>.pos`` / ``.vel`` /
+    ``.acc`` of a node of ``domain`` (not on any tree: the dry run for masses, batched
+    physics), their rates entered in ``der_table`` (a 3-D frame's position rate from its
+    twist: ``relations.pose_rate``)."""
+    pos, vel, acc = (ca.SX.sym(f"{prefix}.{k}", d) for k, d in (
+        ("pos", domain.dim), ("vel", domain.dof), ("acc", domain.dof)))
+    for a, b in ((pos, pose_rate(pos, vel)), (vel, acc), (acc, None)):
+        for k in range(a.numel()):
+            der_table[a[k].name()] = b[k] if b is not None else None
+    return pos, vel, acc
 
 
 @dataclass
@@ -295,13 +317,15 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
             return None
         j = unknown[0]
         node = r.nodes[j]
-        e, ed, edd = relax(node.domain.dim if not r.linear else 1)
+        e, ed, edd = relax(node.domain.dof if not r.linear else 1)
         if r.linear:
             node.form = r.solve(j, atoms, atoms.add(e, ed, edd))
         else:
             (pos, vel, acc), extra = r.fire(j, values)
             if node.domain.dim == 1:
                 node.form = {atoms.add(pos + e, vel + ed, acc + edd): 1.0}
+            elif node.domain.dof != node.domain.dim:          # a 3-D frame: a virtual twist
+                node.pos, node.vel, node.acc = relax_spatial(pos, vel, acc, e, ed, edd)
             else:
                 node.pos, node.vel, node.acc = pos + e, vel + ed, acc + edd
             if extra is not None:
@@ -337,6 +361,11 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     for n in order:
         if known(n):
             continue
+        if n.domain.dof != n.domain.dim:
+            raise StructureError(
+                f"3-D frame '{n.name}' has no path through joints to the world: free bodies "
+                f"(orientation states) are not supported yet; connect it to the World "
+                f"through joints")
         dim = n.domain.dim
         syms = []
         for pot in n.domain.potentials:

@@ -4,7 +4,10 @@ compiled model's equations (M, C, K, gravity, Coriolis, B, Φ) by name.
 For coordinates q (and the relaxations ε of the tree relations, whose reactions give the
 port flows):
 
-    R = d/dt(∂T/∂q̇) − ∂T/∂q + ∂V/∂q − Q = 0,   Q = Σ J_portᵀ f_port.
+    R = d/dt(∂T/∂q̇) − ∂T/∂q + ∂V/∂q − Q = 0,   Q = Σ J_portᵀ f_port,
+
+J_port = ∂vel_port/∂q̇, vel the port's velocity conjugate to its flow (for a 3-D frame its
+twist (v, w) resolved in the frame, conjugate to MSL's f, t resolved in the frame).
 """
 from __future__ import annotations
 

@@ -24,7 +24,7 @@ def port_flows(ws, tree, explicit, lam_tree, lam_loop):
         else:
             total[p] = total[p] + v
 
-    for (p, _), v in zip(ws.flows, _split(explicit, [p.domain.dim for p, _ in ws.flows])):
+    for (p, _), v in zip(ws.flows, _split(explicit, [p.domain.dof for p, _ in ws.flows])):
         add(p, v)
     extra = {}
     for block, lam in zip(tree.loops, _split(lam_loop, [b.rows for b in tree.loops])):
@@ -42,9 +42,9 @@ def port_flows(ws, tree, explicit, lam_tree, lam_loop):
         if isinstance(p, InternalNode):
             continue
         for j, fname in enumerate(p.domain.flows):
-            out.append((f"{p.path}.{fname}", total[p][j] if p.domain.dim > 1 else total[p],
+            out.append((f"{p.path}.{fname}", total[p][j] if p.domain.dof > 1 else total[p],
                         p.domain.flow_units[j]))
-    flow_of = {p: total.get(p, ca.SX.zeros(p.domain.dim)) for p in ws.cut_flow_sym}
+    flow_of = {p: total.get(p, ca.SX.zeros(p.domain.dof)) for p in ws.cut_flow_sym}
     return out, flow_of
 
 
@@ -84,6 +84,9 @@ def recorded_variables(ws, tree):
                 continue
             for j, pot in enumerate(dom.potentials):
                 rec(f"{p.path}.{pot}", n.pos[j], dom.potential_units[j])
+            for j, name in enumerate(dom.velocity_names):
+                if name:
+                    rec(f"{p.path}.{name}", n.vel[j], dom.velocity_units[j])
     for info in ws.states:
         rec(info.sym.name(), info.sym, info.unit)
     for a in ws.algebraics:

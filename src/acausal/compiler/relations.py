@@ -9,6 +9,22 @@ enters as Φ = ε.
 - LinearRelation: Σ a_i·pos_i = b between 1-D ports: rigid offsets, gears, prescribed motion.
 - RigidTransform, RevoluteJoint, PrismaticJoint: planar frames, frame_b = frame_a ⊕ a relative
   pose that is constant or given by a joint coordinate (a 1-D node).
+- SpatialTransform, SpatialRevolute, SpatialPrismatic: the same for 3-D frames
+  (``core.ports.MULTIBODY``).
+
+One mechanism serves 2-D and 3-D. A node has a position ``pos`` (its potentials) and a
+velocity ``vel`` conjugate to its flows. For 1-D and planar nodes ``vel`` = der(pos). A 3-D
+frame's position is r_0 and R.T (12 numbers, ``frames.pose``) but its velocity is the
+twist (v, w) resolved in the frame (6 numbers), conjugate to MSL's (f, t) resolved in the
+frame; ``pose_rate`` maps the twist to der(pos) and ``twist`` maps der(pos) back. A relation
+gives node j's position from the others'; its velocity follows by AD through these two maps
+(or from the closed form a class may give, ``velocity_local``: the 3-D relations do, as the
+AD route builds equations five times larger; tests compare the two), and its acceleration
+and the Jacobian that maps reactions to flows (∂vel_j/∂vel_i) by AD from the velocity, for
+planar and 3-D relations alike. The relaxation ε of a 3-D
+node that a relation determines is a virtual twist: r_0 + R.Tᵀ·ε_r and (I − [ε_θ×])·R.T
+(first order in ε, all the reactions need; ``relax_spatial``), whose conjugate reaction is
+the cut force and torque at the frame.
 """
 from __future__ import annotations
 
@@ -16,6 +32,7 @@ import casadi as ca
 
 from ..errors import StructureError
 from ..core.ports import PhysicalPort
+from ..frames import parts, planar_rotation, pose, skew, vee
 from .symbolic import combine
 
 
@@ -90,13 +107,54 @@ def _rot(phi, v):
     return ca.vertcat(c * v[0] - s * v[1], s * v[0] + c * v[1])
 
 
+_KIND = {1: "a 1-D flange", 3: "a planar frame", 12: "a 3-D frame"}
+
+
+def pose_rate(pos, vel):
+    """der(pos) of a node from its velocity: vel itself, except for a 3-D frame, whose
+    twist (v, w) resolved in the frame gives der(r_0) = Tᵀv and der(T) = −[w×]T."""
+    if pos.numel() == vel.numel():
+        return vel
+    _, T = parts(pos)
+    return pose(ca.mtimes(T.T, vel[:3]), -ca.mtimes(skew(vel[3:6]), T))
+
+
+def twist(pos, rate):
+    """A node's velocity from der(pos) (inverse of ``pose_rate``): for a 3-D frame
+    v = T·der(r_0) and [w×] = T·der(T)ᵀ (its skew part, exact for orthogonal T)."""
+    if pos.numel() != 12:
+        return rate
+    _, T = parts(pos)
+    rd, Td = parts(rate)
+    return ca.vertcat(ca.mtimes(T, rd), vee(ca.mtimes(T, Td.T)))
+
+
+def _relax_spatial() -> ca.Function:
+    pos, vel, acc = ca.SX.sym("pos", 12), ca.SX.sym("vel", 6), ca.SX.sym("acc", 6)
+    e, ed, edd = ca.SX.sym("e", 6), ca.SX.sym("ed", 6), ca.SX.sym("edd", 6)
+    r, T = parts(pos)
+    relaxed = pose(r + ca.mtimes(T.T, e[:3]), T - ca.mtimes(skew(e[3:6]), T))
+    rate = pose_rate(pos, vel)
+    # the twist of ``relaxed`` to first order in ε (= twist(relaxed, der(relaxed)) there)
+    v, w, er, et = vel[:3], vel[3:], e[:3], e[3:]
+    v = ca.vertcat(v + ed[:3] + ca.cross(w, er) - ca.cross(et, v), w + ed[3:] - ca.cross(et, w))
+    a = ca.jtimes(v, ca.vertcat(pos, vel, e, ed), ca.vertcat(rate, acc, ed, edd))
+    return ca.Function("relax_spatial", [pos, vel, acc, e, ed, edd], [relaxed, v, a])
+
+
+#: (pos, vel, acc, ε, ε̇, ε̈) of a 3-D frame -> its relaxed (pos, vel, acc): ε = (ε_r, ε_θ)
+#: a virtual displacement and rotation resolved in the frame, to first order
+relax_spatial = _relax_spatial()
+
+
 class FrameRelation:
     """A nonlinear relation among nodes of given dimensions, with parameters.
 
-    Subclasses give ``dims`` (one per node), ``solve_local(j, vals, par)`` -> (value of node
-    j, extra constraint rows or None) from the others' values, and
-    ``residual_local(vals, par)`` (all nodes known). From these, velocities, accelerations
-    and the Jacobians for the flows are derived once per class and direction by AD on local
+    Subclasses give ``dims`` (one per node: 1 for a 1-D node, 3 for a planar frame, 12 for a
+    3-D frame), ``solve_local(j, vals, par)`` -> (position of node j, extra constraint rows
+    or None) from the others' positions, and ``residual_local(vals, par)`` (all nodes
+    known). From these, velocities (through ``pose_rate`` and ``twist``), accelerations and
+    the Jacobians for the flows are derived once per class and direction by AD on local
     symbols (casadi Functions), so firing a relation costs one Function call.
     """
     linear = False
@@ -110,8 +168,7 @@ class FrameRelation:
         self.nodes = []
         for p, d in zip(self.ports, self.dims):
             if p.domain.dim != d:
-                raise StructureError(f"{owner.path}: port '{p.path}' should be "
-                                     f"{'a planar frame' if d == 3 else 'a 1-D flange'}")
+                raise StructureError(f"{owner.path}: port '{p.path}' should be {_KIND[d]}")
 
     # to be given by subclasses
     def solve_local(self, j, vals, par):
@@ -119,6 +176,12 @@ class FrameRelation:
 
     def residual_local(self, vals, par):
         raise NotImplementedError
+
+    def velocity_local(self, j, vals, vels, par):
+        """Node j's velocity in closed form from the others' positions and velocities, or
+        None: derived by AD from ``solve_local`` (the same expression, numerically; a closed
+        form is smaller, which the 3-D relations give)."""
+        return None
 
     def can_solve(self, j: int) -> bool:
         return True
@@ -129,10 +192,15 @@ class FrameRelation:
         return ("x", "y", "phi")
 
     # derived, cached per class
+    @property
+    def dofs(self) -> tuple[int, ...]:
+        """Size of each node's velocity (6 for a 3-D frame, else its dimension)."""
+        return tuple(6 if d == 12 else d for d in self.dims)
+
     def _locals(self):
         vals = [ca.SX.sym(f"n{i}", d) for i, d in enumerate(self.dims)]
-        vels = [ca.SX.sym(f"v{i}", d) for i, d in enumerate(self.dims)]
-        accs = [ca.SX.sym(f"a{i}", d) for i, d in enumerate(self.dims)]
+        vels = [ca.SX.sym(f"v{i}", d) for i, d in enumerate(self.dofs)]
+        accs = [ca.SX.sym(f"a{i}", d) for i, d in enumerate(self.dofs)]
         par = [ca.SX.sym(f"p{k}", p.numel()) for k, p in enumerate(self.params)]
         return vals, vels, accs, par
 
@@ -145,12 +213,16 @@ class FrameRelation:
             X = ca.vertcat(*[vals[i] for i in others])
             Xd = ca.vertcat(*[vels[i] for i in others])
             Xdd = ca.vertcat(*[accs[i] for i in others])
-            vel = ca.jtimes(value, X, Xd)
-            acc = ca.jtimes(vel, ca.vertcat(X, Xd), ca.vertcat(Xd, Xdd))
-            J = ca.jacobian(value, X)
+            rate = ca.vertcat(*[pose_rate(vals[i], vels[i]) for i in others])
+            vel = self.velocity_local(j, {i: vals[i] for i in others},
+                                      {i: vels[i] for i in others}, par)
+            if vel is None:
+                vel = twist(value, ca.jtimes(value, X, rate))
+            acc = ca.jtimes(vel, ca.vertcat(X, Xd), ca.vertcat(rate, Xdd))
+            J = ca.jacobian(vel, Xd)                # reactions to flows: ∂vel_j/∂vel_i
             extra = extra if extra is not None else ca.SX(0, 1)
-            Je = ca.jacobian(extra, X)
-            Jej = ca.SX(extra.numel(), self.dims[j])
+            Je = ca.jacobian(ca.jtimes(extra, X, rate), Xd)
+            Jej = ca.SX(extra.numel(), self.dofs[j])
             ins = [vals[i] for i in others] + [vels[i] for i in others] + \
                   [accs[i] for i in others] + par
             FrameRelation._cache[key] = ca.Function(
@@ -185,7 +257,7 @@ class FrameRelation:
         out = {j: lam}
         col = 0
         for i in others:
-            d = self.dims[i]
+            d = self.dofs[i]
             f = -ca.mtimes(J[:, col:col + d].T, lam)
             if lam_extra is not None and lam_extra.numel():
                 f = f + ca.mtimes(Je[:, col:col + d].T, lam_extra)
@@ -292,3 +364,108 @@ class PrismaticJoint(FrameRelation):
 
     def row_names(self, extra):
         return ("normal", "phi") if extra else ("x", "y", "phi")
+
+
+# ---- 3-D frames ---------------------------------------------------------------------------
+class SpatialRelation(FrameRelation):
+    """A relation among 3-D frames (and a joint's 1-D coordinate). Subclasses give the
+    velocity map in closed form (``velocity_local``, what the AD route gives, smaller;
+    tests compare the two). Closing a loop of 3-D frames is not implemented yet: such a
+    relation is refused naming the component."""
+
+    def can_solve(self, j: int) -> bool:
+        return self.dims[j] == 12          # a joint's coordinate is never solved from frames
+
+    def loop_residual(self, node_values):
+        raise StructureError(
+            f"{type(self.owner).__name__} '{self.owner.path}' closes a kinematic loop of 3-D "
+            f"frames (both its frames are fixed by other paths to the world); loops in 3-D "
+            f"are not supported yet: open the loop, or connect the part to the world once")
+
+
+class SpatialTransform(SpatialRelation):
+    """frame_b = frame_a translated by r [m] (resolved in frame_a) and rotated by T_rel
+    (frame_b's axes resolved in frame_a's: v_b = T_rel·v_a); without frame_a, frame_b is
+    fixed in the world at r with orientation T_rel."""
+    dims = (12, 12)
+
+    def __init__(self, owner, frame_a, frame_b, r, T, name=""):
+        if frame_a is None:
+            self.dims = (12,)
+            super().__init__(owner, [frame_b], [_vec(r), ca.vec(T)], name)
+        else:
+            super().__init__(owner, [frame_a, frame_b], [_vec(r), ca.vec(T)], name)
+
+    def solve_local(self, j, vals, par):
+        r, T = par[0], ca.reshape(par[1], 3, 3)
+        if len(self.dims) == 1:
+            return pose(r, T), None
+        if j == 1:
+            ra, Ta = parts(vals[0])
+            return pose(ra + ca.mtimes(Ta.T, r), ca.mtimes(T, Ta)), None
+        rb, Tb = parts(vals[1])
+        Ta = ca.mtimes(T.T, Tb)
+        return pose(rb - ca.mtimes(Ta.T, r), Ta), None
+
+    def velocity_local(self, j, vals, vels, par):
+        r, T = par[0], ca.reshape(par[1], 3, 3)
+        if len(self.dims) == 1:
+            return ca.SX.zeros(6)
+        if j == 1:            # v_b = T(v_a + w_a × r), w_b = T w_a
+            v, w = vels[0][:3], vels[0][3:]
+            return ca.vertcat(ca.mtimes(T, v + ca.cross(w, r)), ca.mtimes(T, w))
+        v, w = vels[1][:3], vels[1][3:]
+        wa = ca.mtimes(T.T, w)
+        return ca.vertcat(ca.mtimes(T.T, v) - ca.cross(wa, r), wa)
+
+
+class SpatialRevolute(SpatialRelation):
+    """frame_b = frame_a rotated by the joint angle (a 1-D node) about the unit axis e
+    (resolved in frame_a and frame_b) through their common origin (MSL's Revolute)."""
+    dims = (12, 12, 1)
+
+    def __init__(self, owner, frame_a, frame_b, angle, e, name=""):
+        super().__init__(owner, [frame_a, frame_b, angle], [_vec(e)], name)
+
+    def solve_local(self, j, vals, par):
+        (e,) = par
+        R = planar_rotation(e, vals[2])
+        if j == 1:
+            ra, Ta = parts(vals[0])
+            return pose(ra, ca.mtimes(R, Ta)), None
+        rb, Tb = parts(vals[1])
+        return pose(rb, ca.mtimes(R.T, Tb)), None
+
+    def velocity_local(self, j, vals, vels, par):
+        (e,) = par
+        R = planar_rotation(e, vals[2])
+        if j == 1:            # v_b = R v_a, w_b = R w_a + e·w
+            v, w = vels[0][:3], vels[0][3:]
+            return ca.vertcat(ca.mtimes(R, v), ca.mtimes(R, w) + e * vels[2])
+        v, w = vels[1][:3], vels[1][3:]
+        return ca.vertcat(ca.mtimes(R.T, v), ca.mtimes(R.T, w - e * vels[2]))
+
+
+class SpatialPrismatic(SpatialRelation):
+    """frame_b = frame_a translated by s·e (s the joint coordinate, a 1-D node; e a unit
+    vector resolved in frame_a); no relative rotation (MSL's Prismatic)."""
+    dims = (12, 12, 1)
+
+    def __init__(self, owner, frame_a, frame_b, s, e, name=""):
+        super().__init__(owner, [frame_a, frame_b, s], [_vec(e)], name)
+
+    def solve_local(self, j, vals, par):
+        (e,) = par
+        if j == 1:
+            ra, Ta = parts(vals[0])
+            return pose(ra + ca.mtimes(Ta.T, e * vals[2]), Ta), None
+        rb, Tb = parts(vals[1])
+        return pose(rb - ca.mtimes(Tb.T, e * vals[2]), Tb), None
+
+    def velocity_local(self, j, vals, vels, par):
+        (e,) = par
+        if j == 1:            # v_b = v_a + w_a × (e s) + e·v, w_b = w_a
+            v, w = vels[0][:3], vels[0][3:]
+            return ca.vertcat(v + ca.cross(w, e * vals[2]) + e * vels[2], w)
+        v, w = vels[1][:3], vels[1][3:]
+        return ca.vertcat(v - ca.cross(w, e * vals[2]) - e * vels[2], w)

@@ -21,13 +21,16 @@ from dataclasses import dataclass
 import casadi as ca
 
 from ..core import Component, ConditionalPort, HeatPort_a, Parameter, RealInput
+from ..core.component import who
+from ..errors import ParameterError
 
 __all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS",
            "PartialElementaryConditionalHeatPortWithoutT", "PartialElementaryConditionalHeatPort",
            "linearTemperatureDependency", "PartialEddyCurrent",
            "PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
            "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law",
-           "Position", "Speed", "Accelerate", "Move", "ConstantSpeed"]
+           "Position", "Speed", "Accelerate", "Move", "ConstantSpeed", "drive_flanges",
+           "PartialDrivenJoint", "unit_direction"]
 
 
 @dataclass(frozen=True)
@@ -265,6 +268,51 @@ class PartialElementaryTwoFlangesAndSupport2(_Support):
 # =========================================================================================
 # Speed-dependent laws (Linear/QuadraticSpeedDependentForce and -Torque)
 # =========================================================================================
+def unit_direction(c: Component, name: str, example: str) -> ca.SX:
+    """The unit vector v/|v| of ``c``'s direction parameter ``name`` (MSL's
+    normalizeWithAssert), planar or 3-D: a zero vector gives no direction and is refused
+    naming the parameter."""
+    v0 = c._values[name]
+    if all(x == 0.0 for x in v0):
+        zero = "{" + ", ".join("0" for _ in v0) + "}"
+        raise ParameterError(f"{who(c)}: {name} = {zero} gives no direction; give one, "
+                             f"e.g. {type(c).__name__}({name}={example})")
+    v = getattr(c, name)
+    return v / ca.norm_2(v)
+
+
+def drive_flanges(flange_cls: type, kind: str, option: str):
+    """A joint's ``axis`` and ``support``: 1-D flanges of the joint's domain (``kind``,
+    "rotational" or "translational"), present if the structural option ``option`` is True
+    (PlanarMechanics' useFlange, MultiBody's useAxisFlange)."""
+    return (ConditionalPort(flange_cls(f"1-dim. {kind} flange that drives the joint"), option),
+            ConditionalPort(flange_cls(f"1-dim. {kind} flange of the drive support (assumed "
+                                       f"to be fixed in the world frame, NOT in the joint)"),
+                            option))
+
+
+class PartialDrivenJoint(Component):
+    """A joint (planar or 3-D) with an optional 1-D drive: ``axis`` follows the joint
+    coordinate and ``support`` is fixed in the world (as in PlanarMechanics and MultiBody,
+    the support is *not* fixed in the joint). Unconnected, the flanges are free (no drive
+    force); connected to the 1-D libraries they drive or load the joint. Subclasses declare
+    the two flanges with ``drive_flanges`` under the option named ``drive_option``."""
+    drive_option = "useFlange"
+
+    def _driven(self) -> bool:
+        return bool(getattr(self, self.drive_option))
+
+    def _link_flange(self, s, node):
+        """axis follows the joint coordinate ``node``; support is fixed in the world."""
+        if self._driven():
+            s.linear({self.axis: 1.0, node: -1.0}, 0.0, f"{self.path}: axis")
+            s.linear({self.support: 1.0}, 0.0, f"{self.path}: support")
+
+    def _drive_force(self, e):
+        """The drive force/torque: the axis' cut flow (0 without flange)."""
+        return e.cut_flow(self.axis) if self._driven() else ca.SX(0)
+
+
 def linear_law(x, same_direction: bool):
     """|x| (same direction both ways: ForceDirection/TorqueDirection) or x."""
     return ca.fabs(x) if same_direction else x

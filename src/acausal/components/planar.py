@@ -58,10 +58,9 @@ import casadi as ca
 from ..core import (Component, ConditionalPort, Frame, Parameter, PortVector, RealInput,
                     RealOutput, RotationalFlange, StateSelect, TranslationalFlange,
                     Unavailable, VectorPort)
-from ..core.component import who
 from ..core.ports import ROTATIONAL, TRANSLATIONAL
-from ..errors import ParameterError
-from .interfaces import PartialElementaryConditionalHeatPortWithoutT
+from .interfaces import (PartialDrivenJoint, PartialElementaryConditionalHeatPortWithoutT,
+                         drive_flanges, unit_direction)
 
 __all__ = [
     # types
@@ -119,17 +118,6 @@ def _rot_t(phi, v):
     return ca.vertcat(c * v[0] + s * v[1], -s * v[0] + c * v[1])
 
 
-def _direction(c: Component, name: str, example: str) -> ca.SX:
-    """The unit vector of ``c``'s direction parameter ``name`` (v/|v|, MSL's
-    normalizeWithAssert): {0, 0} gives no direction and is refused naming the parameter."""
-    v0 = c._values[name]
-    if v0[0] == 0.0 and v0[1] == 0.0:
-        raise ParameterError(f"{who(c)}: {name} = {{0, 0}} gives no direction; give one, "
-                             f"e.g. {type(c).__name__}({name}={example})")
-    v = getattr(c, name)
-    return v / ca.norm_2(v)
-
-
 def _output_vector(e, ports: PortVector, values) -> None:
     for k, port in enumerate(ports):
         e.output(port, values[k])
@@ -165,7 +153,7 @@ class World(Component):
 
     def gravity(self) -> ca.SX:
         """The gravity acceleration g·n/|n| [m/s²], resolved in the world frame."""
-        return self.g * _direction(self, "n", "(0, -1)")
+        return self.g * unit_direction(self, "n", "(0, -1)")
 
 
 class Fixed(Component):
@@ -420,36 +408,16 @@ class LineSpringDamper(PartialLineForce, PartialElementaryConditionalHeatPortWit
 # =========================================================================================
 # Joints
 # =========================================================================================
-def _drive_flanges(flange_cls: type, kind: str) -> tuple[ConditionalPort, ConditionalPort]:
-    """A joint's ``axis`` and ``support`` of the joint's 1-D domain (``kind``), if
-    useFlange."""
-    return (ConditionalPort(flange_cls(f"1-dim. {kind} flange that drives the joint"),
-                            "useFlange"),
-            ConditionalPort(flange_cls(f"1-dim. {kind} flange of the drive support (assumed "
-                                       f"to be fixed in the world frame, NOT in the joint)"),
-                            "useFlange"))
-
-
-class _Joint(Component):
+class _Joint(PartialDrivenJoint):
     """A joint between frame_a and frame_b with an optional 1-D drive (``useFlange``):
     ``axis`` follows the joint coordinate and ``support`` is fixed in the world (as in
     PlanarMechanics, the support is *not* fixed in the joint). Unconnected, the flanges are
     free (no drive force); connect them to the 1-D libraries to drive or load the joint.
-    Each joint declares the two flanges of its domain (``_drive_flanges``).
+    Each joint declares the two flanges of its domain (``drive_flanges``).
     ``stateSelect`` is accepted as a hint (see StateSelect)."""
     options = {"useFlange": False, "stateSelect": StateSelect.default}
     frame_a = Frame("frame the joint is fixed to")
     frame_b = Frame("frame moved by the joint")
-
-    def _link_flange(self, s, node):
-        """axis follows the joint coordinate ``node``; support is fixed in the world."""
-        if self.useFlange:
-            s.linear({self.axis: 1.0, node: -1.0}, 0.0, f"{self.path}: axis")
-            s.linear({self.support: 1.0}, 0.0, f"{self.path}: support")
-
-    def _drive_force(self, e):
-        """The drive force/torque: the axis' cut flow (0 without flange)."""
-        return e.cut_flow(self.axis) if self.useFlange else ca.SX(0)
 
 
 class Revolute(_Joint):
@@ -461,7 +429,7 @@ class Revolute(_Joint):
     in PlanarMechanics): a torque on axis acts on frame_b and, opposite, on frame_a.
     """
     frame_b = Frame("frame turned by phi")
-    axis, support = _drive_flanges(RotationalFlange, "rotational")
+    axis, support = drive_flanges(RotationalFlange, "rotational", "useFlange")
 
     def structure(self, s):
         phi = s.node("phi", ROTATIONAL, velocity="w", acceleration="z")
@@ -482,10 +450,10 @@ class Prismatic(_Joint):
     has the default {1, 0} (PlanarMechanics gives none)."""
     r = Parameter((1.0, 0.0), "m", "direction of the rod wrt. body system at phi=0")
     frame_b = Frame("frame moved by s")
-    axis, support = _drive_flanges(TranslationalFlange, "translational")
+    axis, support = drive_flanges(TranslationalFlange, "translational", "useFlange")
 
     def structure(self, s):
-        e = _direction(self, "r", "(1, 0)")
+        e = unit_direction(self, "r", "(1, 0)")
         s_rel = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
         s.prismatic(self.frame_a, self.frame_b, s_rel, e)
         self._link_flange(s, s_rel)

@@ -34,16 +34,39 @@ class Domain:
     #: start value of a network node's potential where nothing fixes it (Modelica's type
     #: start: SI.Temperature's 288.15 K, 0 V)
     potential_start: float = 0.0
+    #: names under which the components of a port's velocity are recorded ("" not), for
+    #: domains whose velocity is no potential's rate (the 3-D frame's R.w)
+    velocity_names: tuple[str, ...] = ()
 
     @property
     def dim(self) -> int:
+        """Number of potentials (the size of a node's position)."""
         return len(self.potentials)
+
+    @property
+    def dof(self) -> int:
+        """Number of flows, which is the number of velocities (degrees of freedom) of a
+        node. It equals ``dim`` except for the 3-D frame, whose position is r_0 and the
+        nine entries of R.T, and whose velocity is the 6-vector (v, w) conjugate to (f, t)."""
+        return len(self.flows)
 
 
 TRANSLATIONAL = Domain("translational", ("s",), ("f",), ("m",), ("N",), ("m/s",))
 ROTATIONAL = Domain("rotational", ("phi",), ("tau",), ("rad",), ("N.m",), ("rad/s",))
 PLANAR = Domain("planar", ("x", "y", "phi"), ("fx", "fy", "t"), ("m", "m", "rad"),
                 ("N", "N", "N.m"), ("m/s", "m/s", "rad/s"))
+#: the 3-D frame (Modelica.Mechanics.MultiBody.Interfaces.Frame): r_0 [m] resolved in the
+#: world, the orientation R.T (transformation matrix from the world to the frame, row by
+#: row); cut force f [N] and torque t [N.m] resolved in the frame. Its velocity (the
+#: compiler's node velocity) is (v, w) [m/s, rad/s] resolved in the frame: v = R.T·der(r_0),
+#: w the angular velocity (MSL's R.w, recorded), so that f·v + t·w is the power into the
+#: frame.
+MULTIBODY = Domain(
+    "multibody",
+    ("r_0[1]", "r_0[2]", "r_0[3]") + tuple(f"R.T[{i},{j}]" for i in (1, 2, 3) for j in (1, 2, 3)),
+    ("f[1]", "f[2]", "f[3]", "t[1]", "t[2]", "t[3]"),
+    ("m",) * 3 + ("1",) * 9, ("N",) * 3 + ("N.m",) * 3, ("m/s",) * 3 + ("rad/s",) * 3,
+    velocity_names=("", "", "", "R.w[1]", "R.w[2]", "R.w[3]"))
 ELECTRICAL = Domain("electrical", ("v",), ("i",), ("V",), ("A",), ("V/s",), network=True)
 THERMAL = Domain("thermal", ("T",), ("Q_flow",), ("K",), ("W",), ("K/s",), network=True,
                  potential_start=288.15)
@@ -96,6 +119,15 @@ class Frame(PhysicalPort):
     t [N.m] about the frame's origin, resolved in the world frame, positive into the
     component (t counter-clockwise, like phi)."""
     domain = PLANAR
+
+
+class MultiBodyFrame(PhysicalPort):
+    """3-D frame (Modelica.Mechanics.MultiBody.Interfaces.Frame): position r_0[3] [m] of its
+    origin resolved in the world frame, orientation R (R.T[3,3]: transformation matrix from
+    the world frame to this frame, v_frame = R.T·v_world; R.w [rad/s] its angular velocity
+    resolved in the frame); cut force f[3] [N] and cut torque t[3] [N.m] about its origin,
+    resolved in this frame, positive into the component."""
+    domain = MULTIBODY
 
 
 class Pin(PhysicalPort):

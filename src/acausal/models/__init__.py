@@ -41,6 +41,8 @@ no compiler or simulation imports.
     robot_axis          OneAxis: MSL's RobotR3.OneAxis (path planning, P-PI controller,
                         op-amp current-controlled Motor, GearType1 with bearing friction),
                         with AxisType1/2, GearType1/2, Controller, PathPlanning1
+    multibody           MultiBodyPendulum, MultiBodyDoublePendulum: MSL MultiBody's
+                        Elementary Pendulum and DoublePendulum; chain: 3-D joint trees
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
@@ -59,6 +61,7 @@ from .gears import Backlash, LossyGearDemo1, LossyGearDemo2, LossyGearDemo3
 from .heat_losses import RotationalHeatLosses, TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
+from .multibody import MultiBodyDoublePendulum, MultiBodyPendulum, chain
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
@@ -75,4 +78,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
            "TranslationalHeatLosses", "RotationalHeatLosses", "ResistorExample",
-           "HeatingRectifier", "DCMotorCircuit", "OneAxis"]
+           "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
+           "MultiBodyDoublePendulum", "chain"]
