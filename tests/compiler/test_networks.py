@@ -13,18 +13,10 @@ from acausal.analysis import linearize
 from acausal.components import electrical as el
 from acausal.components import rotational as rot
 from acausal.core import Component, Pin
+from wiring import model
 
 TIGHT = {"rtol": 1e-11, "atol": 1e-12}
 R, L, K, J = 0.05, 0.0015, 2.0 / math.pi, 0.15
-
-
-def model(name, pairs, **parts):
-    m = acausal.Model(name)
-    for k, v in parts.items():
-        setattr(m, k, v)
-    for a, b in pairs(m):
-        m.connect(a, b)
-    return m
 
 
 def rc(R=10.0, C=0.01):

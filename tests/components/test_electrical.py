@@ -13,17 +13,9 @@ from acausal.components import electrical as el
 from acausal.components import rotational as rot
 from acausal.components import signals as sig
 from acausal.components import thermal as th
+from wiring import model
 
 TIGHT = {"rtol": 1e-11, "atol": 1e-12}
-
-
-def model(name, pairs, **parts):
-    m = acausal.Model(name)
-    for k, v in parts.items():
-        setattr(m, k, v)
-    for a, b in pairs(m):
-        m.connect(a, b)
-    return m
 
 
 def series(m, *two_ports):

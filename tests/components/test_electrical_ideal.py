@@ -11,17 +11,9 @@ from scipy.integrate import solve_ivp
 import acausal
 from acausal.components import electrical as el
 from acausal.components import logical as lg
+from wiring import model
 
 TIGHT = {"rtol": 1e-11, "atol": 1e-12}
-
-
-def model(name, pairs, **parts):
-    m = acausal.Model(name)
-    for k, v in parts.items():
-        setattr(m, k, v)
-    for a, b in pairs(m):
-        m.connect(a, b)
-    return m
 
 
 def rectifier(V=10.0, f=50.0, R=100.0, C=1e-4):

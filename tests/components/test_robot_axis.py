@@ -16,18 +16,10 @@ from acausal.components import rotational as rot
 from acausal.components import signals as sig
 from acausal.errors import FmuExportError, InitializationError, ParameterError, StructureError
 from acausal.models.robot_axis import STOP_TIME, GearType2, Motor, OneAxis
+from wiring import model
 
 ONE_AXIS = "Modelica.Mechanics.MultiBody.Examples.Systems.RobotR3.OneAxis"
 FRICTION = "axis.gear.bearingFriction."
-
-
-def model(name, pairs, **parts):
-    m = acausal.Model(name)
-    for k, v in parts.items():
-        setattr(m, k, v)
-    for a, b in pairs(m):
-        m.connect(a, b)
-    return m
 
 
 def changes(t, values):

@@ -10,17 +10,9 @@ from scipy.linalg import expm
 import acausal
 from acausal.components import signals as sig
 from acausal.components import thermal as th
+from wiring import model
 
 TIGHT = {"rtol": 1e-11, "atol": 1e-12}
-
-
-def model(name, pairs, **parts):
-    m = acausal.Model(name)
-    for k, v in parts.items():
-        setattr(m, k, v)
-    for a, b in pairs(m):
-        m.connect(a, b)
-    return m
 
 
 @pytest.mark.parametrize("element", ["ThermalConductor", "ThermalResistor"])
