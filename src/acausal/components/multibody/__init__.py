@@ -2,7 +2,9 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass), ``joints`` (Revolute, Prismatic). Names, parameters, defaults, units and sign
+PointMass), ``joints`` (Revolute, Prismatic), ``rolling`` (MSL's Parts.RollingWheel and
+Parts.RollingWheelSet as RollingWheel, RollingWheelSet; their joints as RollingWheelJoint,
+RollingWheelSetJoint, RollingConstraintVerticalWheel: no-slip constraints on velocities). Names, parameters, defaults, units and sign
 conventions are MSL's, so an MSL MultiBody model translates line by line::
 
     m.world, m.rev = World(), Revolute(n=(0, 0, 1), useAxisFlange=True)
@@ -29,8 +31,12 @@ from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
                     FixedTranslation, PointMass, RotationTypes)
+from .rolling import (RollingConstraintVerticalWheel, RollingWheel, RollingWheelJoint,
+                      RollingWheelSet, RollingWheelSetJoint)
 from .world import GravityTypes, World
 
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
-           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic"]
+           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic", "RollingWheel",
+           "RollingWheelSet", "RollingWheelJoint", "RollingWheelSetJoint",
+           "RollingConstraintVerticalWheel"]
