@@ -23,9 +23,10 @@ orientation states and no singularity: a body must be connected to the World thr
 joints. ``compiled.lagrange`` gives M(q), the Coriolis/centrifugal terms and gravity as for
 planar models.
 
-Not here yet: free and spherical joints (orientation states), loops of 3-D frames, the
-spatial articulated-body recursion (accelerations come from the dense solve of M(q)),
-forces, sensors, visualizers, URDF import, animation.
+The animation (``acausal.analysis.animation``) draws the parts from their shapes. Not here
+yet: free and spherical joints (orientation states), loops of 3-D frames, the spatial
+articulated-body recursion (accelerations come from the dense solve of M(q)), forces,
+sensors, visualizers, URDF import.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
