@@ -341,14 +341,14 @@ class Animation:
         """Write the animation as a GIF (matplotlib, Pillow writer), ``frames`` instants
         evenly spread over the result (default all); returns the indices of the instants
         drawn."""
-        import matplotlib
-        import matplotlib.pyplot as plt
         from matplotlib.animation import FuncAnimation, PillowWriter
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.collections import PolyCollection
-        matplotlib.use("Agg", force=False)
+        from matplotlib.figure import Figure
         W, H = size
         dpi = 100
-        fig = plt.figure(figsize=(W / dpi, H / dpi), dpi=dpi)
+        fig = Figure(figsize=(W / dpi, H / dpi), dpi=dpi)       # no pyplot, any backend
+        FigureCanvasAgg(fig)
         ax = fig.add_axes((0, 0, 1, 1))
         ax.set_xlim(0, W)
         ax.set_ylim(H, 0)
@@ -370,7 +370,6 @@ class Animation:
 
         anim = FuncAnimation(fig, draw, frames=len(idx), blit=False)
         anim.save(str(path), writer=PillowWriter(fps=fps), dpi=dpi)
-        plt.close(fig)
         return idx
 
     def save_html(self, path, title: str = "acausal animation", frames: int | None = None):

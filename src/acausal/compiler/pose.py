@@ -29,9 +29,6 @@ class CoordinatePose(SpatialRelation):
         r, T = type(self).fn([vals[i] for i in range(1, len(self.dims))], par)
         return pose(r, T), None
 
-    def row_names(self, extra):
-        return tuple(f"r_0[{k}]" for k in (1, 2, 3)) + ("w[1]", "w[2]", "w[3]")
-
 
 def coordinate_pose(fn) -> type:
     """The CoordinatePose class of the pose function ``fn`` (one per function)."""

@@ -100,7 +100,7 @@ def rolling_contact(e, frame, delta_0, lateral: bool = True):
     """No slip of the wheel fixed to ``frame`` at its contact point r_0 + ``delta_0`` [m]
     (world frame) on the plane z = 0: the rows vContact_0·e_long_0 = 0 (and ·e_lat_0 = 0
     with ``lateral``), their forces f_long, f_lat [N] on the wheel at the contact point
-    put on ``frame``. Returns (f_wheel_0 without the normal force, e_long_0, e_lat_0)."""
+    put on ``frame``. Returns f_wheel_0 [N] (world frame) without the normal force."""
     r0, T = frames.parts(e.pos(frame))
     vel = e.vel(frame)
     v_0, w_0 = frames.resolve1(T, vel[:3]), frames.resolve1(T, vel[3:6])
@@ -120,7 +120,7 @@ def rolling_contact(e, frame, delta_0, lateral: bool = True):
         e.variable("f_lat", 0.0, "N", "contact force acting on wheel in lateral direction")
     e.flow(frame, ca.vertcat(-ca.mtimes(T, f_wheel_0), -ca.mtimes(T, ca.cross(delta_0,
                                                                             f_wheel_0))))
-    return f_wheel_0, e_long_0, e_lat_0
+    return f_wheel_0
 
 
 class RollingWheelJoint(Animated):
@@ -147,7 +147,7 @@ class RollingWheelJoint(Animated):
         u = T[1, :].T
         s_ = ca.sqrt(1 - u[2] ** 2)
         delta_0 = self.radius * (u[2] * u - _EZ) / s_
-        f_wheel_0, _, _ = rolling_contact(e, self.frame_a, delta_0)
+        rolling_contact(e, self.frame_a, delta_0)
         cut = e.cut_flow(self.frame_a)               # all the joint exerts, normal force too
         f_total_0 = -frames.resolve1(T, cut[:3])
         e.variable("z", r0[2], "m", "z-coordinate of wheel axis")
@@ -200,7 +200,7 @@ class RollingConstraintVerticalWheel(Component):
 
 def vertical_wheel(e, frame, radius, lateral: bool) -> None:
     """RollingConstraintVerticalWheel's equations on ``frame``."""
-    f_wheel_0, _, _ = rolling_contact(e, frame, ca.vertcat(0, 0, -radius), lateral)
+    f_wheel_0 = rolling_contact(e, frame, ca.vertcat(0, 0, -radius), lateral)
     _record(e, "f_wheel_0", f_wheel_0, "N", "contact force acting on wheel, resolved in "
                                             "world frame")
 
