@@ -38,6 +38,7 @@ from .kinematics import Node, choose_tree, motion_symbols
 from .lagrange import Lagrange, Residuals, residuals
 from .loops import analyse_loops
 from .motion import solve_motion
+from .nonholonomic import solve_velocity_constrained
 from .networks import build_network, declare_nodes, has_network_ports
 from .recorded import port_flows, recorded_variables
 from .resolve import make_resolver
@@ -192,11 +193,12 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     phi_eps = ca.jacobian(phi, eps)
     resolve = make_resolver(ws, [eps, epsd, epsdd])
     network = build_network(ws, resolve)
-    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit = network.substitute(resolve([
+    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit, nh = network.substitute(resolve([
         R.inertia, R.conservative, R.flows, phi, phi_eps,
         _stack([i.der for i in ws.states]),
         _stack([r for o, r in ws.residuals if not has_network_ports(o)]),
-        _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows])]))
+        _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows]),
+        _stack([r for _, _, r, _ in ws.velocity_constraints])]))
     R_all = R_T + R_V + R_Q
     R_q, R_eps = R_all[:nq], R_all[nq:]
     cut = _stack(list(ws.cut_flow_sym.values()))
@@ -213,7 +215,15 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         bodies = [(b[0:3], b[3:6], b[6], b[7]) for b in ca.vertsplit(flat_b, 8)]
         T_other = resolve([ca.sum1(_stack(ws.kinetic_other)) if ws.kinetic_other
                            else ca.SX(0)])[0]
-    motion = solve_motion(tree, R_q, phi[keep], ws, (bodies, T_other), resolve)
+    if ws.velocity_constraints:
+        if keep:
+            raise StructureError("closed kinematic loops together with velocity constraints "
+                                 "(rolling contacts) are not supported yet")
+        motion = solve_velocity_constrained(
+            tree, R_q, nh, _stack([f for *_, f in ws.velocity_constraints]),
+            [f"{o.path}.{n}" for o, n, _, _ in ws.velocity_constraints], ws, resolve)
+    else:
+        motion = solve_motion(tree, R_q, phi[keep], ws, (bodies, T_other), resolve)
     lam = ca.SX.zeros(phi.numel())               # dropped (redundant) rows carry nothing
     lam[keep] = motion.lam
     lam_tree = -(R_eps + ca.mtimes(phi_eps.T, lam)) if eps.numel() else ca.SX(0, 1)

@@ -26,6 +26,7 @@ from ..errors import StructureError
 from ..core.interface import Input, Output
 from ..core.ports import MULTIBODY, Domain, PhysicalPort, Port, RealInput, RealOutput
 from .kinematics import InternalNode
+from .pose import coordinate_pose
 from .relations import (LinearRelation, PrismaticJoint, RevoluteJoint, RigidTransform,
                         SpatialPrismatic, SpatialRevolute, SpatialTransform)
 from .symbolic import der_with, sx
@@ -93,6 +94,7 @@ class Workspace:
     reinits: list = field(default_factory=list)             # (owner, variable, expr, when, dir.)
     initials: list = field(default_factory=list)            # (owner, expr, name) at the start
     terminations: list = field(default_factory=list)        # (owner, condition, text)
+    velocity_constraints: list = field(default_factory=list)  # (owner, name, expr, force)
     state_selects: list = field(default_factory=list)       # (owner, name, expr, rank) kept
     components: list = field(default_factory=list)          # all of them, flattened
     param_symbols: dict = field(default_factory=dict)       # component -> {name: SX}
@@ -216,6 +218,16 @@ class StructureBuilder(_Base):
             self._mine(p)
         cls = SpatialPrismatic if frame_b.domain is MULTIBODY else PrismaticJoint
         self._ws.relations.append(cls(self._owner, frame_a, frame_b, s, e, name))
+
+    def pose(self, frame, coordinates: list, fn, params=(), name: str = "") -> None:
+        """The 3-D ``frame`` placed by the 1-D nodes ``coordinates`` (e.g. a wheel's x, y,
+        angles): r_0 [m], R.T = ``fn``(coordinate symbols, ``params``), a function of
+        CasADi scalars; its twist and reactions follow by AD (``compiler.pose``)."""
+        for p in (frame, *coordinates):
+            self._mine(p)
+        cls = coordinate_pose(fn)
+        self._ws.relations.append(cls(self._owner, frame, list(coordinates),
+                                      [sx(v) for v in params], name))
 
     def states(self, port: PhysicalPort, positions: tuple, velocities: tuple) -> None:
         """Name the coordinates a port gets if its connection group needs free coordinates
@@ -433,6 +445,20 @@ class PhysicsBuilder(_Base):
         v = n.vel
         self._ws.kinetic.append(sx(0.5 * m * ca.sumsqr(v[:2]) + 0.5 * I * v[2] ** 2))
         self._ws.bodies.append((n.pos, n.vel, sx(m), sx(I)))
+
+    def velocity_constraint(self, name: str, expr, unit: str = "N",
+                            description: str = "") -> ca.SX:
+        """A constraint on velocities, 0 = ``expr`` (linear in the port velocities, not the
+        time derivative of a position constraint: a rolling contact's no-slip condition),
+        and the unknown force [``unit``] that holds it, returned as a symbol recorded under
+        ``name``: the component puts it on its ports with ``flow`` (ideal when its power
+        is force·expr). The compiler eliminates one velocity per row (``compiler.
+        nonholonomic``) and solves the forces with the accelerations."""
+        f = ca.SX.sym(self._name(name))
+        self._ws.der_table[f.name()] = None
+        self._ws.velocity_constraints.append((self._owner, name, sx(expr), f))
+        self._ws.variables.append((self._name(name), f, unit, description))
+        return f
 
     def potential_energy(self, V) -> None:
         """Add potential energy [J] (conservative forces: generalized force −∂V/∂q)."""

@@ -2,7 +2,9 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass), ``joints`` (Revolute, Prismatic). Names, parameters, defaults, units and sign
+PointMass), ``joints`` (Revolute, Prismatic), ``rolling`` (MSL's Parts.RollingWheel and
+Parts.RollingWheelSet as RollingWheel, RollingWheelSet; their joints as RollingWheelJoint,
+RollingWheelSetJoint, RollingConstraintVerticalWheel: no-slip constraints on velocities). Names, parameters, defaults, units and sign
 conventions are MSL's, so an MSL MultiBody model translates line by line::
 
     m.world, m.rev = World(), Revolute(n=(0, 0, 1), useAxisFlange=True)
@@ -21,16 +23,21 @@ orientation states and no singularity: a body must be connected to the World thr
 joints. ``compiled.lagrange`` gives M(q), the Coriolis/centrifugal terms and gravity as for
 planar models.
 
-Not here yet: free and spherical joints (orientation states), loops of 3-D frames, the
-spatial articulated-body recursion (accelerations come from the dense solve of M(q)),
-forces, sensors, visualizers, URDF import, animation.
+The animation (``acausal.analysis.animation``) draws the parts from their shapes. Not here
+yet: free and spherical joints (orientation states), loops of 3-D frames, the spatial
+articulated-body recursion (accelerations come from the dense solve of M(q)), forces,
+sensors, visualizers, URDF import.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
                     FixedTranslation, PointMass, RotationTypes)
+from .rolling import (RollingConstraintVerticalWheel, RollingWheel, RollingWheelJoint,
+                      RollingWheelSet, RollingWheelSetJoint)
 from .world import GravityTypes, World
 
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
-           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic"]
+           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic", "RollingWheel",
+           "RollingWheelSet", "RollingWheelJoint", "RollingWheelSetJoint",
+           "RollingConstraintVerticalWheel"]

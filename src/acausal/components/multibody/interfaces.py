@@ -27,7 +27,8 @@ class Frame_b(MultiBodyFrame):
 
 
 class Animated(Component):
-    """MSL's ``animation`` switch of a part or joint, accepted so that MSL models translate
-    as they are; acausal has no animation yet, so it changes nothing (nor do the other
-    visualization parameters MSL has, which are not accepted)."""
+    """MSL's ``animation`` switch of a part or joint: False keeps the part out of the
+    animation (``acausal.analysis.animation``); it changes nothing else. The other
+    visualization parameters MSL has are not accepted (the animation draws MSL's default
+    shapes)."""
     options = {"animation": True}

@@ -11,10 +11,11 @@ records MSL's variables: r_0, v_0, a_0 [m, m/s, m/s²] (frame_a, world frame), w
 [rad/s, rad/s²] (resolved in frame_a) and g_0 (gravity at the centre of mass); BodyShape,
 BodyBox and BodyCylinder record the last three under ``body.`` as their MSL inner Body.
 
-``animation`` is accepted and changes nothing (``interfaces.Animated``). Not here yet: the
-start-value parameters of free bodies (angles_fixed, angles_start, w_0_fixed, ... need
-orientation states: a body must be connected to the World through joints), the other
-visualization parameters, Rotor1D, Mounting1D, RollingWheel.
+``animation`` only keeps a part out of the animation (``interfaces.Animated``). Not here
+yet: the start-value parameters of free bodies (angles_fixed, angles_start, w_0_fixed, ...
+need orientation states: a body must be connected to the World through joints), the other
+visualization parameters, Rotor1D, Mounting1D. RollingWheel and RollingWheelSet are in
+``rolling``.
 """
 from __future__ import annotations
 

@@ -1,0 +1,146 @@
+"""The animation of 3-D results: the GIF's frames against the bodies' positions, the HTML
+view drawn by a headless browser, shapes as MSL defines them."""
+import os
+import shutil
+import subprocess
+
+import numpy as np
+import pytest
+from PIL import Image
+
+import acausal
+from acausal.analysis.animation import Animation, shapes_of
+from acausal.components.multibody import BodyBox, World
+from acausal.core import Model
+from acausal.errors import AnalysisError
+from acausal.models.multibody import MultiBodyPendulum
+from acausal.models.rolling import ROLLING_WHEEL_START, RollingWheelExample
+
+CHROMIUM = "/usr/bin/chromium"
+MAGENTA = (255, 0, 255)
+
+
+@pytest.fixture(scope="module")
+def pendulum():
+    m = MultiBodyPendulum()
+    res = acausal.compile(m).simulate(3.0, t=np.linspace(0, 3, 61))
+    return m, res
+
+
+def _bob(res, k):
+    """The bob's centre (world frame) at instant k: frame_a's r_0 + Tᵀ r_CM."""
+    r0 = np.array([res[f"body.r_0[{j}]"][k] for j in (1, 2, 3)])
+    T = np.array([[res[f"body.frame_a.R.T[{a},{b}]"][k] for b in (1, 2, 3)] for a in (1, 2, 3)])
+    return r0 + T.T @ np.array([0.5, 0.0, 0.0])
+
+
+def _mask(rgb, color, tol=60):
+    return np.all(np.abs(rgb.astype(int) - np.array(color)) < tol, axis=-1)
+
+
+def _magenta(rgb):
+    """Pixels of magenta parts, at any shade."""
+    r, g, b = (rgb[..., i].astype(int) for i in range(3))
+    return (r > 80) & (b > 80) & (g < 40) & (np.abs(r - b) < 30)
+
+
+def test_the_gif_frames_follow_the_pendulum_bob(pendulum, tmp_path):
+    m, res = pendulum
+    shapes = shapes_of(m)
+    for s in shapes:
+        if s.kind == "sphere":
+            s.color = MAGENTA                    # the bob, told apart from its rod
+    anim = Animation(m, res, shapes=shapes)
+    idx = anim.save_gif(tmp_path / "pendulum.gif", frames=12)
+    gif = Image.open(tmp_path / "pendulum.gif")
+    assert gif.n_frames == len(idx) == 12
+    seen = []
+    for i, k in enumerate(idx):
+        gif.seek(i)
+        rows, cols = np.nonzero(_magenta(np.asarray(gif.convert("RGB"))))
+        assert rows.size > 200                   # a sphere of 0.111 m is drawn
+        expected = anim.project(_bob(res, k))[0]
+        assert np.hypot(cols.mean() - expected[0], rows.mean() - expected[1]) < 5, k
+        seen.append(expected)
+    seen = np.array(seen)
+    assert np.ptp(seen[:, 0]) > 150              # the bob swings across the picture
+
+
+def test_the_shapes_are_msl_s(pendulum):
+    m = Model("box")
+    m.world = World()
+    m.box = BodyBox(r=(0.5, 0, 0), width=0.1, height=0.2, widthDirection=(0, 0, 1))
+    (box,) = shapes_of(m)
+    assert (box.kind, box.frame, box.length, box.width, box.height) == \
+        ("box", "box.frame_a", 0.5, 0.1, 0.2)
+    from acausal.analysis.animation import _mesh
+    v, _ = _mesh(box)                            # along x, width along z, height along −y
+    np.testing.assert_allclose(v.min(0), [0, -0.1, -0.05], atol=1e-12)
+    np.testing.assert_allclose(v.max(0), [0.5, 0.1, 0.05], atol=1e-12)
+    kinds = sorted(s.kind for s in shapes_of(pendulum[0]))
+    assert kinds == ["cylinder", "cylinder", "sphere"]   # joint, Body's rod and sphere
+
+
+def test_the_html_is_self_contained(pendulum, tmp_path):
+    m, res = pendulum
+    Animation(m, res).save_html(tmp_path / "view.html")
+    text = (tmp_path / "view.html").read_text()
+    for outside in ("http:", "https:", "src=", "href=", "import "):
+        assert outside not in text
+
+
+def _screenshot(html, k, png):
+    subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu",
+                    "--disable-background-networking", "--disable-component-update",
+                    "--no-first-run", "--window-size=640,480", f"--screenshot={png}",
+                    f"file://{html}#frame={k}"], capture_output=True, timeout=180, check=True)
+    return np.asarray(Image.open(png).convert("RGB"))[:400]       # above the control bar
+
+
+@pytest.mark.skipif(not os.path.exists(CHROMIUM), reason=f"no headless browser ({CHROMIUM})")
+def test_a_headless_browser_draws_the_parts(pendulum, tmp_path):
+    m, res = pendulum
+    shapes = shapes_of(m)
+    for s in shapes:
+        if s.kind == "sphere":
+            s.color = MAGENTA
+    html = tmp_path / "pendulum.html"
+    Animation(m, res, shapes=shapes).save_html(html)
+    bob, joint = [], []
+    for k in (0, 10):
+        view = _screenshot(html, k, tmp_path / f"p{k}.png")
+        assert _magenta(view).sum() > 300                        # the Body's sphere
+        assert _mask(view, (0, 110, 220), 60).sum() > 300       # its rod (shaded blue)
+        red = (view[..., 0] > 120) & (view[..., 1] < 40) & (view[..., 2] < 40)
+        assert red.sum() > 50                                    # the revolute joint
+        bob.append(np.argwhere(_magenta(view)).mean(0))
+        joint.append(np.argwhere(red).mean(0))
+    # frame 0: the pendulum lies along +x, the bob right of the joint; frame 10 (t = 0.5 s)
+    # it hangs below it
+    assert bob[0][1] > joint[0][1] + 50
+    assert bob[1][0] > joint[1][0] + 50
+    np.testing.assert_allclose(joint[0], joint[1], atol=10)   # (the rod hides part of it)
+
+
+@pytest.mark.skipif(not os.path.exists(CHROMIUM), reason=f"no headless browser ({CHROMIUM})")
+def test_a_headless_browser_draws_the_rolling_wheel(tmp_path):
+    m = RollingWheelExample()
+    res = acausal.compile(m).simulate(1.0, x0=ROLLING_WHEEL_START, t=np.linspace(0, 1, 21))
+    html = tmp_path / "wheel.html"
+    Animation(m, res).save_html(html)
+    view = _screenshot(html, 0, tmp_path / "wheel.png")
+    dark = _mask(view, (30, 30, 30), 40)
+    assert dark.sum() > 2000                                     # the wheel, a dark disc
+    rows, cols = np.nonzero(dark)
+    # an upright disc seen from −y turned by 30° about z: taller than wide by ~1/cos 30°
+    assert 1.0 < np.ptp(rows) / np.ptp(cols) < 1.25
+
+
+def test_bad_input_is_named(pendulum):
+    m, res = pendulum
+    with pytest.raises(AnalysisError, match="frame"):
+        Animation(RollingWheelExample(), res)
+    empty = Model("empty")
+    empty.world = World()
+    with pytest.raises(AnalysisError, match="no part to draw"):
+        Animation(empty, res)
