@@ -27,8 +27,8 @@ def main():
     t = np.linspace(0, 3, 91)
     model = RollingWheelSetDriving()
     res = acausal.compile(model).simulate(3.0, x0=WHEEL_SET_START, t=t)
-    # no slip: wheel 1's centre moves along its heading at radius·der_theta1 (+ the turn)
-    phi, w1 = res["wheelSet.phi"], res["wheelSet.der_theta1"]
+    # no slip: wheel 1's centre moves along its heading (no lateral velocity)
+    phi = res["wheelSet.phi"]
     v = np.column_stack([res[f"wheelSet.body1.v_0[{k}]"] for k in (1, 2)])
     heading = np.column_stack([np.cos(phi), np.sin(phi)])
     print(f"wheel set at t = 3 s: x = {res.final('wheelSet.x'):.4f} m, "

@@ -1,7 +1,6 @@
 """The animation of 3-D results: the GIF's frames against the bodies' positions, the HTML
 view drawn by a headless browser, shapes as MSL defines them."""
 import os
-import shutil
 import subprocess
 
 import numpy as np

@@ -109,7 +109,7 @@ def test_a_leaning_disk_turns_steadily_at_the_rate_newton_euler_gives():
 
 
 def test_a_wheel_also_held_by_another_path_to_the_world_is_refused():
-    from acausal.components.multibody import FixedTranslation, Revolute
+    from acausal.components.multibody import FixedTranslation
     model = Model("loop")
     model.world = World(n=(0, 0, -1))
     model.wheel = RollingWheel(radius=0.3, m=2, I_axis=0.06, I_long=0.12)
