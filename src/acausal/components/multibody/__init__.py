@@ -30,7 +30,10 @@ from .joints import Prismatic, Revolute
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
                     FixedTranslation, PointMass, RotationTypes)
 from .world import GravityTypes, World
+from . import forces, sensors, visualizers
+from .parts import Mounting1D, Rotor1D
 
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
-           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic"]
+           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic",
+           "forces", "sensors", "visualizers", "Rotor1D", "Mounting1D"]
