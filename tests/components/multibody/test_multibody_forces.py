@@ -1,0 +1,293 @@
+"""3-D forces, sensors, visualizers, Rotor1D and Mounting1D: MSL examples against their
+published references, sensors against kinematics written out by hand from the joint
+coordinates, energy and angular-momentum balances, the gyroscopic torque of a Rotor1D."""
+import numpy as np
+import pytest
+
+import acausal
+from acausal.components import rotational, signals
+from acausal.components.multibody import (Body, BodyCylinder, Fixed, FixedRotation,
+                                          Prismatic, Revolute, Rotor1D, World, forces,
+                                          sensors, visualizers)
+from acausal.core import Model
+from acausal.errors import ParameterError, StructureError
+from acausal.models.multibody_forces import (ForceAndTorqueExample, MovingActuatedDrive,
+                                             SpringMassSystem)
+
+
+@pytest.mark.parametrize("model, msl, x0, signals_", [
+    (ForceAndTorqueExample, "Modelica.Mechanics.MultiBody.Examples.Elementary.ForceAndTorque",
+     {}, ["revolute1.phi", "revolute1.w", "revolute2.phi", "revolute2.w"]),
+    (SpringMassSystem, "Modelica.Mechanics.MultiBody.Examples.Elementary.SpringMassSystem",
+     {"p1.s": 0.1, "p2.s": 0.1}, ["p1.s", "p1.v", "p2.s", "p2.v"]),
+    (MovingActuatedDrive,
+     "Modelica.Mechanics.MultiBody.Examples.Rotational3DEffects.MovingActuatedDrive", {},
+     ["position1.w", "position2.w", "r1.phi", "r2.phi", "revolute.phi", "revolute.w",
+      "rotor1D.phi", "rotor1D.w"]),
+])
+def test_msl_examples_match_their_references(reference_result, model, msl, x0, signals_):
+    ref = reference_result("MAP-LIB_ReferenceResults", msl)
+    t = ref["time"]
+    res = acausal.compile(model()).simulate(float(t[-1]), t=t, x0=x0, rtol=1e-9, atol=1e-11)
+    for name in signals_:
+        values = ref[name]
+        assert np.max(np.abs(res[name] - values)) < 2e-3 * np.max(np.abs(values)), name
+
+
+def test_rotor1d_and_its_3d_twin_put_the_same_torques_on_their_mounts():
+    """MovingActuatedDrive: the Rotor1D on r2 and the revolute with a 3-D body on r1 are the
+    same drive; the torques the position-driven joints r1, r2 transmit (gyroscopic
+    reactions included) are equal (MSL's documentation of the example)."""
+    res = acausal.compile(MovingActuatedDrive()).simulate(1.1, t=np.linspace(0, 1.1, 221),
+                                                           rtol=1e-10, atol=1e-12)
+    for k in (1, 2, 3):
+        a, b = res[f"r1.frame_b.t[{k}]"], res[f"r2.frame_b.t[{k}]"]
+        assert np.max(np.abs(a - b)) < 1e-6 * (1 + np.max(np.abs(a))), k
+    assert np.max(np.abs(res["r2.frame_b.t[3]"])) > 0.1       # the gyroscopic part is there
+
+
+def _rotating_rod(shape=True, **spring):
+    """A bead (Body m = 2 kg, I = 0.01·1) on a prismatic along the x axis of a rod turning
+    freely about z (Revolute, rod inertia 0.5 kg.m²), pulled to the axis by a 3-D line
+    SpringDamperParallel from the world's origin; no gravity. Sensors everywhere."""
+    m = Model("rod")
+    m.world = World(g=0)
+    m.rev = Revolute(n=(0, 0, 1))
+    m.rod = Body(m=0, r_CM=(0, 0, 0), I_11=0.5, I_22=0.5, I_33=0.5)
+    m.prism = Prismatic(n=(1, 0, 0))
+    m.bead = Body(m=2.0, r_CM=(0, 0, 0), I_11=0.01, I_22=0.01, I_33=0.01)
+    m.spring = forces.SpringDamperParallel(**spring)
+    m.power = sensors.Power()
+    m.cut = sensors.CutForceAndTorque(resolveInFrame="world")
+    m.pos_w = sensors.AbsolutePosition(resolveInFrame="world")
+    m.pos_a = sensors.AbsolutePosition()
+    m.vel_w = sensors.AbsoluteVelocity(resolveInFrame="world")
+    m.w_a = sensors.AbsoluteAngularVelocity()
+    m.angles = sensors.AbsoluteAngles()
+    m.abs = sensors.AbsoluteSensor(resolveInFrame="world")
+    m.dist = sensors.Distance()
+    m.rel_rot = sensors.RelativeVelocity()           # seen from the turning rod
+    m.rel_w = sensors.RelativeAngularVelocity(resolveInFrame="world")
+    m.rel = sensors.RelativeSensor(resolveInFrame="frame_a")
+    if shape:
+        m.shape = visualizers.FixedShape(shapeType="cylinder", length=0.3)
+        m.connect(m.shape.frame_a, m.bead.frame_a)
+    m.connect(m.world.frame_b, m.rev.frame_a)
+    m.connect(m.rev.frame_b, m.rod.frame_a)
+    m.connect(m.rev.frame_b, m.prism.frame_a)
+    m.connect(m.prism.frame_b, m.power.frame_a)
+    m.connect(m.power.frame_b, m.cut.frame_a)
+    m.connect(m.cut.frame_b, m.bead.frame_a)
+    m.connect(m.world.frame_b, m.spring.frame_a)
+    m.connect(m.spring.frame_b, m.bead.frame_a)
+    for s in (m.pos_w, m.pos_a, m.vel_w, m.w_a, m.angles, m.abs):
+        m.connect(s.frame_a, m.bead.frame_a)
+    for s, a in ((m.dist, m.world.frame_b), (m.rel_rot, m.rev.frame_b),
+                 (m.rel_w, m.world.frame_b), (m.rel, m.rev.frame_b)):
+        m.connect(a, s.frame_a)
+        m.connect(s.frame_b, m.bead.frame_a)
+    return m
+
+
+def _vec(res, name):
+    return np.array([res[f"{name}[{k}]"] for k in (1, 2, 3)])
+
+
+def test_sensors_of_a_bead_on_a_turning_rod_equal_its_kinematics_by_hand():
+    c, d, s0, m_b, I_b, I_rod = 40.0, 1.0, 0.2, 2.0, 0.01, 0.5
+    model = acausal.compile(_rotating_rod(c=c, d=d, s_unstretched=s0))
+    t = np.linspace(0, 3, 3001)
+    res = model.simulate(3.0, t=t, x0={"prism.s": 0.5, "rev.w": 2.0}, rtol=1e-11,
+                         atol=1e-12)
+    phi, w, z = res["rev.phi"], res["rev.w"], res["rev.a"]
+    s, v, a = res["prism.s"], res["prism.v"], res["prism.a"]
+    c_, s_ = np.cos(phi), np.sin(phi)
+    zero = np.zeros_like(t)
+    r0 = np.array([s * c_, s * s_, zero])
+    v0 = np.array([v * c_ - s * w * s_, v * s_ + s * w * c_, zero])
+    a_r, a_t = a - s * w ** 2, 2 * v * w + s * z              # radial, transverse
+    a0 = np.array([a_r * c_ - a_t * s_, a_r * s_ + a_t * c_, zero])
+    w0 = np.array([zero, zero, w])
+    close = lambda x, y: np.max(np.abs(x - y)) < 1e-7 * (1 + np.max(np.abs(y)))  # noqa
+    assert close(_vec(res, "pos_w.r"), r0)
+    assert close(_vec(res, "pos_a.r"), np.array([s, zero, zero]))   # in the bead's frame
+    assert close(_vec(res, "vel_w.v"), v0)
+    assert close(_vec(res, "w_a.w"), w0)
+    assert close(_vec(res, "angles.angles"), np.array([zero, zero, np.angle(c_ + 1j * s_)]))
+    for name, ref in (("r", r0), ("v", v0), ("a", a0), ("w", w0), ("z", [zero, zero, z])):
+        assert close(_vec(res, f"abs.{name}"), np.array(ref)), name
+    assert close(res["dist.distance"], s)
+    assert close(_vec(res, "rel_rot.v_rel"), np.array([v, zero, zero]))
+    assert close(_vec(res, "rel_w.w_rel"), w0)
+    for name, ref in (("r_rel", [s, zero, zero]), ("v_rel", [v, zero, zero]),
+                      ("a_rel", [a, zero, zero]), ("w_rel", [zero] * 3),
+                      ("z_rel", [zero] * 3)):
+        assert close(_vec(res, f"rel.{name}"), np.array(ref)), name
+    # Newton on the bead: the cut force through the sensors is m·a0 + f·e_r (the line force
+    # f = c(s − s0) + d·v pulls it back to the axis), the cut torque I·z about z
+    f = c * (s - s0) + d * v
+    assert close(res["spring.f"], f)
+    e_r = np.array([c_, s_, zero])
+    assert close(_vec(res, "cut.force"), m_b * a0 + f * e_r)
+    assert close(_vec(res, "cut.torque"), np.array([zero, zero, I_b * z]))
+    # Power into the bead's side = d/dt of its kinetic energy + the power it gives the spring
+    dKE = m_b * np.sum(v0 * a0, axis=0) + I_b * w * z
+    assert close(res["power.power"], dKE + f * v)
+    # central force: angular momentum about z conserved; energy + losses conserved
+    L = (I_rod + I_b + m_b * s ** 2) * w
+    assert np.max(np.abs(L - L[0])) < 1e-8 * abs(L[0])
+    E = 0.5 * (I_rod + I_b) * w ** 2 + 0.5 * m_b * np.sum(v0 ** 2, axis=0) \
+        + 0.5 * c * (s - s0) ** 2
+    loss = res["spring.lossPower"]
+    assert close(loss, d * v ** 2)
+    lost = np.concatenate([[0], np.cumsum(0.5 * (loss[1:] + loss[:-1]) * np.diff(t))])
+    assert np.max(np.abs(E + lost - E[0])) < 1e-5 * E[0]
+    assert E[-1] < 0.9 * E[0]                                   # the damper did work
+
+
+def test_the_visualizer_is_drawing_data_without_physics():
+    """The rod with a FixedShape on the bead has the same states and motion as without it;
+    the shape's data are its MSL parameters."""
+    m = _rotating_rod(c=40.0, d=0.3, s_unstretched=0.2)
+    plain = _rotating_rod(shape=False, c=40.0, d=0.3, s_unstretched=0.2)
+    runs = [acausal.compile(x).simulate(1.0, t=np.linspace(0, 1, 11),
+                                        x0={"prism.s": 0.5, "rev.w": 2.0}) for x in (m, plain)]
+    assert [v.name for v in acausal.compile(m).states] == \
+        [v.name for v in acausal.compile(plain).states]
+    assert np.array_equal(runs[0]["prism.s"], runs[1]["prism.s"])
+    assert m.shape.shape() == {"r_shape": (0.0, 0.0, 0.0), "lengthDirection": (1.0, 0.0, 0.0),
+                               "widthDirection": (0.0, 1.0, 0.0), "length": 0.3, "width": 0.1,
+                               "height": 0.1, "color": (0.0, 128.0, 255.0), "extra": 0.0,
+                               "specularCoefficient": 0.7, "animation": True,
+                               "shapeType": "cylinder"}
+    assert visualizers.FixedFrame(length=0.2).diameter == pytest.approx(0.2 / 40)
+
+
+def test_spring_mass_on_the_line_and_line_force_with_mass_move_as_a_hand_written_model():
+    """A body on a vertical prismatic hung from a 3-D Spring with a point mass m_s at
+    lengthFraction h (and the same with LineForceWithMass + a 1-D Translational spring):
+    (m + h²·m_s)·s̈ = m·g + h·m_s·g − c·(s − s0), the mass on the line moving at h·ṡ."""
+    from acausal.components import translational
+    c, s0, m_b, m_s, h, g = 50.0, 0.3, 1.0, 0.4, 0.25, 9.80665
+    omega = np.sqrt(c / (m_b + h * h * m_s))
+    s_eq = s0 + (m_b + h * m_s) * g / c
+    for variant in ("Spring", "LineForceWithMass"):
+        m = Model(variant)
+        m.world = World()
+        m.p = Prismatic(n=(0, -1, 0))
+        m.body = Body(m=m_b, r_CM=(0, 0, 0))
+        if variant == "Spring":
+            m.line = forces.Spring(c=c, s_unstretched=s0, m=m_s, lengthFraction=h)
+        else:
+            m.line = forces.LineForceWithMass(m=m_s, lengthFraction=h)
+            m.spring = translational.Spring(c=c, s_rel0=s0)
+            m.connect(m.line.flange_a, m.spring.flange_a)
+            m.connect(m.spring.flange_b, m.line.flange_b)
+        m.connect(m.world.frame_b, m.p.frame_a)
+        m.connect(m.p.frame_b, m.body.frame_a)
+        m.connect(m.world.frame_b, m.line.frame_a)
+        m.connect(m.line.frame_b, m.body.frame_a)
+        t = np.linspace(0, 2, 401)
+        res = acausal.compile(m).simulate(2.0, t=t, x0={"p.s": 0.5}, rtol=1e-11, atol=1e-12)
+        exact = s_eq + (0.5 - s_eq) * np.cos(omega * t)
+        assert np.max(np.abs(res["p.s"] - exact)) < 1e-7, variant
+        assert np.max(np.abs(res["line.length"] - res["p.s"])) < 1e-12, variant
+
+
+def test_gyroscopic_torque_of_a_free_rotor_on_a_turning_housing():
+    """A Rotor1D (J = 0.3 kg.m², axis x) spinning freely at w0 = 40 rad/s in a housing
+    turned by θ(t) = 0.5·sin(2t) about n = (1, 1, 0)/√2: the rotor keeps its absolute axial
+    rate, w = w0 − e·(w_a − w_a(0)), and the housing feels MSL's
+    frame_a.t = w_a × (J·e·w) − e·J·(e·der(w_a)), measured by a CutTorque."""
+    J, w0 = 0.3, 40.0
+    m = Model("gyro")
+    m.world = World(g=0)
+    m.r = Revolute(n=(1, 1, 0), useAxisFlange=True)
+    m.drive = rotational.Position(exact=True)
+    m.ref = signals.Sine(amplitude=0.5, f=1 / np.pi)
+    m.cut = sensors.CutTorque()
+    m.rotor = Rotor1D(J=J)
+    m.connect(m.world.frame_b, m.r.frame_a)
+    m.connect(m.ref.y, m.drive.phi_ref)
+    m.connect(m.drive.flange, m.r.axis)
+    m.connect(m.r.frame_b, m.cut.frame_a)
+    m.connect(m.cut.frame_b, m.rotor.frame_a)
+    t = np.linspace(0, 3, 301)
+    res = acausal.compile(m).simulate(3.0, t=t, x0={"rotor.w": w0}, rtol=1e-11, atol=1e-12)
+    n = np.array([1, 1, 0]) / np.sqrt(2)
+    th_d, th_dd = np.cos(2 * t), -2 * np.sin(2 * t)            # θ̇, θ̈
+    w = w0 - n[0] * (th_d - th_d[0])
+    assert np.max(np.abs(res["rotor.w"] - w)) < 1e-8
+    e = np.array([1.0, 0, 0])
+    w_a, z_a = np.outer(n, th_d), np.outer(n, th_dd)
+    expected = np.cross(w_a.T, (J * np.outer(e, w)).T).T - np.outer(e, J * (e @ z_a))
+    assert np.max(np.abs(_vec(res, "cut.torque") - expected)) < 1e-7 * J * w0
+    assert np.max(np.abs(res["cut.torque[3]"])) > 5.0          # the gyroscopic torque
+
+
+def test_world_force_torque_and_force_resolved_in_each_frame_accelerate_as_by_hand():
+    """A Body (m = 3 kg at r_CM = (0.4, 0, 0), I_33 = 0.2) on a Revolute about z behind a
+    FixedRotation of 30° about z: the initial acceleration of phi under a force F = (1, 2,
+    0) N at frame_b's origin (and a torque τ = (0, 0, 0.7) N.m) resolved in the world, in
+    frame_b or in frame_resolve (rotated 60° about z) is (r × F_0 + τ_0)·z / (I + m·r²)."""
+    F, tau, r_b = np.array([1.0, 2.0, 0]), np.array([0, 0, 0.7]), 0.4
+    rot = lambda deg: np.array([[np.cos(np.radians(deg)), -np.sin(np.radians(deg)), 0],  # noqa
+                                [np.sin(np.radians(deg)), np.cos(np.radians(deg)), 0],
+                                [0, 0, 1]])
+    r_0 = rot(30) @ np.array([r_b, 0, 0])
+    for kind, frame in (("world", None), ("frame_b", 30), ("frame_resolve", 60)):
+        for cls in (forces.WorldForceAndTorque, forces.ForceAndTorque):
+            m = Model("push")
+            m.world = World(g=0)
+            m.rev = Revolute()
+            m.rot = FixedRotation(n=(0, 0, 1), angle=30, r=(0, 0, 0))
+            m.body = Body(m=3.0, r_CM=(r_b, 0, 0), I_33=0.2)
+            m.tip = FixedRotation(r=(r_b, 0, 0), angle=0)
+            m.push = cls(resolveInFrame=kind)
+            m.connect(m.world.frame_b, m.rev.frame_a)
+            m.connect(m.rev.frame_b, m.rot.frame_a)
+            m.connect(m.rot.frame_b, m.body.frame_a)
+            m.connect(m.rot.frame_b, m.tip.frame_a)
+            m.connect(m.tip.frame_b, m.push.frame_b)
+            if cls is forces.ForceAndTorque:
+                m.fixed = Fixed(r=(0.0, -1.0, 0.0))
+                m.connect(m.fixed.frame_b, m.push.frame_a)
+            if kind == "frame_resolve":
+                m.res_frame = FixedRotation(n=(0, 0, 1), angle=60)
+                m.connect(m.world.frame_b, m.res_frame.frame_a)
+                m.connect(m.res_frame.frame_b, m.push.frame_resolve)
+            for k in (1, 2, 3):
+                src_f, src_t = signals.Constant(k=F[k - 1]), signals.Constant(k=tau[k - 1])
+                setattr(m, f"f{k}", src_f)
+                setattr(m, f"t{k}", src_t)
+                m.connect(src_f.y, m.push.force[k])
+                m.connect(src_t.y, m.push.torque[k])
+            res = acausal.compile(m).simulate(1e-3, t=[0, 1e-3], rtol=1e-12, atol=1e-14)
+            R = np.eye(3) if frame is None else rot(frame)
+            F0, tau0 = R @ F, R @ tau
+            expected = (np.cross(r_0, F0)[2] + tau0[2]) / (0.2 + 3.0 * r_b ** 2)
+            assert res["rev.a"][0] == pytest.approx(expected, rel=1e-9), (kind, cls.__name__)
+
+
+def test_bad_input_is_refused_naming_the_part():
+    with pytest.raises(ParameterError, match="sequence"):
+        sensors.AbsoluteAngles(sequence=(1, 1, 2))
+    with pytest.raises(ParameterError, match="exact"):
+        Rotor1D(exact=False)
+    with pytest.raises(ParameterError, match="fixedRotationAtFrame_b"):
+        forces.Spring(c=1.0, fixedRotationAtFrame_b=True)
+    with pytest.raises(ParameterError, match="'c'"):
+        forces.Spring()
+    m = Model("loose")
+    m.world = World()
+    m.rev = Revolute()
+    m.body = BodyCylinder(r=(0.3, 0, 0))
+    m.push = forces.WorldForce(resolveInFrame="frame_resolve")
+    m.connect(m.world.frame_b, m.rev.frame_a)
+    m.connect(m.rev.frame_b, m.body.frame_a)
+    m.connect(m.body.frame_b, m.push.frame_b)
+    for k in (1, 2, 3):
+        setattr(m, f"f{k}", signals.Constant(k=1.0))
+        m.connect(getattr(m, f"f{k}").y, m.push.force[k])
+    with pytest.raises(StructureError, match="frame_resolve"):
+        acausal.compile(m)
