@@ -14,7 +14,8 @@ from ..components.multibody import forces
 from ..components.multibody.resolving import ResolveInFrameAB
 from ..core import Model
 
-__all__ = ["ForceAndTorqueExample", "SpringMassSystem", "MovingActuatedDrive"]
+__all__ = ["ForceAndTorqueExample", "SpringMassSystem", "MovingActuatedDrive", "PointGravity",
+           "ThreeSprings"]
 
 
 class ForceAndTorqueExample(Model):
@@ -126,3 +127,83 @@ class MovingActuatedDrive(Model):
         self.connect(self.r2.frame_b, self.rotor1D.frame_a)
         self.connect(self.r2.frame_b, self.mounting1D.frame_a)
         self.connect(self.sine1_1.y, self.torque1.tau)
+
+
+def _translations(model: Model, prefix: str, frame_a, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
+    """Prismatic joints ``<prefix>x``, ``<prefix>y``, ``<prefix>z`` in series from
+    ``frame_a`` along the world axes; returns the last frame_b (world orientation)."""
+    for axis, n in zip("xyz", axes):
+        joint = Prismatic(n=n)
+        setattr(model, f"{prefix}{axis}", joint)
+        model.connect(frame_a, joint.frame_a)
+        frame_a = joint.frame_b
+    return frame_a
+
+
+class PointGravity(Model):
+    """Elementary.PointGravity: two bodies (m = 1 kg, I = 0.1·1 kg.m², centre of mass at
+    frame_a) in the point gravity field of the World (mu = 1 m³/s²), starting at
+    r_0 = {0, 0.6, 0} m with v_0 = {1, 0, 0} m/s (a circle) and at {0.6, 0.6, 0} m with
+    {0.6, 0, 0} m/s (an ellipse), at rest in rotation.
+
+    MSL's bodies are free (6 degrees of freedom); here each hangs from the world on three
+    prismatic joints (``body1_x`` .. ``body1_z``), which keep its orientation: the same
+    motion, exactly, since gravity acts at the centre of mass (no torque) and the bodies
+    start without angular velocity. x0 = ``START``."""
+    START = {"body1_x.s": 0.0, "body1_y.s": 0.6, "body1_x.v": 1.0,
+             "body2_x.s": 0.6, "body2_y.s": 0.6, "body2_x.v": 0.6}
+
+    def __init__(self, name: str | None = None):
+        super().__init__(name or "PointGravity")
+        from ..components.multibody import GravityTypes
+        self.world = World(mu=1, gravityType=GravityTypes.PointGravity)
+        for k in (1, 2):
+            body = Body(m=1, I_11=0.1, I_22=0.1, I_33=0.1, r_CM=(0, 0, 0))
+            setattr(self, f"body{k}", body)
+            self.connect(_translations(self, f"body{k}_", self.world.frame_b), body.frame_a)
+
+
+class ThreeSprings(Model):
+    """Elementary.ThreeSprings: a body (m = 0.8 kg, r_CM = {0, -0.2, 0} m, I = 0.1·1
+    kg.m²) hanging under gravity from three 3-D Springs connected in series and parallel
+    without mass at their junction: spring1 (c = 20 N/m) from bar1 ({0.3, 0, 0}) and
+    spring3 (c = 20 N/m) from bar2 ({0, 0, 0.3}) to the junction, spring2 (c = 40 N/m) from
+    the junction to the body; unstretched lengths 0.1 m. The body starts at r_0 = {0.5,
+    -0.3, 0} m at rest, its frame parallel to the world's.
+
+    MSL's body is free and its junction's orientation is fixed by spring3's
+    fixedRotationAtFrame_b; here the body hangs from the world on three prismatic joints
+    (``body_x`` .. ``body_z``) and three revolutes about x, y, z (``body_rx`` .. ``body_rz``:
+    MSL's angles sequence {1, 2, 3} as coordinates, singular only at a ±90° second angle),
+    and the junction on three prismatic joints (``junction_x`` .. ``junction_z``: its
+    position, orientation fixed, as fixedRotationAtFrame_b; without mass, so its position
+    is an algebraic variable, the springs' forces in balance). x0 = ``START``, guess =
+    ``GUESS`` (MSL's guess of the junction, {0.1, -0.2, 0.2} m)."""
+    START = {"body_x.s": 0.5, "body_y.s": -0.3}
+    GUESS = {"junction_x.s": 0.1, "junction_y.s": -0.2, "junction_z.s": 0.2}
+
+    def __init__(self, name: str | None = None):
+        super().__init__(name or "ThreeSprings")
+        self.world = World()
+        self.body1 = Body(r_CM=(0, -0.2, 0), m=0.8, I_11=0.1, I_22=0.1, I_33=0.1)
+        self.bar1 = FixedTranslation(r=(0.3, 0, 0))
+        self.spring1 = forces.Spring(s_unstretched=0.1, c=20)
+        self.bar2 = FixedTranslation(r=(0, 0, 0.3))
+        self.spring2 = forces.Spring(s_unstretched=0.1, c=40)
+        self.spring3 = forces.Spring(s_unstretched=0.1, c=20)
+        self.connect(self.world.frame_b, self.bar1.frame_a)
+        self.connect(self.world.frame_b, self.bar2.frame_a)
+        self.connect(self.bar1.frame_b, self.spring1.frame_a)
+        self.connect(self.bar2.frame_b, self.spring3.frame_a)
+        self.connect(self.spring2.frame_b, self.body1.frame_a)
+        self.connect(self.spring3.frame_b, self.spring1.frame_b)
+        self.connect(self.spring2.frame_a, self.spring1.frame_b)
+        frame = _translations(self, "body_", self.world.frame_b)
+        for axis, n in zip(("rx", "ry", "rz"), ((1, 0, 0), (0, 1, 0), (0, 0, 1))):
+            joint = Revolute(n=n)
+            setattr(self, f"body_{axis}", joint)
+            self.connect(frame, joint.frame_a)
+            frame = joint.frame_b
+        self.connect(frame, self.body1.frame_a)
+        self.connect(_translations(self, "junction_", self.world.frame_b),
+                     self.spring1.frame_b)

@@ -165,7 +165,8 @@ class _LineForce(Animated):
     (the direction e_rel_0 = r_rel_0/s is regularized at zero length), and a point mass m
     [kg] on the line at lengthFraction from frame_a (subclasses with mass), which moves with
     the line and feels gravity: its kinetic and potential energy are the element's
-    (equivalent to MSL's force balance of the point mass). Subclasses give ``line_force``
+    (equivalent to MSL's force balance of the point mass; m = 0, the default, is a massless
+    line: built with 0, m is fixed at 0 in the compiled model). Subclasses give ``line_force``
     (f [N], > 0 pushes the frames apart)."""
     s_small = Parameter(1e-10, "m", "prevent zero-division if distance between frame_a and "
                                     "frame_b is zero", positive=True)
@@ -232,7 +233,8 @@ class Spring(_LineForce):
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     s_unstretched = Parameter(0.0, "m", "unstretched spring length", nonnegative=True)
     m = Parameter(0.0, "kg", "spring mass located on the connection line between the "
-                             "origin of frame_a and the origin of frame_b", nonnegative=True)
+                             "origin of frame_a and the origin of frame_b", nonnegative=True,
+                  structural_zero=True)
     lengthFraction = Parameter(0.5, "1", "location of spring mass with respect to frame_a "
                                          "as a fraction of the distance from frame_a to "
                                          "frame_b")
@@ -284,7 +286,8 @@ class LineForceWithMass(_LineForce):
                "fixedRotationAtFrame_a": _NO_FIXED_ROTATION,
                "fixedRotationAtFrame_b": _NO_FIXED_ROTATION}
     m = Parameter(0.0, "kg", "mass of point mass on the connection line between the origin "
-                             "of frame_a and the origin of frame_b", nonnegative=True)
+                             "of frame_a and the origin of frame_b", nonnegative=True,
+                  structural_zero=True)
     lengthFraction = Parameter(0.5, "1", "location of point mass with respect to frame_a as "
                                          "a fraction of the distance from frame_a to frame_b")
     flange_b = TranslationalFlange("1-dim. translational flange (connect force of "
