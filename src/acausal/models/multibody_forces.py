@@ -1,10 +1,14 @@
 """MSL MultiBody examples with forces, 1-D springs and drive trains, rebuilt line by line
 (component names, parameters, connections as in the MSL):
-``Examples.Elementary.ForceAndTorque``, ``SpringMassSystem`` and
-``Examples.Rotational3DEffects.MovingActuatedDrive``. MSL's visualization parameters
+``Examples.Elementary.ForceAndTorque``, ``SpringMassSystem``, ``PointGravity``,
+``ThreeSprings`` and ``Examples.Rotational3DEffects.MovingActuatedDrive``,
+``GyroscopicEffects``. Free bodies and spherical joints (not in the library yet) are
+written as chains of prismatic and revolute joints that move the same (see each model). MSL's visualization parameters
 (widths, diameters, colors) are left out; the World's defaults apply.
 """
 from __future__ import annotations
+
+import casadi as ca
 
 from ..components import rotational, signals, translational
 from ..components.multibody import (Body, BodyCylinder, BodyShape, Fixed, FixedRotation,
@@ -15,7 +19,7 @@ from ..components.multibody.resolving import ResolveInFrameAB
 from ..core import Model
 
 __all__ = ["ForceAndTorqueExample", "SpringMassSystem", "MovingActuatedDrive", "PointGravity",
-           "ThreeSprings"]
+           "ThreeSprings", "GyroscopicEffects"]
 
 
 class ForceAndTorqueExample(Model):
@@ -207,3 +211,59 @@ class ThreeSprings(Model):
         self.connect(frame, self.body1.frame_a)
         self.connect(_translations(self, "junction_", self.world.frame_b),
                      self.spring1.frame_b)
+
+
+def _spherical(model: Model, prefix: str, frame_a, sequence=(2, 3, 1)):
+    """Three revolutes ``<prefix>1..3`` in series from ``frame_a`` about the axes
+    ``sequence`` (a spherical joint in angle coordinates, singular where the second angle is
+    ±90°); returns the last frame_b."""
+    for k, axis in enumerate(sequence, start=1):
+        n = [0.0, 0.0, 0.0]
+        n[axis - 1] = 1.0
+        joint = Revolute(n=tuple(n))
+        setattr(model, f"{prefix}{k}", joint)
+        model.connect(frame_a, joint.frame_a)
+        frame_a = joint.frame_b
+    return frame_a
+
+
+class GyroscopicEffects(Model):
+    """Rotational3DEffects.GyroscopicEffects: a steel rod (BodyCylinder, 0.25 m × 0.05 m)
+    hanging from a spherical joint at the world's origin carries, behind a 45° turn about
+    y, a cylinder (0.2 m × 0.1 m) spinning about its axis at 10 rad/s, once as a
+    Revolute with the BodyCylinder on it (bodyCylinder2), once as the same cylinder fixed
+    to the rod (bodyCylinder4) plus a Rotor1D of its axial inertia (J = bodyCylinder4's
+    I[1, 1]); both start with the joints at 0 and at rest but for the spin: x0 = ``START``.
+
+    MSL's Spherical joints are written as three revolutes about y, z, x (``spherical1_1``
+    .. ``spherical1_3``; the angles sequence {2, 3, 1} starting at 0, singular only where
+    the rod would point vertically), which move the same."""
+    START = {"revolute.w": 10.0, "rotor1D.w": 10.0}
+
+    def __init__(self, name: str | None = None):
+        super().__init__(name or "GyroscopicEffects")
+        self.world = World(driveTrainMechanics3D=True)
+        self.bodyCylinder1 = BodyCylinder(r=(0.25, 0, 0), diameter=0.05)
+        self.fixedRotation1 = FixedRotation(angle=45, n=(0, 1, 0))
+        self.revolute = Revolute(n=(1, 0, 0))
+        self.fixedTranslation = FixedTranslation(r=(-0.1, 0, 0))
+        self.bodyCylinder2 = BodyCylinder(diameter=0.1, r=(0.2, 0, 0))
+        self.fixed = Fixed()
+        self.bodyCylinder3 = BodyCylinder(r=(0.25, 0, 0), diameter=0.05)
+        self.fixedRotation2 = FixedRotation(n=(0, 1, 0), angle=45)
+        self.fixedTranslation1 = FixedTranslation(r=(-0.1, 0, 0))
+        self.bodyCylinder4 = BodyCylinder(diameter=0.1, r=(0.2, 0, 0))
+        J = float(ca.evalf(self.bodyCylinder4.mass_properties()[2][0, 0]))
+        self.rotor1D = Rotor1D(J=J, n=(1, 0, 0))
+        self.connect(_spherical(self, "spherical1_", self.world.frame_b),
+                     self.bodyCylinder1.frame_a)
+        self.connect(self.bodyCylinder1.frame_b, self.fixedRotation1.frame_a)
+        self.connect(self.fixedRotation1.frame_b, self.revolute.frame_a)
+        self.connect(self.revolute.frame_b, self.fixedTranslation.frame_a)
+        self.connect(self.fixedTranslation.frame_b, self.bodyCylinder2.frame_a)
+        self.connect(_spherical(self, "spherical2_", self.fixed.frame_b),
+                     self.bodyCylinder3.frame_a)
+        self.connect(self.bodyCylinder3.frame_b, self.fixedRotation2.frame_a)
+        self.connect(self.fixedRotation2.frame_b, self.fixedTranslation1.frame_a)
+        self.connect(self.fixedTranslation1.frame_b, self.bodyCylinder4.frame_a)
+        self.connect(self.rotor1D.frame_a, self.fixedRotation2.frame_b)

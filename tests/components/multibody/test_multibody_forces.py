@@ -11,8 +11,9 @@ from acausal.components.multibody import (Body, BodyCylinder, Fixed, FixedRotati
                                           sensors, visualizers)
 from acausal.core import Model
 from acausal.errors import ParameterError, StructureError
-from acausal.models.multibody_forces import (ForceAndTorqueExample, MovingActuatedDrive,
-                                             PointGravity, SpringMassSystem, ThreeSprings)
+from acausal.models.multibody_forces import (ForceAndTorqueExample, GyroscopicEffects,
+                                             MovingActuatedDrive, PointGravity,
+                                             SpringMassSystem, ThreeSprings)
 
 
 @pytest.mark.parametrize("model, msl, x0, signals_", [
@@ -24,6 +25,11 @@ from acausal.models.multibody_forces import (ForceAndTorqueExample, MovingActuat
      "Modelica.Mechanics.MultiBody.Examples.Rotational3DEffects.MovingActuatedDrive", {},
      ["position1.w", "position2.w", "r1.phi", "r2.phi", "revolute.phi", "revolute.w",
       "rotor1D.phi", "rotor1D.w"]),
+    (GyroscopicEffects,
+     "Modelica.Mechanics.MultiBody.Examples.Rotational3DEffects.GyroscopicEffects",
+     GyroscopicEffects.START,
+     [f"bodyCylinder{i}.body.w_a[{k}]" for i in (2, 3) for k in (1, 2, 3)]
+     + ["revolute.phi", "revolute.w", "rotor1D.phi", "rotor1D.w"]),
 ])
 def test_msl_examples_match_their_references(reference_result, model, msl, x0, signals_):
     ref = reference_result("MAP-LIB_ReferenceResults", msl)
