@@ -352,3 +352,34 @@ def test_bad_input_is_refused_naming_the_part():
         m.connect(getattr(m, f"f{k}").y, m.push.force[k])
     with pytest.raises(StructureError, match="frame_resolve"):
         acausal.compile(m)
+
+
+def test_damper_heat_goes_to_its_heat_port():
+    """A body (2 kg) on a vertical prismatic held by a 3-D Spring, a Damper and a
+    SpringDamperParallel, the two dampers' heat ports on one HeatCapacitor (C = 3 J/K):
+    kinetic + gravity + spring energy + C·T stays constant."""
+    from acausal.components.thermal import HeatCapacitor
+    g, m_b, C = 9.80665, 2.0, 3.0
+    m = Model("heat")
+    m.world = World()
+    m.p = Prismatic(n=(0, -1, 0))
+    m.body = Body(m=m_b, r_CM=(0, 0, 0))
+    m.spring = forces.Spring(c=80.0, s_unstretched=0.2)
+    m.damper = forces.Damper(d=1.5, useHeatPort=True)
+    m.both = forces.SpringDamperParallel(c=20.0, d=0.5, s_unstretched=0.3, useHeatPort=True)
+    m.heat = HeatCapacitor(C=C)
+    m.connect(m.world.frame_b, m.p.frame_a)
+    m.connect(m.p.frame_b, m.body.frame_a)
+    for el in (m.spring, m.damper, m.both):
+        m.connect(m.world.frame_b, el.frame_a)
+        m.connect(el.frame_b, m.body.frame_a)
+    m.connect(m.damper.heatPort, m.heat.port)
+    m.connect(m.both.heatPort, m.heat.port)
+    t = np.linspace(0, 3, 301)
+    res = acausal.compile(m).simulate(3.0, t=t, x0={"p.s": 0.6}, rtol=1e-11, atol=1e-12)
+    s, v = res["p.s"], res["p.v"]
+    E = 0.5 * m_b * v ** 2 - m_b * g * s + 40.0 * (s - 0.2) ** 2 + 10.0 * (s - 0.3) ** 2 \
+        + C * res["heat.T"]
+    assert np.max(np.abs(E - E[0])) < 1e-7 * abs(E[0])
+    assert res["heat.T"][-1] - res["heat.T"][0] > 0.1
+    assert np.max(np.abs(res["damper.lossPower"] - 1.5 * v ** 2)) < 1e-9
