@@ -2,8 +2,9 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass), ``joints`` (Revolute, Prismatic). Names, parameters, defaults, units and sign
-conventions are MSL's, so an MSL MultiBody model translates line by line::
+PointMass, Rotor1D, Mounting1D), ``joints`` (Revolute, Prismatic), ``forces``, ``sensors``
+and ``visualizers`` (``resolving``: MSL's resolveInFrame). Names, parameters, defaults,
+units and sign conventions are MSL's, so an MSL MultiBody model translates line by line::
 
     m.world, m.rev = World(), Revolute(n=(0, 0, 1), useAxisFlange=True)
     m.body = Body(m=1.0, r_CM=(0.5, 0, 0))
@@ -23,7 +24,7 @@ planar models.
 
 Not here yet: free and spherical joints (orientation states), loops of 3-D frames, the
 spatial articulated-body recursion (accelerations come from the dense solve of M(q)),
-forces, sensors, visualizers, URDF import, animation.
+URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
