@@ -383,3 +383,33 @@ def test_damper_heat_goes_to_its_heat_port():
     assert np.max(np.abs(E - E[0])) < 1e-7 * abs(E[0])
     assert res["heat.T"][-1] - res["heat.T"][0] > 0.1
     assert np.max(np.abs(res["damper.lossPower"] - 1.5 * v ** 2)) < 1e-9
+
+
+@pytest.mark.parametrize("sequence", [(1, 2, 3), (3, 1, 2), (2, 3, 2)])
+def test_angle_sensors_return_the_angles_a_rotation_sequence_was_built_with(sequence):
+    """A FixedRotation built from angles (deg) about ``sequence`` (MSL's
+    PlanarRotationSequence) is measured back by AbsoluteAngles and, between two rotations,
+    RelativeAngles; the frames swing on a revolute so the model moves."""
+    angles = np.array([25.0, -40.0, 65.0])
+    m = Model("angles")
+    m.world = World()
+    m.rev = Revolute(n=(0, 0, 1))
+    m.body = Body(m=1.0, r_CM=(0.3, 0, 0))
+    m.rot = FixedRotation(rotationType="PlanarRotationSequence", sequence=sequence,
+                          angles=tuple(angles))
+    m.rot2 = FixedRotation(rotationType="PlanarRotationSequence", sequence=sequence,
+                           angles=tuple(angles / 2))
+    m.abs = sensors.AbsoluteAngles(sequence=sequence)
+    m.rel = sensors.RelativeAngles(sequence=sequence)
+    m.connect(m.world.frame_b, m.rot.frame_a)
+    m.connect(m.rot.frame_b, m.abs.frame_a)
+    m.connect(m.rot.frame_b, m.rev.frame_a)
+    m.connect(m.rev.frame_b, m.body.frame_a)
+    m.connect(m.rev.frame_b, m.rel.frame_a)
+    m.connect(m.rev.frame_b, m.rot2.frame_a)
+    m.connect(m.rot2.frame_b, m.rel.frame_b)
+    res = acausal.compile(m).simulate(0.5, t=[0, 0.25, 0.5])
+    for k in (1, 2, 3):
+        assert np.allclose(res[f"abs.angles[{k}]"], np.radians(angles[k - 1]), atol=1e-12)
+        assert np.allclose(res[f"rel.angles[{k}]"], np.radians(angles[k - 1] / 2),
+                           atol=1e-12)
