@@ -175,16 +175,15 @@ class ThreeSprings(Model):
     the junction to the body; unstretched lengths 0.1 m. The body starts at r_0 = {0.5,
     -0.3, 0} m at rest, its frame parallel to the world's.
 
-    MSL's body is free and its junction's orientation is fixed by spring3's
-    fixedRotationAtFrame_b; here the body hangs from the world on three prismatic joints
-    (``body_x`` .. ``body_z``) and three revolutes about x, y, z (``body_rx`` .. ``body_rz``:
-    MSL's angles sequence {1, 2, 3} as coordinates, singular only at a ±90° second angle),
-    and the junction on three prismatic joints (``junction_x`` .. ``junction_z``: its
-    position, orientation fixed, as fixedRotationAtFrame_b; without mass, so its position
-    is an algebraic variable, the springs' forces in balance). x0 = ``START``, guess =
-    ``GUESS`` (MSL's guess of the junction, {0.1, -0.2, 0.2} m)."""
+    The junction's orientation is fixed by spring3's fixedRotationAtFrame_b, as in MSL (its
+    position spring3.r_b_0 is then algebraic: no mass, the spring forces in balance). MSL's
+    body is free; here it hangs from the world on three prismatic joints (``body_x`` ..
+    ``body_z``) and three revolutes about x, y, z (``body_rx`` .. ``body_rz``: MSL's angles
+    sequence {1, 2, 3} as coordinates, singular only at a ±90° second angle), which move
+    the same. x0 = ``START``, guess = ``GUESS`` (MSL's guess of the junction, {0.1, -0.2,
+    0.2} m)."""
     START = {"body_x.s": 0.5, "body_y.s": -0.3}
-    GUESS = {"junction_x.s": 0.1, "junction_y.s": -0.2, "junction_z.s": 0.2}
+    GUESS = {"spring3.r_b_0[1]": 0.1, "spring3.r_b_0[2]": -0.2, "spring3.r_b_0[3]": 0.2}
 
     def __init__(self, name: str | None = None):
         super().__init__(name or "ThreeSprings")
@@ -194,7 +193,7 @@ class ThreeSprings(Model):
         self.spring1 = forces.Spring(s_unstretched=0.1, c=20)
         self.bar2 = FixedTranslation(r=(0, 0, 0.3))
         self.spring2 = forces.Spring(s_unstretched=0.1, c=40)
-        self.spring3 = forces.Spring(s_unstretched=0.1, c=20)
+        self.spring3 = forces.Spring(s_unstretched=0.1, c=20, fixedRotationAtFrame_b=True)
         self.connect(self.world.frame_b, self.bar1.frame_a)
         self.connect(self.world.frame_b, self.bar2.frame_a)
         self.connect(self.bar1.frame_b, self.spring1.frame_a)
@@ -209,8 +208,6 @@ class ThreeSprings(Model):
             self.connect(frame, joint.frame_a)
             frame = joint.frame_b
         self.connect(frame, self.body1.frame_a)
-        self.connect(_translations(self, "junction_", self.world.frame_b),
-                     self.spring1.frame_b)
 
 
 def _spherical(model: Model, prefix: str, frame_a, sequence=(2, 3, 1)):

@@ -21,17 +21,22 @@ Line forces record MSL's variables: length, s (the distance guarded by s_small),
 e_rel_0, r_rel_a, e_a, f (> 0 pushes frame_b away from frame_a: frame_a.f = −e_a·f, MSL's
 PartialLineForce). ``animation`` and the shape parameters are accepted and record nothing.
 
-Not here: Spring's ``fixedRotationAtFrame_a/b`` (a frame whose orientation only a line
-force would fix: its position needs coordinates of its own, i.e. free frames), the 3-D
-SpringDamperSeries and LineForceWithTwoMasses.
+``fixedRotationAtFrame_a`` / ``fixedRotationAtFrame_b`` (MSL's, to connect line forces
+directly, without a body at the junction): that frame keeps the world's orientation and
+gets its position r_a_0[1..3] / r_b_0[1..3] [m] (world) as coordinates of this element,
+through three prismatic motions along the world axes; a junction without mass has them as
+algebraic variables (the forces in balance). Such a frame must get its position from line
+forces only (else it closes a 3-D loop, refused).
+
+Not here: the 3-D SpringDamperSeries and LineForceWithTwoMasses.
 """
 from __future__ import annotations
 
 import casadi as ca
 
 from ... import frames
-from ...core import Component, Parameter, RealInput, StateSelect, TranslationalFlange, \
-    Unavailable, VectorPort
+from ...core import Parameter, RealInput, TranslationalFlange, VectorPort
+from ...core.ports import MULTIBODY, TRANSLATIONAL
 from ..interfaces import PartialElementaryConditionalHeatPortWithoutT
 from .interfaces import Animated, Frame_a, Frame_b
 from .resolving import ResolveInFrameAB, ResolveInFrameB, Resolving, record
@@ -175,6 +180,20 @@ class _LineForce(Animated):
     frame_b = Frame_b("coordinate system fixed to the force element with one cut-force and "
                       "cut-torque", required=True)
 
+    options = {"fixedRotationAtFrame_a": False, "fixedRotationAtFrame_b": False}
+
+    def structure(self, s):
+        for side in ("a", "b"):
+            if getattr(self, f"fixedRotationAtFrame_{side}"):
+                frame = s.node(f"frame_{side}_world", MULTIBODY, preferred=False)
+                s.transform(None, frame, (0.0, 0.0, 0.0))
+                for k, axis in enumerate(((1.0, 0, 0), (0, 1.0, 0), (0, 0, 1.0)), start=1):
+                    r = s.node(f"r_{side}_0[{k}]", TRANSLATIONAL, velocity=f"v_{side}_0[{k}]")
+                    nxt = getattr(self, f"frame_{side}") if k == 3 else \
+                        s.node(f"frame_{side}_{k}", MULTIBODY, preferred=False)
+                    s.prismatic(frame, nxt, r, axis)
+                    frame = nxt
+
     def line_force(self, e, length, s, s_dot):
         """The line force f [N] from the guarded distance s [m] and its rate [m/s]."""
         raise NotImplementedError
@@ -218,17 +237,12 @@ class _LineForce(Animated):
                                            "resolved in world frame")
 
 
-_NO_FIXED_ROTATION = Unavailable(False, "a frame whose orientation is fixed by the line "
-                                        "force only (free frames are not supported yet)")
-
-
 class Spring(_LineForce):
     """Linear spring along the line between the origins of frame_a and frame_b:
     f = c·(length − s_unstretched) [N] (c [N/m], no default as in MSL; s_unstretched [m],
     default 0), with an optional point mass m [kg] (default 0) at lengthFraction (default
     0.5) of the line from frame_a, in the world's gravity field (MSL's LineForceWithMass)."""
-    options = {"showMass": True, "fixedRotationAtFrame_a": _NO_FIXED_ROTATION,
-               "fixedRotationAtFrame_b": _NO_FIXED_ROTATION}
+    options = {"showMass": True}
     required = ("c",)
     c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
     s_unstretched = Parameter(0.0, "m", "unstretched spring length", nonnegative=True)
@@ -282,9 +296,7 @@ class LineForceWithMass(_LineForce):
     Difference from MSL: flange_a is fixed (it is the line's origin) and takes the reaction
     of what acts between the flanges; a force applied at flange_a alone (flange_b
     unconnected) acts on nothing, where MSL turns it to −force at flange_b."""
-    options = {"animateLine": True, "animateMass": True,
-               "fixedRotationAtFrame_a": _NO_FIXED_ROTATION,
-               "fixedRotationAtFrame_b": _NO_FIXED_ROTATION}
+    options = {"animateLine": True, "animateMass": True}
     m = Parameter(0.0, "kg", "mass of point mass on the connection line between the origin "
                              "of frame_a and the origin of frame_b", nonnegative=True,
                   structural_zero=True)
@@ -296,6 +308,7 @@ class LineForceWithMass(_LineForce):
                                    "Translational library between flange_a and flange_b)")
 
     def structure(self, s):
+        super().structure(s)
         s.linear({self.flange_a: 1.0}, 0.0, f"{self.path}: flange_a.s = 0")
         s.distance(self.frame_a, self.frame_b, self.flange_b)
 
