@@ -286,48 +286,63 @@ def test_gyroscopic_torque_of_a_free_rotor_on_a_turning_housing():
     assert np.max(np.abs(res["cut.torque[3]"])) > 5.0          # the gyroscopic torque
 
 
-def test_world_force_torque_and_force_resolved_in_each_frame_accelerate_as_by_hand():
-    """A Body (m = 3 kg at r_CM = (0.4, 0, 0), I_33 = 0.2) on a Revolute about z behind a
-    FixedRotation of 30° about z: the initial acceleration of phi under a force F = (1, 2,
-    0) N at frame_b's origin (and a torque τ = (0, 0, 0.7) N.m) resolved in the world, in
-    frame_b or in frame_resolve (rotated 60° about z) is (r × F_0 + τ_0)·z / (I + m·r²)."""
+def _pushed(parts, kind, F, tau, r_b, anchor):
+    """A Body (m = 3 kg at r_CM = (r_b, 0, 0), I_33 = 0.2) on a Revolute about z behind a
+    FixedRotation of 30° about z, pushed at (r_b, 0, 0) by ``parts`` (one force-and-torque
+    class, or a force class and a torque class) resolved in ``kind``; the frame_a of
+    two-frame parts at a fixed point ("fixed") or on the same body ("body")."""
+    m = Model("push")
+    m.world = World(g=0)
+    m.rev = Revolute()
+    m.rot = FixedRotation(n=(0, 0, 1), angle=30)
+    m.body = Body(m=3.0, r_CM=(r_b, 0, 0), I_33=0.2)
+    m.tip = FixedRotation(r=(r_b, 0, 0), angle=0)
+    m.fixed = Fixed(r=(0.0, -1.0, 0.0))
+    m.res_frame = FixedRotation(n=(0, 0, 1), angle=60)
+    m.connect(m.world.frame_b, m.rev.frame_a)
+    m.connect(m.rev.frame_b, m.rot.frame_a)
+    m.connect(m.rot.frame_b, m.body.frame_a)
+    m.connect(m.rot.frame_b, m.tip.frame_a)
+    m.connect(m.world.frame_b, m.res_frame.frame_a)
+    for i, cls in enumerate(parts):
+        part = cls(resolveInFrame=kind)
+        setattr(m, f"push{i}", part)
+        m.connect(m.tip.frame_b, part.frame_b)
+        if hasattr(part, "frame_a"):
+            m.connect((m.fixed.frame_b if anchor == "fixed" else m.rot.frame_b), part.frame_a)
+        if kind == "frame_resolve":
+            m.connect(m.res_frame.frame_b, part.frame_resolve)
+        for vec, name in ((F, "force"), (tau, "torque")):
+            if hasattr(part, name):
+                for k in (1, 2, 3):
+                    src = signals.Constant(k=vec[k - 1])
+                    setattr(m, f"{name}{i}_{k}", src)
+                    m.connect(src.y, getattr(part, name)[k])
+    return m
+
+
+def test_forces_and_torques_resolved_in_each_frame_accelerate_as_by_hand():
+    """The initial acceleration of phi under a force F = (1, 2, 0) N at (r_b, 0, 0) and a
+    torque τ = (0, 0, 0.7) N.m resolved in the world, in frame_b (turned 30°) or in
+    frame_resolve (turned 60°) is (r × F_0 + τ_0)·z / (I + m·r²); a two-frame element
+    whose frame_a is on the same body (an internal force and torque) moves nothing."""
     F, tau, r_b = np.array([1.0, 2.0, 0]), np.array([0, 0, 0.7]), 0.4
     rot = lambda deg: np.array([[np.cos(np.radians(deg)), -np.sin(np.radians(deg)), 0],  # noqa
                                 [np.sin(np.radians(deg)), np.cos(np.radians(deg)), 0],
                                 [0, 0, 1]])
     r_0 = rot(30) @ np.array([r_b, 0, 0])
     for kind, frame in (("world", None), ("frame_b", 30), ("frame_resolve", 60)):
-        for cls in (forces.WorldForceAndTorque, forces.ForceAndTorque):
-            m = Model("push")
-            m.world = World(g=0)
-            m.rev = Revolute()
-            m.rot = FixedRotation(n=(0, 0, 1), angle=30, r=(0, 0, 0))
-            m.body = Body(m=3.0, r_CM=(r_b, 0, 0), I_33=0.2)
-            m.tip = FixedRotation(r=(r_b, 0, 0), angle=0)
-            m.push = cls(resolveInFrame=kind)
-            m.connect(m.world.frame_b, m.rev.frame_a)
-            m.connect(m.rev.frame_b, m.rot.frame_a)
-            m.connect(m.rot.frame_b, m.body.frame_a)
-            m.connect(m.rot.frame_b, m.tip.frame_a)
-            m.connect(m.tip.frame_b, m.push.frame_b)
-            if cls is forces.ForceAndTorque:
-                m.fixed = Fixed(r=(0.0, -1.0, 0.0))
-                m.connect(m.fixed.frame_b, m.push.frame_a)
-            if kind == "frame_resolve":
-                m.res_frame = FixedRotation(n=(0, 0, 1), angle=60)
-                m.connect(m.world.frame_b, m.res_frame.frame_a)
-                m.connect(m.res_frame.frame_b, m.push.frame_resolve)
-            for k in (1, 2, 3):
-                src_f, src_t = signals.Constant(k=F[k - 1]), signals.Constant(k=tau[k - 1])
-                setattr(m, f"f{k}", src_f)
-                setattr(m, f"t{k}", src_t)
-                m.connect(src_f.y, m.push.force[k])
-                m.connect(src_t.y, m.push.torque[k])
-            res = acausal.compile(m).simulate(1e-3, t=[0, 1e-3], rtol=1e-12, atol=1e-14)
-            R = np.eye(3) if frame is None else rot(frame)
-            F0, tau0 = R @ F, R @ tau
-            expected = (np.cross(r_0, F0)[2] + tau0[2]) / (0.2 + 3.0 * r_b ** 2)
-            assert res["rev.a"][0] == pytest.approx(expected, rel=1e-9), (kind, cls.__name__)
+        R = np.eye(3) if frame is None else rot(frame)
+        F0, tau0 = R @ F, R @ tau
+        expected = (np.cross(r_0, F0)[2] + tau0[2]) / (0.2 + 3.0 * r_b ** 2)
+        for parts in ((forces.WorldForceAndTorque,), (forces.WorldForce, forces.WorldTorque),
+                      (forces.ForceAndTorque,), (forces.Force, forces.Torque)):
+            for anchor in ("fixed", "body") if parts[0].__name__[:5] != "World" else ("",):
+                model = acausal.compile(_pushed(parts, kind, F, tau, r_b, anchor))
+                res = model.simulate(1e-3, t=[0, 1e-3], rtol=1e-12, atol=1e-14)
+                want = 0.0 if anchor == "body" else expected
+                assert res["rev.a"][0] == pytest.approx(want, rel=1e-9, abs=1e-12), \
+                    (kind, [c.__name__ for c in parts], anchor)
 
 
 def test_bad_input_is_refused_naming_the_part():
