@@ -3,8 +3,9 @@
 ``Examples.Elementary.ForceAndTorque``, ``SpringMassSystem``, ``PointGravity``,
 ``ThreeSprings`` and ``Examples.Rotational3DEffects.MovingActuatedDrive``,
 ``GyroscopicEffects``. Free bodies and spherical joints (not in the library yet) are
-written as chains of prismatic and revolute joints that move the same (see each model). MSL's visualization parameters
-(widths, diameters, colors) are left out; the World's defaults apply.
+written as chains of prismatic and revolute joints that move the same (see each model).
+MSL's visualization parameters (widths, diameters, colors) are left out; the World's
+defaults apply.
 """
 from __future__ import annotations
 
