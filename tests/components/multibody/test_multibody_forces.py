@@ -138,7 +138,13 @@ def _rotating_rod(shape=True, **spring):
     m.connect(m.rev.frame_b, m.prism.frame_a)
     m.connect(m.prism.frame_b, m.power.frame_a)
     m.connect(m.power.frame_b, m.cut.frame_a)
-    m.connect(m.cut.frame_b, m.bead.frame_a)
+    m.cut_r = sensors.CutForce(resolveInFrame="frame_resolve")     # in the rod's axes
+    m.pos_r = sensors.AbsolutePosition(resolveInFrame="frame_resolve")
+    m.connect(m.cut.frame_b, m.cut_r.frame_a)
+    m.connect(m.cut_r.frame_b, m.bead.frame_a)
+    m.connect(m.pos_r.frame_a, m.bead.frame_a)
+    for s in (m.cut_r, m.pos_r):
+        m.connect(m.rev.frame_b, s.frame_resolve)
     m.connect(m.world.frame_b, m.spring.frame_a)
     m.connect(m.spring.frame_b, m.bead.frame_a)
     for s in (m.pos_w, m.pos_a, m.vel_w, m.w_a, m.angles, m.abs):
@@ -191,6 +197,8 @@ def test_sensors_of_a_bead_on_a_turning_rod_equal_its_kinematics_by_hand():
     e_r = np.array([c_, s_, zero])
     assert close(_vec(res, "cut.force"), m_b * a0 + f * e_r)
     assert close(_vec(res, "cut.torque"), np.array([zero, zero, I_b * z]))
+    assert close(_vec(res, "cut_r.force"), np.array([m_b * a_r + f, m_b * a_t, zero]))
+    assert close(_vec(res, "pos_r.r"), np.array([s, zero, zero]))
     # Power into the bead's side = d/dt of its kinetic energy + the power it gives the spring
     dKE = m_b * np.sum(v0 * a0, axis=0) + I_b * w * z
     assert close(res["power.power"], dKE + f * v)
