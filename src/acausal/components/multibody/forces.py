@@ -172,15 +172,14 @@ class _LineForce(Animated):
     the line and feels gravity: its kinetic and potential energy are the element's
     (equivalent to MSL's force balance of the point mass; m = 0, the default, is a massless
     line: built with 0, m is fixed at 0 in the compiled model). Subclasses give ``line_force``
-    (f [N], > 0 pushes the frames apart)."""
+    (f [N], > 0 pushes the frames apart). ``fixedRotationAtFrame_a/b``: see the module."""
+    options = {"fixedRotationAtFrame_a": False, "fixedRotationAtFrame_b": False}
     s_small = Parameter(1e-10, "m", "prevent zero-division if distance between frame_a and "
                                     "frame_b is zero", positive=True)
     frame_a = Frame_a("coordinate system fixed to the force element with one cut-force and "
                       "cut-torque", required=True)
     frame_b = Frame_b("coordinate system fixed to the force element with one cut-force and "
                       "cut-torque", required=True)
-
-    options = {"fixedRotationAtFrame_a": False, "fixedRotationAtFrame_b": False}
 
     def structure(self, s):
         for side in ("a", "b"):
