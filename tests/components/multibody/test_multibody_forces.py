@@ -107,6 +107,18 @@ def test_rotor1d_and_its_3d_twin_put_the_same_torques_on_their_mounts():
     assert np.max(np.abs(res["r2.frame_b.t[3]"])) > 0.1       # the gyroscopic part is there
 
 
+def test_gyroscopic_effects_rotor1d_loads_its_mount_as_the_spinning_body():
+    """GyroscopicEffects: the joint at the world (3-D spinning cylinder) and the joint at
+    ``fixed`` (rigid cylinder + Rotor1D) transmit the same force and torque (MSL's
+    documentation of the example), the gyroscopic torques included."""
+    res = acausal.compile(GyroscopicEffects()).simulate(
+        2.0, t=np.linspace(0, 2, 201), x0=GyroscopicEffects.START, rtol=1e-10, atol=1e-12)
+    for v in ("f", "t"):
+        for k in (1, 2, 3):
+            a, b = res[f"spherical1_1.frame_b.{v}[{k}]"], res[f"spherical2_1.frame_b.{v}[{k}]"]
+            assert np.max(np.abs(a - b)) < 1e-6 * (1 + np.max(np.abs(a))), (v, k)
+
+
 def _rotating_rod(shape=True, **spring):
     """A bead (Body m = 2 kg, I = 0.01·1) on a prismatic along the x axis of a rod turning
     freely about z (Revolute, rod inertia 0.5 kg.m²), pulled to the axis by a 3-D line
