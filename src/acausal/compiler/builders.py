@@ -28,7 +28,7 @@ from ..core.ports import MULTIBODY, Domain, PhysicalPort, Port, RealInput, RealO
 from .kinematics import InternalNode
 from .pose import coordinate_pose
 from .relations import (LinearRelation, PrismaticJoint, RevoluteJoint, RigidTransform,
-                        SpatialPrismatic, SpatialRevolute, SpatialTransform)
+                        SpatialDistance, SpatialPrismatic, SpatialRevolute, SpatialTransform)
 from .symbolic import der_with, sx
 
 
@@ -228,6 +228,13 @@ class StructureBuilder(_Base):
         cls = coordinate_pose(fn)
         self._ws.relations.append(cls(self._owner, frame, list(coordinates),
                                       [sx(v) for v in params], name))
+
+    def distance(self, frame_a, frame_b, node, name: str = "") -> None:
+        """The 1-D (translational) ``node`` at the distance [m] between the origins of the
+        3-D frames frame_a and frame_b; a force on it acts along the line between them."""
+        for p in (frame_a, frame_b, node):
+            self._mine(p)
+        self._ws.relations.append(SpatialDistance(self._owner, frame_a, frame_b, node, name))
 
     def states(self, port: PhysicalPort, positions: tuple, velocities: tuple) -> None:
         """Name the coordinates a port gets if its connection group needs free coordinates

@@ -469,3 +469,19 @@ class SpatialPrismatic(SpatialRelation):
             return ca.vertcat(v + ca.cross(w, e * vals[2]) + e * vels[2], w)
         v, w = vels[1][:3], vels[1][3:]
         return ca.vertcat(v - ca.cross(w, e * vals[2]) - e * vels[2], w)
+
+
+class SpatialDistance(SpatialRelation):
+    """A 1-D node at the distance |r_b − r_a| [m] between the origins of two 3-D frames
+    (MSL's LineForceWithMass: flange_b.s = length): the node's force acts along the line,
+    on frame_b away from frame_a, by virtual work. Only the node is solved from the frames."""
+    dims = (12, 12, 1)
+
+    def __init__(self, owner, frame_a, frame_b, node, name=""):
+        super().__init__(owner, [frame_a, frame_b, node], [], name)
+
+    def can_solve(self, j: int) -> bool:
+        return j == 2
+
+    def solve_local(self, j, vals, par):
+        return ca.norm_2(parts(vals[1])[0] - parts(vals[0])[0]), None

@@ -5,16 +5,12 @@ fixed) are the dicts ``*_START``, to pass as ``x0``.
 """
 from __future__ import annotations
 
-import casadi as ca
-
-from .. import frames
 from ..components.multibody import (Body, FixedTranslation, RollingWheel, RollingWheelSet,
                                     World)
-from ..components.multibody.interfaces import Frame_b
+from ..components.multibody.forces import WorldForce
 from ..components.rotational import Torque2
 from ..components.signals import CombiTimeTable, Sine
-from ..core import Component, Model, RealInput
-from ..core.ports import VectorPort
+from ..core import Model
 
 ROLLING_WHEEL_START = {"wheel1.x": 0.2, "wheel1.y": 0.2, "wheel1.der_angles[1]": 0.0,
                        "wheel1.der_angles[2]": 5.0, "wheel1.der_angles[3]": 1.0}
@@ -64,20 +60,6 @@ class RollingWheelSetDriving(_WheelSetVehicle):
         self.connect(self.wheelSet.support, self.torque2.flange_b)
         self.connect(self.sine1.y, self.torque1.tau)
         self.connect(self.sine2.y, self.torque2.tau)
-
-
-class WorldForce(Component):
-    """A force given in the world frame acting at frame_b (MSL's Forces.WorldForce with
-    resolveInFrame = world): frame_b.f = −resolve2(frame_b.R, force), frame_b.t = 0. A
-    stand-in until the Forces package is here."""
-    force = VectorPort(RealInput, 3, "x-, y-, z-coordinates of force resolved in world frame")
-    frame_b = Frame_b("coordinate system fixed to the component with one cut-force and "
-                      "cut-torque")
-
-    def physics(self, e):
-        _, T = frames.parts(e.pos(self.frame_b))
-        F = ca.vertcat(*[e.input(self.force[k]) for k in (1, 2, 3)])
-        e.flow(self.frame_b, ca.vertcat(-ca.mtimes(T, F), ca.SX.zeros(3)))
 
 
 class RollingWheelSetPulling(_WheelSetVehicle):

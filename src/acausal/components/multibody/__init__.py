@@ -2,10 +2,12 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass), ``joints`` (Revolute, Prismatic), ``rolling`` (MSL's Parts.RollingWheel and
-Parts.RollingWheelSet as RollingWheel, RollingWheelSet; their joints as RollingWheelJoint,
-RollingWheelSetJoint, RollingConstraintVerticalWheel: no-slip constraints on velocities). Names, parameters, defaults, units and sign
-conventions are MSL's, so an MSL MultiBody model translates line by line::
+PointMass, Rotor1D, Mounting1D), ``joints`` (Revolute, Prismatic), ``rolling`` (MSL's
+Parts.RollingWheel and Parts.RollingWheelSet as RollingWheel, RollingWheelSet; their joints
+as RollingWheelJoint, RollingWheelSetJoint, RollingConstraintVerticalWheel: no-slip
+constraints on velocities), ``forces``, ``sensors`` and ``visualizers`` (``resolving``:
+MSL's resolveInFrame). Names, parameters, defaults, units and sign conventions are MSL's, so
+an MSL MultiBody model translates line by line::
 
     m.world, m.rev = World(), Revolute(n=(0, 0, 1), useAxisFlange=True)
     m.body = Body(m=1.0, r_CM=(0.5, 0, 0))
@@ -25,8 +27,7 @@ planar models.
 
 The animation (``acausal.analysis.animation``) draws the parts from their shapes. Not here
 yet: free and spherical joints (orientation states), loops of 3-D frames, the spatial
-articulated-body recursion (accelerations come from the dense solve of M(q)), forces,
-sensors, visualizers, URDF import.
+articulated-body recursion (accelerations come from the dense solve of M(q)), URDF import.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
@@ -35,9 +36,12 @@ from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation
 from .rolling import (RollingConstraintVerticalWheel, RollingWheel, RollingWheelJoint,
                       RollingWheelSet, RollingWheelSetJoint)
 from .world import GravityTypes, World
+from . import forces, sensors, visualizers
+from .parts import Mounting1D, Rotor1D
 
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
            "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic", "RollingWheel",
            "RollingWheelSet", "RollingWheelJoint", "RollingWheelSetJoint",
-           "RollingConstraintVerticalWheel"]
+           "RollingConstraintVerticalWheel", "forces", "sensors", "visualizers", "Rotor1D",
+           "Mounting1D"]

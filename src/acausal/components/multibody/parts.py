@@ -24,7 +24,8 @@ from enum import Enum
 import casadi as ca
 
 from ... import frames
-from ...core import Parameter, StateSelect
+from ...core import Parameter, RotationalFlange, StateSelect, Unavailable
+from ...core.ports import ROTATIONAL
 from ...core.component import who
 from ...errors import ParameterError
 from ..interfaces import unit_direction
@@ -331,3 +332,76 @@ class PointMass(Animated):
         _record(e, "v_0", v0, "m/s", "absolute velocity of frame_a, resolved in world frame")
         _record(e, "a_0", a0, "m/s2", "absolute acceleration of frame_a resolved in world "
                                       "frame")
+
+
+# ---- 1-D drive trains on 3-D parts ---------------------------------------------------------
+class Rotor1D(Animated):
+    """1-D inertia J [kg.m²] rotating about the axis n (resolved in frame_a, default
+    {1, 0, 0}) in a housing fixed at frame_a (MSL's Rotor1D with
+    world.driveTrainMechanics3D = true and exact = true): phi [rad] is the rotor angle
+    relative to frame_a (= flange_a.phi = flange_b.phi), w = der(phi), a = der(w).
+
+    As in MSL, the rotor's mass, centre of mass and inertia rotating with the housing belong
+    to a body fixed to the housing; Rotor1D adds the kinetic energy of the rotation relative
+    to it, ½J·w² + J·w·(e·w_a) (e = n/|n|, w_a the housing's angular velocity resolved in
+    frame_a). Lagrange's equations of it are MSL's: J·(a + e·der(w_a)) = flange_a.tau +
+    flange_b.tau, and on the housing the gyroscopic torque w_a × (J·e·w) with the axial
+    reaction; the 1-D torques between rotor and a support on a Mounting1D on the same frame
+    reach the housing by virtual work of the relative angle (MSL: through Mounting1D; the
+    sums on the frame are the same).
+
+    ``exact`` only True (MSL's default: False neglects the housing's acceleration in the
+    rotor's equation, which no energy gives); ``r_center``, ``cylinderLength``,
+    ``cylinderDiameter`` are accepted for animation."""
+    options = {"stateSelect": StateSelect.default,
+               "exact": Unavailable(True, "exact=false (the rotor's equation without the "
+                                          "housing's acceleration)")}
+    J = Parameter(1.0, "kg.m2", "moment of inertia of rotor around its axis of rotation",
+                  nonnegative=True)
+    n = Parameter((1.0, 0.0, 0.0), "1", "axis of rotation resolved in frame_a")
+    r_center = Parameter((0.0, 0.0, 0.0), "m", "position vector from origin of frame_a to "
+                                               "center of cylinder")
+    cylinderLength = Parameter(0.2, "m", "length of cylinder representing the rotor",
+                               nonnegative=True)
+    cylinderDiameter = Parameter(0.2, "m", "diameter of cylinder representing the rotor",
+                                 nonnegative=True)
+    flange_a = RotationalFlange("(left) driving flange (flange axis directed INTO cut plane)")
+    flange_b = RotationalFlange("(right) driven flange (flange axis directed OUT OF cut "
+                                "plane)")
+    frame_a = Frame_a("frame in which rotor housing is fixed", required=True)
+
+    def structure(self, s):
+        phi = s.node("phi", ROTATIONAL, velocity="w", acceleration="a")
+        s.linear({self.flange_a: 1.0, phi: -1.0}, 0.0)
+        s.linear({self.flange_b: 1.0, phi: -1.0}, 0.0)
+
+    def physics(self, e):
+        w = e.vel(e.node("phi"))
+        e_axis = unit_direction(self, "n", "(1, 0, 0)")
+        w_a = e.vel(self.frame_a)[3:6]
+        e.kinetic_energy(0.5 * self.J * w ** 2 + self.J * w * ca.dot(e_axis, w_a))
+        _record(e, "rotorWith3DEffects.w_a", w_a, "rad/s", "angular velocity of frame_a, "
+                                                           "resolved in frame_a")
+
+
+class Mounting1D(Animated):
+    """Housing of a 1-D drive train fixed at frame_a (MSL's Mounting1D with
+    world.driveTrainMechanics3D = true): flange_b.phi = phi0 [rad] (default 0), the angle
+    of the 1-D supports relative to the housing; n (default {1, 0, 0}) the axis of the
+    support torque, resolved in frame_a.
+
+    The 1-D angles are relative to the housing, so a torque between a Rotor1D (or a
+    Revolute's axis) and a support on this mounting does its virtual work through the
+    relative angle: its reaction on the housing is already in the equations (MSL writes it
+    here, frame_a.t = −n·flange_b.tau; with the Rotor1D and the Mounting1D on one frame the
+    sums are equal). A Mounting1D on another frame than the rotor it supports (MSL puts the
+    support torque on that other frame) is not distinguished: the reaction stays with the
+    rotor's frame."""
+    phi0 = Parameter(0.0, "rad", "fixed offset angle of housing")
+    n = Parameter((1.0, 0.0, 0.0), "1", "axis of rotation = axis of support torque "
+                                        "(resolved in frame_a)")
+    flange_b = RotationalFlange("(right) flange fixed in housing")
+    frame_a = Frame_a("frame in which housing is fixed", required=True)
+
+    def structure(self, s):
+        s.linear({self.flange_b: 1.0}, self.phi0, f"{self.path}: flange_b.phi = phi0")

@@ -6,7 +6,7 @@ from enum import Enum
 
 import casadi as ca
 
-from ...core import Component, Parameter
+from ...core import Component, Parameter, Unavailable
 from ..interfaces import unit_direction
 from .interfaces import Frame_b
 
@@ -35,7 +35,9 @@ class World(Component):
     animateGround) are accepted and change nothing (no animation yet); not here: the other
     animation parameters, a redeclared gravity function."""
     options = {"gravityType": GravityTypes.UniformGravity, "enableAnimation": True,
-               "animateWorld": True, "animateGravity": True, "animateGround": False}
+               "animateWorld": True, "animateGravity": True, "animateGround": False,
+               "driveTrainMechanics3D": Unavailable(True, "1-D drive trains without 3-D "
+                                                          "effects (Rotor1D, Mounting1D)")}
     g = Parameter(9.80665, "m/s2", "constant gravity acceleration", nonnegative=True)
     n = Parameter((0.0, -1.0, 0.0), "1", "direction of gravity resolved in world frame "
                                          "(gravity = g*n/length(n))")
