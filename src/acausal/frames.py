@@ -10,7 +10,7 @@ from __future__ import annotations
 import casadi as ca
 
 __all__ = ["skew", "vee", "pose", "parts", "planar_rotation", "resolve1", "resolve_dyade1",
-           "from_nxy"]
+           "from_nxy", "equality_constraint"]
 
 
 def _sx(v) -> ca.SX:
@@ -77,3 +77,16 @@ def from_nxy(n_x, n_y) -> ca.SX:
     e_z_aux = ca.cross(e_x, n_y_aux)
     e_z = e_z_aux / ca.norm_2(e_z_aux)
     return ca.vertcat(e_x.T, ca.cross(e_z, e_x).T, e_z.T)
+
+
+def equality_constraint(T1, T2) -> ca.SX:
+    """MSL's Frames.Orientation.equalityConstraint: 3 residues that vanish when T1 = T2;
+    for T2 = (I − [θ×])·T1 close to T1 they are θ [rad], the small rotation from frame 1
+    to frame 2 (resolved in either). Atan2 of the axes' projections, so they stay regular
+    up to a relative rotation of 90° about any axis."""
+    T1, T2 = _sx(T1), _sx(T2)
+    z1 = ca.cross(T1[0, :].T, T1[1, :].T)
+    c = ca.dot(T1[0, :], T2[0, :])
+    return ca.vertcat(ca.atan2(ca.dot(z1, T2[1, :].T), c),
+                      ca.atan2(-ca.dot(z1, T2[0, :].T), c),
+                      ca.atan2(ca.dot(T1[1, :], T2[0, :]), c))

@@ -32,7 +32,7 @@ import casadi as ca
 
 from ..errors import StructureError
 from ..core.ports import PhysicalPort
-from ..frames import parts, planar_rotation, pose, skew, vee
+from ..frames import equality_constraint, parts, planar_rotation, pose, skew, vee
 from .symbolic import combine
 
 
@@ -230,13 +230,17 @@ class FrameRelation:
         return FrameRelation._cache[key]
 
     def _residual(self) -> ca.Function:
+        """Φ of the relation closing a loop and its Jacobian with respect to the nodes'
+        velocities (twists of 3-D frames): the map of its multipliers to the flows."""
         key = (type(self), self.dims, "residual", tuple(p.numel() for p in self.params))
         if key not in FrameRelation._cache:
-            vals, _, _, par = self._locals()
+            vals, vels, _, par = self._locals()
             phi = self.residual_local({i: v for i, v in enumerate(vals)}, par)
-            X = ca.vertcat(*vals)
-            FrameRelation._cache[key] = ca.Function(f"{type(self).__name__}_residual",
-                                                    vals + par, [phi, ca.jacobian(phi, X)])
+            X, V = ca.vertcat(*vals), ca.vertcat(*vels)
+            rate = ca.vertcat(*[pose_rate(x, v) for x, v in zip(vals, vels)])
+            FrameRelation._cache[key] = ca.Function(
+                f"{type(self).__name__}_residual", vals + par,
+                [phi, ca.jacobian(ca.jtimes(phi, X, rate), V)])
         return FrameRelation._cache[key]
 
     def fire(self, j: int, node_values) -> tuple:
@@ -273,7 +277,7 @@ class FrameRelation:
 
     def flows_loop(self, lam: ca.SX):
         out, col = [], 0
-        for p, d in zip(self.ports, self.dims):
+        for p, d in zip(self.ports, self.dofs):
             out.append((p, ca.mtimes(self._loop[:, col:col + d].T, lam)))
             col += d
         return out
@@ -370,17 +374,40 @@ class PrismaticJoint(FrameRelation):
 class SpatialRelation(FrameRelation):
     """A relation among 3-D frames (and a joint's 1-D coordinate). Subclasses give the
     velocity map in closed form (``velocity_local``, what the AD route gives, smaller;
-    tests compare the two). Closing a loop of 3-D frames is not implemented yet: such a
-    relation is refused naming the component."""
+    tests compare the two).
+
+    Closing a loop (all its nodes known), it compares the frame it would determine (its
+    last frame: frame_b, or the one frame of a frame fixed in the world) with where the
+    rest of the loop puts it: ``frame_residual``, 6 rows (3 of position, 3 of
+    orientation) whose multipliers are the cut force and torque at that frame resolved in
+    it. Where the loop is planar or otherwise over-constrained, the rows that add nothing
+    to the rank of Φ_q are found at the assembled configuration (``compiler.loops``)."""
 
     def can_solve(self, j: int) -> bool:
         return self.dims[j] == 12          # a joint's coordinate is never solved from frames
 
-    def loop_residual(self, node_values):
-        raise StructureError(
-            f"{type(self.owner).__name__} '{self.owner.path}' closes a kinematic loop of 3-D "
-            f"frames (both its frames are fixed by other paths to the world); loops in 3-D "
-            f"are not supported yet: open the loop, or connect the part to the world once")
+    def residual_local(self, vals, par):
+        j = 1 if len(self.dims) > 1 else 0
+        pred, _ = self.solve_local(j, {i: v for i, v in vals.items() if i != j}, par)
+        return frame_residual(pred, vals[j])
+
+    def row_names(self, extra):
+        return FRAME_ROWS
+
+
+#: names of the rows of ``frame_residual``
+FRAME_ROWS = ("r_rel[1]", "r_rel[2]", "r_rel[3]", "residue[1]", "residue[2]", "residue[3]")
+
+
+def frame_residual(expected, actual) -> ca.SX:
+    """The 6 rows that vanish when the 3-D frame ``actual`` is at ``expected`` (both
+    ``pose``): the position error resolved in ``actual`` [m], then MSL's
+    ``Frames.Orientation.equalityConstraint`` [rad]. Their Jacobian with respect to
+    ``actual``'s twist is the identity where they vanish, so their multipliers are the cut
+    force [N] and torque [N.m] at ``actual``, resolved in it."""
+    re, Te = parts(expected)
+    r, T = parts(actual)
+    return ca.vertcat(ca.mtimes(T, r - re), equality_constraint(Te, T))
 
 
 class SpatialTransform(SpatialRelation):
