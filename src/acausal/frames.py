@@ -10,7 +10,7 @@ from __future__ import annotations
 import casadi as ca
 
 __all__ = ["skew", "vee", "pose", "parts", "planar_rotation", "resolve1", "resolve_dyade1",
-           "from_nxy", "equality_constraint"]
+           "resolve2", "from_nxy", "equality_constraint", "FRAME_ROWS"]
 
 
 def _sx(v) -> ca.SX:
@@ -56,6 +56,11 @@ def resolve1(T, v) -> ca.SX:
     return ca.mtimes(_sx(T).T, _sx(v))
 
 
+def resolve2(T, v) -> ca.SX:
+    """v resolved in frame 1 -> resolved in frame 2: T·v (MSL's resolve2)."""
+    return ca.mtimes(_sx(T), _sx(v))
+
+
 def resolve_dyade1(T, D) -> ca.SX:
     """A second-order tensor resolved in frame 2 -> frame 1: Tᵀ·D·T (MSL's resolveDyade1)."""
     T = _sx(T)
@@ -90,3 +95,8 @@ def equality_constraint(T1, T2) -> ca.SX:
     return ca.vertcat(ca.atan2(ca.dot(z1, T2[1, :].T), c),
                       ca.atan2(-ca.dot(z1, T2[0, :].T), c),
                       ca.atan2(ca.dot(T1[1, :], T2[0, :]), c))
+
+
+#: names of the 6 rows that make two 3-D frames coincide: their position difference
+#: resolved in the frame, then ``equality_constraint``
+FRAME_ROWS = ("r_rel[1]", "r_rel[2]", "r_rel[3]", "residue[1]", "residue[2]", "residue[3]")

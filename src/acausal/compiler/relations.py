@@ -32,7 +32,7 @@ import casadi as ca
 
 from ..errors import StructureError
 from ..core.ports import PhysicalPort
-from ..frames import equality_constraint, parts, planar_rotation, pose, skew, vee
+from ..frames import FRAME_ROWS, equality_constraint, parts, planar_rotation, pose, skew, vee
 from .symbolic import combine
 
 
@@ -193,6 +193,11 @@ class FrameRelation:
 
     # derived, cached per class
     @property
+    def kind(self):
+        """What the derived Functions are cached by (with dims and parameter sizes)."""
+        return type(self)
+
+    @property
     def dofs(self) -> tuple[int, ...]:
         """Size of each node's velocity (6 for a 3-D frame, else its dimension)."""
         return tuple(6 if d == 12 else d for d in self.dims)
@@ -205,7 +210,7 @@ class FrameRelation:
         return vals, vels, accs, par
 
     def _solver(self, j: int) -> ca.Function:
-        key = (type(self), self.dims, "solve", j, tuple(p.numel() for p in self.params))
+        key = (self.kind, self.dims, "solve", j, tuple(p.numel() for p in self.params))
         if key not in FrameRelation._cache:
             vals, vels, accs, par = self._locals()
             others = [i for i in range(len(self.dims)) if i != j]
@@ -232,7 +237,7 @@ class FrameRelation:
     def _residual(self) -> ca.Function:
         """Φ of the relation closing a loop and its Jacobian with respect to the nodes'
         velocities (twists of 3-D frames): the map of its multipliers to the flows."""
-        key = (type(self), self.dims, "residual", tuple(p.numel() for p in self.params))
+        key = (self.kind, self.dims, "residual", tuple(p.numel() for p in self.params))
         if key not in FrameRelation._cache:
             vals, vels, _, par = self._locals()
             phi = self.residual_local({i: v for i, v in enumerate(vals)}, par)
@@ -281,6 +286,47 @@ class FrameRelation:
             out.append((p, ca.mtimes(self._loop[:, col:col + d].T, lam)))
             col += d
         return out
+
+
+class DeclaredRelation(FrameRelation):
+    """A relation a component writes itself (``StructureBuilder.relation``): ``solve`` maps
+    the index j of a node it can determine to ``f(vals, par) -> (pos_j, extra rows or
+    None)``, ``residual(vals, par)`` gives its rows when it closes a loop (None: it never
+    does), ``rows`` names them (``extra_rows`` the extra rows of a firing). ``vals`` maps
+    node indices to positions, ``par`` lists the local symbols of ``params``. The derived
+    Functions are cached per component class and ``name``: the callables must depend on
+    nothing but their arguments."""
+
+    def __init__(self, owner, ports, params, solve, residual, rows, extra_rows, name):
+        self.dims = tuple(p.domain.dim for p in ports)
+        self._solve, self._residual_of = dict(solve or {}), residual
+        self._rows, self._extra_rows = tuple(rows), tuple(extra_rows)
+        super().__init__(owner, ports, params)
+        self._key = (type(owner), name)
+
+    @property
+    def kind(self):
+        return self._key
+
+    def can_solve(self, j: int) -> bool:
+        return j in self._solve
+
+    def solve_local(self, j, vals, par):
+        return self._solve[j](vals, par)
+
+    def residual_local(self, vals, par):
+        return self._residual_of(vals, par)
+
+    def loop_residual(self, node_values):
+        if self._residual_of is None:
+            raise StructureError(
+                f"{type(self.owner).__name__} '{self.owner.path}' closes a kinematic loop in "
+                f"a way it cannot (all its frames are fixed by other paths); open the loop "
+                f"at another joint")
+        return super().loop_residual(node_values)
+
+    def row_names(self, extra):
+        return self._extra_rows if extra else self._rows
 
 
 class RigidTransform(FrameRelation):
@@ -393,10 +439,6 @@ class SpatialRelation(FrameRelation):
 
     def row_names(self, extra):
         return FRAME_ROWS
-
-
-#: names of the rows of ``frame_residual``
-FRAME_ROWS = ("r_rel[1]", "r_rel[2]", "r_rel[3]", "residue[1]", "residue[2]", "residue[3]")
 
 
 def frame_residual(expected, actual) -> ca.SX:

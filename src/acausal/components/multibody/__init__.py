@@ -27,10 +27,12 @@ forces, sensors, visualizers, URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
+from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
                     FixedTranslation, PointMass, RotationTypes)
 from .world import GravityTypes, World
 
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
-           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic"]
+           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic",
+           "RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical"]

@@ -1,0 +1,186 @@
+"""Joints that close kinematic loops cheaply (Modelica.Mechanics.MultiBody.Joints):
+RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical, with MSL's names,
+parameters, defaults and sign conventions.
+
+They have no coordinates and no orientation states: each is a constraint between its two
+frames, with fewer rows than a joint of the spanning tree would close the loop with
+(``StructureBuilder.relation``; multipliers -> cut forces and torques by virtual work, so
+MSL's force equations hold without being written). Any loop of 3-D frames also closes
+without them, at a Revolute or Prismatic whose frames are both fixed by other paths (6
+rows, redundant ones found from the rank: ``compiler.loops``).
+"""
+from __future__ import annotations
+
+import casadi as ca
+
+from ... import frames
+from ...core import Parameter
+from ...core.component import who
+from ...errors import ParameterError
+from ..interfaces import unit_direction
+from .interfaces import Animated, Frame_a, Frame_b
+from .world import World
+
+__all__ = ["RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical"]
+
+
+class _TwoFrames(Animated):
+    """MSL's PartialTwoFrames."""
+    frame_a = Frame_a("coordinate system fixed to the joint with one cut-force and "
+                      "cut-torque")
+    frame_b = Frame_b("coordinate system fixed to the joint with one cut-force and "
+                      "cut-torque")
+
+
+def _planar_axes(e):
+    """MSL's (ex_a, ey_a): unit vectors orthogonal to the unit axis e and to each other."""
+    nnx = ca.if_else(ca.fabs(e[0]) > 0.1, ca.vertcat(0, 1, 0),
+                     ca.if_else(ca.fabs(e[1]) > 0.1, ca.vertcat(0, 0, 1), ca.vertcat(1, 0, 0)))
+    ey = ca.cross(e, nnx)
+    ey = ey / ca.norm_2(ey)
+    return ca.cross(ey, e), ey
+
+
+def _rel_position(vals):
+    """r_b − r_a [m] resolved in frame_a, and frame_a's T."""
+    ra, Ta = frames.parts(vals[0])
+    rb, _ = frames.parts(vals[1])
+    return ca.mtimes(Ta, rb - ra), Ta
+
+
+class RevolutePlanarLoopConstraint(_TwoFrames):
+    """Revolute joint that cuts a planar loop with its 2 positional constraints only (MSL):
+    the origin of frame_b lies on the axis n [1] (resolved in frame_a, default {0, 0, 1})
+    through frame_a's origin, ex_a·r_rel_a = ey_a·r_rel_a = 0. The rotation about n and the
+    other constraints of a revolute follow from the planar loop; the cut force along n and
+    the cut torques, which such a loop leaves undetermined, are 0 (frame_a.t = frame_b.t
+    = 0; frame_a.f = [ex_a, ey_a]·f_c). As MSL, it is for loops whose joints all turn about
+    n (MSL asserts it at run time; here a non-planar loop is simply not closed by it)."""
+    n = Parameter((0.0, 0.0, 1.0), "1", "axis of rotation resolved in frame_a (= same as in "
+                                        "frame_b)")
+
+    def structure(self, s):
+        e = unit_direction(self, "n", "(0, 0, 1)")
+
+        def residual(vals, par):
+            ex, ey = _planar_axes(par[0])
+            r_rel, _ = _rel_position(vals)
+            return ca.vertcat(ca.dot(ex, r_rel), ca.dot(ey, r_rel))
+
+        s.relation([self.frame_a, self.frame_b], [e], residual=residual,
+                   rows=("ex_a*r_rel_a", "ey_a*r_rel_a"), name="planar loop constraint")
+
+
+def _rod_length_option(c) -> None:
+    if c.computeRodLength:
+        raise ParameterError(
+            f"{who(c)}: computeRodLength = true (the rod length computed at initialization) "
+            f"is not supported; give the rod length of the assembled configuration")
+
+
+class SphericalSpherical(_TwoFrames):
+    """Two spherical joints joined by a massless rod of ``rodLength`` [m] (MSL's
+    SphericalSpherical): one constraint |r_b − r_a| = rodLength, no states; an optional
+    point mass m [kg] in the middle of the rod (kinetic and potential energy of the mid
+    point). frame_a.t = frame_b.t = 0; records MSL's f_rod [N] (rod force, positive on
+    frame_a when directed from frame_a to frame_b) and rRod_0 [m]. ``computeRodLength``
+    = true is not supported (refused)."""
+    options = {"computeRodLength": False, "showMass": True, "kinematicConstraint": True,
+               "checkTotalPower": False}
+    rodLength = Parameter(1.0, "m", "distance between the origins of frame_a and frame_b",
+                          positive=True)
+    m = Parameter(0.0, "kg", "mass of rod (= point mass located in middle of rod)",
+                  nonnegative=True)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _rod_length_option(self)
+
+    def structure(self, s):
+        def residual(vals, par):
+            r_rel, _ = _rel_position(vals)
+            return ca.norm_2(r_rel) - par[0]
+
+        s.relation([self.frame_a, self.frame_b], [self.rodLength], residual=residual,
+                   rows=("rodLength",), name="rod")
+
+    def physics(self, e):
+        ra, Ta = frames.parts(e.pos(self.frame_a))
+        rb, Tb = frames.parts(e.pos(self.frame_b))
+        r_rod = rb - ra
+        e_rod = frames.resolve2(Ta, r_rod) / ca.norm_2(r_rod)
+        r_cm = ra + r_rod / 2
+        v_cm = (frames.resolve1(Ta, e.vel(self.frame_a)[:3])
+                + frames.resolve1(Tb, e.vel(self.frame_b)[:3])) / 2
+        e.kinetic_energy(0.5 * self.m * ca.dot(v_cm, v_cm))
+        e.potential_energy(self.m * e.outer(World).potential(r_cm))
+        e.variable("f_rod", ca.dot(e.cut_flow(self.frame_a)[:3], e_rod), "N",
+                   "constraint force in direction of the rod (positive on frame_a, when "
+                   "directed from frame_a to frame_b)")
+        for k in range(3):
+            e.variable(f"rRod_0[{k + 1}]", r_rod[k], "m", "position vector from frame_a to "
+                                                          "frame_b resolved in world frame")
+
+
+class UniversalSpherical(_TwoFrames):
+    """A universal joint at frame_a and a spherical joint at frame_b joined by a rigid rod
+    (MSL's UniversalSpherical): one constraint |r_b − r_a| = |rRod_ia| [m], no states. The
+    rod carries frame_ia (origin at frame_a's), oriented analytically as MSL does: axis 1
+    of the universal joint is n1_a [1] (resolved in frame_a), axis 2 is orthogonal to it
+    and to the rod, and frame_ia is parallel to frame_a when both angles are 0, the rod
+    then along rRod_ia (resolved in frame_ia): T_ia = [eRod_ia, e2_ia, e3_ia]·[eRod_a,
+    e2_a, e3_a]ᵀ·T_a. Singular where the rod is parallel to n1_a (as MSL's). frame_b.t =
+    0; records f_rod [N] (positive if the rod is pressed) and rRod_0, rRod_a [m].
+    ``computeRodLength`` = true is not supported (refused)."""
+    options = {"computeRodLength": False, "showUniversalAxes": True,
+               "kinematicConstraint": True, "checkTotalPower": False}
+    n1_a = Parameter((0.0, 0.0, 1.0), "1", "axis 1 of universal joint resolved in frame_a "
+                                           "(axis 2 is orthogonal to axis 1 and to rod)")
+    rRod_ia = Parameter((1.0, 0.0, 0.0), "m", "vector from origin of frame_a to origin of "
+                                              "frame_b, resolved in frame_ia")
+    frame_ia = Frame_a("coordinate system at the origin of frame_a, fixed at the rod "
+                       "connecting the universal with the spherical joint")
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _rod_length_option(self)
+
+    def structure(self, s):
+        def rod_frame(vals, par):
+            n1, r_ia = par
+            r_rel, Ta = _rel_position(vals)
+            length = ca.norm_2(r_ia)
+            e_rod_ia = r_ia / length
+            e2_ia = ca.cross(n1, e_rod_ia)
+            e2_ia = e2_ia / ca.norm_2(e2_ia)
+            e_rod = r_rel / ca.norm_2(r_rel)
+            e2 = ca.cross(n1, e_rod)
+            e2 = e2 / ca.norm_2(e2)
+            T_rel = ca.mtimes(ca.horzcat(e_rod_ia, e2_ia, ca.cross(e_rod_ia, e2_ia)),
+                              ca.horzcat(e_rod, e2, ca.cross(e_rod, e2)).T)
+            ra, _ = frames.parts(vals[0])
+            return frames.pose(ra, ca.mtimes(T_rel, Ta)), ca.norm_2(r_rel) - length
+
+        def residual(vals, par):
+            ia, length_row = rod_frame(vals, par)
+            return ca.vertcat(s.frame_residual(ia, vals[2]), length_row)
+
+        n1 = unit_direction(self, "n1_a", "(0, 0, 1)")
+        s.relation([self.frame_a, self.frame_b, self.frame_ia], [n1, self.rRod_ia],
+                   solve={2: rod_frame}, residual=residual,
+                   rows=tuple(f"frame_ia.{r}" for r in frames.FRAME_ROWS) + ("rodLength",),
+                   extra_rows=("rodLength",), name="rod")
+
+    def physics(self, e):
+        ra, Ta = frames.parts(e.pos(self.frame_a))
+        rb, Tb = frames.parts(e.pos(self.frame_b))
+        r_rod = rb - ra
+        r_a = frames.resolve2(Ta, r_rod)
+        f_b = ca.mtimes([Ta, Tb.T, e.cut_flow(self.frame_b)[:3]])
+        e.variable("f_rod", -ca.dot(f_b, r_a / ca.norm_2(r_a)), "N",
+                   "constraint force in direction of the rod (positive, if rod is pressed)")
+        for k in range(3):
+            e.variable(f"rRod_0[{k + 1}]", r_rod[k], "m", "position vector from origin of "
+                       "frame_a to origin of frame_b resolved in world frame")
+            e.variable(f"rRod_a[{k + 1}]", r_a[k], "m", "position vector from origin of "
+                       "frame_a to origin of frame_b resolved in frame_a")
