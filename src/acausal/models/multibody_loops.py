@@ -12,13 +12,14 @@ from __future__ import annotations
 
 import math
 
-from ..components.multibody import (BodyBox, BodyCylinder, FixedTranslation, Prismatic,
-                                    Revolute, RevolutePlanarLoopConstraint, UniversalSpherical,
-                                    World)
+from ..components.multibody import (BodyBox, BodyCylinder, FixedTranslation, JointSSP,
+                                    Prismatic, Revolute, RevolutePlanarLoopConstraint,
+                                    UniversalSpherical, World)
 from ..components.rotational import Inertia
 from ..core import Model
 
-__all__ = ["MultiBodyFourbar1", "MultiBodyFourbar2", "MultiBodyEngine1a", "ParallelFourbar",
+__all__ = ["MultiBodyFourbar1", "MultiBodyFourbar2", "MultiBodyFourbarAnalytic",
+           "MultiBodyEngine1a", "ParallelFourbar",
            "FOURBAR_START", "ENGINE_START"]
 
 #: MSL's fixed start values of the four-bars: j1.phi = 0 [rad], j1.w = 300 deg/s [rad/s]
@@ -87,6 +88,31 @@ class MultiBodyFourbar2(Model):
         c(self.universalSpherical.frame_a, self.b2.frame_b)
         c(self.b3.frame_a, self.world.frame_b)
         c(self.b3.frame_b, self.j2.frame_a)
+
+
+class MultiBodyFourbarAnalytic(Model):
+    """Loops.Fourbar_analytic: Fourbar1 with the rod b3, its revolutes and the prismatic
+    joint replaced by a JointSSP (rod1Length = |{−1, 0.3, 0.1}| m, n_b = {1, 0, 0},
+    s_offset = −0.2 m, rRod2_ib = {0, 0.2, 0} m) carrying b2 (animation off) at frame_ib:
+    the loop closes in closed form, 1 coordinate (j1.phi), no constraint row. MSL's
+    outputs j2_s = jointSSP.prismatic.distance, j2_v its rate."""
+
+    def __init__(self, name: str | None = None):
+        super().__init__(name or "Fourbar_analytic")
+        self.world = World(animateGravity=False)
+        self.j1 = Revolute(n=(1, 0, 0), stateSelect="always", useAxisFlange=False)
+        self.b1 = BodyCylinder(r=(0, 0.5, 0.1), diameter=0.05)
+        self.b3 = FixedTranslation(r=(1.2, 0, 0), animation=False)
+        self.jointSSP = JointSSP(rod1Length=math.sqrt(1 + 0.09 + 0.01), n_b=(1, 0, 0),
+                                 s_offset=-0.2, rRod2_ib=(0, 0.2, 0), checkTotalPower=True)
+        self.b2 = BodyCylinder(r=(0, 0.2, 0), diameter=0.05, animation=False)
+        c = self.connect
+        c(self.j1.frame_b, self.b1.frame_a)
+        c(self.j1.frame_a, self.world.frame_b)
+        c(self.b3.frame_a, self.world.frame_b)
+        c(self.b1.frame_b, self.jointSSP.frame_a)
+        c(self.b3.frame_b, self.jointSSP.frame_b)
+        c(self.b2.frame_a, self.jointSSP.frame_ib)
 
 
 class MultiBodyEngine1a(Model):

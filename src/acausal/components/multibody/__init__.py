@@ -26,6 +26,7 @@ spatial articulated-body recursion (accelerations come from the dense solve of M
 forces, sensors, visualizers, URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
+from .assemblies import JointSSP
 from .joints import Prismatic, Revolute
 from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
@@ -35,4 +36,5 @@ from .world import GravityTypes, World
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
            "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic",
-           "RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical"]
+           "RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical",
+           "JointSSP"]

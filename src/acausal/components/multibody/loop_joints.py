@@ -105,21 +105,42 @@ class SphericalSpherical(_TwoFrames):
                    rows=("rodLength",), name="rod")
 
     def physics(self, e):
-        ra, Ta = frames.parts(e.pos(self.frame_a))
-        rb, Tb = frames.parts(e.pos(self.frame_b))
-        r_rod = rb - ra
-        e_rod = frames.resolve2(Ta, r_rod) / ca.norm_2(r_rod)
-        r_cm = ra + r_rod / 2
-        v_cm = (frames.resolve1(Ta, e.vel(self.frame_a)[:3])
-                + frames.resolve1(Tb, e.vel(self.frame_b)[:3])) / 2
-        e.kinetic_energy(0.5 * self.m * ca.dot(v_cm, v_cm))
-        e.potential_energy(self.m * e.outer(World).potential(r_cm))
-        e.variable("f_rod", ca.dot(e.cut_flow(self.frame_a)[:3], e_rod), "N",
-                   "constraint force in direction of the rod (positive on frame_a, when "
-                   "directed from frame_a to frame_b)")
-        for k in range(3):
-            e.variable(f"rRod_0[{k + 1}]", r_rod[k], "m", "position vector from frame_a to "
-                                                          "frame_b resolved in world frame")
+        rod_with_mass(e, self.frame_a, self.frame_b, self.m)
+
+
+def rod_with_mass(e, frame_a, frame_b, m, prefix: str = "") -> ca.SX:
+    """MSL's SphericalSpherical rod between two 3-D frames: a point mass m [kg] at its
+    middle (kinetic and potential energy), and its variables under ``prefix``: rRod_0 [m]
+    and f_rod [N], the rod force (positive on frame_a when directed from frame_a to
+    frame_b), MSL's eRod_a·frame_a.f. Half the mass's inertia and weight, f_CM_a/2 (MSL's
+    f_CM_a = m·(a_CM − g) resolved in frame_a), acts at frame_a: the constraint's
+    reaction recorded at frame_a plus that half is MSL's frame_a.f. Returns f_rod."""
+    world = e.outer(World)
+    ra, Ta = frames.parts(e.pos(frame_a))
+    rb, Tb = frames.parts(e.pos(frame_b))
+    r_rod = rb - ra
+    e_rod = frames.resolve2(Ta, r_rod) / ca.norm_2(r_rod)
+    r_cm = ra + r_rod / 2
+    v_cm = (frames.resolve1(Ta, e.vel(frame_a)[:3]) + frames.resolve1(Tb, e.vel(frame_b)[:3])) / 2
+    e.kinetic_energy(0.5 * m * ca.dot(v_cm, v_cm))
+    e.potential_energy(m * world.potential(r_cm))
+    a_cm = (_acceleration_0(e, frame_a, Ta) + _acceleration_0(e, frame_b, Tb)) / 2
+    f_cm = m * frames.resolve2(Ta, a_cm - world.gravity_acceleration(r_cm))
+    f_rod = ca.dot(e.cut_flow(frame_a)[:3] + f_cm / 2, e_rod)
+    e.variable(prefix + "f_rod", f_rod, "N", "constraint force in direction of the rod "
+                                             "(positive on frame_a, when directed from "
+                                             "frame_a to frame_b)")
+    for k in range(3):
+        e.variable(f"{prefix}rRod_0[{k + 1}]", r_rod[k], "m", "position vector from frame_a "
+                                                              "to frame_b resolved in world "
+                                                              "frame")
+    return f_rod
+
+
+def _acceleration_0(e, frame, T):
+    """Acceleration [m/s²] of a 3-D frame's origin, resolved in the world."""
+    vel, acc = e.vel(frame), e.acc(frame)
+    return frames.resolve1(T, acc[:3] + ca.cross(vel[3:], vel[:3]))
 
 
 class UniversalSpherical(_TwoFrames):
