@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from ..components.multibody import (BodyBox, BodyCylinder, FixedTranslation, JointSSP,
+from ..components.multibody import (BodyBox, BodyCylinder, BodyShape, FixedTranslation, JointSSP,
                                     Prismatic, Revolute, RevolutePlanarLoopConstraint,
                                     UniversalSpherical, World)
 from ..components.rotational import Inertia
@@ -159,21 +159,25 @@ class MultiBodyEngine1a(Model):
 
 class ParallelFourbar(Model):
     """A four-bar linkage of 3-D parts whose four Revolutes all turn about z (planar motion
-    of a spatial model): crank j1 at the world origin (BodyBox r = {0, 0.5, 0} m), coupler
-    (r = {1.2, 0.2, 0} m), rocker (r = {0, −0.7, 0} m) hinged by j4 to the ground at
-    {1.2, 0, 0} m (FixedTranslation ``ground``); closed with every angle 0. Gruebler's count
-    is 3·6 − 4·5 = −2, yet it moves with 1 degree of freedom: 3 of the 6 rows that close
-    the loop are redundant (out of the plane). A crank-rocker (Grashof: 0.5 + 1.217 ≤ 0.7 +
-    1.2); gravity along −y, no damping."""
+    of a spatial model): crank j1 at the world origin (BodyShape r = {0, 0.5, 0} m, m = 1
+    kg, I_33 = 0.03 kg.m²), coupler (r = {1.2, 0.2, 0} m, 2 kg, 0.25 kg.m²), rocker (r =
+    {0, −0.7, 0} m, 1.5 kg, 0.07 kg.m²; centres of mass in the middle) hinged by j4 to the
+    ground at {1.2, 0, 0} m (FixedTranslation ``ground``); closed with every angle 0.
+    Gruebler's count is 3·6 − 4·5 = −2, yet it moves with 1 degree of freedom: 3 of the 6
+    rows that close the loop are redundant (out of the plane). A crank-rocker (Grashof:
+    0.5 + 1.217 ≤ 0.7 + 1.2); gravity along −y, no damping."""
+
+    LINKS = {"crank": ((0, 0.5, 0), 1.0, 0.03), "coupler": ((1.2, 0.2, 0), 2.0, 0.25),
+             "rocker": ((0, -0.7, 0), 1.5, 0.07)}
 
     def __init__(self, name: str | None = None):
         super().__init__(name or "ParallelFourbar")
         self.world = World()
         self.ground = FixedTranslation(r=(1.2, 0, 0))
         self.j1, self.j2, self.j3, self.j4 = Revolute(), Revolute(), Revolute(), Revolute()
-        self.crank = BodyBox(r=(0, 0.5, 0), width=0.05)
-        self.coupler = BodyBox(r=(1.2, 0.2, 0), width=0.05)
-        self.rocker = BodyBox(r=(0, -0.7, 0), width=0.05)
+        for link, (r, m, I) in self.LINKS.items():
+            setattr(self, link, BodyShape(r=r, r_CM=tuple(x / 2 for x in r), m=m, I_11=I,
+                                          I_22=I, I_33=I))
         c = self.connect
         c(self.world.frame_b, self.j1.frame_a)
         c(self.j1.frame_b, self.crank.frame_a)
