@@ -116,7 +116,7 @@ class JointSSP(Animated):
                                             self.rod1Length, True)
         e.variable("k1a", k1a, "m2", "discriminant of the length constraint (0: singular "
                                      "position of the loop)")
-        e.indicator("singular", k1a - 1e-10, "m2", "the loop reaches a singular position")
+        e.indicator("singular", k1a, "m2", "the loop reaches a singular position")
         e.terminate(k1a <= 1e-10,
                     f"{self.path}: singular position of loop (either no or two analytic "
                     f"solutions; the mechanism has lost one degree of freedom in this "
