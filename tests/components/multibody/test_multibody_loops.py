@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 import warnings
 
+import casadi as ca
 import numpy as np
 import pytest
 from scipy.optimize import brentq
@@ -204,3 +205,35 @@ def test_joint_ssp_stops_at_the_singular_position_of_its_loop():
     assert res.terminated is not None and "ssp: singular position of loop" in \
         res.terminated.message
     assert abs(res.t[-1] - phi) < 1e-6
+
+
+def _vec(res, name):
+    return np.stack([res[f"{name}[{i}]"] for i in (1, 2, 3)], -1)
+
+
+def test_cut_forces_at_the_loop_closing_joint_are_newton_euler():
+    """In Fourbar1 the loop closes at rev1, whose cut force and torque come from the loop's
+    multipliers (mapped through the twist Jacobian of its 6 rows). With j5's (a tree
+    joint's reaction) they move the rod b3 as MSL's BodyShape equations say: f_a + f_b =
+    m(R(a_0 − g_0) + z×r_CM + w×(w×r_CM)), t_a + t_b + r×f_b = I·z + w×I·w + r_CM×(f_a +
+    f_b), everything resolved in b3's frames (parallel), f_a = −rev1.frame_b.f, f_b =
+    −j5.frame_b.f."""
+    model = MultiBodyFourbar1()
+    m, c, I = model.b3.mass_properties()             # MSL's formulas: tested elsewhere
+    m, c, I = float(m), np.array(c, dtype=float).ravel(), np.array(ca.evalf(I), dtype=float)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = acausal.compile(model).simulate(1.0, x0=FOURBAR_START, guess={"j2.s": -0.2},
+                                              **TOL)
+    T = np.stack([np.stack([res[f"b3.frame_a.R.T[{i},{j}]"] for j in (1, 2, 3)], -1)
+                  for i in (1, 2, 3)], -2)
+    w, z = _vec(res, "b3.body.w_a"), _vec(res, "b3.body.z_a")
+    a = np.einsum("nij,nj->ni", T, _vec(res, "b3.a_0") - _vec(res, "b3.body.g_0"))
+    f = m * (a + np.cross(z, c) + np.cross(w, np.cross(w, c)))
+    t = z @ I + np.cross(w, w @ I) + np.cross(c, f)
+    fa, ta = -_vec(res, "rev1.frame_b.f"), -_vec(res, "rev1.frame_b.t")
+    fb, tb = -_vec(res, "j5.frame_b.f"), -_vec(res, "j5.frame_b.t")
+    assert np.max(np.abs(fa + fb - f)) < 1e-6 * np.max(np.abs(f))
+    r = np.array([-1.0, 0.3, 0.1])
+    assert np.max(np.abs(ta + tb + np.cross(r, fb) - t)) < 1e-6 * np.max(np.abs(t))
+    assert np.max(np.abs(fa)) > 1.0                  # the loop's reaction carries load
