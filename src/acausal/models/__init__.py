@@ -43,6 +43,8 @@ no compiler or simulation imports.
                         with AxisType1/2, GearType1/2, Controller, PathPlanning1
     multibody           MultiBodyPendulum, MultiBodyDoublePendulum: MSL MultiBody's
                         Elementary Pendulum and DoublePendulum; chain: 3-D joint trees
+    multibody_loops     MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
+                        MultiBodyEngine1a: MSL MultiBody's Loops examples; ParallelFourbar
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
@@ -62,6 +64,8 @@ from .heat_losses import RotationalHeatLosses, TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .multibody import MultiBodyDoublePendulum, MultiBodyPendulum, chain
+from .multibody_loops import (MultiBodyEngine1a, MultiBodyFourbar1, MultiBodyFourbar2,
+                              MultiBodyFourbarAnalytic, ParallelFourbar)
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
@@ -79,4 +83,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
            "TranslationalHeatLosses", "RotationalHeatLosses", "ResistorExample",
            "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
-           "MultiBodyDoublePendulum", "chain"]
+           "MultiBodyDoublePendulum", "chain", "MultiBodyFourbar1", "MultiBodyFourbar2",
+           "MultiBodyFourbarAnalytic", "MultiBodyEngine1a", "ParallelFourbar"]

@@ -2,8 +2,9 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass), ``joints`` (Revolute, Prismatic). Names, parameters, defaults, units and sign
-conventions are MSL's, so an MSL MultiBody model translates line by line::
+PointMass), ``joints`` (Revolute, Prismatic), ``loop_joints`` and ``assemblies``. Names,
+parameters, defaults, units and sign conventions are MSL's, so an MSL MultiBody model
+translates line by line::
 
     m.world, m.rev = World(), Revolute(n=(0, 0, 1), useAxisFlange=True)
     m.body = Body(m=1.0, r_CM=(0.5, 0, 0))
@@ -21,9 +22,15 @@ orientation states and no singularity: a body must be connected to the World thr
 joints. ``compiled.lagrange`` gives M(q), the Coriolis/centrifugal terms and gravity as for
 planar models.
 
-Not here yet: free and spherical joints (orientation states), loops of 3-D frames, the
-spatial articulated-body recursion (accelerations come from the dense solve of M(q)),
-forces, sensors, visualizers, URDF import, animation.
+Closed loops: where a joint's frames are both fixed by other paths, it closes the loop
+with 6 constraint rows (position, MSL's Frames.Orientation.equalityConstraint); rows
+redundant at the assembled configuration are found from the rank (``compiled.mobility``).
+``loop_joints`` (RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical)
+close loops with fewer rows, ``assemblies`` (JointSSP) in closed form.
+
+Not here yet: free and spherical joints (orientation states), the other assemblies (JointRRR,
+JointSSR, ...), the spatial articulated-body recursion (accelerations come from the dense
+solve of M(q)), forces, sensors, visualizers, URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .assemblies import JointSSP
