@@ -33,7 +33,7 @@ JointSSR, ...), the spatial articulated-body recursion (accelerations come from 
 solve of M(q)), forces, sensors, visualizers, URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
-from .assemblies import JointSSP
+from .assemblies import JointSSP, JointSSR
 from .joints import Prismatic, Revolute
 from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
@@ -44,4 +44,4 @@ __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
            "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic",
            "RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical",
-           "JointSSP"]
+           "JointSSP", "JointSSR"]
