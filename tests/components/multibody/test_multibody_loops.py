@@ -13,10 +13,9 @@ import pytest
 from scipy.optimize import brentq
 
 import acausal
-from acausal.components.multibody import (Body, BodyShape, Fixed, FixedTranslation, JointSSP,
-                                          JointSSR,
-                                          Revolute, SphericalSpherical, UniversalSpherical,
-                                          World)
+from acausal.components.multibody import (Body, BodyShape, Fixed, FixedTranslation, JointRRR,
+                                          JointSSP, JointSSR, Revolute, SphericalSpherical,
+                                          UniversalSpherical, World)
 from acausal.components.rotational import ConstantSpeed
 from acausal.core import Model
 from acausal.errors import InitializationError
@@ -287,4 +286,36 @@ def test_joint_ssr_equals_the_loop_closed_by_a_spherical_spherical_rod():
     assert np.max(np.abs(a["rod.revolute.phi"] - b["j4.phi"])) < 1e-6
     f = b["rod.f_rod"]
     assert np.max(np.abs(a["rod.f_rod"] - f)) < 1e-5 * np.max(np.abs(f))
+    assert np.ptp(a["j1.phi"]) > 2 * math.pi
+
+
+def test_joint_rrr_equals_the_four_bar_closed_by_revolutes():
+    """ParallelFourbar rebuilt with a JointRRR (rRod1_ia = the coupler, rRod2_ib = the
+    rocker from its pivot; coupler and rocker bodies on frame_ia and frame_ib): 1
+    coordinate and no row instead of 4 coordinates and 6 rows (3 redundant), the same
+    motion: crank and rocker angles to 1e-6 rad, the coupler's angular velocity (its
+    frame_ia orientation, MSL's universal-joint rod frame) to 1e-5 rad/s, over 3 s."""
+    m = Model("rrr")
+    m.world, m.j1, m.ground = World(), Revolute(), FixedTranslation(r=(1.2, 0, 0))
+    for link, (r, mass, I) in ParallelFourbar.LINKS.items():
+        r = (0, 0.7, 0) if link == "rocker" else r            # from the pivot, up
+        setattr(m, link, BodyShape(r=r, r_CM=tuple(x / 2 for x in r), m=mass, I_11=I, I_22=I,
+                                   I_33=I))
+    m.rrr = JointRRR(rRod1_ia=(1.2, 0.2, 0), rRod2_ib=(0, 0.7, 0), positiveBranch=False)
+    for a, b in ((m.world.frame_b, m.j1.frame_a), (m.j1.frame_b, m.crank.frame_a),
+                 (m.world.frame_b, m.ground.frame_a), (m.crank.frame_b, m.rrr.frame_a),
+                 (m.ground.frame_b, m.rrr.frame_b), (m.rrr.frame_ia, m.coupler.frame_a),
+                 (m.rrr.frame_ib, m.rocker.frame_a)):
+        m.connect(a, b)
+    t = np.linspace(0.0, 3.0, 301)
+    x0 = {"j1.phi": 0.0, "j1.w": 3.0}
+    analytic = acausal.compile(m)
+    assert (analytic.coordinates, analytic.loop_rows) == (["j1.phi"], [])
+    a = analytic.simulate(3.0, t=t, x0=x0, **TOL)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        b = acausal.compile(ParallelFourbar()).simulate(3.0, t=t, x0=x0, **TOL)
+    assert np.max(np.abs(a["j1.phi"] - b["j1.phi"])) < 1e-6
+    assert np.max(np.abs(a["rrr.revolute.phi"] - b["j4.phi"])) < 1e-6
+    assert np.max(np.abs(a["coupler.body.w_a[3]"] - b["coupler.body.w_a[3]"])) < 1e-5
     assert np.ptp(a["j1.phi"]) > 2 * math.pi

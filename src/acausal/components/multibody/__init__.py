@@ -26,14 +26,15 @@ Closed loops: where a joint's frames are both fixed by other paths, it closes th
 with 6 constraint rows (position, MSL's Frames.Orientation.equalityConstraint); rows
 redundant at the assembled configuration are found from the rank (``compiled.mobility``).
 ``loop_joints`` (RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical)
-close loops with fewer rows, ``assemblies`` (JointSSP) in closed form.
+close loops with fewer rows, ``assemblies`` (JointSSP, JointSSR, JointUSR, JointRRR) in
+closed form.
 
-Not here yet: free and spherical joints (orientation states), the other assemblies (JointRRR,
-JointSSR, ...), the spatial articulated-body recursion (accelerations come from the dense
+Not here yet: free and spherical joints (orientation states), the other assemblies (JointRRP,
+JointUPS, JointUSP), the spatial articulated-body recursion (accelerations come from the dense
 solve of M(q)), forces, sensors, visualizers, URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
-from .assemblies import JointSSP, JointSSR
+from .assemblies import JointRRR, JointSSP, JointSSR, JointUSR
 from .joints import Prismatic, Revolute
 from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
@@ -44,4 +45,4 @@ __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
            "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic",
            "RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical",
-           "JointSSP", "JointSSR"]
+           "JointSSP", "JointSSR", "JointUSR", "JointRRR"]

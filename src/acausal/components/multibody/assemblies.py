@@ -1,6 +1,6 @@
 """Joint assemblies that close a kinematic loop analytically
-(Modelica.Mechanics.MultiBody.Joints.Assemblies): JointSSP and JointSSR, with MSL's names,
-parameters, defaults and sign conventions.
+(Modelica.Mechanics.MultiBody.Joints.Assemblies): JointSSP, JointSSR, JointUSR and JointRRR,
+with MSL's names, parameters, defaults and sign conventions.
 
 As in MSL, the assembly computes the coordinate of its joint with a length constraint
 (MSL's Internal.PrismaticWithLengthConstraint / RevoluteWithLengthConstraint) in closed
@@ -26,9 +26,10 @@ from ...core import Parameter, RotationalFlange, TranslationalFlange
 from ...core.ports import ROTATIONAL, TRANSLATIONAL
 from ..interfaces import unit_direction
 from .interfaces import Animated, Frame_a, Frame_b
-from .loop_joints import rod_with_mass
+from .loop_joints import rod_with_mass, universal_rod_frame
 
-__all__ = ["JointSSP", "JointSSR", "length_constraint_distance", "length_constraint_angle"]
+__all__ = ["JointSSP", "JointSSR", "JointUSR", "JointRRR", "length_constraint_distance",
+           "length_constraint_angle"]
 
 
 def length_constraint_distance(r_a, r_b, e, length, positive: bool):
@@ -60,21 +61,19 @@ def length_constraint_angle(r_a, r_b, e, length, positive: bool):
 
 
 class _LengthConstraintAssembly(Animated):
-    """MSL's JointSSP / JointSSR: rod1 (length rod1Length [m], optional point mass rod1Mass
-    [kg] in its middle) joins frame_a by a spherical joint to frame_im, which rod2 (rRod2_ib
-    [m], resolved in frame_ib) holds fixed to frame_ib; frame_ib moves relative to frame_b
-    by the joint (axis n_b [1], resolved in frame_b) whose coordinate follows from the
-    positions of frame_a and frame_b in closed form. ``axis`` follows the joint's
-    coordinate and ``bearing`` is fixed (MSL's), so a 1-D drive can act on the joint.
+    """MSL's JointSSP / JointSSR / JointUSR: rod1 joins frame_a to frame_im (a spherical
+    joint there), which rod2 (rRod2_ib [m], resolved in frame_ib) holds fixed to frame_ib;
+    frame_ib moves relative to frame_b by the joint (axis n_b [1], resolved in frame_b)
+    whose coordinate follows from the positions of frame_a and frame_b in closed form, for
+    the rod length. ``axis`` follows the joint's coordinate and ``bearing`` is fixed (MSL's),
+    so a 1-D drive can act on the joint. Records k1a (the closed form's discriminant).
 
-    Subclasses give the joint's kind: ``_joint`` (its name in MSL), ``_domain``, ``_flange``,
-    ``_coordinates`` (MSL's names of the offset coordinate and the coordinate),
-    ``_closed_form`` and ``_offset()`` [m or rad], and ``_declare_joint``."""
-    options = {"positiveBranch": True, "showMass": True, "checkTotalPower": False}
-    rod1Length = Parameter(1.0, "m", "distance between the origins of frame_a and frame_im "
-                                     "(rod 1)", positive=True)
-    rod1Mass = Parameter(0.0, "kg", "mass of rod 1 (= point mass located in middle of rod)",
-                         nonnegative=True)
+    The rod (``_SphericalRod``, ``_UniversalRod``) gives ``_length()`` [m],
+    ``_rod_structure`` and ``_rod_physics``; the joint (``_PrismaticJoint``,
+    ``_RevoluteJoint``) its MSL name ``_joint``, ``_domain``, ``_coordinates`` (MSL's names
+    of the coordinate with and without offset), ``_closed_form``, ``_offset()`` [m or rad]
+    and ``_declare_joint``."""
+    options = {"positiveBranch": True, "checkTotalPower": False}
     n_b = Parameter((0.0, 0.0, 1.0), "1", "axis of the joint fixed and resolved in frame_b")
     rRod2_ib = Parameter((1.0, 0.0, 0.0), "m", "vector from origin of frame_ib to spherical "
                                                "joint in the middle, resolved in frame_ib")
@@ -86,14 +85,18 @@ class _LengthConstraintAssembly(Animated):
     frame_im = Frame_b("coordinate system at origin of spherical joint in the middle fixed "
                        "at the joint")
 
-    def _inputs(self, vals_a, vals_b):
+    @staticmethod
+    def _inputs(vals_a, vals_b):
         """r_a: frame_a's origin relative to frame_b, resolved in frame_b [m]."""
         ra, _ = frames.parts(vals_a)
         rb, Tb = frames.parts(vals_b)
         return ca.mtimes(Tb, ra - rb)
 
+    def _axis_b(self):
+        return unit_direction(self, "n_b", "(0, 0, 1)")
+
     def structure(self, s):
-        e_b = unit_direction(self, "n_b", "(0, 0, 1)")
+        e_b = self._axis_b()
         branch = bool(self.positiveBranch)
         total, own = self._coordinates
         q_total = s.node(f"{self._joint}.{total}", self._domain, preferred=False)
@@ -107,8 +110,7 @@ class _LengthConstraintAssembly(Animated):
         def residual(vals, par):
             return vals[2] - solve(vals, par)[0]
 
-        s.relation([self.frame_a, self.frame_b, q_total], [e_b, self.rRod2_ib,
-                                                           self.rod1Length],
+        s.relation([self.frame_a, self.frame_b, q_total], [e_b, self.rRod2_ib, self._length()],
                    solve={2: solve}, residual=residual, rows=(total,),
                    name=f"length constraint {'+' if branch else '-'}")
         s.linear({q_total: 1.0, q: -1.0}, self._offset(), f"{self.path}: offset")
@@ -116,14 +118,12 @@ class _LengthConstraintAssembly(Animated):
         s.transform(self.frame_ib, self.frame_im, self.rRod2_ib)
         s.linear({self.axis: 1.0, q: -1.0}, 0.0, f"{self.path}: axis")
         s.linear({self.bearing: 1.0}, 0.0, f"{self.path}: bearing")
+        self._rod_structure(s)
 
     def physics(self, e):
-        f_rod = rod_with_mass(e, self.frame_a, self.frame_im, self.rod1Mass, "rod1.")
-        e.variable("f_rod", f_rod, "N", "constraint force in direction of the rod (positive "
-                                        "on frame_a, when directed from frame_a to frame_im)")
+        self._rod_physics(e)
         r_a = self._inputs(e.pos(self.frame_a), e.pos(self.frame_b))
-        _, k1a = self._closed_form(r_a, self.rRod2_ib, unit_direction(self, "n_b", "(0, 0, 1)"),
-                                   self.rod1Length, True)
+        _, k1a = self._closed_form(r_a, self.rRod2_ib, self._axis_b(), self._length(), True)
         e.variable("k1a", k1a, self._k1a_unit, "discriminant of the length constraint (0: "
                                                "singular position of the loop)")
         e.indicator("singular", k1a, self._k1a_unit, "the loop reaches a singular position")
@@ -133,15 +133,73 @@ class _LengthConstraintAssembly(Animated):
                     f"position); build the loop with basic joints instead")
 
 
-class JointSSP(_LengthConstraintAssembly):
-    """Spherical - spherical - prismatic joint aggregation (MSL's JointSSP), no constraints
-    and no states (see ``_LengthConstraintAssembly``): frame_ib slides along n_b from
-    frame_b by the prismatic joint's distance = s_offset + s [m], from
-    ``length_constraint_distance``; ``axis``.s = s, a translational flange.
+class _SphericalRod:
+    """rod1 of JointSSP / JointSSR: spherical joints at both ends, length rod1Length [m], an
+    optional point mass rod1Mass [kg] in its middle; records f_rod [N] (MSL's sign: positive
+    on frame_a, when directed from frame_a to frame_im), rod1.f_rod and rod1.rRod_0."""
+    options = {"showMass": True}
+    rod1Length = Parameter(1.0, "m", "distance between the origins of frame_a and frame_im "
+                                     "(rod 1)", positive=True)
+    rod1Mass = Parameter(0.0, "kg", "mass of rod 1 (= point mass located in middle of rod)",
+                         nonnegative=True)
 
-    Records prismatic.distance, prismatic.s [m], f_rod [N] (rod1's force, MSL's sign; also
-    rod1.f_rod, rod1.rRod_0) and k1a [m²] (the discriminant). MSL's s_guess is accepted; it
-    does not choose the branch here (``positiveBranch``)."""
+    def _length(self):
+        return self.rod1Length
+
+    def _rod_structure(self, s):
+        pass
+
+    def _rod_physics(self, e):
+        f_rod = rod_with_mass(e, self.frame_a, self.frame_im, self.rod1Mass, "rod1.")
+        e.variable("f_rod", f_rod, "N", "constraint force in direction of the rod (positive "
+                                        "on frame_a, when directed from frame_a to frame_im)")
+
+
+class _UniversalRod:
+    """rod1 of JointUSR / JointRRR: a universal joint at frame_a (axis 1 n1_a [1], resolved in
+    frame_a) and a spherical joint at frame_im, the rod rRod1_ia [m] resolved in frame_ia,
+    the frame fixed to the rod at frame_a's origin (MSL's UniversalSpherical rod frame:
+    ``loop_joints.universal_rod_frame``); massless, length |rRod1_ia|. Not recorded: MSL's
+    f_rod (the rod's share of frame_a's cut force, which frame_ia's loads also enter)."""
+    options = {"showUniversalAxes": True}
+    n1_a = Parameter((0.0, 0.0, 1.0), "1", "axis 1 of universal joint fixed and resolved in "
+                                           "frame_a (axis 2 is orthogonal to axis 1 and to "
+                                           "rod 1)")
+    rRod1_ia = Parameter((1.0, 0.0, 0.0), "m", "vector from origin of frame_a to spherical "
+                                               "joint in the middle, resolved in frame_ia")
+    frame_ia = Frame_a("coordinate system at origin of frame_a fixed at connecting rod of "
+                       "universal and spherical joint")
+
+    def _length(self):
+        return ca.norm_2(self.rRod1_ia)
+
+    def _axis_1(self):
+        return unit_direction(self, "n1_a", "(0, 0, 1)")
+
+    def _rod_structure(self, s):
+        def rod_frame(vals, par):
+            n1, r_ia = par
+            ra, Ta = frames.parts(vals[0])
+            rm, _ = frames.parts(vals[1])
+            return universal_rod_frame(vals[0], ca.mtimes(Ta, rm - ra), n1, r_ia), None
+
+        def residual(vals, par):
+            return s.frame_residual(rod_frame(vals, par)[0], vals[2])
+
+        s.relation([self.frame_a, self.frame_im, self.frame_ia], [self._axis_1(),
+                                                                  self.rRod1_ia],
+                   solve={2: rod_frame}, residual=residual,
+                   rows=tuple(f"frame_ia.{r}" for r in frames.FRAME_ROWS), name="rod frame")
+
+    def _rod_physics(self, e):
+        pass
+
+
+class _PrismaticJoint:
+    """The prismatic joint with length constraint (MSL's PrismaticWithLengthConstraint):
+    frame_ib slides along n_b from frame_b by distance = s_offset + s [m]
+    (``length_constraint_distance``); ``axis``.s = s; records prismatic.distance,
+    prismatic.s. MSL's s_guess is accepted; it does not choose the branch here."""
     _joint, _domain, _coordinates, _k1a_unit = "prismatic", TRANSLATIONAL, ("distance", "s"), "m2"
     _closed_form = staticmethod(length_constraint_distance)
     s_offset = Parameter(0.0, "m", "relative distance offset of prismatic joint (distance "
@@ -158,16 +216,12 @@ class JointSSP(_LengthConstraintAssembly):
         s.prismatic(self.frame_b, self.frame_ib, distance, e_b)
 
 
-class JointSSR(_LengthConstraintAssembly):
-    """Spherical - spherical - revolute joint aggregation (MSL's JointSSR), no constraints
-    and no states (see ``_LengthConstraintAssembly``): frame_ib turns about n_b from
-    frame_b by the revolute joint's angle = phi_offset + phi [rad], from
-    ``length_constraint_angle``; ``axis``.phi = phi, a rotational flange.
-
-    Records revolute.angle, revolute.phi [rad], f_rod [N] (rod1's force, MSL's sign; also
-    rod1.f_rod, rod1.rRod_0) and k1a [m⁴] (the discriminant). phi_offset, phi_guess are in
-    degrees as MSL's; phi_guess is accepted and does not choose the branch here
-    (``positiveBranch``)."""
+class _RevoluteJoint:
+    """The revolute joint with length constraint (MSL's RevoluteWithLengthConstraint):
+    frame_ib turns about n_b from frame_b by angle = phi_offset + phi [rad]
+    (``length_constraint_angle``); ``axis``.phi = phi; records revolute.angle, revolute.phi.
+    phi_offset, phi_guess in degrees (MSL's); phi_guess is accepted, it does not choose the
+    branch here."""
     _joint, _domain, _coordinates, _k1a_unit = "revolute", ROTATIONAL, ("angle", "phi"), "m4"
     _closed_form = staticmethod(length_constraint_angle)
     phi_offset = Parameter(0.0, "deg", "relative angle offset of revolute joint (angle = "
@@ -183,3 +237,49 @@ class JointSSR(_LengthConstraintAssembly):
 
     def _declare_joint(self, s, angle, e_b):
         s.revolute(self.frame_b, self.frame_ib, angle, n=e_b)
+
+
+class JointSSP(_SphericalRod, _PrismaticJoint, _LengthConstraintAssembly):
+    """Spherical - spherical - prismatic joint aggregation (MSL's JointSSP), no constraints
+    and no states: rod1 with spherical joints (``_SphericalRod``) and the prismatic joint
+    with length constraint (``_PrismaticJoint``), closed in closed form
+    (``_LengthConstraintAssembly``)."""
+
+
+class JointSSR(_SphericalRod, _RevoluteJoint, _LengthConstraintAssembly):
+    """Spherical - spherical - revolute joint aggregation (MSL's JointSSR), no constraints
+    and no states: rod1 with spherical joints (``_SphericalRod``) and the revolute joint
+    with length constraint (``_RevoluteJoint``), closed in closed form
+    (``_LengthConstraintAssembly``)."""
+
+
+class JointUSR(_UniversalRod, _RevoluteJoint, _LengthConstraintAssembly):
+    """Universal - spherical - revolute joint aggregation (MSL's JointUSR), no constraints
+    and no states: rod1 with a universal joint at frame_a carrying frame_ia
+    (``_UniversalRod``) and the revolute joint with length constraint (``_RevoluteJoint``),
+    closed in closed form (``_LengthConstraintAssembly``). rRod2_ib default {−1, 0, 0} m
+    (MSL's)."""
+    rRod2_ib = Parameter((-1.0, 0.0, 0.0), "m", "vector from origin of frame_ib to spherical "
+                                                "joint in the middle, resolved in frame_ib")
+
+
+class JointRRR(JointUSR):
+    """Planar revolute - revolute - revolute joint aggregation (MSL's JointRRR): a JointUSR
+    whose universal joint's first axis is n_a [1] (resolved in frame_a, default {0, 0, 1}),
+    for planar loops whose axes are all parallel to n_a; no constraints, no states.
+
+    Difference from MSL: MSL computes n_b (the revolute's axis, resolved in frame_b) at
+    initialization, n_a resolved in frame_b; here it is a parameter with default n_a (frame_a
+    and frame_b parallel, the usual case); give it where they are not."""
+    n_a = Parameter((0.0, 0.0, 1.0), "1", "axes of revolute joints resolved in frame_a (all "
+                                          "axes are parallel to each other)")
+    n_b = Parameter((0.0, 0.0, 1.0), "1", "axis of revolute joint fixed and resolved in "
+                                          "frame_b (default n_a, taken when built)")
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if "n_b" not in params:
+            self.n_b = self.n_a
+
+    def _axis_1(self):
+        return unit_direction(self, "n_a", "(0, 0, 1)")

@@ -21,7 +21,8 @@ from ..interfaces import unit_direction
 from .interfaces import Animated, Frame_a, Frame_b
 from .world import World
 
-__all__ = ["RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical"]
+__all__ = ["RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical",
+           "rod_with_mass", "universal_rod_frame"]
 
 
 class _TwoFrames(Animated):
@@ -143,6 +144,21 @@ def _acceleration_0(e, frame, T):
     return frames.resolve1(T, acc[:3] + ca.cross(vel[3:], vel[:3]))
 
 
+def universal_rod_frame(pose_a, r_rel, n1, r_ia):
+    """MSL's UniversalSpherical rod frame: the pose of frame_ia (origin at frame_a's) for the
+    rod r_rel [m] (frame_a to the spherical joint, resolved in frame_a), axis 1 of the
+    universal joint n1 (unit, resolved in frame_a) and the rod r_ia [m] resolved in
+    frame_ia: T_ia = [eRod_ia, e2_ia, e3_ia]·[eRod_a, e2_a, e3_a]ᵀ·T_a, e2 ∥ n1 × eRod."""
+    def axes(e_rod):
+        e2 = ca.cross(n1, e_rod)
+        e2 = e2 / ca.norm_2(e2)
+        return ca.horzcat(e_rod, e2, ca.cross(e_rod, e2))
+
+    ra, Ta = frames.parts(pose_a)
+    T_rel = ca.mtimes(axes(r_ia / ca.norm_2(r_ia)), axes(r_rel / ca.norm_2(r_rel)).T)
+    return frames.pose(ra, ca.mtimes(T_rel, Ta))
+
+
 class UniversalSpherical(_TwoFrames):
     """A universal joint at frame_a and a spherical joint at frame_b joined by a rigid rod
     (MSL's UniversalSpherical): one constraint |r_b − r_a| = |rRod_ia| [m], no states. The
@@ -169,18 +185,9 @@ class UniversalSpherical(_TwoFrames):
     def structure(self, s):
         def rod_frame(vals, par):
             n1, r_ia = par
-            r_rel, Ta = _rel_position(vals)
-            length = ca.norm_2(r_ia)
-            e_rod_ia = r_ia / length
-            e2_ia = ca.cross(n1, e_rod_ia)
-            e2_ia = e2_ia / ca.norm_2(e2_ia)
-            e_rod = r_rel / ca.norm_2(r_rel)
-            e2 = ca.cross(n1, e_rod)
-            e2 = e2 / ca.norm_2(e2)
-            T_rel = ca.mtimes(ca.horzcat(e_rod_ia, e2_ia, ca.cross(e_rod_ia, e2_ia)),
-                              ca.horzcat(e_rod, e2, ca.cross(e_rod, e2)).T)
-            ra, _ = frames.parts(vals[0])
-            return frames.pose(ra, ca.mtimes(T_rel, Ta)), ca.norm_2(r_rel) - length
+            r_rel, _ = _rel_position(vals)
+            return universal_rod_frame(vals[0], r_rel, n1, r_ia), \
+                ca.norm_2(r_rel) - ca.norm_2(r_ia)
 
         def residual(vals, par):
             ia, length_row = rod_frame(vals, par)
