@@ -89,6 +89,15 @@ def test_spatial_fourbar_moves_with_one_degree_of_freedom_and_stays_closed():
     assert np.max(np.abs(tip - [1.2, 0.0])) < 1e-9
     assert np.max(np.abs(np.angle(np.exp(1j * (p1 + p2 + p3 - p4))))) < 1e-9
     assert np.ptp(p1) > 6 * 2 * math.pi                          # the crank turns round
+    # Lagrange's Φ and Φ_q along the motion: 0, rank 3, the speeds in their null space
+    f = compiled.lagrange.function("phi", "phi_q")
+    p = compiled.param_vector()
+    for k in range(0, len(res.t), 50):
+        q = [res[n][k] for n in compiled.coordinates]
+        qd = [res[n][k] for n in compiled.lagrange.qd_names]
+        phi, J = (np.array(v, dtype=float) for v in f(res.t[k], q, qd, [], p))
+        assert np.max(np.abs(phi)) < 1e-9 and np.linalg.matrix_rank(J, 1e-9) == 3
+        assert np.max(np.abs(J @ qd)) < 1e-8
     E = 0.0
     for link, (r, m, I) in ParallelFourbar.LINKS.items():
         c = np.array(r) / 2
@@ -100,6 +109,26 @@ def test_spatial_fourbar_moves_with_one_degree_of_freedom_and_stays_closed():
         v_cm = v0[:, :2] + w[:, None] * _planar(ang + math.pi / 2, c)
         E = E + 0.5 * m * np.sum(v_cm ** 2, 1) + 0.5 * I * w ** 2 + m * G * r_cm[:, 1]
     assert np.ptp(E) < 1e-7 * np.max(np.abs(E))
+
+
+def test_revolute_planar_loop_constraint_cut_forces_are_msl_s():
+    """Engine1a's RevolutePlanarLoopConstraint b2: MSL's cut forces: no torques at either
+    frame, no force along the axis n = {1, 0, 0}, frame_b.f = −R_rel·frame_a.f (the frames
+    turn about n by the angle between them); the force in the plane carries the engine
+    (non-zero)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = acausal.compile(MultiBodyEngine1a()).simulate(
+            0.5, x0=ENGINE_START, guess={"cylinder.s": 0.15}, **TOL)
+    fa, fb = _vec(res, "b2.frame_a.f"), _vec(res, "b2.frame_b.f")
+    for frame in ("frame_a", "frame_b"):
+        assert np.max(np.abs(_vec(res, f"b2.{frame}.t"))) < 1e-9
+    assert np.max(np.abs(fa[:, 0])) < 1e-9 * np.max(np.abs(fa))
+    T = {k: np.stack([np.stack([res[f"b2.{k}.R.T[{i},{j}]"] for j in (1, 2, 3)], -1)
+                      for i in (1, 2, 3)], -2) for k in ("frame_a", "frame_b")}
+    R_rel = np.einsum("nij,nkj->nik", T["frame_b"], T["frame_a"])
+    assert np.max(np.abs(fb + np.einsum("nij,nj->ni", R_rel, fa))) < 1e-9 * np.max(np.abs(fa))
+    assert np.max(np.abs(fa)) > 10.0
 
 
 def test_fixed_frame_on_the_world_frame_is_a_harmless_redundant_loop():
