@@ -119,9 +119,11 @@ class MultiBodyEngine1a(Model):
     """Loops.Engine1a: the one-cylinder engine of Engine1Base (crank of BodyCylinders and
     BodyBoxes on the bearing, output Inertia J = 1 kg.m²) closed by a planar slider-crank
     loop: Revolute b1, RevolutePlanarLoopConstraint b2 (2 rows), Prismatic cylinder along
-    {0, −1, 0}."""
+    {0, −1, 0}. With ``planarLoopConstraint=False``, b2 is a plain Revolute: the planar loop
+    MSL's documentation warns about (over-constrained: 6 rows, 3 redundant, which the
+    compiler finds from the rank)."""
 
-    def __init__(self, name: str | None = None):
+    def __init__(self, name: str | None = None, planarLoopConstraint: bool = True):
         super().__init__(name or "Engine1a")
         self.world = World()
         self.piston = BodyCylinder(diameter=0.1, r=(0, -0.1, 0))
@@ -138,7 +140,8 @@ class MultiBodyEngine1a(Model):
         self.mid = FixedTranslation(r=(0.05, 0, 0))
         self.cylPosition = FixedTranslation(animation=False, r=(0.15, 0.45, 0))
         self.b1 = Revolute(n=(1, 0, 0))
-        self.b2 = RevolutePlanarLoopConstraint(n=(1, 0, 0))
+        self.b2 = (RevolutePlanarLoopConstraint if planarLoopConstraint else Revolute)(
+            n=(1, 0, 0))
         self.cylinder = Prismatic(n=(0, -1, 0))
         c = self.connect
         c(self.world.frame_b, self.bearing.frame_a)

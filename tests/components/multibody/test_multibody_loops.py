@@ -60,6 +60,24 @@ def test_msl_loop_examples_match_the_reference(reference_result, model, msl, x0,
         assert np.max(np.abs(res[name] - ref[name])) < 2e-3 * np.max(np.abs(ref[name])), name
 
 
+def test_engine_with_a_plain_revolute_closing_its_planar_loop(reference_result):
+    """Engine1a with b2 a Revolute instead of MSL's RevolutePlanarLoopConstraint: the loop
+    closes at the cylinder's Prismatic with 6 rows, 3 of them redundant (found from the
+    rank), and the engine still matches the Engine1a reference within 2e-3 of the peaks."""
+    ref = reference_result("MAP-LIB_ReferenceResults", LOOPS + "Engine1a")
+    compiled = acausal.compile(MultiBodyEngine1a(planarLoopConstraint=False))
+    assert compiled.loop_rows[0].startswith("cylinder.")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = compiled.simulate(float(ref["time"][-1]), t=ref["time"], x0=ENGINE_START,
+                                guess={"cylinder.s": 0.15}, rtol=1e-9, atol=1e-11)
+    mob = res.mobility
+    assert (mob.coordinates, mob.constraints, mob.gruebler, mob.dof) == (4, 6, -2, 1)
+    assert len(mob.redundant) == 3
+    for name in ("inertia.phi", "inertia.w"):
+        assert np.max(np.abs(res[name] - ref[name])) < 2e-3 * np.max(np.abs(ref[name])), name
+
+
 def _planar(angle, v):
     c, s = np.cos(angle), np.sin(angle)
     return np.stack([c * v[0] - s * v[1], s * v[0] + c * v[1]], -1)
