@@ -65,11 +65,10 @@ class MultiBodyFourbar1(Model):
 
 class MultiBodyFourbar2(Model):
     """Loops.Fourbar2: Fourbar1 with the rod b3 and its five revolutes replaced by a
-    massless UniversalSpherical (n1_a = {0, 1, 0}, rRod_ia = {−1, 0.3, 0.1} m): one
-    constraint row. Difference from MSL: MSL computes the rod length at initialization
-    (computeRodLength = true, with j2.s = −0.2 fixed); that is |rRod_ia| there (the loop
-    closes with every joint at 0), which this model uses directly. MSL's FixedFrame on
-    frame_ia (a visualizer) is left out."""
+    massless UniversalSpherical (n1_a = {0, 1, 0}, computeRodLength = true, rRod_ia =
+    {−1, 0.3, 0.1} m): one constraint row; the rod length is computed at initialization
+    from j1.phi = 0 and j2.s = −0.2 m, both fixed (x0). MSL's FixedFrame on frame_ia (a
+    visualizer) is left out."""
 
     def __init__(self, name: str | None = None):
         super().__init__(name or "Fourbar2")
@@ -78,7 +77,8 @@ class MultiBodyFourbar2(Model):
         self.j2 = Prismatic(n=(1, 0, 0))
         self.b1 = BodyCylinder(r=(0, 0.5, 0.1), diameter=0.05)
         self.b2 = BodyCylinder(r=(0, 0.2, 0), diameter=0.05)
-        self.universalSpherical = UniversalSpherical(n1_a=(0, 1, 0), rRod_ia=(-1, 0.3, 0.1))
+        self.universalSpherical = UniversalSpherical(n1_a=(0, 1, 0), computeRodLength=True,
+                                                     rRod_ia=(-1, 0.3, 0.1))
         self.b3 = FixedTranslation(r=(1.2, 0, 0), animation=False)
         c = self.connect
         c(self.j2.frame_b, self.b2.frame_a)

@@ -203,6 +203,20 @@ def test_loop_joint_rod_forces_are_the_statics(rod, at_tip, sign):
     assert np.max(np.abs(res["rev.frame_a.f[2]"] - 2.0 * G / 2)) < 1e-8
 
 
+def test_rod_length_computed_at_initialization():
+    """Fourbar2's UniversalSpherical has computeRodLength = true: the length comes from the
+    configuration x0 fixes (j1.phi = 0, j2.s = −0.2 m: |{−1, 0.3, 0.1}| m) whatever the
+    guess (rRod_ia twice as long, only its direction counts), and stays constant."""
+    compiled = acausal.compile(MultiBodyFourbar2())
+    params = {f"universalSpherical.rRod_ia[{k + 1}]": 2 * v
+              for k, v in enumerate((-1, 0.3, 0.1))}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = compiled.simulate(1.0, x0=dict(FOURBAR_START, **{"j2.s": -0.2}), params=params,
+                                **TOL)
+    assert np.max(np.abs(res["universalSpherical.rodLength"] - math.sqrt(1.1))) < 1e-10
+
+
 def test_joint_ssp_equals_the_universal_spherical_four_bar():
     """Fourbar_analytic (JointSSP, closed form) and Fourbar2 (UniversalSpherical, one
     constraint row) are the same mechanism with a massless rod: the slider's distance and

@@ -15,8 +15,6 @@ import casadi as ca
 
 from ... import frames
 from ...core import Parameter
-from ...core.component import who
-from ...errors import ParameterError
 from ..interfaces import unit_direction
 from .interfaces import Animated, Frame_a, Frame_b
 from .world import World
@@ -72,11 +70,16 @@ class RevolutePlanarLoopConstraint(_TwoFrames):
                    rows=("ex_a*r_rel_a", "ey_a*r_rel_a"), name="planar loop constraint")
 
 
-def _rod_length_option(c) -> None:
-    if c.computeRodLength:
-        raise ParameterError(
-            f"{who(c)}: computeRodLength = true (the rod length computed at initialization) "
-            f"is not supported; give the rod length of the assembled configuration")
+def _rod_length(c, s, length):
+    """The rod length [m]: ``length`` (an expression of parameters), or with
+    ``computeRodLength`` a constant the initialization computes (MSL's parameter with
+    fixed = false): a state with der = 0 starting at ``length``, fixed where the start
+    values (x0) fix the loop's configuration, recorded as ``rodLength``."""
+    if not c.computeRodLength:
+        return length
+    return s.state("rodLength", start=length, unit="m", der=0.0,
+                   description="distance between the origins of frame_a and frame_b "
+                               "(computed at initialization)")
 
 
 class SphericalSpherical(_TwoFrames):
@@ -85,7 +88,8 @@ class SphericalSpherical(_TwoFrames):
     point mass m [kg] in the middle of the rod (kinetic and potential energy of the mid
     point). frame_a.t = frame_b.t = 0; records MSL's f_rod [N] (rod force, positive on
     frame_a when directed from frame_a to frame_b) and rRod_0 [m]. ``computeRodLength``
-    = true is not supported (refused)."""
+    = true: rodLength is the guess, the length computed at initialization (``_rod_length``).
+    ``kinematicConstraint`` (for MSL's assemblies) is accepted and changes nothing."""
     options = {"computeRodLength": False, "showMass": True, "kinematicConstraint": True,
                "checkTotalPower": False}
     rodLength = Parameter(1.0, "m", "distance between the origins of frame_a and frame_b",
@@ -93,16 +97,13 @@ class SphericalSpherical(_TwoFrames):
     m = Parameter(0.0, "kg", "mass of rod (= point mass located in middle of rod)",
                   nonnegative=True)
 
-    def __init__(self, name: str | None = None, **params):
-        super().__init__(name, **params)
-        _rod_length_option(self)
-
     def structure(self, s):
         def residual(vals, par):
             r_rel, _ = _rel_position(vals)
             return ca.norm_2(r_rel) - par[0]
 
-        s.relation([self.frame_a, self.frame_b], [self.rodLength], residual=residual,
+        s.relation([self.frame_a, self.frame_b], [_rod_length(self, s, self.rodLength)],
+                   residual=residual,
                    rows=("rodLength",), name="rod")
 
     def physics(self, e):
@@ -168,7 +169,8 @@ class UniversalSpherical(_TwoFrames):
     then along rRod_ia (resolved in frame_ia): T_ia = [eRod_ia, e2_ia, e3_ia]·[eRod_a,
     e2_a, e3_a]ᵀ·T_a. Singular where the rod is parallel to n1_a (as MSL's). frame_b.t =
     0; records f_rod [N] (positive if the rod is pressed) and rRod_0, rRod_a [m].
-    ``computeRodLength`` = true is not supported (refused)."""
+    ``computeRodLength`` = true: rRod_ia gives only the rod's direction, its length is
+    computed at initialization (``_rod_length``), as MSL's."""
     options = {"computeRodLength": False, "showUniversalAxes": True,
                "kinematicConstraint": True, "checkTotalPower": False}
     n1_a = Parameter((0.0, 0.0, 1.0), "1", "axis 1 of universal joint resolved in frame_a "
@@ -178,23 +180,19 @@ class UniversalSpherical(_TwoFrames):
     frame_ia = Frame_a("coordinate system at the origin of frame_a, fixed at the rod "
                        "connecting the universal with the spherical joint")
 
-    def __init__(self, name: str | None = None, **params):
-        super().__init__(name, **params)
-        _rod_length_option(self)
-
     def structure(self, s):
         def rod_frame(vals, par):
-            n1, r_ia = par
+            n1, r_ia, length = par
             r_rel, _ = _rel_position(vals)
-            return universal_rod_frame(vals[0], r_rel, n1, r_ia), \
-                ca.norm_2(r_rel) - ca.norm_2(r_ia)
+            return universal_rod_frame(vals[0], r_rel, n1, r_ia), ca.norm_2(r_rel) - length
 
         def residual(vals, par):
             ia, length_row = rod_frame(vals, par)
             return ca.vertcat(s.frame_residual(ia, vals[2]), length_row)
 
         n1 = unit_direction(self, "n1_a", "(0, 0, 1)")
-        s.relation([self.frame_a, self.frame_b, self.frame_ia], [n1, self.rRod_ia],
+        length = _rod_length(self, s, ca.norm_2(self.rRod_ia))
+        s.relation([self.frame_a, self.frame_b, self.frame_ia], [n1, self.rRod_ia, length],
                    solve={2: rod_frame}, residual=residual,
                    rows=tuple(f"frame_ia.{r}" for r in frames.FRAME_ROWS) + ("rodLength",),
                    extra_rows=("rodLength",), name="rod")
