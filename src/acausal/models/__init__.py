@@ -44,7 +44,8 @@ no compiler or simulation imports.
     multibody           MultiBodyPendulum, MultiBodyDoublePendulum: MSL MultiBody's
                         Elementary Pendulum and DoublePendulum; chain: 3-D joint trees
     multibody_loops     MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
-                        MultiBodyEngine1a: MSL MultiBody's Loops examples; ParallelFourbar
+                        MultiBodyEngine1a (on MultiBodyEngine1Base): MSL MultiBody's Loops
+                        examples; EngineJointRRP, ParallelFourbar
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
@@ -64,8 +65,9 @@ from .heat_losses import RotationalHeatLosses, TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .multibody import MultiBodyDoublePendulum, MultiBodyPendulum, chain
-from .multibody_loops import (MultiBodyEngine1a, MultiBodyFourbar1, MultiBodyFourbar2,
-                              MultiBodyFourbarAnalytic, ParallelFourbar)
+from .multibody_loops import (EngineJointRRP, MultiBodyEngine1a, MultiBodyEngine1Base,
+                              MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
+                              ParallelFourbar)
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
@@ -84,4 +86,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "TranslationalHeatLosses", "RotationalHeatLosses", "ResistorExample",
            "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
            "MultiBodyDoublePendulum", "chain", "MultiBodyFourbar1", "MultiBodyFourbar2",
-           "MultiBodyFourbarAnalytic", "MultiBodyEngine1a", "ParallelFourbar"]
+           "MultiBodyFourbarAnalytic", "MultiBodyEngine1Base", "MultiBodyEngine1a",
+           "EngineJointRRP", "ParallelFourbar"]

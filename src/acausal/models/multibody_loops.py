@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import math
 
-from ..components.multibody import (BodyBox, BodyCylinder, BodyShape, FixedTranslation, JointSSP,
-                                    Prismatic, Revolute, RevolutePlanarLoopConstraint,
-                                    UniversalSpherical, World)
+from ..components.multibody import (BodyBox, BodyCylinder, BodyShape, FixedTranslation,
+                                    JointRRP, JointSSP, Prismatic, Revolute,
+                                    RevolutePlanarLoopConstraint, UniversalSpherical, World)
 from ..components.rotational import Inertia
 from ..core import Model
 
 __all__ = ["MultiBodyFourbar1", "MultiBodyFourbar2", "MultiBodyFourbarAnalytic",
-           "MultiBodyEngine1a", "ParallelFourbar",
+           "MultiBodyEngine1Base", "MultiBodyEngine1a", "EngineJointRRP", "ParallelFourbar",
            "FOURBAR_START", "ENGINE_START"]
 
 #: MSL's fixed start values of the four-bars: j1.phi = 0 [rad], j1.w = 300 deg/s [rad/s]
@@ -115,16 +115,15 @@ class MultiBodyFourbarAnalytic(Model):
         c(self.b2.frame_a, self.jointSSP.frame_ib)
 
 
-class MultiBodyEngine1a(Model):
-    """Loops.Engine1a: the one-cylinder engine of Engine1Base (crank of BodyCylinders and
-    BodyBoxes on the bearing, output Inertia J = 1 kg.m²) closed by a planar slider-crank
-    loop: Revolute b1, RevolutePlanarLoopConstraint b2 (2 rows), Prismatic cylinder along
-    {0, −1, 0}. With ``planarLoopConstraint=False``, b2 is a plain Revolute: the planar loop
-    MSL's documentation warns about (over-constrained: 6 rows, 3 redundant, which the
-    compiler finds from the rank)."""
+class MultiBodyEngine1Base(Model):
+    """Loops.Utilities.Engine1Base: the one-cylinder engine without its loop: the crank
+    (BodyCylinders and BodyBoxes) on the bearing (Revolute about x with its axis flange)
+    driving the output Inertia (J = 1 kg.m²), the piston (BodyCylinder) and connectingRod
+    (BodyBox), the crank pin ``mid`` and the cylinder's position ``cylPosition``
+    (FixedTranslations). Subclasses close the loop."""
 
-    def __init__(self, name: str | None = None, planarLoopConstraint: bool = True):
-        super().__init__(name or "Engine1a")
+    def __init__(self, name: str | None = None):
+        super().__init__(name or "Engine1Base")
         self.world = World()
         self.piston = BodyCylinder(diameter=0.1, r=(0, -0.1, 0))
         self.connectingRod = BodyBox(widthDirection=(1, 0, 0), width=0.02, height=0.06,
@@ -139,10 +138,6 @@ class MultiBodyEngine1a(Model):
                               r=(0, -0.1, 0))
         self.mid = FixedTranslation(r=(0.05, 0, 0))
         self.cylPosition = FixedTranslation(animation=False, r=(0.15, 0.45, 0))
-        self.b1 = Revolute(n=(1, 0, 0))
-        self.b2 = (RevolutePlanarLoopConstraint if planarLoopConstraint else Revolute)(
-            n=(1, 0, 0))
-        self.cylinder = Prismatic(n=(0, -1, 0))
         c = self.connect
         c(self.world.frame_b, self.bearing.frame_a)
         c(self.crank2.frame_a, self.crank1.frame_b)
@@ -152,12 +147,48 @@ class MultiBodyEngine1a(Model):
         c(self.inertia.flange_b, self.bearing.axis)
         c(self.crank2.frame_b, self.crank3.frame_a)
         c(self.crank2.frame_b, self.mid.frame_a)
+
+
+class MultiBodyEngine1a(MultiBodyEngine1Base):
+    """Loops.Engine1a: Engine1Base closed by a planar slider-crank loop: Revolute b1,
+    RevolutePlanarLoopConstraint b2 (2 rows), Prismatic cylinder along {0, −1, 0}. With
+    ``planarLoopConstraint=False``, b2 is a plain Revolute: the planar loop MSL's
+    documentation warns about (over-constrained: 6 rows, 3 redundant, which the compiler
+    finds from the rank)."""
+
+    def __init__(self, name: str | None = None, planarLoopConstraint: bool = True):
+        super().__init__(name or "Engine1a")
+        self.b1 = Revolute(n=(1, 0, 0))
+        self.b2 = (RevolutePlanarLoopConstraint if planarLoopConstraint else Revolute)(
+            n=(1, 0, 0))
+        self.cylinder = Prismatic(n=(0, -1, 0))
+        c = self.connect
         c(self.cylPosition.frame_b, self.cylinder.frame_a)
         c(self.b2.frame_a, self.mid.frame_b)
         c(self.b2.frame_b, self.connectingRod.frame_b)
         c(self.connectingRod.frame_a, self.b1.frame_b)
         c(self.b1.frame_a, self.piston.frame_b)
         c(self.cylinder.frame_b, self.piston.frame_a)
+
+
+class EngineJointRRP(MultiBodyEngine1Base):
+    """Engine1Base closed in closed form by a JointRRP (MSL's Engine1b_analytic without its
+    gas force): frame_a at the crank pin ``mid``, frame_b at ``cylPosition``, the prismatic
+    axis n_b = {0, −1, 0}, the rod from the crank pin to the piston pin rRod1_ia = {0, 0.2,
+    0} m carrying connectingRod (its frame_b at frame_ia), the piston pin at rRod2_ib =
+    {0, −0.1, 0} m from frame_ib, which carries the piston; the negative branch (the rod
+    above the crank pin: s = 0.05 m at the start). The same mechanism as Engine1a, 1
+    coordinate (the bearing's angle), no constraint row."""
+
+    def __init__(self, name: str | None = None):
+        super().__init__(name or "EngineJointRRP")
+        self.jointRRP = JointRRP(n_a=(1, 0, 0), n_b=(0, -1, 0), rRod1_ia=(0, 0.2, 0),
+                                 rRod2_ib=(0, -0.1, 0), positiveBranch=False)
+        c = self.connect
+        c(self.jointRRP.frame_a, self.mid.frame_b)
+        c(self.jointRRP.frame_b, self.cylPosition.frame_b)
+        c(self.jointRRP.frame_ia, self.connectingRod.frame_b)
+        c(self.jointRRP.frame_ib, self.piston.frame_a)
 
 
 class ParallelFourbar(Model):

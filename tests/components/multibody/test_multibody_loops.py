@@ -19,9 +19,10 @@ from acausal.components.multibody import (Body, BodyShape, Fixed, FixedTranslati
 from acausal.components.rotational import ConstantSpeed
 from acausal.core import Model
 from acausal.errors import InitializationError
-from acausal.models.multibody_loops import (ENGINE_START, FOURBAR_START, MultiBodyEngine1a,
-                                            MultiBodyFourbar1, MultiBodyFourbar2,
-                                            MultiBodyFourbarAnalytic, ParallelFourbar)
+from acausal.models.multibody_loops import (ENGINE_START, FOURBAR_START, EngineJointRRP,
+                                            MultiBodyEngine1a, MultiBodyFourbar1,
+                                            MultiBodyFourbar2, MultiBodyFourbarAnalytic,
+                                            ParallelFourbar)
 
 TOL = dict(rtol=1e-10, atol=1e-12)
 G = 9.80665
@@ -35,17 +36,20 @@ CASES = [  # model, MSL name, x0, guess, compared signals, (coordinates, loop ro
      (1, 0, 1)),
     (MultiBodyEngine1a, "Engine1a", ENGINE_START, {"cylinder.s": 0.15},
      ("inertia.phi", "inertia.w"), (3, 2, 1)),
+    (EngineJointRRP, "Engine1a", ENGINE_START, {}, ("inertia.phi", "inertia.w"), (1, 0, 1)),
 ]
 
 
 @pytest.mark.parametrize("model, msl, x0, guess, signals, mobility", CASES,
-                         ids=[c[1] for c in CASES])
+                         ids=["Fourbar1", "Fourbar2", "Fourbar_analytic", "Engine1a",
+                              "Engine1a_by_JointRRP"])
 def test_msl_loop_examples_match_the_reference(reference_result, model, msl, x0, guess,
                                                signals, mobility):
     """Every compared signal within 2e-3 of its peak over the reference's 5 s; the loops
     close with the rows expected (Fourbar1: 7 joint coordinates, 6 rows at rev1; Fourbar2:
     1 row of the UniversalSpherical; Fourbar_analytic: none, JointSSP's closed form;
-    Engine1a: RevolutePlanarLoopConstraint's 2 rows), 1 degree of freedom each."""
+    Engine1a: RevolutePlanarLoopConstraint's 2 rows; the same engine closed by a JointRRP:
+    none), 1 degree of freedom each."""
     ref = reference_result("MAP-LIB_ReferenceResults", LOOPS + msl)
     t = ref["time"]
     compiled = acausal.compile(model())

@@ -26,15 +26,15 @@ Closed loops: where a joint's frames are both fixed by other paths, it closes th
 with 6 constraint rows (position, MSL's Frames.Orientation.equalityConstraint); rows
 redundant at the assembled configuration are found from the rank (``compiled.mobility``).
 ``loop_joints`` (RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical)
-close loops with fewer rows, ``assemblies`` (JointSSP, JointSSR, JointUSR, JointRRR) in
-closed form.
+close loops with fewer rows, ``assemblies`` (JointSSP, JointSSR, JointUSR, JointUSP,
+JointRRR, JointRRP) in closed form.
 
-Not here yet: free and spherical joints (orientation states), the other assemblies (JointRRP,
-JointUPS, JointUSP), the spatial articulated-body recursion (accelerations come from the dense
-solve of M(q)), forces, sensors, visualizers, URDF import, animation.
+Not here yet: free and spherical joints (orientation states), JointUPS, the spatial
+articulated-body recursion (accelerations come from the dense solve of M(q)), forces,
+sensors, visualizers, URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
-from .assemblies import JointRRR, JointSSP, JointSSR, JointUSR
+from .assemblies import JointRRP, JointRRR, JointSSP, JointSSR, JointUSP, JointUSR
 from .joints import Prismatic, Revolute
 from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
@@ -45,4 +45,4 @@ __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
            "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic",
            "RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical",
-           "JointSSP", "JointSSR", "JointUSR", "JointRRR"]
+           "JointSSP", "JointSSR", "JointUSR", "JointUSP", "JointRRR", "JointRRP"]

@@ -1,6 +1,6 @@
 """Joint assemblies that close a kinematic loop analytically
-(Modelica.Mechanics.MultiBody.Joints.Assemblies): JointSSP, JointSSR, JointUSR and JointRRR,
-with MSL's names, parameters, defaults and sign conventions.
+(Modelica.Mechanics.MultiBody.Joints.Assemblies): JointSSP, JointSSR, JointUSR, JointUSP,
+JointRRR and JointRRP, with MSL's names, parameters, defaults and sign conventions.
 
 As in MSL, the assembly computes the coordinate of its joint with a length constraint
 (MSL's Internal.PrismaticWithLengthConstraint / RevoluteWithLengthConstraint) in closed
@@ -28,8 +28,8 @@ from ..interfaces import unit_direction
 from .interfaces import Animated, Frame_a, Frame_b
 from .loop_joints import rod_with_mass, universal_rod_frame
 
-__all__ = ["JointSSP", "JointSSR", "JointUSR", "JointRRR", "length_constraint_distance",
-           "length_constraint_angle"]
+__all__ = ["JointSSP", "JointSSR", "JointUSR", "JointRRR", "JointUSP", "JointRRP",
+           "length_constraint_distance", "length_constraint_angle"]
 
 
 def length_constraint_distance(r_a, r_b, e, length, positive: bool):
@@ -261,6 +261,31 @@ class JointUSR(_UniversalRod, _RevoluteJoint, _LengthConstraintAssembly):
     (MSL's)."""
     rRod2_ib = Parameter((-1.0, 0.0, 0.0), "m", "vector from origin of frame_ib to spherical "
                                                 "joint in the middle, resolved in frame_ib")
+
+
+class JointUSP(_UniversalRod, _PrismaticJoint, _LengthConstraintAssembly):
+    """Universal - spherical - prismatic joint aggregation (MSL's JointUSP), no constraints
+    and no states: rod1 with a universal joint at frame_a carrying frame_ia
+    (``_UniversalRod``) and the prismatic joint with length constraint
+    (``_PrismaticJoint``), closed in closed form (``_LengthConstraintAssembly``). n_b and
+    rRod2_ib default {−1, 0, 0} (MSL's)."""
+    n_b = Parameter((-1.0, 0.0, 0.0), "1", "axis of prismatic joint fixed and resolved in "
+                                           "frame_b")
+    rRod2_ib = Parameter((-1.0, 0.0, 0.0), "m", "vector from origin of frame_ib to spherical "
+                                                "joint in the middle, resolved in frame_ib")
+
+
+class JointRRP(JointUSP):
+    """Planar revolute - revolute - prismatic joint aggregation (MSL's JointRRP): a JointUSP
+    whose universal joint's first axis is n_a [1] (resolved in frame_a, default {0, 0, 1}),
+    for planar loops whose revolute axes are all parallel to n_a, the prismatic axis n_b
+    (resolved in frame_b, default {−1, 0, 0}) orthogonal to them; no constraints, no
+    states."""
+    n_a = Parameter((0.0, 0.0, 1.0), "1", "axes of the two revolute joints resolved in "
+                                          "frame_a (both axes are parallel to each other)")
+
+    def _axis_1(self):
+        return unit_direction(self, "n_a", "(0, 0, 1)")
 
 
 class JointRRR(JointUSR):
