@@ -221,6 +221,21 @@ def test_rod_length_computed_at_initialization():
     assert np.max(np.abs(res["universalSpherical.rodLength"] - math.sqrt(1.1))) < 1e-10
 
 
+@pytest.mark.parametrize("rod", [SphericalSpherical(kinematicConstraint=False),
+                                 UniversalSpherical(kinematicConstraint=False,
+                                                    rRod_ia=(0, -1, 0))],
+                         ids=["SphericalSpherical", "UniversalSpherical"])
+def test_rod_without_kinematic_constraint_holds_nothing(rod):
+    """kinematicConstraint = false (MSL's, for assemblies that hold the length otherwise):
+    no constraint row, the bar falls as a compound pendulum, m·g·0.5·cos(φ) = (I + m·0.25)·φ̈
+    at the start (I = 0.001 kg.m², Body's default about its centre)."""
+    compiled = acausal.compile(_held_bar(rod, isinstance(rod, SphericalSpherical)))
+    assert compiled.loop_rows == []
+    res = compiled.simulate(0.01, t=np.linspace(0, 0.01, 3), **TOL)
+    phi_dd = -2.0 * G * 0.5 / (0.001 + 2.0 * 0.25)
+    assert abs(res["rev.phi"][-1] - phi_dd * 0.01 ** 2 / 2) < 1e-3 * abs(phi_dd) * 1e-4
+
+
 def test_joint_ssp_equals_the_universal_spherical_four_bar():
     """Fourbar_analytic (JointSSP, closed form) and Fourbar2 (UniversalSpherical, one
     constraint row) are the same mechanism with a massless rod: the slider's distance and

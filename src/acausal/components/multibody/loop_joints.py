@@ -89,7 +89,8 @@ class SphericalSpherical(_TwoFrames):
     point). frame_a.t = frame_b.t = 0; records MSL's f_rod [N] (rod force, positive on
     frame_a when directed from frame_a to frame_b) and rRod_0 [m]. ``computeRodLength``
     = true: rodLength is the guess, the length computed at initialization (``_rod_length``).
-    ``kinematicConstraint`` (for MSL's assemblies) is accepted and changes nothing."""
+    ``kinematicConstraint`` = false (MSL's, for assemblies that hold the length
+    themselves): no constraint, the rod's mass and variables only."""
     options = {"computeRodLength": False, "showMass": True, "kinematicConstraint": True,
                "checkTotalPower": False}
     rodLength = Parameter(1.0, "m", "distance between the origins of frame_a and frame_b",
@@ -98,6 +99,9 @@ class SphericalSpherical(_TwoFrames):
                   nonnegative=True)
 
     def structure(self, s):
+        if not self.kinematicConstraint:
+            return
+
         def residual(vals, par):
             r_rel, _ = _rel_position(vals)
             return ca.norm_2(r_rel) - par[0]
@@ -170,7 +174,9 @@ class UniversalSpherical(_TwoFrames):
     e2_a, e3_a]ᵀ·T_a. Singular where the rod is parallel to n1_a (as MSL's). frame_b.t =
     0; records f_rod [N] (positive if the rod is pressed) and rRod_0, rRod_a [m].
     ``computeRodLength`` = true: rRod_ia gives only the rod's direction, its length is
-    computed at initialization (``_rod_length``), as MSL's."""
+    computed at initialization (``_rod_length``), as MSL's. ``kinematicConstraint`` =
+    false (MSL's, for assemblies that hold the length themselves): frame_ia only, no
+    constraint."""
     options = {"computeRodLength": False, "showUniversalAxes": True,
                "kinematicConstraint": True, "checkTotalPower": False}
     n1_a = Parameter((0.0, 0.0, 1.0), "1", "axis 1 of universal joint resolved in frame_a "
@@ -181,21 +187,26 @@ class UniversalSpherical(_TwoFrames):
                        "connecting the universal with the spherical joint")
 
     def structure(self, s):
+        constrained = bool(self.kinematicConstraint)
+
         def rod_frame(vals, par):
             n1, r_ia, length = par
             r_rel, _ = _rel_position(vals)
-            return universal_rod_frame(vals[0], r_rel, n1, r_ia), ca.norm_2(r_rel) - length
+            return (universal_rod_frame(vals[0], r_rel, n1, r_ia),
+                    ca.norm_2(r_rel) - length if constrained else None)
 
         def residual(vals, par):
             ia, length_row = rod_frame(vals, par)
-            return ca.vertcat(s.frame_residual(ia, vals[2]), length_row)
+            return ca.vertcat(s.frame_residual(ia, vals[2]),
+                              length_row if constrained else ca.SX(0, 1))
 
         n1 = unit_direction(self, "n1_a", "(0, 0, 1)")
         length = _rod_length(self, s, ca.norm_2(self.rRod_ia))
         s.relation([self.frame_a, self.frame_b, self.frame_ia], [n1, self.rRod_ia, length],
                    solve={2: rod_frame}, residual=residual,
-                   rows=tuple(f"frame_ia.{r}" for r in frames.FRAME_ROWS) + ("rodLength",),
-                   extra_rows=("rodLength",), name="rod")
+                   rows=tuple(f"frame_ia.{r}" for r in frames.FRAME_ROWS)
+                   + ("rodLength",) * constrained,
+                   extra_rows=("rodLength",) * constrained, name=f"rod {constrained}")
 
     def physics(self, e):
         ra, Ta = frames.parts(e.pos(self.frame_a))
