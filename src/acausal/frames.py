@@ -10,7 +10,7 @@ from __future__ import annotations
 import casadi as ca
 
 __all__ = ["skew", "vee", "pose", "parts", "planar_rotation", "resolve1", "resolve_dyade1",
-           "from_nxy"]
+           "resolve2", "from_nxy", "equality_constraint", "FRAME_ROWS"]
 
 
 def _sx(v) -> ca.SX:
@@ -56,6 +56,11 @@ def resolve1(T, v) -> ca.SX:
     return ca.mtimes(_sx(T).T, _sx(v))
 
 
+def resolve2(T, v) -> ca.SX:
+    """v resolved in frame 1 -> resolved in frame 2: T·v (MSL's resolve2)."""
+    return ca.mtimes(_sx(T), _sx(v))
+
+
 def resolve_dyade1(T, D) -> ca.SX:
     """A second-order tensor resolved in frame 2 -> frame 1: Tᵀ·D·T (MSL's resolveDyade1)."""
     T = _sx(T)
@@ -77,3 +82,21 @@ def from_nxy(n_x, n_y) -> ca.SX:
     e_z_aux = ca.cross(e_x, n_y_aux)
     e_z = e_z_aux / ca.norm_2(e_z_aux)
     return ca.vertcat(e_x.T, ca.cross(e_z, e_x).T, e_z.T)
+
+
+def equality_constraint(T1, T2) -> ca.SX:
+    """MSL's Frames.Orientation.equalityConstraint: 3 residues that vanish when T1 = T2;
+    for T2 = (I − [θ×])·T1 close to T1 they are θ [rad], the small rotation from frame 1
+    to frame 2 (resolved in either). Atan2 of the axes' projections, so they stay regular
+    up to a relative rotation of 90° about any axis."""
+    T1, T2 = _sx(T1), _sx(T2)
+    z1 = ca.cross(T1[0, :].T, T1[1, :].T)
+    c = ca.dot(T1[0, :], T2[0, :])
+    return ca.vertcat(ca.atan2(ca.dot(z1, T2[1, :].T), c),
+                      ca.atan2(-ca.dot(z1, T2[0, :].T), c),
+                      ca.atan2(ca.dot(T1[1, :], T2[0, :]), c))
+
+
+#: names of the 6 rows that make two 3-D frames coincide: their position difference
+#: resolved in the frame, then ``equality_constraint``
+FRAME_ROWS = ("r_rel[1]", "r_rel[2]", "r_rel[3]", "residue[1]", "residue[2]", "residue[3]")

@@ -237,7 +237,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     net_alg = _stack(network.alg)       # a heat flow may carry accelerations (friction losses)
     if ws.cut_flow_sym:
         _, flow_of = flows()
-        cut_values = _stack([flow_of[p] for p in ws.cut_flow_sym])
+        cut_values = ca.densify(resolve([_stack([flow_of[p] for p in ws.cut_flow_sym])])[0])
         if ca.depends_on(cut_values, cut):
             raise StructureError("force sensors measure each other in a loop; not supported")
         zdot, g_alg, y_out, net_alg = ca.substitute([zdot, g_alg, y_out, net_alg], [cut],

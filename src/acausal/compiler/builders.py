@@ -27,8 +27,9 @@ from ..core.interface import Input, Output
 from ..core.ports import MULTIBODY, Domain, PhysicalPort, Port, RealInput, RealOutput
 from .kinematics import InternalNode
 from .pose import coordinate_pose
-from .relations import (LinearRelation, PrismaticJoint, RevoluteJoint, RigidTransform,
-                        SpatialDistance, SpatialPrismatic, SpatialRevolute, SpatialTransform)
+from .relations import (DeclaredRelation, LinearRelation, PrismaticJoint, RevoluteJoint,
+                        RigidTransform, SpatialDistance, SpatialPrismatic, SpatialRevolute,
+                        SpatialTransform, frame_residual)
 from .symbolic import der_with, sx
 
 
@@ -235,6 +236,30 @@ class StructureBuilder(_Base):
         for p in (frame_a, frame_b, node):
             self._mine(p)
         self._ws.relations.append(SpatialDistance(self._owner, frame_a, frame_b, node, name))
+
+    def relation(self, ports: list, params: list, *, solve: dict | None = None,
+                 residual=None, rows=(), extra_rows=(), name: str) -> None:
+        """A kinematic relation among ``ports`` (frames, 1-D internal nodes) written by the
+        component, for joints that close loops (MSL's SphericalSpherical,
+        UniversalSpherical, RevolutePlanarLoopConstraint, the Joints.Assemblies).
+
+        ``solve``: {j: f(vals, par) -> (pos_j, extra)}: node j's position from the others'
+        (``vals``: index -> position; a 3-D frame's ``acausal.frames.pose``), and extra
+        constraint rows (or None) the others must meet, analytic loop closure. ``residual
+        (vals, par)``: the constraint rows when every node is known already (the relation
+        closes a loop), or None. ``par``: local symbols of ``params`` (the component's
+        parameters or expressions of them, in order); ``rows`` / ``extra_rows`` name the
+        rows. Velocities, accelerations and the flows (cut forces and torques, by virtual
+        work from the multipliers) are derived by the compiler; the callables are traced
+        once per component class and ``name`` (they may use nothing but their arguments).
+        ``frame_residual(expected, actual)`` gives the 6 rows of two coinciding 3-D
+        frames."""
+        for p in ports:
+            self._mine(p)
+        self._ws.relations.append(DeclaredRelation(self._owner, ports, params, solve, residual,
+                                                   rows, extra_rows, name))
+
+    frame_residual = staticmethod(frame_residual)
 
     def states(self, port: PhysicalPort, positions: tuple, velocities: tuple) -> None:
         """Name the coordinates a port gets if its connection group needs free coordinates

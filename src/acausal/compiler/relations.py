@@ -32,7 +32,7 @@ import casadi as ca
 
 from ..errors import StructureError
 from ..core.ports import PhysicalPort
-from ..frames import parts, planar_rotation, pose, skew, vee
+from ..frames import FRAME_ROWS, equality_constraint, parts, planar_rotation, pose, skew, vee
 from .symbolic import combine
 
 
@@ -193,6 +193,11 @@ class FrameRelation:
 
     # derived, cached per class
     @property
+    def kind(self):
+        """What the derived Functions are cached by (with dims and parameter sizes)."""
+        return type(self)
+
+    @property
     def dofs(self) -> tuple[int, ...]:
         """Size of each node's velocity (6 for a 3-D frame, else its dimension)."""
         return tuple(6 if d == 12 else d for d in self.dims)
@@ -205,7 +210,7 @@ class FrameRelation:
         return vals, vels, accs, par
 
     def _solver(self, j: int) -> ca.Function:
-        key = (type(self), self.dims, "solve", j, tuple(p.numel() for p in self.params))
+        key = (self.kind, self.dims, "solve", j, tuple(p.numel() for p in self.params))
         if key not in FrameRelation._cache:
             vals, vels, accs, par = self._locals()
             others = [i for i in range(len(self.dims)) if i != j]
@@ -230,13 +235,17 @@ class FrameRelation:
         return FrameRelation._cache[key]
 
     def _residual(self) -> ca.Function:
-        key = (type(self), self.dims, "residual", tuple(p.numel() for p in self.params))
+        """Φ of the relation closing a loop and its Jacobian with respect to the nodes'
+        velocities (twists of 3-D frames): the map of its multipliers to the flows."""
+        key = (self.kind, self.dims, "residual", tuple(p.numel() for p in self.params))
         if key not in FrameRelation._cache:
-            vals, _, _, par = self._locals()
+            vals, vels, _, par = self._locals()
             phi = self.residual_local({i: v for i, v in enumerate(vals)}, par)
-            X = ca.vertcat(*vals)
-            FrameRelation._cache[key] = ca.Function(f"{type(self).__name__}_residual",
-                                                    vals + par, [phi, ca.jacobian(phi, X)])
+            X, V = ca.vertcat(*vals), ca.vertcat(*vels)
+            rate = ca.vertcat(*[pose_rate(x, v) for x, v in zip(vals, vels)])
+            FrameRelation._cache[key] = ca.Function(
+                f"{type(self).__name__}_residual", vals + par,
+                [phi, ca.jacobian(ca.jtimes(phi, X, rate), V)])
         return FrameRelation._cache[key]
 
     def fire(self, j: int, node_values) -> tuple:
@@ -273,10 +282,51 @@ class FrameRelation:
 
     def flows_loop(self, lam: ca.SX):
         out, col = [], 0
-        for p, d in zip(self.ports, self.dims):
+        for p, d in zip(self.ports, self.dofs):
             out.append((p, ca.mtimes(self._loop[:, col:col + d].T, lam)))
             col += d
         return out
+
+
+class DeclaredRelation(FrameRelation):
+    """A relation a component writes itself (``StructureBuilder.relation``): ``solve`` maps
+    the index j of a node it can determine to ``f(vals, par) -> (pos_j, extra rows or
+    None)``, ``residual(vals, par)`` gives its rows when it closes a loop (None: it never
+    does), ``rows`` names them (``extra_rows`` the extra rows of a firing). ``vals`` maps
+    node indices to positions, ``par`` lists the local symbols of ``params``. The derived
+    Functions are cached per component class and ``name``: the callables must depend on
+    nothing but their arguments."""
+
+    def __init__(self, owner, ports, params, solve, residual, rows, extra_rows, name):
+        self.dims = tuple(p.domain.dim for p in ports)
+        self._solve, self._residual_of = dict(solve or {}), residual
+        self._rows, self._extra_rows = tuple(rows), tuple(extra_rows)
+        super().__init__(owner, ports, params)
+        self._key = (type(owner), name)
+
+    @property
+    def kind(self):
+        return self._key
+
+    def can_solve(self, j: int) -> bool:
+        return j in self._solve
+
+    def solve_local(self, j, vals, par):
+        return self._solve[j](vals, par)
+
+    def residual_local(self, vals, par):
+        return self._residual_of(vals, par)
+
+    def loop_residual(self, node_values):
+        if self._residual_of is None:
+            raise StructureError(
+                f"{type(self.owner).__name__} '{self.owner.path}' closes a kinematic loop in "
+                f"a way it cannot (all its frames are fixed by other paths); open the loop "
+                f"at another joint")
+        return super().loop_residual(node_values)
+
+    def row_names(self, extra):
+        return self._extra_rows if extra else self._rows
 
 
 class RigidTransform(FrameRelation):
@@ -370,17 +420,36 @@ class PrismaticJoint(FrameRelation):
 class SpatialRelation(FrameRelation):
     """A relation among 3-D frames (and a joint's 1-D coordinate). Subclasses give the
     velocity map in closed form (``velocity_local``, what the AD route gives, smaller;
-    tests compare the two). Closing a loop of 3-D frames is not implemented yet: such a
-    relation is refused naming the component."""
+    tests compare the two).
+
+    Closing a loop (all its nodes known), it compares the frame it would determine (its
+    last frame: frame_b, or the one frame of a frame fixed in the world) with where the
+    rest of the loop puts it: ``frame_residual``, 6 rows (3 of position, 3 of
+    orientation) whose multipliers are the cut force and torque at that frame resolved in
+    it. Where the loop is planar or otherwise over-constrained, the rows that add nothing
+    to the rank of Φ_q are found at the assembled configuration (``compiler.loops``)."""
 
     def can_solve(self, j: int) -> bool:
         return self.dims[j] == 12          # a joint's coordinate is never solved from frames
 
-    def loop_residual(self, node_values):
-        raise StructureError(
-            f"{type(self.owner).__name__} '{self.owner.path}' closes a kinematic loop of 3-D "
-            f"frames (both its frames are fixed by other paths to the world); loops in 3-D "
-            f"are not supported yet: open the loop, or connect the part to the world once")
+    def residual_local(self, vals, par):
+        j = 1 if len(self.dims) > 1 else 0
+        pred, _ = self.solve_local(j, {i: v for i, v in vals.items() if i != j}, par)
+        return frame_residual(pred, vals[j])
+
+    def row_names(self, extra):
+        return FRAME_ROWS
+
+
+def frame_residual(expected, actual) -> ca.SX:
+    """The 6 rows that vanish when the 3-D frame ``actual`` is at ``expected`` (both
+    ``pose``): the position error resolved in ``actual`` [m], then MSL's
+    ``Frames.Orientation.equalityConstraint`` [rad]. Their Jacobian with respect to
+    ``actual``'s twist is the identity where they vanish, so their multipliers are the cut
+    force [N] and torque [N.m] at ``actual``, resolved in it."""
+    re, Te = parts(expected)
+    r, T = parts(actual)
+    return ca.vertcat(ca.mtimes(T, r - re), equality_constraint(Te, T))
 
 
 class SpatialTransform(SpatialRelation):

@@ -43,6 +43,9 @@ no compiler or simulation imports.
                         with AxisType1/2, GearType1/2, Controller, PathPlanning1
     multibody           MultiBodyPendulum, MultiBodyDoublePendulum: MSL MultiBody's
                         Elementary Pendulum and DoublePendulum; chain: 3-D joint trees
+    multibody_loops     MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
+                        MultiBodyEngine1a (on MultiBodyEngine1Base): MSL MultiBody's Loops
+                        examples; EngineJointRRP, ParallelFourbar
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
@@ -62,6 +65,9 @@ from .heat_losses import RotationalHeatLosses, TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .multibody import MultiBodyDoublePendulum, MultiBodyPendulum, chain
+from .multibody_loops import (EngineJointRRP, MultiBodyEngine1a, MultiBodyEngine1Base,
+                              MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
+                              ParallelFourbar)
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
@@ -79,4 +85,6 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
            "TranslationalHeatLosses", "RotationalHeatLosses", "ResistorExample",
            "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
-           "MultiBodyDoublePendulum", "chain"]
+           "MultiBodyDoublePendulum", "chain", "MultiBodyFourbar1", "MultiBodyFourbar2",
+           "MultiBodyFourbarAnalytic", "MultiBodyEngine1Base", "MultiBodyEngine1a",
+           "EngineJointRRP", "ParallelFourbar"]

@@ -467,9 +467,9 @@ class EventSimulation(ModeIteration):
 
     def _inert(self, new, sides) -> bool:
         """Whether crossings from ``sides`` to ``new`` change nothing, and so are no event: no
-        modes in the model, and no reinit of these indicators in these directions (a ball
-        leaving the floor)."""
-        if self.mode_names:
+        modes in the model, no condition that may end the run, and no reinit of these
+        indicators in these directions (a ball leaving the floor)."""
+        if self.mode_names or self.terminations:
             return False
         crossed = {k: new[k] for k in np.flatnonzero(new != sides)}
         return not any(r.indicator in crossed and r.direction in (0, crossed[r.indicator])

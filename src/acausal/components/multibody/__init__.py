@@ -2,12 +2,12 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass, Rotor1D, Mounting1D), ``joints`` (Revolute, Prismatic), ``rolling`` (MSL's
-Parts.RollingWheel and Parts.RollingWheelSet as RollingWheel, RollingWheelSet; their joints
-as RollingWheelJoint, RollingWheelSetJoint, RollingConstraintVerticalWheel: no-slip
-constraints on velocities), ``forces``, ``sensors`` and ``visualizers`` (``resolving``:
-MSL's resolveInFrame). Names, parameters, defaults, units and sign conventions are MSL's, so
-an MSL MultiBody model translates line by line::
+PointMass, Rotor1D, Mounting1D), ``joints`` (Revolute, Prismatic), ``loop_joints`` and
+``assemblies``, ``rolling`` (MSL's Parts.RollingWheel and Parts.RollingWheelSet as
+RollingWheel, RollingWheelSet; their joints as RollingWheelJoint, RollingWheelSetJoint,
+RollingConstraintVerticalWheel: no-slip constraints on velocities), ``forces``, ``sensors``
+and ``visualizers`` (``resolving``: MSL's resolveInFrame). Names, parameters, defaults,
+units and sign conventions are MSL's, so an MSL MultiBody model translates line by line::
 
     m.world, m.rev = World(), Revolute(n=(0, 0, 1), useAxisFlange=True)
     m.body = Body(m=1.0, r_CM=(0.5, 0, 0))
@@ -25,12 +25,21 @@ orientation states and no singularity: a body must be connected to the World thr
 joints. ``compiled.lagrange`` gives M(q), the Coriolis/centrifugal terms and gravity as for
 planar models.
 
+Closed loops: where a joint's frames are both fixed by other paths, it closes the loop
+with 6 constraint rows (position, MSL's Frames.Orientation.equalityConstraint); rows
+redundant at the assembled configuration are found from the rank (``compiled.mobility``).
+``loop_joints`` (RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical)
+close loops with fewer rows, ``assemblies`` (JointSSP, JointSSR, JointUSR, JointUSP,
+JointRRR, JointRRP) in closed form.
+
 The animation (``acausal.analysis.animation``) draws the parts from their shapes. Not here
-yet: free and spherical joints (orientation states), loops of 3-D frames, the spatial
-articulated-body recursion (accelerations come from the dense solve of M(q)), URDF import.
+yet: free and spherical joints (orientation states), JointUPS, the spatial articulated-body
+recursion (accelerations come from the dense solve of M(q)), URDF import.
 """
 from .interfaces import Frame, Frame_a, Frame_b
+from .assemblies import JointRRP, JointRRR, JointSSP, JointSSR, JointUSP, JointUSR
 from .joints import Prismatic, Revolute
+from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
                     FixedTranslation, PointMass, RotationTypes)
 from .rolling import (RollingConstraintVerticalWheel, RollingWheel, RollingWheelJoint,
@@ -44,4 +53,6 @@ __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic", "RollingWheel",
            "RollingWheelSet", "RollingWheelJoint", "RollingWheelSetJoint",
            "RollingConstraintVerticalWheel", "forces", "sensors", "visualizers", "Rotor1D",
-           "Mounting1D"]
+           "Mounting1D", "RevolutePlanarLoopConstraint", "SphericalSpherical",
+           "UniversalSpherical", "JointSSP", "JointSSR", "JointUSR", "JointUSP", "JointRRR",
+           "JointRRP"]
