@@ -23,10 +23,10 @@ import casadi as ca
 
 from ..core.component import Component
 from ..errors import StructureError
+from ..frames import pose as frame_pose
 from ..core.interface import Input, Output
 from ..core.ports import MULTIBODY, Domain, PhysicalPort, Port, RealInput, RealOutput
 from .kinematics import InternalNode
-from .pose import coordinate_pose
 from .relations import (DeclaredRelation, LinearRelation, PrismaticJoint, RevoluteJoint,
                         RigidTransform, SpatialDistance, SpatialPrismatic, SpatialRevolute,
                         SpatialTransform, frame_residual)
@@ -223,12 +223,16 @@ class StructureBuilder(_Base):
     def pose(self, frame, coordinates: list, fn, params=(), name: str = "") -> None:
         """The 3-D ``frame`` placed by the 1-D nodes ``coordinates`` (e.g. a wheel's x, y,
         angles): r_0 [m], R.T = ``fn``(coordinate symbols, ``params``), a function of
-        CasADi scalars; its twist and reactions follow by AD (``compiler.pose``)."""
-        for p in (frame, *coordinates):
-            self._mine(p)
-        cls = coordinate_pose(fn)
-        self._ws.relations.append(cls(self._owner, frame, list(coordinates),
-                                      [sx(v) for v in params], name))
+        CasADi scalars; a ``relation`` that fires like a joint (the frame from its
+        coordinates), its twist and reactions by AD."""
+        n = len(coordinates)
+
+        def place(vals, par):
+            r, T = fn([vals[i] for i in range(1, n + 1)], par)
+            return frame_pose(r, T), None
+
+        self.relation([frame, *coordinates], list(params), solve={0: place},
+                      name=name or fn.__name__)
 
     def distance(self, frame_a, frame_b, node, name: str = "") -> None:
         """The 1-D (translational) ``node`` at the distance [m] between the origins of the
