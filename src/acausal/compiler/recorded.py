@@ -73,7 +73,7 @@ def recorded_variables(ws, tree):
     for n in tree.nodes:
         for p in n.ports:
             dom = p.domain
-            if isinstance(p, InternalNode):
+            if isinstance(p, InternalNode) and dom.dim == 1:
                 rec(p.path, n.pos, dom.potential_units[0])
                 base = p.owner.path
                 if p.velocity:

@@ -2,7 +2,8 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass), ``joints`` (Revolute, Prismatic). Names, parameters, defaults, units and sign
+PointMass), ``joints`` (Revolute, Prismatic), ``joints_multi`` (Spherical, FreeMotion,
+Universal, Cylindrical, Planar). Names, parameters, defaults, units and sign
 conventions are MSL's, so an MSL MultiBody model translates line by line::
 
     m.world, m.rev = World(), Revolute(n=(0, 0, 1), useAxisFlange=True)
@@ -16,21 +17,24 @@ resolved in the frame, the velocity conjugate to (f, t): so Lagrange's generaliz
 of a frame's force and torque, and the recovery of cut forces from reactions, are the same
 code as for planar frames (``acausal.compiler.relations``). Orientations are 3×3
 transformation matrices in the kinematics (``acausal.frames``, after MSL's Frames); the
-generalized coordinates are the joint coordinates of the spanning tree, so there are no
-orientation states and no singularity: a body must be connected to the World through
-joints. ``compiled.lagrange`` gives M(q), the Coriolis/centrifugal terms and gravity as for
-planar models.
+generalized coordinates are the joint coordinates of the spanning tree. A body with no
+joint path to the world is a free body (13 states: r_0, v_0, a quaternion Q, w_a; MSL's
+angles_start, w_0_start ... start values), as are the relative motions of FreeMotion and
+Spherical: quaternions, never singular (``acausal.compiler.charts``). ``compiled.lagrange``
+gives M(q), the Coriolis/centrifugal terms and gravity as for planar models (in the
+angular velocities of free frames: quasi-velocities).
 
-Not here yet: free and spherical joints (orientation states), loops of 3-D frames, the
-spatial articulated-body recursion (accelerations come from the dense solve of M(q)),
-forces, sensors, visualizers, URDF import, animation.
+Not here yet: loops of 3-D frames, the spatial articulated-body recursion (accelerations
+come from the dense solve of M(q)), forces, sensors, visualizers, URDF import, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
+from .joints_multi import Cylindrical, FreeMotion, Planar, Spherical, Universal
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
                     FixedTranslation, PointMass, RotationTypes)
 from .world import GravityTypes, World
 
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
-           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic"]
+           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic", "Spherical",
+           "FreeMotion", "Universal", "Cylindrical", "Planar"]
