@@ -13,7 +13,8 @@ from scipy.integrate import solve_ivp
 import acausal
 from acausal import frames
 from acausal.components.multibody import (Body, BodyShape, FixedTranslation, Frame_a,
-                                          Frame_b, GravityTypes, Spherical, World)
+                                          Frame_b, FreeMotion, GravityTypes, Spherical,
+                                          World)
 from acausal.core import Component, Model, Parameter
 
 
@@ -166,3 +167,44 @@ def test_lagrange_of_a_free_body_is_newton_euler_in_its_quasi_velocities():
     assert np.max(np.abs(M - M_hand)) < 1e-12
     assert np.max(np.abs(grav.ravel() - grav_hand)) < 1e-12
     assert np.max(np.abs(cor.ravel() - cor_hand)) < 1e-12
+
+
+def test_free_motion_records_msl_s_variables_and_transmits_nothing():
+    """A FreeMotion from the World to a Body under gravity: the body falls freely with the
+    start values given (r_rel_a, v_rel_a, angles, w_rel_a resolved in frame_a: MSL's
+    w_rel_b start = R_rel_start·w_rel_a_start); frame_a.f = frame_a.t = 0 (MSL); a_rel_a =
+    der(v_rel_a) and the centre of mass falls with g (hand formula); phi are the angles of
+    the sequence sequence_angleStates: axesRotations(sequence, phi) equals frame_b's R.T all
+    along, and phi equals angles_start at the start when the sequences agree."""
+    angles, w_a = (0.1, 0.2, 0.3), np.array([1.0, 2.0, 0.5])
+    r_CM = np.array([0.1, 0.2, 0.0])
+    m = Model("fm")
+    m.world = World()
+    m.free = FreeMotion(r_rel_a_start=(1, 2, 3), v_rel_a_start=(0.5, 0, 0),
+                        angles_start=angles, w_rel_a_start=tuple(w_a),
+                        sequence_angleStates=(3, 1, 3))
+    m.body = Body(m=1.0, r_CM=tuple(r_CM), I_11=0.1, I_22=0.2, I_33=0.3,
+                  sequence_angleStates=(1, 2, 3))
+    m.connect(m.world.frame_b, m.free.frame_a)
+    m.connect(m.free.frame_b, m.body.frame_a)
+    t = np.linspace(0, 1, 1001)
+    res = acausal.compile(m).simulate(1.0, t=t, rtol=1e-11, atol=1e-13)
+    T0 = np.array(ca.evalf(frames.axes_rotations((1, 2, 3), angles)))
+    assert np.allclose([res[f"free.w_rel_b[{k}]"][0] for k in (1, 2, 3)], T0 @ w_a,
+                       atol=1e-12)
+    assert np.allclose([res[f"body.phi[{k}]"][0] for k in (1, 2, 3)], angles, atol=1e-12)
+    for k in (1, 2, 3):
+        assert np.max(np.abs(res[f"free.frame_a.f[{k}]"])) < 1e-10
+        assert np.max(np.abs(res[f"free.frame_a.t[{k}]"])) < 1e-10
+        v = res[f"free.v_rel_a[{k}]"]
+        assert np.max(np.abs(np.gradient(v, t)[2:-2] - res[f"free.a_rel_a[{k}]"][2:-2])) < 1e-4
+    T = np.array([[res[f"body.frame_a.R.T[{i},{j}]"] for j in (1, 2, 3)] for i in (1, 2, 3)])
+    r0 = np.array([res[f"body.frame_a.r_0[{k}]"] for k in (1, 2, 3)])
+    r_cm = r0 + np.einsum("jit,j->it", T, r_CM)
+    v_cm0 = np.array([0.5, 0, 0]) + T0.T @ np.cross(T0 @ w_a, r_CM)
+    expected = r_cm[:, :1] + np.outer(v_cm0, t) + np.outer([0, -9.80665 / 2, 0], t * t)
+    assert np.max(np.abs(r_cm - expected)) < 1e-9
+    phi = np.array([res[f"free.phi[{k}]"] for k in (1, 2, 3)])
+    for k in range(0, len(t), 100):
+        R = np.array(ca.evalf(frames.axes_rotations((3, 1, 3), phi[:, k])))
+        assert np.max(np.abs(R - T[:, :, k])) < 1e-12
