@@ -9,15 +9,16 @@ independent rigid-body dynamics library), at random states:
   degrees of freedom with its descendants in branched trees, which its RNEA and ABA have),
   the right-hand side's accelerations its ABA to 1e-9;
 - chains on a free-floating base (a Body with no joint to the world, the implicit free
-  joint, or a FreeMotion from the World): accelerations equal ABA with a free-flyer root
-  joint to 1e-9.
+  joint, or a FreeMotion from the World), one with a FreeMotion inside the chain too:
+  accelerations equal ABA with free-flyer joints to 1e-9.
 
 Pinocchio's joints are its own: JointModelSpherical (quaternion), JointModelFreeFlyer, and
 composites of its unaligned revolute/prismatic joints for Universal, Cylindrical, Planar.
 MSL's quaternion Q = {n·sin(φ/2), cos(φ/2)} of T = planarRotation(n, φ) (world/frame_a to
 the frame) has the components of Eigen's quaternion (x, y, z, w) of Pinocchio's rotation
-R = Tᵀ. Pinocchio's free-flyer velocity is (T·v_0, w_a) and its acceleration the rate of
-those components: der(v_0) = Tᵀ(a_lin + w_a × T·v_0)."""
+R = Tᵀ. Pinocchio's free-flyer velocity is (T·v_0, w_a) (a FreeMotion's: (T_rel·v_rel_a,
+w_rel_b)) and its acceleration the rate of those components: der(v_0) = Tᵀ(a_lin + w_a ×
+T·v_0)."""
 from __future__ import annotations
 
 import casadi as ca
@@ -66,13 +67,16 @@ def _random_links(rng, kinds):
 def _joint(link):
     kind, a, b = link["kind"], tuple(link["axis"]), tuple(link["axis2"])
     return {"R": lambda: Revolute(n=a), "P": lambda: Prismatic(n=a),
-            "S": lambda: Spherical(), "U": lambda: Universal(n_a=a, n_b=b),
+            "S": lambda: Spherical(), "F": lambda: FreeMotion(),
+            "U": lambda: Universal(n_a=a, n_b=b),
             "C": lambda: Cylindrical(n=a), "L": lambda: Planar(n=a, n_x=b)}[kind]()
 
 
 #: our position and velocity state names of each joint kind (after "joint{i}.")
 _STATES = {"R": (["phi"], ["w"]), "P": (["s"], ["v"]),
            "S": ([f"Q[{k}]" for k in (1, 2, 3, 4)], [f"w_rel[{k}]" for k in (1, 2, 3)]),
+           "F": ([f"r_rel_a[{k}]" for k in (1, 2, 3)] + [f"Q[{k}]" for k in (1, 2, 3, 4)],
+                 [f"v_rel_a[{k}]" for k in (1, 2, 3)] + [f"w_rel_b[{k}]" for k in (1, 2, 3)]),
            "U": (["phi_a", "phi_b"], ["w_a", "w_b"]), "C": (["s", "phi"], ["v", "w"]),
            "L": (["s_x", "s_y", "phi"], ["v_x", "v_y", "w"])}
 
@@ -90,6 +94,8 @@ def _pin_joint(link):
         return pin.JointModelPrismaticUnaligned(a)
     if kind == "S":
         return pin.JointModelSpherical()
+    if kind == "F":
+        return pin.JointModelFreeFlyer()
     parts = {"U": [pin.JointModelRevoluteUnaligned(a), pin.JointModelRevoluteUnaligned(b)],
              "C": [pin.JointModelPrismaticUnaligned(a), pin.JointModelRevoluteUnaligned(a)]}
     if kind == "L":
@@ -168,6 +174,10 @@ def _random_state(rng, links, base):
         vi = list(rng.normal(size=len(vel)))
         q += qi
         v += vi
+        if link["kind"] == "F":          # a quaternion; v_rel_a = der(r_rel_a) = Tᵀ·v_lin
+            qi[3:] = _unit(rng.normal(size=4))
+            q[-4:] = qi[3:]
+            vi = list(_T_of_Q(qi[3:]).T @ vi[:3]) + vi[3:]
         x.update({f"joint{i}.{n}": val for n, val in zip(pos, qi)})
         x.update({f"joint{i}.{n}": val for n, val in zip(vel, vi)})
     return np.array(q), np.array(v), x
@@ -184,6 +194,21 @@ def _our_rates(links, base, Q_base, v_base):
     for i, link in enumerate(links):
         names += [f"joint{i}.{n}" for n in _STATES[link["kind"]][1]]
     return names
+
+
+def _to_rates(links, base, q, v, a):
+    """Pinocchio's accelerations as our states' rates: a free-flyer's linear part becomes
+    der(v_0) / der(v_rel_a) = Tᵀ(a_lin + ω × v_lin), resolved in the parent."""
+    a, iq, iv = a.copy(), 0, 0
+    kinds = (["F"] if base is not None else []) + [link["kind"] for link in links]
+    for kind in kinds:
+        nq = {"R": 1, "P": 1, "S": 4, "F": 7, "U": 2, "C": 2, "L": 3}[kind]
+        nv = {"S": 3, "F": 6}.get(kind, nq)
+        if kind == "F":
+            T = _T_of_Q(q[iq + 3:iq + 7])
+            a[iv:iv + 3] = T.T @ (a[iv:iv + 3] + np.cross(v[iv + 3:iv + 6], v[iv:iv + 3]))
+        iq, iv = iq + nq, iv + nv
+    return a
 
 
 def _accelerations(compiled, x_by_name, names):
@@ -217,13 +242,13 @@ def test_trees_with_spherical_universal_cylindrical_planar_joints_equal_pinocchi
                                  for e in np.eye(pmodel.nv)])
         assert np.max(np.abs(M[np.ix_(order, order)] - M_pin)) < 1e-10 * max(
             1.0, np.max(np.abs(M_pin)))
-        a_pin = pin.aba(pmodel, data, q, v, np.zeros(pmodel.nv))
+        a_pin = _to_rates(links, None, q, v, pin.aba(pmodel, data, q, v, np.zeros(pmodel.nv)))
         a = _accelerations(compiled, x, names)
         assert np.max(np.abs(a - a_pin)) < 1e-9 * max(1.0, np.max(np.abs(a_pin)))
 
 
 @pytest.mark.parametrize("base, kinds, seed", [("Body", "RRSP", 5), ("FreeMotion", "RSR", 6),
-                                               ("Body", "SPRU", 7)])
+                                               ("Body", "SPRU", 7), ("FreeMotion", "RFSR", 8)])
 def test_free_floating_chains_equal_pinocchio_aba_with_a_free_flyer(base, kinds, seed):
     rng = np.random.default_rng(seed)
     links = _random_links(rng, kinds)
@@ -243,8 +268,6 @@ def test_free_floating_chains_equal_pinocchio_aba_with_a_free_flyer(base, kinds,
     names = _our_rates(links, base, None, None)
     for _ in range(4):
         q, v, x = _random_state(rng, links, base)
-        a_pin = pin.aba(pmodel, data, q, v, np.zeros(pmodel.nv))
-        T = _T_of_Q(q[3:7])
-        a_pin[:3] = T.T @ (a_pin[:3] + np.cross(v[3:6], v[:3]))       # der(v_0), world
+        a_pin = _to_rates(links, base, q, v, pin.aba(pmodel, data, q, v, np.zeros(pmodel.nv)))
         a = _accelerations(compiled, x, names)
         assert np.max(np.abs(a - a_pin)) < 1e-9 * max(1.0, np.max(np.abs(a_pin)))
