@@ -12,10 +12,12 @@ Why quaternions and not minimal angles with a chart switch: a quaternion covers 
 orientation with one smooth state (no event, no reinit, no switching logic inside the
 integrator), its rate ½·G(Q)·w is polynomial, and the orientation is taken from Q/|Q|
 (``frames.from_Q``), so a drift of the norm changes no orientation and no physics. The rate
-is tangent to |Q| = const, so the norm moves only by the integration error; it is kept by
-``norm_gain`` (``x0``/events leave it as given): der(Q) = ½·G(Q)·w + k·(1 − |Q|²)·Q with
-k = |w| + 1 [1/s], which pulls |Q| back to 1 on the time scale of the rotation itself
-without touching the orientation (Q/|Q|) or stiffening the equations.
+½·G(Q)·w is tangent to |Q| = const, so the norm moves only by the integration error; a
+radial term keeps it: der(Q) = ½·G(Q)·w + k·(1 − |Q|²)·Q with k = √(|w|² + 1) [1/s]
+(``norm_gain``), which pulls |Q| back to 1 on the time scale of the rotation itself
+without touching the orientation (Q/|Q|) or stiffening the equations (its eigenvalue −2k
+is of the size of the rotation's frequency |w| the steps resolve anyway); it vanishes on
+|Q| = 1 and adds that one stable eigenvalue to a linearization.
 
 How Lagrange's equations get to quasi-velocities: at every instant the orientation is
 written as T = E(θ)·T(Q), E(θ) = exp(−[θ×]) (to second order, all the equations need),
@@ -149,8 +151,8 @@ def at_origin(charts: list[Chart]) -> tuple[list, list]:
 
 
 def norm_gain(w) -> ca.SX:
-    """k [1/s] of the norm-keeping term k·(1 − |Q|²)·Q: |w| + 1."""
-    return ca.norm_2(w) + 1
+    """k [1/s] of the norm-keeping term k·(1 − |Q|²)·Q: √(|w|² + 1) (smooth at rest)."""
+    return ca.sqrt(ca.dot(w, w) + 1)
 
 
 def _layout(charts: list[Chart], q: ca.SX, rates: ca.SX):
