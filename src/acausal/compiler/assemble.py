@@ -287,7 +287,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
                              f"(please report)")
     chart_starts = {k: v for c in tree.charts for k, v in c.start.items()}
-    starts = [chart_starts.get(s.name(), 0.0) for s in ca.vertsplit(x[:motion.n_x])] \
+    starts = [chart_starts.get(s.name(), 0.0) for s in ca.vertsplit(x)[:motion.n_x]] \
         + [i.start for i in ws.states] \
         + [0.0] * motion.n_z + [a.start for a in algebraics] + [v for _, _, v in network.z]
     nominal = _parameter_function("nominal", _nominals(model, ws, tree, final, _vc(x, z),
