@@ -39,7 +39,6 @@ import casadi as ca
 
 from ..errors import StructureError
 from ..frames import Q_rate, from_Q, pose, skew
-from .relations import twist
 
 _vc = ca.vertcat
 
@@ -112,7 +111,10 @@ def free_root(node, spec: FreeFrame | None, der_table: dict):
         T = ca.SX.eye(3)
     node.pos = pose(r, T)
     X, Xd, Xdd = _vc(r if v.numel() else v, th), _vc(v, w), _vc(a, wd)
-    node.vel = twist(node.pos, ca.jtimes(node.pos, X, Xd))
+    # the twist: T·der(r) and the angular velocity of exp(−[θ×])·T(Q) resolved in the
+    # frame, θ̇ − ½·θ × θ̇ (exact to first order in θ, all the equations at θ = 0 need)
+    node.vel = _vc(ca.mtimes(T, v) if v.numel() else ca.SX.zeros(3),
+                   w - 0.5 * ca.cross(th, w) if w.numel() else ca.SX.zeros(3))
     node.acc = ca.jtimes(node.vel, _vc(X, Xd), _vc(Xd, Xdd))
     units = {x[3]: "m" for x in coords[:3 if spec.translation else 0]}
     units.update({x[4]: "m/s" for x in coords[:3 if spec.translation else 0]})
