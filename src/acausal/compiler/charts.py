@@ -20,16 +20,26 @@ is of the size of the rotation's frequency |w| the steps resolve anyway); it van
 |Q| = 1 and adds that one stable eigenvalue to a linearization.
 
 How Lagrange's equations get to quasi-velocities: at every instant the orientation is
-written as T = E(θ)·T(Q), E(θ) = exp(−[θ×]) (to second order, all the equations need),
-with Q held constant (its entry in ``der_table`` is 0) and θ = 0 at that instant; θ is a
-generalized coordinate like any other (θ̇ = w at θ = 0), so the compiler's machinery (AD of
-T and V, virtual work of the port flows, reactions, recorded accelerations) runs unchanged
-in the chart, and every expression is then evaluated at θ = 0 (``at_origin``). The result
-are the Newton–Euler equations in (v, w): M(Q) [v̇; ẇ] + ... = Q_gen, with w × Iw coming
-out of the chart's second-order terms. ``compiled.lagrange`` holds them so: its
-coordinates of a chart are θ (named ``<frame>.theta[i]``), its rates w, and M, gravity,
-coriolis, K, C, B are evaluated at θ = 0 (expressions of Q); ``lagrange.function`` takes
-the positions in the state layout (Q in place of θ).
+written as T = E(θ)·T(Q), E(θ) = exp(−[θ×]) (to second order), with Q held constant (its
+entry in ``der_table`` is 0) and θ = 0 at that instant. θ is a generalized coordinate like
+any other: its rate θ̇ is the state w (the frame's angular velocity θ̇ − ½·θ × θ̇ + O(θ²)
+equals it at θ = 0, and so does its rate), so the compiler's machinery (AD of T and V,
+virtual work of the port flows, reactions, recorded accelerations) runs unchanged in the
+chart, and every expression is then evaluated at θ = 0 (``at_origin``). Lagrange's
+equations need the kinematics to first order in θ only (∂T/∂θ and d/dt ∂T/∂θ̇ at θ = 0),
+which the chart gives exactly. The result are the Newton–Euler equations in (v, w):
+M(Q)·[v̇; ẇ] + ... = Q_gen, the gyroscopic w × I·w coming from the first-order term
+−½·θ × θ̇. ``compiled.lagrange`` holds them so: its coordinates of a chart are θ (named
+``<...>.theta[i]``), its rates w, and M, gravity, coriolis, K, C, B are evaluated at
+θ = 0 (expressions of Q; gravity and K are the generalized forces and stiffness about
+the frame's axes); ``lagrange.function`` takes the positions in the states' layout (Q in
+place of θ: ``lagrange.q_state``).
+
+Why not minimal angles with a chart switch: that needs an event and a reinit of three
+states each time the angles near their singularity, and the equations of motion in angles
+are long (the inverse of the angles' velocity map); the local chart here is that idea
+taken to the limit (a new chart at every instant, centred on the current orientation),
+with the quaternion carrying the chart's centre.
 """
 from __future__ import annotations
 
