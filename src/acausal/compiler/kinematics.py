@@ -58,7 +58,6 @@ from dataclasses import dataclass, field
 import casadi as ca
 
 from ..core.ports import Domain, PhysicalPort
-from ..errors import StructureError
 from .charts import FreeFrame, free_root
 from .relations import pose_rate, relax_spatial
 from .symbolic import combine, der_with

@@ -169,11 +169,12 @@ class _BodyStates(Animated):
     r_0(start=...), v_0(start=...)), the orientation by ``angles_start`` [rad] about the
     axes ``sequence_start``, ``w_0_start`` [rad/s] (resolved in the world). The ``*_fixed``
     switches are accepted: the start values are always used (``x0``/``guess`` by state name
-    take precedence). ``useQuaternions=False`` (angles as states) and ``enforceStates`` are
-    accepted and change nothing: the states are always quaternions, never singular; the
-    angles in ``sequence_angleStates`` from the world to frame_a are recorded as ``phi``
-    [rad] (outputs, undefined at gimbal lock). Bodies moved by joints have no states of their own (these start values are
-    then unused)."""
+    take precedence); MSL's z_0_start (an acceleration) is not accepted.
+    ``useQuaternions=False`` (angles as states) and ``enforceStates`` are accepted and
+    change nothing: the states are always quaternions, never singular; the angles in
+    ``sequence_angleStates`` from the world to frame_a are recorded as ``phi`` [rad]
+    (outputs, undefined at gimbal lock). Bodies moved by joints have no states of their own
+    (these start values are then unused)."""
     options = {"enforceStates": False, "useQuaternions": True, "angles_fixed": False,
                "w_0_fixed": False, "z_0_fixed": False}
     r_0_start = Parameter((0.0, 0.0, 0.0), "m", "initial position of frame_a, resolved in "
