@@ -240,9 +240,9 @@ class StructureBuilder(_Base):
         through joints to the world (``compiler.charts``): position r [m] and its rate v
         (unless ``translation`` is False: a rotation only), quaternion Q and angular
         velocity w [rad/s] resolved in the frame (unless ``rotation`` is False: a point
-        mass, the frame keeps the world's orientation); ``start`` their start values by 'r', 'v',
-        'Q', 'w' (numbers or expressions of parameters). Such frames are preferred when
-        choosing free coordinates."""
+        mass, the frame keeps the world's orientation); ``start`` their start values by
+        'r', 'v', 'Q', 'w' (numbers or expressions of parameters). Such frames are
+        preferred when choosing free coordinates."""
         self._mine(frame)
         self._ws.state_names[frame] = FreeFrame(tuple(r), tuple(v), tuple(Q), tuple(w),
                                                 translation, rotation, dict(start or {}),

@@ -81,7 +81,7 @@ class Lagrange:
         self.phi, self.t, self.p, self.u, self.u_names, self.z = phi, t, p, u, list(u_names), z
         self._R = R
         self._cache = {}
-        charts = getattr(tree, "charts", [])
+        charts = tree.charts
         self._theta = _vc(*[c.theta for c in charts]) if charts else ca.SX(0, 1)
         self.q_state = state_positions(charts, self.q)
         self.q_state_names = [s.name() for s in ca.vertsplit(self.q_state)]
@@ -163,11 +163,11 @@ class Lagrange:
         return out
 
     def function(self, *names: str) -> ca.Function:
-        """A casadi Function (t, q, qd, u, p) -> the named pieces ('M', 'gravity', ...) (q in
-        the states' layout: ``q_state``), in
+        """A casadi Function (t, q, qd, u, p) -> the named pieces ('M', 'gravity', ...), in
         the argument order of every Function of the compiled model (t, states, inputs,
-        parameters); the internal states of components (a motor current), where a piece
-        depends on them, are free symbols of the Function."""
+        parameters; q in the states' layout, ``q_state``); the internal states of
+        components (a motor current), where a piece depends on them, are free symbols of
+        the Function."""
         outs = [getattr(self, n) for n in names]
         if any(o is None for o in outs):
             raise ValueError(f"{[n for n, o in zip(names, outs) if o is None]} not linear here")
