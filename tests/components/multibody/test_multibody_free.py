@@ -208,3 +208,11 @@ def test_free_motion_records_msl_s_variables_and_transmits_nothing():
     for k in range(0, len(t), 100):
         R = np.array(ca.evalf(frames.axes_rotations((3, 1, 3), phi[:, k])))
         assert np.max(np.abs(R - T[:, :, k])) < 1e-12
+
+
+def test_bad_rotation_sequences_are_refused_naming_the_parameter():
+    from acausal.errors import ParameterError
+    with pytest.raises(ParameterError, match="sequence_start = \\(1.0, 1.0, 2.0\\)"):
+        Spherical(sequence_start=(1, 1, 2))
+    with pytest.raises(ParameterError, match="sequence_angleStates"):
+        Body(m=1.0, r_CM=(0, 0, 0), sequence_angleStates=(1, 2, 4))

@@ -34,7 +34,7 @@ from ...core import Parameter, StateSelect
 from ...core.ports import MULTIBODY, ROTATIONAL, TRANSLATIONAL
 from ..interfaces import unit_direction
 from .interfaces import Animated, Frame_a, Frame_b
-from .parts import _record
+from .parts import _record, check_sequence
 
 __all__ = ["Spherical", "FreeMotion", "Universal", "Cylindrical", "Planar"]
 
@@ -63,6 +63,11 @@ class _FreeRotation(_TwoFrames):
                                                            "angles recorded as phi")
     translation = False
     w_name = "w_rel"
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        check_sequence(self, "sequence_start")
+        check_sequence(self, "sequence_angleStates")
 
     def structure(self, s):
         rel = s.node("rel", MULTIBODY)

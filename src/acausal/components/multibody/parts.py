@@ -72,6 +72,15 @@ def rigid_body(e, frame, m, r_CM, I, prefix: str = "") -> None:
             "gravity acceleration resolved in world frame")
 
 
+def check_sequence(c, name: str) -> None:
+    """A rotation sequence parameter (MSL's Types.RotationSequence): each axis 1, 2 or 3,
+    no two consecutive axes equal; else a ParameterError naming it."""
+    seq = getattr(c, name)
+    if any(k not in (1.0, 2.0, 3.0) for k in seq) or seq[1] in (seq[0], seq[2]):
+        raise ParameterError(f"{who(c)}: {name} = {seq}: each axis must be 1, 2 or 3 and no "
+                             f"two consecutive axes equal, e.g. (1, 2, 3)")
+
+
 def _inertia(c) -> ca.SX:
     """MSL's I[3,3] = [I_11, I_21, I_31; I_21, I_22, I_32; I_31, I_32, I_33]."""
     return ca.vertcat(ca.horzcat(c.I_11, c.I_21, c.I_31), ca.horzcat(c.I_21, c.I_22, c.I_32),
@@ -137,11 +146,8 @@ class FixedRotation(Animated):
 
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
-        seq = self.sequence
-        if self.rotationType is RotationTypes.PlanarRotationSequence and (
-                any(k not in (1.0, 2.0, 3.0) for k in seq) or seq[1] in (seq[0], seq[2])):
-            raise ParameterError(f"{who(self)}: sequence = {seq}: each axis must be 1, 2 or 3 "
-                                 f"and no two consecutive axes equal, e.g. (1, 2, 3)")
+        if self.rotationType is RotationTypes.PlanarRotationSequence:
+            check_sequence(self, "sequence")
 
     def R_rel(self) -> ca.SX:
         """The relative orientation T from frame_a to frame_b."""
@@ -193,6 +199,11 @@ class _BodyStates(Animated):
                                                            "the 3 angles recorded as phi")
     #: prefix of the state names Q and w_a (MSL's BodyShape has them in its inner ``body``)
     _states_in = ""
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        check_sequence(self, "sequence_start")
+        check_sequence(self, "sequence_angleStates")
 
     def structure(self, s):
         T0 = frames.axes_rotations(self.sequence_start, self.angles_start)
