@@ -10,7 +10,8 @@ from __future__ import annotations
 import casadi as ca
 
 __all__ = ["skew", "vee", "pose", "parts", "planar_rotation", "resolve1", "resolve_dyade1",
-           "resolve2", "from_nxy", "equality_constraint", "FRAME_ROWS"]
+           "resolve2", "from_nxy", "equality_constraint", "FRAME_ROWS", "axis", "axes_rotations",
+           "axes_rotations_angles", "from_Q", "Q_rate", "axes_rotations_Q"]
 
 
 def _sx(v) -> ca.SX:
@@ -100,3 +101,78 @@ def equality_constraint(T1, T2) -> ca.SX:
 #: names of the 6 rows that make two 3-D frames coincide: their position difference
 #: resolved in the frame, then ``equality_constraint``
 FRAME_ROWS = ("r_rel[1]", "r_rel[2]", "r_rel[3]", "residue[1]", "residue[2]", "residue[3]")
+
+
+def axis(k) -> ca.SX:
+    """The unit vector of axis k (1, 2 or 3; k may be a parameter symbol)."""
+    return ca.vertcat(*[ca.if_else(k == i, 1, 0) for i in (1, 2, 3)])
+
+
+def axes_rotations(sequence, angles) -> ca.SX:
+    """MSL's Frames.axesRotations(sequence, angles).T: rotations by angles[i] [rad] about
+    the axes sequence[i] (1, 2 or 3), one after the other."""
+    T = ca.SX.eye(3)
+    for k in range(3):
+        T = ca.mtimes(planar_rotation(axis(sequence[k]), angles[k]), T)
+    return T
+
+
+def _planar_rotation_angle(e, v1, v2):
+    """MSL's planarRotationAngle: the angle about e that turns v1 (frame 1) into v2."""
+    return ca.atan2(-ca.dot(ca.cross(e, v1), v2), ca.dot(v1, v2) - ca.dot(e, v1) * ca.dot(e, v2))
+
+
+def axes_rotations_angles(T, sequence) -> ca.SX:
+    """MSL's Frames.axesRotationsAngles(R, sequence) (guessAngle1 = 0): the three angles
+    [rad] with axes_rotations(sequence, angles) = T, each in (−π, π]. Singular where the
+    second rotation aligns the first and third axes (gimbal lock): an output only, never a
+    state here."""
+    T = _sx(T)
+    e1, e2, e3_2 = axis(sequence[0]), axis(sequence[1]), axis(sequence[2])
+    e3_1 = ca.mtimes(T.T, e3_2)                        # row sequence[3] of T
+    A, B = ca.dot(e2, e3_1), ca.dot(ca.cross(e1, e2), e3_1)
+    a_a, a_b = ca.atan2(A, -B), ca.atan2(-A, B)
+    a1 = ca.if_else(ca.fabs(A) + ca.fabs(B) <= 2e-12, 0,
+                    ca.if_else(ca.fabs(a_a) <= ca.fabs(a_b), a_a, a_b))
+    T1a = planar_rotation(e1, a1)
+    a2 = _planar_rotation_angle(e2, ca.mtimes(T1a, e3_1), e3_2)
+    a3 = _planar_rotation_angle(e3_2, e2, ca.mtimes(T, ca.mtimes(T1a.T, e2)))
+    return ca.vertcat(a1, a2, a3)
+
+
+def from_Q(Q) -> ca.SX:
+    """MSL's Frames.from_Q(Q).T of the quaternion Q = {n·sin(φ/2), cos(φ/2)} (MSL's order:
+    the vector part first), normalized: orthogonal for any Q ≠ 0, so a drift of |Q| changes
+    no orientation."""
+    Q = _sx(Q)
+    q1, q2, q3, q4 = ca.vertsplit(Q)
+    c = 2 / ca.dot(Q, Q)
+    return c * ca.vertcat(
+        ca.horzcat(q1 * q1 + q4 * q4, q1 * q2 + q3 * q4, q1 * q3 - q2 * q4),
+        ca.horzcat(q2 * q1 - q3 * q4, q2 * q2 + q4 * q4, q2 * q3 + q1 * q4),
+        ca.horzcat(q3 * q1 + q2 * q4, q3 * q2 - q1 * q4, q3 * q3 + q4 * q4)) - ca.SX.eye(3)
+
+
+def Q_rate(Q, w) -> ca.SX:
+    """der(Q) for the angular velocity w [rad/s] resolved in frame 2 (MSL's
+    Quaternions.derQ): tangent to |Q| = const."""
+    q1, q2, q3, q4 = ca.vertsplit(_sx(Q))
+    G = ca.vertcat(ca.horzcat(q4, -q3, q2), ca.horzcat(q3, q4, -q1), ca.horzcat(-q2, q1, q4),
+                   ca.horzcat(-q1, -q2, -q3))
+    return 0.5 * ca.mtimes(G, _sx(w))
+
+
+def _absolute_Q(Q1, Q_rel) -> ca.SX:
+    """MSL's Quaternions.absoluteRotation: Q_rel after Q1."""
+    v1, s1, v2, s2 = Q1[:3], Q1[3], Q_rel[:3], Q_rel[3]
+    return ca.vertcat(s2 * v1 + s1 * v2 - ca.cross(v2, v1), s2 * s1 - ca.dot(v2, v1))
+
+
+def axes_rotations_Q(sequence, angles) -> ca.SX:
+    """The quaternion of axes_rotations(sequence, angles) (MSL's to_Q of it, up to sign),
+    composed of the three planar rotations' quaternions."""
+    Q = ca.vertcat(0, 0, 0, 1)
+    for k in range(3):
+        Q = _absolute_Q(Q, ca.vertcat(axis(sequence[k]) * ca.sin(angles[k] / 2),
+                                      ca.cos(angles[k] / 2)))
+    return Q

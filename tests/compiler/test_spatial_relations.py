@@ -8,8 +8,8 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from acausal.compiler.relations import (SpatialPrismatic, SpatialRevolute, SpatialTransform,
-                                        pose_rate, relax_spatial, twist)
+from acausal.compiler.relations import (SpatialCompose, SpatialPrismatic, SpatialRevolute,
+                                        SpatialTransform, pose_rate, relax_spatial, twist)
 from acausal.core import MultiBodyFrame, RotationalFlange
 from acausal.frames import parts, planar_rotation, pose
 
@@ -35,10 +35,13 @@ def _relation(cls):
     if cls is SpatialTransform:
         T = ca.evalf(planar_rotation(ca.SX(_unit()), 0.7))
         return cls(_Owner(), a, b, ca.SX(RNG.normal(size=3)), ca.SX(T))
+    if cls is SpatialCompose:
+        return cls(_Owner(), a, b, MultiBodyFrame())
     return cls(_Owner(), a, b, q, ca.SX(_unit()))
 
 
-@pytest.mark.parametrize("cls", [SpatialTransform, SpatialRevolute, SpatialPrismatic])
+@pytest.mark.parametrize("cls", [SpatialTransform, SpatialRevolute, SpatialPrismatic,
+                                 SpatialCompose])
 @pytest.mark.parametrize("j", [0, 1])
 def test_closed_form_twist_equals_the_ad_derivation(cls, j):
     rel = _relation(cls)

@@ -88,7 +88,7 @@ def linearize(model, x=None, *, u: dict | None = None, params: dict | None = Non
     coords = [n for n, r in zip(L.q_names, L.qd_names) if n in states and r in states]
     rates = [L.qd_names[L.q_names.index(n)] for n in coords]
     mass, V = None, None
-    if coords:
+    if coords and all(n in full_names for n in L.q_names):   # (no orientation charts)
         M = np.array(model.function("M", [L.M])(pt.t, pt.x, pt.z, pt.u, pt.p), dtype=float)
         V = full[[full_names.index(n) for n in L.q_names]][:, [states.index(c) for c in coords]]
         mass = V.T @ M @ V

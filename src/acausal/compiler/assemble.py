@@ -23,6 +23,7 @@ twice, and keeps no trace of it.
 from __future__ import annotations
 
 import gc
+from dataclasses import replace
 
 import casadi as ca
 import numpy as np
@@ -32,6 +33,7 @@ from ..core.parameter import Parameter, symbolic_parameters
 from ..errors import StructureError, did_you_mean
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
+from .charts import at_origin, check_inertia, quaternion_states
 from .compiled import CompiledModel, Reinit, ScalarVariable, StateEvents, coinciding
 from .flatten import flatten
 from .kinematics import Node, choose_tree, motion_symbols
@@ -215,15 +217,17 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         bodies = [(b[0:3], b[3:6], b[6], b[7]) for b in ca.vertsplit(flat_b, 8)]
         T_other = resolve([ca.sum1(_stack(ws.kinetic_other)) if ws.kinetic_other
                            else ca.SX(0)])[0]
+    check_inertia(tree.charts, R_T[:nq], tree.qdd)
     if ws.velocity_constraints:
-        if keep:
-            raise StructureError("closed kinematic loops together with velocity constraints "
-                                 "(rolling contacts) are not supported yet")
+        if keep or tree.charts:
+            raise StructureError("closed kinematic loops or free bodies together with velocity "
+                                 "constraints (rolling contacts) are not supported yet")
         motion = solve_velocity_constrained(
             tree, R_q, nh, _stack([f for *_, f in ws.velocity_constraints]),
             [f"{o.path}.{n}" for o, n, _, _ in ws.velocity_constraints], ws, resolve)
     else:
-        motion = solve_motion(tree, R_q, phi[keep], ws, (bodies, T_other), resolve)
+        motion = _on_charts(solve_motion(tree, R_q, phi[keep], ws, (bodies, T_other), resolve),
+                            tree)
     lam = ca.SX.zeros(phi.numel())               # dropped (redundant) rows carry nothing
     lam[keep] = motion.lam
     lam_tree = -(R_eps + ca.mtimes(phi_eps.T, lam)) if eps.numel() else ca.SX(0, 1)
@@ -292,7 +296,9 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     if check.has_free():
         raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
                              f"(please report)")
-    starts = [0.0] * motion.n_x + [i.start for i in ws.states] \
+    chart_starts = {k: v for c in tree.charts for k, v in c.start.items()}
+    starts = [chart_starts.get(s.name(), 0.0) for s in ca.vertsplit(x)[:motion.n_x]] \
+        + [i.start for i in ws.states] \
         + [0.0] * motion.n_z + [a.start for a in algebraics] + [v for _, _, v in network.z]
     nominal = _parameter_function("nominal", _nominals(model, ws, tree, final, _vc(x, z),
                                                        _vc(t, x, z, u)), p, "nominals")
@@ -336,6 +342,21 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         index_reduction=ws.index_reduction,
         source=model,
     )
+
+
+def _on_charts(motion, tree):
+    """The motion with the free 3-D frames' chart coordinates θ turned into quaternion
+    states and every expression at θ = 0 (``charts``)."""
+    if not tree.charts:
+        return motion
+    states = quaternion_states(tree.charts, motion.q_diff, motion.q_diff_dot)
+    frm, to = at_origin(tree.charts)
+    rates, qdd_diff, alg_res, qdd, lam = ca.substitute(
+        [states[1], motion.qdd_diff, motion.alg_res, motion.qdd, motion.lam], frm, to)
+    return replace(motion, q_diff=states[0], q_diff_dot=rates, qdd_diff=qdd_diff,
+                   alg_res=alg_res, qdd=qdd, lam=lam,
+                   substitute_from=motion.substitute_from + frm,
+                   substitute_to=motion.substitute_to + to)
 
 
 def _mode_record(m) -> ScalarVariable:
@@ -478,7 +499,7 @@ def _nominals(model, ws: Workspace, tree, final, w: ca.SX, free: ca.SX) -> list:
 
 def _coordinate_units(tree) -> dict[str, str]:
     """Units of the coordinates and their rates, from their nodes' domains."""
-    units = {}
+    units = {k: u for c in tree.charts for k, u in c.units.items()}
     for n in tree.nodes:
         for k, i in enumerate(n.coordinate or []):
             units[tree.q_names[i]] = n.domain.potential_units[k]

@@ -26,10 +26,11 @@ from ..errors import StructureError
 from ..frames import pose as frame_pose
 from ..core.interface import Input, Output
 from ..core.ports import MULTIBODY, Domain, PhysicalPort, Port, RealInput, RealOutput
+from .charts import FreeFrame
 from .kinematics import InternalNode
 from .relations import (DeclaredRelation, LinearRelation, PrismaticJoint, RevoluteJoint,
-                        RigidTransform, SpatialDistance, SpatialPrismatic, SpatialRevolute,
-                        SpatialTransform, frame_residual)
+                        RigidTransform, SpatialCompose, SpatialDistance, SpatialPrismatic,
+                        SpatialRevolute, SpatialTransform, frame_residual)
 from .symbolic import der_with, sx
 
 
@@ -271,6 +272,29 @@ class StructureBuilder(_Base):
         ports are preferred when choosing free coordinates."""
         self._mine(port)
         self._ws.state_names[port] = (tuple(positions), tuple(velocities))
+
+    def compose(self, frame_a, frame_b, rel) -> None:
+        """frame_b = frame_a followed by the relative pose of the 3-D node ``rel`` (an
+        internal node with ``free_frame`` states: FreeMotion, Spherical)."""
+        for p in (frame_a, frame_b, rel):
+            self._mine(p)
+        self._ws.relations.append(SpatialCompose(self._owner, frame_a, frame_b, rel))
+
+    def free_frame(self, frame, *, r=("r[1]", "r[2]", "r[3]"), v=("v[1]", "v[2]", "v[3]"),
+                   Q=("Q[1]", "Q[2]", "Q[3]", "Q[4]"), w=("w[1]", "w[2]", "w[3]"),
+                   translation: bool = True, rotation: bool = True,
+                   start: dict | None = None) -> None:
+        """Name the states a 3-D ``frame`` (a port or internal node) gets if it has no path
+        through joints to the world (``compiler.charts``): position r [m] and its rate v
+        (unless ``translation`` is False: a rotation only), quaternion Q and angular
+        velocity w [rad/s] resolved in the frame (unless ``rotation`` is False: a point
+        mass, the frame keeps the world's orientation); ``start`` their start values by
+        'r', 'v', 'Q', 'w' (numbers or expressions of parameters). Such frames are
+        preferred when choosing free coordinates."""
+        self._mine(frame)
+        self._ws.state_names[frame] = FreeFrame(tuple(r), tuple(v), tuple(Q), tuple(w),
+                                                translation, rotation, dict(start or {}),
+                                                self._owner.path)
 
     def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
              preferred: bool = True) -> InternalNode:

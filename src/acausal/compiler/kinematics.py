@@ -15,9 +15,10 @@ model); the generalized force conjugate to ε is the relation's reaction, from w
 A node's velocity is conjugate to its flows: der(pos) for 1-D and planar nodes, the twist
 (v, w) resolved in the frame for a 3-D frame, whose position is r_0 and R.T
 (``Domain.dof`` ≠ ``Domain.dim``; ``relations.pose_rate``). A 3-D node's relaxation ε is a
-virtual twist (``relations.relax_spatial``). 3-D frames get their motion from relations
-only: a 3-D frame the tree cannot reach (a free body) is refused, as orientation states are
-not implemented yet.
+virtual twist (``relations.relax_spatial``). A 3-D frame the relations cannot reach (a
+free body, the relative frame of a FreeMotion or Spherical joint) becomes a free root with
+orientation states: a quaternion and the angular velocity, Lagrange's equations written in
+a local chart about the current orientation (``charts``).
 
 Where the graph has closed loops, the tree is a choice: the relation that closes a loop
 decides which joints' coordinates the tree keeps. Taking relations in declaration order
@@ -57,7 +58,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 
 from ..core.ports import Domain, PhysicalPort
-from ..errors import StructureError
+from .charts import FreeFrame, free_root
 from .relations import pose_rate, relax_spatial
 from .symbolic import combine, der_with
 
@@ -201,6 +202,7 @@ class Tree:
     loops: list[LoopBlock] = field(default_factory=list)
     loop_residual: ca.SX = None                    # Φ of the loops, stacked in that order
     loop_rows: list = field(default_factory=list)  # a name for each row of Φ
+    charts: list = field(default_factory=list)     # charts.Chart of the free 3-D frames
 
 
 def choose_tree(nodes: list[Node], relations: list, der_table: dict, state_names: dict,
@@ -280,6 +282,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     der = lambda ex: der_with(ex, der_table)                       # noqa: E731
     q, qd, qdd, q_names, qd_names = [], [], [], [], []
     fired, lin_loops, nl_loops = [], [], []       # nl_loops: (relation, Φ rows, flows)
+    charts = []                                   # orientation states of free 3-D frames
     for n in nodes:
         n.form = n.coordinate = None
         n.pos = n.vel = n.acc = None
@@ -361,11 +364,14 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     for n in order:
         if known(n):
             continue
-        if n.domain.dof != n.domain.dim:
-            raise StructureError(
-                f"3-D frame '{n.name}' has no path through joints to the world: free bodies "
-                f"(orientation states) are not supported yet; connect it to the World "
-                f"through joints")
+        if n.domain.dof != n.domain.dim:              # a free 3-D frame: a chart
+            chart, coords = free_root(n, _free_frame(n, state_names), der_table)
+            charts.append(chart)
+            for s, v, a, qname, vname in coords:
+                q.append(s); qd.append(v); qdd.append(a)
+                q_names.append(qname); qd_names.append(vname)
+            propagate([n])
+            continue
         dim = n.domain.dim
         syms = []
         for pot in n.domain.potentials:
@@ -403,7 +409,17 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     residual = ca.vertcat(*rows) if rows else ca.SX(0, 1)
     vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)      # noqa: E731
     return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, residual,
-                names)
+                names, charts)
+
+
+def _free_frame(n: Node, state_names: dict):
+    """The FreeFrame a component declared for a port (or internal node) of the free 3-D
+    node ``n``, or None."""
+    for p in n.ports:
+        spec = state_names.get(p)
+        if isinstance(spec, FreeFrame):
+            return spec
+    return None
 
 
 def _state_names(n: Node, k: int, potential: str, state_names: dict) -> tuple[str, str]:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import casadi as ca
 
+from .charts import state_positions
 from .symbolic import der_with
 
 _vc = ca.vertcat
@@ -64,6 +65,14 @@ class Lagrange:
     - ``phi`` the loop constraints Φ(q, t) = 0 and ``phi_q`` their Jacobian.
     ``R0`` = −(gravity + coriolis + Q) is everything but the inertia term: M q̈ + R0 = 0.
     Each piece is derived (by AD) on first access.
+
+    A free 3-D frame (free Body, FreeMotion, Spherical: ``charts``) has the chart
+    coordinates θ[1..3] among ``q`` (named ``<...>.theta[i]``), its angular velocity w
+    resolved in the frame among ``qd`` (quasi-velocities) and ẇ among ``qdd``: every piece
+    is given at θ = 0, an expression of the frame's quaternion Q (M(Q) the mass matrix in
+    (v, w), coriolis with the gyroscopic w × I·w, gravity and K the generalized forces and
+    stiffness about the frame's axes); ``function`` takes q in the states' layout, Q in
+    place of θ (``q_state``, ``q_state_names``).
     """
 
     def __init__(self, tree, R: Residuals, phi, t, p, u, u_names, z):
@@ -72,10 +81,20 @@ class Lagrange:
         self.phi, self.t, self.p, self.u, self.u_names, self.z = phi, t, p, u, list(u_names), z
         self._R = R
         self._cache = {}
+        charts = tree.charts
+        self._theta = _vc(*[c.theta for c in charts]) if charts else ca.SX(0, 1)
+        self.q_state = state_positions(charts, self.q)
+        self.q_state_names = [s.name() for s in ca.vertsplit(self.q_state)]
 
     def _lazy(self, key, make):
         if key not in self._cache:
-            self._cache[key] = make()
+            value = make()
+            if self._theta.numel() and value is not None:
+                at0 = ca.SX.zeros(self._theta.numel())
+                value = ca.substitute(value, self._theta, at0) if isinstance(value, ca.SX) \
+                    else tuple(None if v is None else ca.substitute(v, self._theta, at0)
+                               for v in value)
+            self._cache[key] = value
         return self._cache[key]
 
     @property
@@ -88,7 +107,7 @@ class Lagrange:
 
     @property
     def gravity(self) -> ca.SX:
-        return -self._R.conservative
+        return self._lazy("gravity", lambda: -self._R.conservative)
 
     @property
     def B(self) -> ca.SX:
@@ -146,12 +165,13 @@ class Lagrange:
     def function(self, *names: str) -> ca.Function:
         """A casadi Function (t, q, qd, u, p) -> the named pieces ('M', 'gravity', ...), in
         the argument order of every Function of the compiled model (t, states, inputs,
-        parameters); the internal states of components (a motor current), where a piece
-        depends on them, are free symbols of the Function."""
+        parameters; q in the states' layout, ``q_state``); the internal states of
+        components (a motor current), where a piece depends on them, are free symbols of
+        the Function."""
         outs = [getattr(self, n) for n in names]
         if any(o is None for o in outs):
             raise ValueError(f"{[n for n, o in zip(names, outs) if o is None]} not linear here")
-        return ca.Function("lagrange", [self.t, self.q, self.qd, self.u, self.p], outs,
+        return ca.Function("lagrange", [self.t, self.q_state, self.qd, self.u, self.p], outs,
                            ["t", "q", "qd", "u", "p"], list(names), {"allow_free": True})
 
     def __str__(self):

@@ -554,3 +554,37 @@ class SpatialDistance(SpatialRelation):
 
     def solve_local(self, j, vals, par):
         return ca.norm_2(parts(vals[1])[0] - parts(vals[0])[0]), None
+
+
+class SpatialCompose(SpatialRelation):
+    """frame_b = frame_a followed by the relative pose of the 3-D node ``rel`` (r_rel
+    resolved in frame_a, T_rel from frame_a to frame_b): a joint whose relative motion has
+    several degrees of freedom held by a free node of its own (FreeMotion, Spherical; the
+    node's states in ``compiler.charts``). rel's twist is the relative motion resolved in
+    frame_b: (T_rel·der(r_rel), w_rel)."""
+    dims = (12, 12, 12)
+
+    def __init__(self, owner, frame_a, frame_b, rel, name=""):
+        super().__init__(owner, [frame_a, frame_b, rel], [], name)
+
+    def can_solve(self, j: int) -> bool:
+        return j != 2                      # the relative pose is never solved from frames
+
+    def solve_local(self, j, vals, par):
+        rr, Tr = parts(vals[2])
+        if j == 1:
+            ra, Ta = parts(vals[0])
+            return pose(ra + ca.mtimes(Ta.T, rr), ca.mtimes(Tr, Ta)), None
+        rb, Tb = parts(vals[1])
+        Ta = ca.mtimes(Tr.T, Tb)
+        return pose(rb - ca.mtimes(Ta.T, rr), Ta), None
+
+    def velocity_local(self, j, vals, vels, par):
+        rr, Tr = parts(vals[2])
+        vr, wr = vels[2][:3], vels[2][3:]
+        if j == 1:            # v_b = T_rel(v_a + w_a × r_rel) + v_rel, w_b = T_rel w_a + w_rel
+            v, w = vels[0][:3], vels[0][3:]
+            return ca.vertcat(ca.mtimes(Tr, v + ca.cross(w, rr)) + vr, ca.mtimes(Tr, w) + wr)
+        v, w = vels[1][:3], vels[1][3:]
+        wa = ca.mtimes(Tr.T, w - wr)
+        return ca.vertcat(ca.mtimes(Tr.T, v - vr) - ca.cross(wa, rr), wa)

@@ -11,7 +11,8 @@ import acausal
 from acausal.components import planar, rotational, translational
 from acausal.components.multibody import (Body, BodyBox, BodyCylinder, BodyShape, Fixed,
                                           FixedRotation, FixedTranslation, GravityTypes,
-                                          PointMass, Prismatic, Revolute, World)
+                                          PointMass, Prismatic, Revolute, Spherical,
+                                          World)
 from acausal.core import Model
 from acausal.errors import AcausalError, ParameterError, StructureError
 from acausal.models import chain
@@ -191,12 +192,14 @@ def test_point_gravity_and_a_drive_through_the_axis_flange():
 
 
 def test_models_the_compiler_cannot_take_yet_are_refused_naming_the_part():
-    """A body with no joint to the world (a free body), a rigid 3-D loop that cannot close,
-    a zero axis, a planar frame connected to a 3-D one, and a Body without m: clear errors
-    naming the part."""
+    """A free rotation that carries no inertia (a spherical joint holding a point mass at
+    its centre), a rigid 3-D loop that cannot close, a zero axis, a planar frame connected
+    to a 3-D one, and a Body without m: clear errors naming the part."""
     m = Model("free")
-    m.world, m.body = World(), Body(m=1.0, r_CM=(0, 0, 0))
-    with pytest.raises(StructureError, match="body.frame_a.*free bodies"):
+    m.world, m.joint, m.mass = World(), Spherical(), PointMass(m=1.0)
+    m.connect(m.world.frame_b, m.joint.frame_a)
+    m.connect(m.joint.frame_b, m.mass.frame_a)
+    with pytest.raises(StructureError, match="joint.Q.*no inertia"):
         acausal.compile(m)
     m = Model("loop")
     m.world, m.a, m.b = World(), FixedTranslation(r=(1, 0, 0)), Fixed(r=(2, 0, 0))

@@ -2,7 +2,8 @@
 
 Modules follow MSL's packages: ``interfaces`` (the Frame connector), ``world`` (World),
 ``parts`` (Fixed, FixedTranslation, FixedRotation, Body, BodyShape, BodyBox, BodyCylinder,
-PointMass, Rotor1D, Mounting1D), ``joints`` (Revolute, Prismatic), ``loop_joints`` and
+PointMass, Rotor1D, Mounting1D), ``joints`` (Revolute, Prismatic), ``joints_multi``
+(Spherical, FreeMotion, Universal, Cylindrical, Planar), ``loop_joints`` and
 ``assemblies``, ``rolling`` (MSL's Parts.RollingWheel and Parts.RollingWheelSet as
 RollingWheel, RollingWheelSet; their joints as RollingWheelJoint, RollingWheelSetJoint,
 RollingConstraintVerticalWheel: no-slip constraints on velocities), ``forces``, ``sensors``
@@ -20,10 +21,12 @@ resolved in the frame, the velocity conjugate to (f, t): so Lagrange's generaliz
 of a frame's force and torque, and the recovery of cut forces from reactions, are the same
 code as for planar frames (``acausal.compiler.relations``). Orientations are 3×3
 transformation matrices in the kinematics (``acausal.frames``, after MSL's Frames); the
-generalized coordinates are the joint coordinates of the spanning tree, so there are no
-orientation states and no singularity: a body must be connected to the World through
-joints. ``compiled.lagrange`` gives M(q), the Coriolis/centrifugal terms and gravity as for
-planar models.
+generalized coordinates are the joint coordinates of the spanning tree. A body with no
+joint path to the world is a free body (13 states: r_0, v_0, a quaternion Q, w_a; MSL's
+angles_start, w_0_start ... start values), as are the relative motions of FreeMotion and
+Spherical: quaternions, never singular (``acausal.compiler.charts``). ``compiled.lagrange``
+gives M(q), the Coriolis/centrifugal terms and gravity as for planar models (in the
+angular velocities of free frames: quasi-velocities).
 
 Closed loops: where a joint's frames are both fixed by other paths, it closes the loop
 with 6 constraint rows (position, MSL's Frames.Orientation.equalityConstraint); rows
@@ -33,12 +36,13 @@ close loops with fewer rows, ``assemblies`` (JointSSP, JointSSR, JointUSR, Joint
 JointRRR, JointRRP) in closed form.
 
 The animation (``acausal.analysis.animation``) draws the parts from their shapes. Not here
-yet: free and spherical joints (orientation states), JointUPS, the spatial articulated-body
+yet: loops through free or spherical joints, JointUPS, the spatial articulated-body
 recursion (accelerations come from the dense solve of M(q)), URDF import.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .assemblies import JointRRP, JointRRR, JointSSP, JointSSR, JointUSP, JointUSR
 from .joints import Prismatic, Revolute
+from .joints_multi import Cylindrical, FreeMotion, Planar, Spherical, Universal
 from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
 from .parts import (Body, BodyBox, BodyCylinder, BodyShape, Fixed, FixedRotation,
                     FixedTranslation, PointMass, RotationTypes)
@@ -50,7 +54,8 @@ from .parts import Mounting1D, Rotor1D
 
 __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "FixedTranslation", "FixedRotation", "RotationTypes", "Body", "BodyShape",
-           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic", "RollingWheel",
+           "BodyBox", "BodyCylinder", "PointMass", "Revolute", "Prismatic", "Spherical",
+           "FreeMotion", "Universal", "Cylindrical", "Planar", "RollingWheel",
            "RollingWheelSet", "RollingWheelJoint", "RollingWheelSetJoint",
            "RollingConstraintVerticalWheel", "forces", "sensors", "visualizers", "Rotor1D",
            "Mounting1D", "RevolutePlanarLoopConstraint", "SphericalSpherical",

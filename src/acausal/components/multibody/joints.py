@@ -10,8 +10,8 @@ and drive trains of the Rotational and Translational libraries drive and load th
 ``tau`` / ``f`` is then the drive torque/force (= axis.tau / axis.f), 0 without the flange,
 as MSL's ``tau = -frame_b.t*e``.
 
-``animation`` is accepted and changes nothing. Not here yet: the other joints
-(Cylindrical, Universal, Spherical, FreeMotion, ...), loops of 3-D frames, the other
+``animation`` is accepted and changes nothing. The joints with several degrees of
+freedom are in ``joints_multi``. Not here yet: loops of 3-D frames, the other
 visualization parameters.
 """
 from __future__ import annotations

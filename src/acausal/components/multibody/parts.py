@@ -11,11 +11,10 @@ records MSL's variables: r_0, v_0, a_0 [m, m/s, m/s²] (frame_a, world frame), w
 [rad/s, rad/s²] (resolved in frame_a) and g_0 (gravity at the centre of mass); BodyShape,
 BodyBox and BodyCylinder record the last three under ``body.`` as their MSL inner Body.
 
-``animation`` only keeps a part out of the animation (``interfaces.Animated``). Not here
-yet: the start-value parameters of free bodies (angles_fixed, angles_start, w_0_fixed, ...
-need orientation states: a body must be connected to the World through joints), the other
-visualization parameters, Rotor1D, Mounting1D. RollingWheel and RollingWheelSet are in
-``rolling``.
+A body with no joint path to the world moves freely with MSL's states and start values
+(``_BodyStates``). ``animation`` only keeps a part out of the animation
+(``interfaces.Animated``). Not here yet: the other visualization parameters. RollingWheel
+and RollingWheelSet are in ``rolling``.
 """
 from __future__ import annotations
 
@@ -73,6 +72,15 @@ def rigid_body(e, frame, m, r_CM, I, prefix: str = "") -> None:
                                             "resolved in frame_a")
     _record(e, prefix + "g_0", world.gravity_acceleration(r_cm), "m/s2",
             "gravity acceleration resolved in world frame")
+
+
+def check_sequence(c, name: str) -> None:
+    """A rotation sequence parameter (MSL's Types.RotationSequence): each axis 1, 2 or 3,
+    no two consecutive axes equal; else a ParameterError naming it."""
+    seq = getattr(c, name)
+    if any(k not in (1.0, 2.0, 3.0) for k in seq) or seq[1] in (seq[0], seq[2]):
+        raise ParameterError(f"{who(c)}: {name} = {seq}: each axis must be 1, 2 or 3 and no "
+                             f"two consecutive axes equal, e.g. (1, 2, 3)")
 
 
 def _inertia(c) -> ca.SX:
@@ -140,11 +148,8 @@ class FixedRotation(Animated):
 
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
-        seq = self.sequence
-        if self.rotationType is RotationTypes.PlanarRotationSequence and (
-                any(k not in (1.0, 2.0, 3.0) for k in seq) or seq[1] in (seq[0], seq[2])):
-            raise ParameterError(f"{who(self)}: sequence = {seq}: each axis must be 1, 2 or 3 "
-                                 f"and no two consecutive axes equal, e.g. (1, 2, 3)")
+        if self.rotationType is RotationTypes.PlanarRotationSequence:
+            check_sequence(self, "sequence")
 
     def R_rel(self) -> ca.SX:
         """The relative orientation T from frame_a to frame_b."""
@@ -165,9 +170,60 @@ class FixedRotation(Animated):
 
 
 class _BodyStates(Animated):
-    """The options choosing a free body's states (enforceStates, useQuaternions), accepted
-    and changing nothing: bodies are moved by joints here."""
-    options = {"enforceStates": False, "useQuaternions": True}
+    """A body's states when its frame_a has no path through joints to the world (MSL's
+    free body, the implicit free joint: ``compiler.charts``): frame_a.r_0 [m], v_0 [m/s]
+    (world frame), the quaternion Q from the world to frame_a and w_a [rad/s] (resolved in
+    frame_a); 13 states. Their start values as MSL's: ``r_0_start``, ``v_0_start`` (MSL's
+    r_0(start=...), v_0(start=...)), the orientation by ``angles_start`` [rad] about the
+    axes ``sequence_start``, ``w_0_start`` [rad/s] (resolved in the world). The ``*_fixed``
+    switches are accepted: the start values are always used (``x0``/``guess`` by state name
+    take precedence); MSL's z_0_start (an acceleration) is not accepted.
+    ``useQuaternions=False`` (angles as states) and ``enforceStates`` are accepted and
+    change nothing: the states are always quaternions, never singular; the angles in
+    ``sequence_angleStates`` from the world to frame_a are recorded as ``phi`` [rad]
+    (outputs, undefined at gimbal lock). Bodies moved by joints have no states of their own
+    (these start values are then unused)."""
+    options = {"enforceStates": False, "useQuaternions": True, "angles_fixed": False,
+               "w_0_fixed": False, "z_0_fixed": False}
+    r_0_start = Parameter((0.0, 0.0, 0.0), "m", "initial position of frame_a, resolved in "
+                                                "world frame (MSL's r_0(start=...))")
+    v_0_start = Parameter((0.0, 0.0, 0.0), "m/s", "initial velocity of frame_a, resolved in "
+                                                  "world frame (MSL's v_0(start=...))")
+    angles_start = Parameter((0.0, 0.0, 0.0), "rad", "initial values of angles to rotate "
+                                                     "world frame around 'sequence_start' "
+                                                     "axes into frame_a")
+    sequence_start = Parameter((1.0, 2.0, 3.0), "1", "sequence of rotations to rotate world "
+                                                     "frame into frame_a at initial time")
+    w_0_start = Parameter((0.0, 0.0, 0.0), "rad/s", "initial values of angular velocity of "
+                                                    "frame_a resolved in world frame")
+    sequence_angleStates = Parameter((1.0, 2.0, 3.0), "1", "sequence of rotations to rotate "
+                                                           "world frame into frame_a around "
+                                                           "the 3 angles recorded as phi")
+    #: prefix of the state names Q and w_a (MSL's BodyShape has them in its inner ``body``)
+    _states_in = ""
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        check_sequence(self, "sequence_start")
+        check_sequence(self, "sequence_angleStates")
+
+    def structure(self, s):
+        T0 = frames.axes_rotations(self.sequence_start, self.angles_start)
+        b = self._states_in
+        s.free_frame(self.frame_a, r=tuple(f"frame_a.r_0[{i}]" for i in (1, 2, 3)),
+                     v=tuple(f"v_0[{i}]" for i in (1, 2, 3)),
+                     Q=tuple(f"{b}Q[{i}]" for i in (1, 2, 3, 4)),
+                     w=tuple(f"{b}w_a[{i}]" for i in (1, 2, 3)),
+                     start={"r": ca.vertcat(self.r_0_start), "v": ca.vertcat(self.v_0_start),
+                            "Q": frames.axes_rotations_Q(self.sequence_start,
+                                                         self.angles_start),
+                            "w": ca.mtimes(T0, ca.vertcat(self.w_0_start))})
+
+    def _angles(self, e) -> None:
+        _, T = frames.parts(e.pos(self.frame_a))
+        _record(e, self._states_in + "phi", frames.axes_rotations_angles(
+            T, self.sequence_angleStates), "rad", "angles from the world frame to frame_a in "
+                                                   "the sequence sequence_angleStates")
 
 
 class _Body(_BodyStates):
@@ -194,6 +250,7 @@ class Body(_Body):
 
     def physics(self, e):
         rigid_body(e, self.frame_a, self.m, self.r_CM, _inertia(self))
+        self._angles(e)
 
 
 class BodyShape(_Body):
@@ -203,12 +260,15 @@ class BodyShape(_Body):
     required = ("r", "r_CM", "m")
     r = Parameter((0.0, 0.0, 0.0), "m", "vector from frame_a to frame_b resolved in frame_a")
     frame_b = Frame_b("coordinate system fixed at body")
+    _states_in = "body."
 
     def structure(self, s):
+        super().structure(s)
         s.transform(self.frame_a, self.frame_b, self.r)
 
     def physics(self, e):
         rigid_body(e, self.frame_a, self.m, self.r_CM, _inertia(self), "body.")
+        self._angles(e)
 
 
 class _ShapedBody(_BodyStates):
@@ -241,16 +301,20 @@ class _ShapedBody(_BodyStates):
             if pname not in params:
                 setattr(self, pname, default(self._values))
 
+    _states_in = "body."
+
     def mass_properties(self):
         """(m [kg], r_CM [m], I [kg.m²] about the centre of mass, parallel to frame_a)."""
         raise NotImplementedError
 
     def structure(self, s):
+        super().structure(s)
         s.transform(self.frame_a, self.frame_b, self.r)
 
     def physics(self, e):
         m, r_CM, I = self.mass_properties()
         rigid_body(e, self.frame_a, m, r_CM, I, "body.")
+        self._angles(e)
         e.variable("m", m, "kg", "mass")
         _record(e, "r_CM", r_CM, "m", "position vector from origin of frame_a to center of "
                                       "mass, resolved in frame_a")
@@ -315,13 +379,25 @@ class BodyCylinder(_ShapedBody):
 
 class PointMass(Animated):
     """Rigid body whose mass m [kg] is concentrated at the origin of frame_a (no inertia:
-    frame_a.t = 0). m has no default (as in MSL). Records r_0, v_0, a_0. Difference from
-    MSL: frame_a must get its orientation from what it is connected to (MSL lets a lone
-    PointMass have none). ``stateSelect`` is accepted (a hint, StateSelect)."""
+    frame_a.t = 0). m has no default (as in MSL). Records r_0, v_0, a_0. A PointMass with
+    no path through joints to the world moves freely with the states frame_a.r_0 [m] and
+    v_0 [m/s] (world frame; start values ``r_0_start``, ``v_0_start``: MSL's
+    r_0(start=...), v_0(start=...)), its frame_a keeping the world's orientation (MSL
+    leaves it undetermined; nothing depends on it). ``stateSelect`` is accepted (a hint,
+    StateSelect)."""
     options = {"stateSelect": StateSelect.avoid}
     required = ("m",)
     m = Parameter(1.0, "kg", "mass of mass point", nonnegative=True)
+    r_0_start = Parameter((0.0, 0.0, 0.0), "m", "initial position of frame_a, resolved in "
+                                                "world frame (MSL's r_0(start=...))")
+    v_0_start = Parameter((0.0, 0.0, 0.0), "m/s", "initial velocity of frame_a, resolved in "
+                                                  "world frame (MSL's v_0(start=...))")
     frame_a = Frame_a("coordinate system fixed at center of mass point")
+
+    def structure(self, s):
+        s.free_frame(self.frame_a, r=tuple(f"frame_a.r_0[{i}]" for i in (1, 2, 3)),
+                     v=tuple(f"v_0[{i}]" for i in (1, 2, 3)), rotation=False,
+                     start={"r": ca.vertcat(self.r_0_start), "v": ca.vertcat(self.v_0_start)})
 
     def physics(self, e):
         r0, T, v0, a0, v, _, _ = _frame_kinematics(e, self.frame_a)
