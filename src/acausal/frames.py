@@ -122,18 +122,20 @@ def _planar_rotation_angle(e, v1, v2):
     return ca.atan2(-ca.dot(ca.cross(e, v1), v2), ca.dot(v1, v2) - ca.dot(e, v1) * ca.dot(e, v2))
 
 
-def axes_rotations_angles(T, sequence) -> ca.SX:
-    """MSL's Frames.axesRotationsAngles(R, sequence) (guessAngle1 = 0): the three angles
-    [rad] with axes_rotations(sequence, angles) = T, each in (−π, π]. Singular where the
-    second rotation aligns the first and third axes (gimbal lock): an output only, never a
+def axes_rotations_angles(T, sequence, guessAngle1=0.0) -> ca.SX:
+    """MSL's Frames.axesRotationsAngles(R, sequence, guessAngle1): the three angles [rad]
+    with axes_rotations(sequence, angles) = T, of the two solutions the one with angles[1]
+    closest to guessAngle1 [rad]. Singular where the second rotation aligns the first and
+    third axes (gimbal lock; angles[1] = guessAngle1 there): an output only, never a
     state here."""
     T = _sx(T)
     e1, e2, e3_2 = axis(sequence[0]), axis(sequence[1]), axis(sequence[2])
     e3_1 = ca.mtimes(T.T, e3_2)                        # row sequence[3] of T
     A, B = ca.dot(e2, e3_1), ca.dot(ca.cross(e1, e2), e3_1)
     a_a, a_b = ca.atan2(A, -B), ca.atan2(-A, B)
-    a1 = ca.if_else(ca.fabs(A) + ca.fabs(B) <= 2e-12, 0,
-                    ca.if_else(ca.fabs(a_a) <= ca.fabs(a_b), a_a, a_b))
+    a1 = ca.if_else(ca.fabs(A) + ca.fabs(B) <= 2e-12, guessAngle1,
+                    ca.if_else(ca.fabs(a_a - guessAngle1) <= ca.fabs(a_b - guessAngle1),
+                               a_a, a_b))
     T1a = planar_rotation(e1, a1)
     a2 = _planar_rotation_angle(e2, ca.mtimes(T1a, e3_1), e3_2)
     a3 = _planar_rotation_angle(e3_2, e2, ca.mtimes(T, ca.mtimes(T1a.T, e2)))

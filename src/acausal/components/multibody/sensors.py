@@ -38,36 +38,7 @@ from .resolving import ResolveInFrameA, ResolveInFrameAB, Resolving, output3
 __all__ = ["AbsolutePosition", "AbsoluteVelocity", "AbsoluteAngularVelocity",
            "AbsoluteAngles", "AbsoluteSensor", "RelativePosition", "RelativeVelocity",
            "RelativeAngularVelocity", "RelativeAngles", "RelativeSensor", "Distance",
-           "CutForce", "CutTorque", "CutForceAndTorque", "Power", "axes_rotations_angles"]
-
-
-def _axis(k: int) -> ca.SX:
-    v = ca.SX.zeros(3)
-    v[k - 1] = 1
-    return v
-
-
-def _planar_rotation_angle(e, v1, v2) -> ca.SX:
-    """MSL's Frames.planarRotationAngle: the angle about e rotating v1 into v2."""
-    return ca.atan2(-ca.dot(ca.cross(e, v1), v2), ca.dot(v1, v2) - ca.dot(e, v1) * ca.dot(e, v2))
-
-
-def axes_rotations_angles(T, sequence, guessAngle1) -> ca.SX:
-    """MSL's Frames.axesRotationsAngles: the angles [rad] that rotate frame 1 about the axes
-    ``sequence`` (three of 1, 2, 3, neighbours distinct) one after the other into frame 2
-    (T = R.T from 1 to 2); of the two solutions the one with angles[1] closest to
-    guessAngle1 [rad]; angles[1] = guessAngle1 in the singular configuration."""
-    i, j, k = (int(x) for x in sequence)
-    e1, e2, e3_2 = _axis(i), _axis(j), _axis(k)
-    e3_1 = T[k - 1, :].T
-    A, B = ca.dot(e2, e3_1), ca.dot(ca.cross(e1, e2), e3_1)
-    a1a, a1b = ca.atan2(A, -B), ca.atan2(-A, B)
-    a1 = ca.if_else(ca.fabs(a1a - guessAngle1) <= ca.fabs(a1b - guessAngle1), a1a, a1b)
-    a1 = ca.if_else(ca.logic_and(ca.fabs(A) <= 1e-12, ca.fabs(B) <= 1e-12), guessAngle1, a1)
-    T1a = frames.planar_rotation(e1, a1)
-    a2 = _planar_rotation_angle(e2, ca.mtimes(T1a, e3_1), e3_2)
-    a3 = _planar_rotation_angle(e3_2, e2, ca.mtimes(T, frames.resolve1(T1a, e2)))
-    return ca.vertcat(a1, a2, a3)
+           "CutForce", "CutTorque", "CutForceAndTorque", "Power"]
 
 
 def _world_twist(e, frame):
@@ -100,7 +71,7 @@ class _Angles(Component):
                                  f"sequence[1] != sequence[2] != sequence[3], e.g. (1, 2, 3)")
 
     def _angles(self, T):
-        return axes_rotations_angles(T, self._values["sequence"], self.guessAngle1)
+        return frames.axes_rotations_angles(T, self._values["sequence"], self.guessAngle1)
 
 
 # ---- absolute sensors ---------------------------------------------------------------------
