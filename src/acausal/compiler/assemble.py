@@ -208,9 +208,9 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     # ---- loops, accelerations ------------------------------------------------------------
     keep, row_names = analyse_loops(tree, phi, ws)
     bodies, T_other = [], None
-    if ws.bodies:                  # planar rigid bodies, for the articulated-body recursion
-        flat_b = resolve([_vc(*[_vc(pos, vel, m, I) for pos, vel, m, I in ws.bodies])])[0]
-        bodies = [(b[0:3], b[3:6], b[6], b[7]) for b in ca.vertsplit(flat_b, 8)]
+    if ws.bodies:                  # rigid bodies, for the articulated-body recursion
+        flat_b = resolve([_vc(*ws.bodies)])[0]
+        bodies = ca.vertsplit(flat_b, [int(k) for k in np.cumsum([0] + [b.numel() for b in ws.bodies])])
         T_other = resolve([ca.sum1(_stack(ws.kinetic_other)) if ws.kinetic_other
                            else ca.SX(0)])[0]
     motion = solve_motion(tree, R_q, phi[keep], ws, (bodies, T_other), resolve)
