@@ -192,11 +192,15 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     phi_eps = ca.jacobian(phi, eps)
     resolve = make_resolver(ws, [eps, epsd, epsdd])
     network = build_network(ws, resolve)
-    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit = network.substitute(resolve([
-        R.inertia, R.conservative, R.flows, phi, phi_eps,
-        _stack([i.der for i in ws.states]),
-        _stack([r for o, r in ws.residuals if not has_network_ports(o)]),
-        _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows])]))
+    # (the rigid bodies, for the articulated-body recursion, in the same substitution, so
+    # that their kinematics is the residuals' and not a copy of it)
+    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit, flat_bodies, T_other = \
+        network.substitute(resolve([
+            R.inertia, R.conservative, R.flows, phi, phi_eps,
+            _stack([i.der for i in ws.states]),
+            _stack([r for o, r in ws.residuals if not has_network_ports(o)]),
+            _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows]),
+            _stack(ws.bodies), ca.sum1(_stack(ws.kinetic_other))]))
     R_all = R_T + R_V + R_Q
     R_q, R_eps = R_all[:nq], R_all[nq:]
     cut = _stack(list(ws.cut_flow_sym.values()))
@@ -207,12 +211,8 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
 
     # ---- loops, accelerations ------------------------------------------------------------
     keep, row_names = analyse_loops(tree, phi, ws)
-    bodies, T_other = [], None
-    if ws.bodies:                  # rigid bodies, for the articulated-body recursion
-        flat_b = resolve([_vc(*ws.bodies)])[0]
-        bodies = ca.vertsplit(flat_b, [int(k) for k in np.cumsum([0] + [b.numel() for b in ws.bodies])])
-        T_other = resolve([ca.sum1(_stack(ws.kinetic_other)) if ws.kinetic_other
-                           else ca.SX(0)])[0]
+    bodies = ca.vertsplit(flat_bodies, [int(k) for k in np.cumsum([0] + [b.numel() for b in
+                                                                      ws.bodies])])
     motion = solve_motion(tree, R_q, phi[keep], ws, (bodies, T_other), resolve)
     lam = ca.SX.zeros(phi.numel())               # dropped (redundant) rows carry nothing
     lam[keep] = motion.lam
