@@ -43,6 +43,9 @@ no compiler or simulation imports.
                         with AxisType1/2, GearType1/2, Controller, PathPlanning1
     multibody           MultiBodyPendulum, MultiBodyDoublePendulum: MSL MultiBody's
                         Elementary Pendulum and DoublePendulum; chain: 3-D joint trees
+    robots              dh_chain: a serial arm from its Denavit–Hartenberg table (standard or
+                        modified); from_urdf: a fixed-base robot from its URDF file (also
+                        ``acausal.multibody``)
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
@@ -62,6 +65,7 @@ from .heat_losses import RotationalHeatLosses, TranslationalHeatLosses
 from .linkages import (DrivenFourBar, FourBar, KinematicLoop, Parallelogram, PistonEngine,
                        SliderCrank, add_link)
 from .multibody import MultiBodyDoublePendulum, MultiBodyPendulum, chain
+from .robots import dh_chain, from_urdf
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
@@ -79,4 +83,4 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "ChuaCircuit", "RotationalEddyCurrentBrake", "TranslationalEddyCurrentBrake",
            "TranslationalHeatLosses", "RotationalHeatLosses", "ResistorExample",
            "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
-           "MultiBodyDoublePendulum", "chain"]
+           "MultiBodyDoublePendulum", "chain", "dh_chain", "from_urdf"]

@@ -21,9 +21,13 @@ orientation states and no singularity: a body must be connected to the World thr
 joints. ``compiled.lagrange`` gives M(q), the Coriolis/centrifugal terms and gravity as for
 planar models.
 
-Not here yet: free and spherical joints (orientation states), loops of 3-D frames, the
-spatial articulated-body recursion (accelerations come from the dense solve of M(q)),
-forces, sensors, visualizers, URDF import, animation.
+The bodies register their mass properties with the compiler (``e.rigid_body``), so the
+accelerations of trees come from the O(N) articulated-body recursion in spatial vectors
+(``acausal.compiler.recursive``), checked against the Lagrangian's M(q) at compile time.
+Robot arms from Denavit–Hartenberg tables and URDF files: ``acausal.multibody``.
+
+Not here yet: free and spherical joints (orientation states), loops of 3-D frames,
+forces, sensors, visualizers, animation.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .joints import Prismatic, Revolute
