@@ -36,6 +36,9 @@ Requires the ``bench`` extra (pin, scipy, example-robot-data).
 from __future__ import annotations
 
 import argparse
+import atexit
+import shutil
+import tempfile
 import time
 from importlib.metadata import distribution
 
@@ -140,9 +143,12 @@ def bench(name: str, n: int | None, repeat: int, jit: bool) -> dict:
     r["instr"] = folded.n_instructions()
     r["rhs"] = mapped_per_eval(folded, [y[inv]])
     r["rhs_jit"] = float("nan")
-    if jit:
+    if jit:                   # gcc's files in a temporary directory, removed at exit
+        tmp = tempfile.mkdtemp(prefix="acausal_jit_")
+        atexit.register(shutil.rmtree, tmp, ignore_errors=True)
         fj = ca.Function("folded_jit", [compiled.x], [folded(compiled.x)],
-                         {"jit": True, "compiler": "shell", "jit_options": {"flags": ["-O2"]}})
+                         {"jit": True, "compiler": "shell",
+                          "jit_options": {"flags": ["-O2"], "directory": tmp + "/"}})
         r["rhs_jit"] = mapped_per_eval(fj, [y[inv]])
     r["aba"] = per_call(lambda: pin.aba(pmodel, pdata, y[:nq], y[nq:], tau))
 

@@ -8,7 +8,8 @@ modified conventions) and from URDF files.
   (its own URDF parser and algorithms): M(q) equals Pinocchio's CRBA to 1e-10, the
   accelerations Pinocchio's ABA to 1e-9 (both relative to their largest entry), at random
   states; the drive torques of acausal's inverse dynamics along a trajectory equal
-  Pinocchio's RNEA to 1e-9; the joints' limits and axes are recorded.
+  Pinocchio's RNEA to 1e-9; the joints' limits and axes are recorded. The Panda (fixed
+  joints, prismatic fingers, a mimic joint) likewise, with and without its mimic joint.
 """
 from __future__ import annotations
 
@@ -131,22 +132,29 @@ def ur5():
     return path, pmodel
 
 
-def test_ur5_mass_matrix_and_accelerations_equal_pinocchio(ur5):
+def equal_pinocchio(model, pmodel, states=5, seed=7):
+    """M(q) against Pinocchio's CRBA (1e-10) and the accelerations against Pinocchio's
+    (1e-9, relative to their largest entry): ABA, or for mimic joints (which Pinocchio's
+    ABA refuses) CRBA⁻¹(τ − nonLinearEffects), at random states."""
     import pinocchio as pin
-    path, pmodel = ur5
     data = pmodel.createData()
-    model = from_urdf(path, gravity=G)
     compiled = acausal.compile(model)
-    assert compiled.method == "articulated-body recursion"
     n = pmodel.nv
-    order = [compiled.coordinates.index(f"{nm}.phi") for nm in list(pmodel.names)[1:]]
+    coords = [f"{nm}.{'s' if model.limits[nm]['type'] == 'prismatic' else 'phi'}"
+              for nm, joint in zip(list(pmodel.names)[1:], list(pmodel.joints)[1:])
+              if joint.shortname() != "JointModelMimic"]
+    assert sorted(coords) == sorted(compiled.coordinates)
+    order = [compiled.coordinates.index(c) for c in coords]
     M_fun = compiled.lagrange.function("M")
     p = compiled.param_vector()
     x_index = [compiled.x_names.index(nm) for nm in compiled.coordinates] + \
               [compiled.x_names.index(nm) for nm in compiled.lagrange.qd_names]
-    rng = np.random.default_rng(7)
-    for _ in range(5):
-        q, v = rng.uniform(-np.pi, np.pi, n), rng.normal(size=n)
+    mimic = any(j.shortname() == "JointModelMimic" for j in pmodel.joints)
+    rng = np.random.default_rng(seed)
+    for _ in range(states):
+        q = rng.uniform(np.maximum(pmodel.lowerPositionLimit, -np.pi),
+                        np.minimum(pmodel.upperPositionLimit, np.pi))
+        v = rng.normal(size=n)
         qa, va = np.empty(n), np.empty(n)
         qa[order], va[order] = q, v
         M = np.array(M_fun(0.0, qa, va, [], p))[np.ix_(order, order)]
@@ -156,11 +164,35 @@ def test_ur5_mass_matrix_and_accelerations_equal_pinocchio(ur5):
         x = np.empty(2 * n)
         x[x_index] = np.concatenate([qa, va])
         a = np.array(compiled.f(x=x, p=p)["xdot"]).ravel()[x_index][n:][order]
-        a_pin = pin.aba(pmodel, data, q, v, np.zeros(n))
+        a_pin = np.linalg.solve(M_pin, -pin.nonLinearEffects(pmodel, data, q, v)) if mimic \
+            else pin.aba(pmodel, data, q, v, np.zeros(n))
         assert np.max(np.abs(a - a_pin)) < 1e-9 * np.max(np.abs(a_pin))
+    return compiled
+
+
+def test_ur5_mass_matrix_and_accelerations_equal_pinocchio(ur5):
+    path, pmodel = ur5
+    model = from_urdf(path, gravity=G)
+    assert equal_pinocchio(model, pmodel).method == "articulated-body recursion"
     limits = model.limits["shoulder_lift_joint"]
     assert limits["lower"] == pytest.approx(-3.14159265359) and limits["effort"] == 150.0
     assert limits["axis"] == (0.0, 1.0, 0.0) and limits["type"] == "revolute"
+
+
+@pytest.mark.parametrize("mimic", [False, True])
+def test_panda_equals_pinocchio(mimic):
+    """The Panda (fixed joints with rotated origins, a hand, two prismatic fingers, the
+    second mimicking the first): read as Pinocchio reads it with and without mimic joints;
+    tied (one coordinate for both fingers) it is solved densely, since the fingers' one
+    coordinate moves them in opposite directions."""
+    pin = pytest.importorskip("pinocchio")
+    path = robot_file("panda_description/urdf/panda.urdf")
+    pmodel = pin.buildModelFromUrdf(path, mimic)
+    pmodel.gravity.linear = np.array(G)
+    model = from_urdf(path, gravity=G, mimic=mimic)
+    compiled = equal_pinocchio(model, pmodel)
+    assert compiled.lagrange.q.numel() == (8 if mimic else 9)
+    assert model.limits["panda_finger_joint1"]["damping"] == 0.3
 
 
 def test_ur5_inverse_dynamics_equals_pinocchio_rnea(ur5):

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..components.multibody import (Body, FixedRotation, FixedTranslation, Prismatic,
                                     Revolute, RotationTypes, World)
+from ..components.rotational import IdealGear
 from ..core import Model
 from ..errors import ParameterError, StructureError
 
@@ -99,11 +100,13 @@ def dh_chain(table: Sequence[Mapping], convention: str = "standard", name: str =
 # ---- URDF -----------------------------------------------------------------------------------
 class JointLimits(dict):
     """A URDF joint's <limit>: lower, upper [rad or m], effort [N.m or N], velocity [rad/s
-    or m/s] (those the file gives), with the joint's ``type`` and ``axis``."""
+    or m/s], and its <dynamics>: damping [N.m.s/rad or N.s/m], friction [N.m or N] (those
+    the file gives), with the joint's ``type`` and ``axis``. Recorded, not applied:
+    connect dampers or friction elements to the joint's flanges for them."""
 
 
 def from_urdf(path, name: str | None = None, useAxisFlange: bool = True,
-              gravity: Sequence[float] = (0.0, 0.0, -9.81)) -> Model:
+              gravity: Sequence[float] = (0.0, 0.0, -9.81), mimic: bool = True) -> Model:
     """The Model of a fixed-base robot described by the URDF file ``path``.
 
     Every link with mass becomes a ``Body`` (URDF <inertial>: mass, origin and inertia,
@@ -118,9 +121,13 @@ def from_urdf(path, name: str | None = None, useAxisFlange: bool = True,
 
     ``model.limits`` maps each moving joint's name to its ``JointLimits`` (lower, upper,
     effort, velocity as the file gives them; type and axis); ``model.joints`` lists the
-    joint components in the file's order. Meshes, collisions and transmissions are read
-    past; ``floating`` and ``planar`` joints, and ``mimic``, are refused (free joints are
-    not here yet).
+    joint components in the file's order. A joint that mimics another (<mimic joint
+    multiplier offset>) follows it through their axis flanges when ``mimic`` (connected
+    flanges for multiplier 1, an IdealGear ``<joint>_mimic`` of ratio 1/multiplier between
+    revolute ones; offsets other than 0 are refused), or is a joint of its own when not
+    (as Pinocchio's ``buildModelFromUrdf`` reads it by default). Meshes, collisions and
+    transmissions are read past; ``floating`` and ``planar`` joints are refused (free joints
+    are not here yet).
     """
     path = Path(path)
     try:
@@ -141,7 +148,7 @@ def from_urdf(path, name: str | None = None, useAxisFlange: bool = True,
     gnorm = float(np.linalg.norm(g))
     model = Model(name or robot.get("name") or path.stem)
     model.world = World(g=gnorm, n=tuple(g / gnorm) if gnorm else (0.0, 0.0, -1.0))
-    model.limits, model.joints = {}, []
+    model.limits, model.joints, model.joint_of = {}, [], {}
     taken = {"world"}
 
     def unique(raw: str) -> str:
@@ -166,7 +173,36 @@ def from_urdf(path, name: str | None = None, useAxisFlange: bool = True,
             pending.remove(j)
             frame_of[j.find("child").get("link")] = _add_joint(model, j, frame_of, unique,
                                                                useAxisFlange, links)
+    for j in joints:
+        if mimic and j.find("mimic") is not None:
+            _add_mimic(model, j, unique, useAxisFlange)
     return model
+
+
+def _add_mimic(model, j, unique, useAxisFlange: bool) -> None:
+    """The follower joint ``j`` tied to its leader through their axis flanges."""
+    m, jname = j.find("mimic"), j.get("name")
+    leader = m.get("joint")
+    multiplier, offset = float(m.get("multiplier", "1")), float(m.get("offset", "0"))
+    where = f"from_urdf: joint '{jname}' mimics '{leader}'"
+    if leader not in model.limits or jname not in model.limits:
+        raise StructureError(f"{where}, which is no moving joint of the file")
+    if not useAxisFlange or offset != 0.0 or multiplier == 0.0 or (
+            multiplier != 1.0 and model.limits[jname]["type"] == "prismatic") \
+            or (model.limits[jname]["type"] == "prismatic") != (
+            model.limits[leader]["type"] == "prismatic"):
+        raise StructureError(f"{where} with multiplier {multiplier:g} and offset {offset:g}: "
+                             f"supported are multiplier 1 and offset 0 (any multiplier "
+                             f"between revolute joints) with useAxisFlange=True; or read it "
+                             f"as a joint of its own, from_urdf(..., mimic=False)")
+    a, b = (model.joint_of[n].axis for n in (leader, jname))
+    if multiplier == 1.0:
+        model.connect(a, b)
+        return
+    gear = IdealGear(ratio=1.0 / multiplier)         # phi_leader = phi_follower/multiplier
+    setattr(model, unique(f"{jname}_mimic"), gear)
+    model.connect(a, gear.flange_a)
+    model.connect(gear.flange_b, b)
 
 
 def _floats(element, attribute: str, default: str) -> np.ndarray:
@@ -221,9 +257,6 @@ def _add_joint(model, j, frame_of, unique, useAxisFlange: bool, links):
     if kind not in ("revolute", "continuous", "prismatic", "fixed"):
         raise StructureError(f"from_urdf: joint '{jname}' is of type '{kind}'; revolute, "
                              f"continuous, prismatic and fixed joints are supported")
-    if j.find("mimic") is not None:
-        raise StructureError(f"from_urdf: joint '{jname}' mimics another joint (a "
-                             f"constraint between joints, not supported yet)")
     frame = _placement(model, f"{jname}_origin", j.find("origin"),
                        frame_of[j.find("parent").get("link")], unique)
     if kind != "fixed":
@@ -233,11 +266,14 @@ def _add_joint(model, j, frame_of, unique, useAxisFlange: bool, links):
         setattr(model, unique(jname), joint)
         model.connect(frame, joint.frame_a)
         frame = joint.frame_b
-        limit = j.find("limit")
-        model.limits[jname] = JointLimits(
-            {k: float(limit.get(k)) for k in ("lower", "upper", "effort", "velocity")
-             if limit is not None and limit.get(k) is not None},
-            type=kind, axis=tuple(float(a) for a in axis))
+        given = {k: float(el.get(k)) for tag, keys in (("limit", ("lower", "upper", "effort",
+                                                                    "velocity")),
+                                                      ("dynamics", ("damping", "friction")))
+                 for el in [j.find(tag)] if el is not None for k in keys
+                 if el.get(k) is not None}
+        model.limits[jname] = JointLimits(given, type=kind,
+                                          axis=tuple(float(a) for a in axis))
         model.joints.append(joint)
+        model.joint_of[jname] = joint
     _add_body(model, links[j.find("child").get("link")], frame, unique)
     return frame
