@@ -240,3 +240,11 @@ def test_from_urdf_refuses_what_it_cannot_build(tmp_path):
         from_urdf(two)
     with pytest.raises(acausal.ParameterError, match="cannot read"):
         from_urdf(tmp_path / "missing.urdf")
+    offset = tmp_path / "offset.urdf"
+    offset.write_text('<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+                      '<joint name="j1" type="revolute"><parent link="a"/><child link="b"/>'
+                      '</joint><joint name="j2" type="revolute"><parent link="b"/>'
+                      '<child link="c"/><mimic joint="j1" offset="0.1"/></joint></robot>')
+    with pytest.raises(acausal.StructureError, match="'j2' mimics 'j1' with multiplier 1 "
+                                                     "and offset 0.1"):
+        from_urdf(offset)

@@ -234,15 +234,15 @@ def _placement(model, owner: str, origin, parent_frame, unique):
 def _add_body(model, link, frame, unique) -> None:
     """A Body for the link's <inertial> (none when it has no mass)."""
     inertial = link.find("inertial")
-    if inertial is None:
-        return
-    m = float(inertial.find("mass").get("value", "0"))
+    mass = inertial.find("mass") if inertial is not None else None
+    m = float(mass.get("value", "0")) if mass is not None else 0.0
     if m <= 0:
         return
     origin = inertial.find("origin")
     R = _rpy(_floats(origin, "rpy", "0 0 0"))
     el = inertial.find("inertia")
-    c = {k: float(el.get(k, "0")) for k in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")}
+    c = {k: float(el.get(k, "0")) if el is not None else 0.0
+         for k in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")}
     I = R @ np.array([[c["ixx"], c["ixy"], c["ixz"]], [c["ixy"], c["iyy"], c["iyz"]],
                       [c["ixz"], c["iyz"], c["izz"]]]) @ R.T
     body = Body(m=m, r_CM=tuple(_floats(origin, "xyz", "0 0 0")), I_11=I[0, 0],
