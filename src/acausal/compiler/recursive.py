@@ -10,7 +10,7 @@ terms are already in τ (from the Lagrangian by AD, also O(N)).
 Spatial vectors are resolved in the world and taken at the world origin, so no coordinate
 transforms appear: motion vectors V = (ω, v_O), v_O the velocity of the body point at the
 world origin, and force vectors (moment about the origin, force). Planar ones have 3
-components (ω, v_Ox, v_Oy), 3-D ones 6; one recursion serves both (``_steps(d)``), and a
+components (ω, v_Ox, v_Oy), 3-D ones 6; one recursion serves both (``STEPS[d]``), and a
 model whose bodies are all planar or all 3-D uses it. A body's spatial inertia about the
 origin is [[Ī_c + m c×c×ᵀ, m c×], [m c×ᵀ, m 1]] (c its centre of mass, Ī_c its rotational
 inertia resolved in the world).
