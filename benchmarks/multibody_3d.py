@@ -25,8 +25,11 @@ Measured in the same run, for each case:
    rtol 1e-12, atol 1e-14.
 Accelerations agree: max |q''(acausal) − q''(ABA)| / max(1, |q''|) at a random state.
 
-Targets (of the 3-D multibody issue): compile of the 6-axis arm < 0.2 s, right-hand side
-<= 2x ABA, simulation <= 2x Pinocchio.
+Targets: compile of the 6-axis arm < 0.2 s, right-hand side <= 2x ABA, simulation <= 2x
+Pinocchio. Where the time goes: the right-hand side has about as many operations as
+Pinocchio's ABA (one spatial recursion plus the Coriolis and gravity terms of the Lagrangian
+by AD), but CasADi's virtual machine runs them several times slower than compiled C++; the
+same code compiled to C (--jit, what a native FMU runs) is on par with ABA.
 
     python benchmarks/multibody_3d.py                  # ur5 and N = 6, 16, 32, 64
     python benchmarks/multibody_3d.py --ns 6 16 --jit
