@@ -195,12 +195,16 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     phi_eps = ca.jacobian(phi, eps)
     resolve = make_resolver(ws, [eps, epsd, epsdd])
     network = build_network(ws, resolve)
-    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit, nh = network.substitute(resolve([
-        R.inertia, R.conservative, R.flows, phi, phi_eps,
-        _stack([i.der for i in ws.states]),
-        _stack([r for o, r in ws.residuals if not has_network_ports(o)]),
-        _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows]),
-        _stack([r for _, _, r, _ in ws.velocity_constraints])]))
+    # (the rigid bodies, for the articulated-body recursion, in the same substitution, so
+    # that their kinematics is the residuals' and not a copy of it)
+    R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit, nh, flat_bodies, T_other = \
+        network.substitute(resolve([
+            R.inertia, R.conservative, R.flows, phi, phi_eps,
+            _stack([i.der for i in ws.states]),
+            _stack([r for o, r in ws.residuals if not has_network_ports(o)]),
+            _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows]),
+            _stack([r for _, _, r, _ in ws.velocity_constraints]),
+            _stack(ws.bodies), ca.sum1(_stack(ws.kinetic_other))]))
     R_all = R_T + R_V + R_Q
     R_q, R_eps = R_all[:nq], R_all[nq:]
     cut = _stack(list(ws.cut_flow_sym.values()))
@@ -211,12 +215,8 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
 
     # ---- loops, accelerations ------------------------------------------------------------
     keep, row_names = analyse_loops(tree, phi, ws)
-    bodies, T_other = [], None
-    if ws.bodies:                  # planar rigid bodies, for the articulated-body recursion
-        flat_b = resolve([_vc(*[_vc(pos, vel, m, I) for pos, vel, m, I in ws.bodies])])[0]
-        bodies = [(b[0:3], b[3:6], b[6], b[7]) for b in ca.vertsplit(flat_b, 8)]
-        T_other = resolve([ca.sum1(_stack(ws.kinetic_other)) if ws.kinetic_other
-                           else ca.SX(0)])[0]
+    bodies = ca.vertsplit(flat_bodies, [int(k) for k in np.cumsum([0] + [b.numel() for b in
+                                                                      ws.bodies])])
     check_inertia(tree.charts, R_T[:nq], tree.qdd)
     if ws.velocity_constraints:
         if keep or tree.charts:

@@ -80,7 +80,7 @@ class Workspace:
     inputs: list = field(default_factory=list)              # (Input, SX)
     outputs: list = field(default_factory=list)             # (Output, expr)
     kinetic: list = field(default_factory=list)
-    bodies: list = field(default_factory=list)              # (pos, vel, m, I) rigid bodies
+    bodies: list = field(default_factory=list)              # rigid bodies, packed
     kinetic_other: list = field(default_factory=list)       # kinetic energy not of bodies
     potential: list = field(default_factory=list)
     flows: list = field(default_factory=list)               # (port, expr) explicit flows
@@ -496,15 +496,28 @@ class PhysicsBuilder(_Base):
         self._ws.kinetic.append(sx(T))
         self._ws.kinetic_other.append(sx(T))
 
-    def rigid_body(self, frame: PhysicalPort, m, I) -> None:
-        """A planar rigid body of mass m [kg] and inertia I [kg.m²] about its centre of mass,
-        which is ``frame``'s origin: adds its kinetic energy ½m|v|² + ½Iω², and lets the
-        compiler use the O(N) articulated-body recursion for long chains."""
+    def rigid_body(self, frame: PhysicalPort, m, I, r_CM=None) -> None:
+        """A rigid body fixed to ``frame``: adds its kinetic energy and lets the compiler use
+        the O(N) articulated-body recursion for trees (``compiler.recursive``).
+
+        Planar frame: mass m [kg] and inertia I [kg.m²] about the centre of mass, which is
+        the frame's origin: ½m|v|² + ½Iω². 3-D frame: mass m [kg] at r_CM [m] (resolved in
+        the frame; default its origin), inertia tensor I [kg.m²] (3×3) about the centre of
+        mass, parallel to the frame: ½m|v + w×r_CM|² + ½wᵀIw, (v, w) the frame's twist."""
         self._mine(frame)
         n = self._ws.node_of[frame]
         v = n.vel
-        self._ws.kinetic.append(sx(0.5 * m * ca.sumsqr(v[:2]) + 0.5 * I * v[2] ** 2))
-        self._ws.bodies.append((n.pos, n.vel, sx(m), sx(I)))
+        if frame.domain is MULTIBODY:
+            r_CM = ca.SX.zeros(3) if r_CM is None else sx(r_CM)
+            I = sx(I)
+            v_cm = v[:3] + ca.cross(v[3:6], r_CM)
+            T = 0.5 * m * ca.dot(v_cm, v_cm) + 0.5 * ca.dot(v[3:6], ca.mtimes(I, v[3:6]))
+            packed = ca.vertcat(n.pos, v, sx(m), r_CM, ca.vec(I))
+        else:
+            T = 0.5 * m * ca.sumsqr(v[:2]) + 0.5 * I * v[2] ** 2
+            packed = ca.vertcat(n.pos, v, sx(m), sx(I))
+        self._ws.kinetic.append(sx(T))
+        self._ws.bodies.append(packed)
 
     def velocity_constraint(self, name: str, expr, unit: str = "N",
                             description: str = "") -> ca.SX:

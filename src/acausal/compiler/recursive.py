@@ -1,17 +1,27 @@
-"""O(N) accelerations for planar trees: the articulated-body recursion on M q̈ = τ.
+"""O(N) accelerations for trees: the articulated-body recursion on M q̈ = τ, planar and 3-D.
 
-For a mechanism whose joint graph is a tree, whose inertia is planar rigid bodies
-(PhysicsBuilder.rigid_body) plus 1-D inertias that each move with a single coordinate
-(armature), the mass matrix need not be formed and factorized (O(N³) as a symbolic solve):
-Featherstone's articulated-body algorithm, run with zero velocity and zero external force,
-applies M⁻¹ to a vector in O(N). The velocity-dependent, gravity and applied terms are
-already in τ (from the Lagrangian by AD, also O(N)).
+For a mechanism whose joint graph is a tree, whose inertia is rigid bodies
+(PhysicsBuilder.rigid_body: planar or 3-D) plus 1-D inertias that each move with a single
+coordinate (armature), the mass matrix need not be formed and factorized (O(N³) as a
+symbolic solve): Featherstone's articulated-body algorithm, run with zero velocity and zero
+external force, applies M⁻¹ to a vector in O(N). The velocity-dependent, gravity and applied
+terms are already in τ (from the Lagrangian by AD, also O(N)).
 
-Spatial vectors are planar (ω, v_Ox, v_Oy): velocities of the body point at the world origin,
-and forces (moment about the origin, fx, fy), all in world coordinates, so no coordinate
-transforms appear. Each coordinate is a 1-dof joint with motion vector S_i = ∂V/∂q̇_i of the
-bodies it moves; its parent is the closest coordinate that moves all of them (a free body's
-x, y, phi are a chain of three such joints).
+Spatial vectors are resolved in the world and taken at the world origin, so no coordinate
+transforms appear: motion vectors V = (ω, v_O), v_O the velocity of the body point at the
+world origin, and force vectors (moment about the origin, force). Planar ones have 3
+components (ω, v_Ox, v_Oy), 3-D ones 6; one recursion serves both (``STEPS[d]``), and a
+model whose bodies are all planar or all 3-D uses it. A body's spatial inertia about the
+origin is [[Ī_c + m c×c×ᵀ, m c×], [m c×ᵀ, m 1]] (c its centre of mass, Ī_c its rotational
+inertia resolved in the world).
+
+Each generalized velocity v_i is a 1-dof joint with motion vector S_i = ∂V/∂v_i of the
+bodies it moves; its parent is the closest velocity that moves all of them. A joint of k
+degrees of freedom (a spherical joint's 3 angular velocities, a free body's 6) plugs in as
+k such steps with the same bodies, one the parent of the next: the recursion takes only
+V = (∂V/∂v)·v, whatever the joint's positions (angles, quaternions) are, and k successive
+1-dof steps eliminate the joint's k×k block D = (SᵀI^A S)⁻¹ pivot by pivot, which is
+regular whenever the block is (positive definite: every pivot is positive).
 
 Before it is used, the recursion is checked against the Lagrangian mass matrix at a random
 state; a model outside its assumptions falls back to the dense solve.
@@ -21,8 +31,10 @@ from __future__ import annotations
 import casadi as ca
 import numpy as np
 
+from ..frames import parts, skew
 
-def _spatial() -> ca.Function:
+
+def _spatial_planar() -> ca.Function:
     """(pose, rates, m, I) of a body's centre of mass -> its spatial velocity (ω, v_O) and its
     spatial inertia about the world origin (m [kg], I [kg.m²] about the centre of mass)."""
     pos, vel, m, I = ca.SX.sym("pos", 3), ca.SX.sym("vel", 3), ca.SX.sym("m"), ca.SX.sym("I")
@@ -30,15 +42,37 @@ def _spatial() -> ca.Function:
     V = ca.vertcat(vel[2], vel[0] + vel[2] * y, vel[1] - vel[2] * x)
     mx, my = m * x, m * y
     Ib = ca.reshape(ca.vertcat(I + mx * x + my * y, -my, mx, -my, m, 0, mx, 0, m), 3, 3)
-    return ca.Function("spatial", [pos, vel, m, I], [V, Ib])
+    return ca.Function("spatial", [ca.vertcat(pos, vel, m, I)], [V, Ib])
 
 
-def _backward() -> ca.Function:
+def _spatial_3d() -> ca.Function:
+    """(pose (r_0, R.T), twist (v, w) resolved in the frame, m, r_CM, I) of a body's frame
+    -> its spatial velocity (ω, v_O) and spatial inertia about the world origin, both
+    resolved in the world (m [kg], r_CM [m] resolved in the frame, I [kg.m²] about the centre
+    of mass, parallel to the frame)."""
+    pos, vel, m = ca.SX.sym("pos", 12), ca.SX.sym("vel", 6), ca.SX.sym("m")
+    r_CM, I = ca.SX.sym("r_CM", 3), ca.SX.sym("I", 3, 3)
+    r0, T = parts(pos)
+    w0 = ca.mtimes(T.T, vel[3:6])
+    V = ca.vertcat(w0, ca.mtimes(T.T, vel[:3]) - ca.cross(w0, r0))
+    c = r0 + ca.mtimes(T.T, r_CM)
+    cx = skew(c)
+    mcx = m * cx
+    Ib = ca.blockcat([[ca.mtimes([T.T, I, T]) - ca.mtimes(mcx, cx), mcx],
+                      [mcx.T, m * ca.SX.eye(3)]])
+    return ca.Function("spatial3", [ca.vertcat(pos, vel, m, r_CM, ca.vec(I))], [V, Ib])
+
+
+#: packed body (what PhysicsBuilder.rigid_body registers) -> (V, I_O), by its length
+SPATIAL = {8: _spatial_planar(), 31: _spatial_3d()}
+
+
+def _backward(d: int) -> ca.Function:
     """One leaves-to-root step of the recursion for coordinate i: from its articulated
     inertia IA, motion vector S, force τ, bias pA and armature J to U = IA S, D = 1/(Sᵀ U + J),
     u = τ − Sᵀ pA and what it passes to its parent: IA − U D Uᵀ, pA + U D u."""
-    IA, S, tau = ca.SX.sym("IA", 3, 3), ca.SX.sym("S", 3), ca.SX.sym("tau")
-    pA, J = ca.SX.sym("pA", 3), ca.SX.sym("J")
+    IA, S, tau = ca.SX.sym("IA", d, d), ca.SX.sym("S", d), ca.SX.sym("tau")
+    pA, J = ca.SX.sym("pA", d), ca.SX.sym("J")
     U = ca.mtimes(IA, S)
     D = 1 / (ca.dot(S, U) + J)
     u = tau - ca.dot(S, pA)
@@ -47,15 +81,16 @@ def _backward() -> ca.Function:
                        [U, D, u, IA - ca.mtimes(UD, U.T), pA + UD * u])
 
 
-def _forward() -> ca.Function:
+def _forward(d: int) -> ca.Function:
     """One root-to-leaves step: q̈_i = D (u − Uᵀ a_parent), a_i = a_parent + S q̈_i."""
-    U, S, ap = ca.SX.sym("U", 3), ca.SX.sym("S", 3), ca.SX.sym("ap", 3)
+    U, S, ap = ca.SX.sym("U", d), ca.SX.sym("S", d), ca.SX.sym("ap", d)
     D, u = ca.SX.sym("D"), ca.SX.sym("u")
     qdd = (u - ca.dot(U, ap)) * D
     return ca.Function("aba_fwd", [U, D, u, S, ap], [qdd, ap + S * qdd])
 
 
-SPATIAL, BACKWARD, FORWARD = _spatial(), _backward(), _forward()
+#: the two steps in spatial vectors of dimension d (3 planar, 6 in space)
+STEPS = {d: (_backward(d), _forward(d)) for d in (3, 6)}
 
 
 def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_times: ca.SX,
@@ -64,21 +99,28 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_
     assumptions (checked numerically against ``M_times`` = M·probe, the Lagrangian mass
     matrix applied to the symbol ``probe``).
 
-    ``bodies``: (pos, vel, m, I) of each rigid body's centre of mass frame; ``T_other``: the
-    rest of the kinetic energy (1-D inertias), which must be Σ ½ J_i q̇_i² (armature).
+    ``q``, ``qd``: positions and velocities (``qd`` the velocities the accelerations are
+    of); ``bodies``: each rigid body packed as ``PhysicsBuilder.rigid_body`` registers it
+    (planar: pose and rates of the centre of mass, m, I; 3-D: pose and twist of its frame,
+    m, r_CM, I); ``T_other``: the rest of the kinetic energy (1-D inertias), which must be
+    Σ ½ J_i q̇_i² (armature).
     """
-    n = q.numel()
-    if n < 2 or not bodies:
-        return None
-    spatial = [SPATIAL(pos, vel, m, I) for pos, vel, m, I in bodies]
+    n = qd.numel()
+    kinds = {b.numel() for b in bodies}
+    if n < 2 or len(kinds) != 1:
+        return None                                  # no bodies, or planar and 3-D mixed
+    spatial = SPATIAL[kinds.pop()]
+    d = spatial.size1_out(0)
+    BACKWARD, FORWARD = STEPS[d]
+    spatial = [spatial(b) for b in bodies]
     V = ca.vertcat(*[v for v, _ in spatial])
-    Jall = ca.jacobian(V, qd)                       # one sweep: 3 rows per body
+    Jall = ca.jacobian(V, qd)                       # one sweep: d rows per body
     rows, cols = Jall.sparsity().get_triplet()
     deps = [set() for _ in bodies]
     for r, c in zip(rows, cols):
-        deps[r // 3].add(c)
-    deps = [frozenset(d) for d in deps]
-    moved = [frozenset(b for b, d in enumerate(deps) if i in d) for i in range(n)]
+        deps[r // d].add(c)
+    deps = [frozenset(dep) for dep in deps]
+    moved = [frozenset(b for b, dep in enumerate(deps) if i in dep) for i in range(n)]
     if any(not s for s in moved):
         return None                                  # a coordinate moves no body
     parent = []
@@ -86,20 +128,20 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_
         anc = [j for j in range(n) if j != i and moved[j] >= moved[i]
                and (moved[j] != moved[i] or j < i)]
         parent.append(min(anc, key=lambda j: (len(moved[j]), -j)) if anc else None)
-    S = [Jall[3 * min(moved[i]):3 * min(moved[i]) + 3, i] for i in range(n)]
+    S = [Jall[d * min(moved[i]):d * min(moved[i]) + d, i] for i in range(n)]
     own = [[] for _ in range(n)]                     # bodies whose deepest coordinate is i
-    for b, d in enumerate(deps):
-        if d:
-            own[max(d, key=lambda j: (-len(moved[j]), j))].append(b)
+    for b, dep in enumerate(deps):
+        if dep:
+            own[max(dep, key=lambda j: (-len(moved[j]), j))].append(b)
     order = _topological(parent)
     tau_value, tau = tau, ca.SX.sym("tau", n)
     Ib = [ib for _, ib in spatial]                    # about the world origin
-    IA = [sum((Ib[b] for b in own[i]), ca.SX.zeros(3, 3)) for i in range(n)]
+    IA = [sum((Ib[b] for b in own[i]), ca.SX.zeros(d, d)) for i in range(n)]
     H = ca.hessian(T_other, qd)[0] if T_other is not None else ca.SX(n, n)
     r, c = H.sparsity().get_triplet()
     if any(i != j for i, j in zip(r, c)) or ca.depends_on(H, ca.vertcat(q, qd)):
         return None                       # 1-D inertia coupling coordinates: not armature
-    pA = [ca.SX.zeros(3) for _ in range(n)]
+    pA = [ca.SX.zeros(d) for _ in range(n)]
     U, D, u = [None] * n, [None] * n, [None] * n
     for i in reversed(order):                       # leaves to root
         IA_i = ca.tril2symm(ca.tril(IA[i]))        # sums: the lower triangle suffices
@@ -110,7 +152,7 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_
     a = [None] * n
     qdd = [None] * n
     for i in order:                                 # root to leaves
-        ap = a[parent[i]] if parent[i] is not None else ca.SX.zeros(3)
+        ap = a[parent[i]] if parent[i] is not None else ca.SX.zeros(d)
         qdd[i], a[i] = FORWARD(U[i], D[i], u[i], S[i], ap)
     qdd = ca.vertcat(*qdd)
     if not _agrees(q, tau, qdd, M_times, probe, p, p_default):
@@ -132,7 +174,7 @@ def _topological(parent: list) -> list[int]:
 def _agrees(q, tau, qdd, M_times, probe, p, p_default) -> bool:
     """ABA(M x) == x at a random state: the recursion matches the Lagrangian inertia."""
     rng = np.random.default_rng(1)
-    x = rng.standard_normal(q.numel())
+    x = rng.standard_normal(tau.numel())
     Mx = ca.Function("Mx", [q, probe, p], [M_times], {"allow_free": True})
     f = ca.Function("aba", [q, tau, p], [qdd], {"allow_free": True})
     if Mx.has_free() or f.has_free():

@@ -46,6 +46,9 @@ no compiler or simulation imports.
     multibody_loops     MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
                         MultiBodyEngine1a (on MultiBodyEngine1Base): MSL MultiBody's Loops
                         examples; EngineJointRRP, ParallelFourbar
+    robots              dh_chain: a serial arm from its Denavit–Hartenberg table (standard or
+                        modified); from_urdf: a fixed-base robot from its URDF file (also
+                        ``acausal.multibody``)
 """
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
@@ -68,6 +71,7 @@ from .multibody import MultiBodyDoublePendulum, MultiBodyPendulum, chain
 from .multibody_loops import (EngineJointRRP, MultiBodyEngine1a, MultiBodyEngine1Base,
                               MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
                               ParallelFourbar)
+from .robots import dh_chain, from_urdf
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
@@ -87,4 +91,4 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
            "MultiBodyDoublePendulum", "chain", "MultiBodyFourbar1", "MultiBodyFourbar2",
            "MultiBodyFourbarAnalytic", "MultiBodyEngine1Base", "MultiBodyEngine1a",
-           "EngineJointRRP", "ParallelFourbar"]
+           "EngineJointRRP", "ParallelFourbar", "dh_chain", "from_urdf"]

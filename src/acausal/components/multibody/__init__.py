@@ -35,9 +35,13 @@ redundant at the assembled configuration are found from the rank (``compiled.mob
 close loops with fewer rows, ``assemblies`` (JointSSP, JointSSR, JointUSR, JointUSP,
 JointRRR, JointRRP) in closed form.
 
-The animation (``acausal.analysis.animation``) draws the parts from their shapes. Not here
-yet: loops through free or spherical joints, JointUPS, the spatial articulated-body
-recursion (accelerations come from the dense solve of M(q)), URDF import.
+The bodies register their mass properties with the compiler (``e.rigid_body``), so the
+accelerations of trees come from the O(N) articulated-body recursion in spatial vectors
+(``acausal.compiler.recursive``), checked against the Lagrangian's M(q) at compile time.
+Robot arms from Denavit–Hartenberg tables and URDF files: ``acausal.multibody``. The
+animation (``acausal.analysis.animation``) draws the parts from their shapes.
+
+Not here yet: loops through free or spherical joints, JointUPS.
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .assemblies import JointRRP, JointRRR, JointSSP, JointSSR, JointUSP, JointUSR

@@ -57,8 +57,7 @@ def rigid_body(e, frame, m, r_CM, I, prefix: str = "") -> None:
     at r_CM [m] (resolved in the frame), inertia tensor I [kg.m²] about the centre of mass
     (parallel to the frame); records MSL's Body variables (w_a, z_a, g_0 under ``prefix``)."""
     r0, T, v0, a0, v, w, z = _frame_kinematics(e, frame)
-    v_cm = v + ca.cross(w, r_CM)
-    e.kinetic_energy(0.5 * m * ca.dot(v_cm, v_cm) + 0.5 * ca.dot(w, ca.mtimes(I, w)))
+    e.rigid_body(frame, m, I, r_CM=r_CM)           # ½m|v + w×r_CM|² + ½wᵀIw
     world = e.outer(World)
     r_cm = r0 + frames.resolve1(T, r_CM)
     e.potential_energy(m * world.potential(r_cm))
@@ -401,7 +400,7 @@ class PointMass(Animated):
 
     def physics(self, e):
         r0, T, v0, a0, v, _, _ = _frame_kinematics(e, self.frame_a)
-        e.kinetic_energy(0.5 * self.m * ca.dot(v, v))
+        e.rigid_body(self.frame_a, self.m, ca.SX.zeros(3, 3))       # ½m|v|²
         e.potential_energy(self.m * e.outer(World).potential(r0))
         _record(e, "r_0", r0, "m", "position vector from origin of world frame to origin of "
                                    "frame_a, resolved in world frame")
