@@ -80,6 +80,30 @@ def test_the_shapes_are_msl_s(pendulum):
     assert kinds == ["cylinder", "cylinder", "sphere"]   # joint, Body's rod and sphere
 
 
+def test_visualizers_are_drawn_where_msl_puts_them():
+    """A FixedArrow and a FixedFrame on the swinging pendulum's body: the arrow's tip, from
+    the animation's poses, is R_z(phi)·(r_tail + length·n/|n|) from the pivot (phi the
+    revolute's angle); the frame's three axes are drawn in their colors."""
+    from acausal.components.multibody.visualizers import FixedArrow, FixedFrame
+    m = MultiBodyPendulum()
+    m.arrow = FixedArrow(r_tail=(0.5, 0, 0), n=(0, 2, 0), length=0.3, color=(255, 0, 255))
+    m.axes = FixedFrame(length=0.2, color_x=(255, 0, 0), color_y=(0, 255, 0),
+                        color_z=(0, 0, 255))
+    m.connect(m.body.frame_a, m.arrow.frame_a)
+    m.connect(m.body.frame_a, m.axes.frame_a)
+    res = acausal.compile(m).simulate(1.0, t=np.linspace(0, 1, 11))
+    anim = Animation(m, res)
+    k = next(i for i, s in enumerate(anim.shapes) if s.name == "arrow")
+    tip = np.einsum("tij,j->ti", anim.poses[:, k], anim.shapes[k].local() @ [0.3, 0, 0, 1])
+    phi = res["rev.phi"]
+    hand = np.column_stack([0.5 * np.cos(phi) - 0.3 * np.sin(phi),
+                            0.5 * np.sin(phi) + 0.3 * np.cos(phi), 0 * phi])
+    np.testing.assert_allclose(tip[:, :3], hand, atol=1e-9)
+    axes = [s for s in anim.shapes if s.name == "axes"]
+    assert [s.color for s in axes] == [(255, 0, 0), (0, 255, 0), (0, 0, 255)]
+    assert [s.lengthDirection for s in axes] == [(1, 0, 0), (0, 1, 0), (0, 0, 1)]
+
+
 def test_the_html_is_self_contained(pendulum, tmp_path):
     m, res = pendulum
     Animation(m, res).save_html(tmp_path / "view.html")

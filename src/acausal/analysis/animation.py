@@ -197,10 +197,46 @@ def _point_mass(c):
                   (-_BODY_D / 2, 0.0, 0.0), color=(0, 128, 255), name=c.path)]
 
 
+def _rgb(color) -> tuple:
+    return tuple(int(round(x)) for x in color)
+
+
+_KIND = {"box": "box", "beam": "box", "sphere": "sphere", "cylinder": "cylinder",
+         "cone": "cylinder", "pipe": "cylinder", "gearwheel": "cylinder", "spring": "cylinder"}
+
+
+def _fixed_shape(c):
+    """Visualizers.FixedShape: MSL's primitive (cones, pipes, gear wheels and springs as
+    cylinders, other shapes as boxes)."""
+    d = c.shape()
+    return [Shape(_path(c, "frame_a"), _KIND.get(d["shapeType"], "box"), d["length"],
+                  d["width"], d["height"], d["r_shape"], d["lengthDirection"],
+                  d["widthDirection"], _rgb(d["color"]), c.path)]
+
+
+def _fixed_frame(c):
+    """Visualizers.FixedFrame: its three axes as rods of ``length``."""
+    d = c.shape()
+    return [Shape(_path(c, "frame_a"), "cylinder", d["length"], d["diameter"], d["diameter"],
+                  (0.0, 0.0, 0.0), axis, color=_rgb(d[f"color_{x}"]), name=c.path)
+            for x, axis in (("x", (1.0, 0, 0)), ("y", (0, 1.0, 0)), ("z", (0, 0, 1.0)))]
+
+
+def _fixed_arrow(c):
+    """Visualizers.FixedArrow: a rod of ``length`` from r_tail along n."""
+    d = c.shape()
+    return [Shape(_path(c, "frame_a"), "cylinder", d["length"], d["diameter"], d["diameter"],
+                  d["r_tail"], d["n"], color=_rgb(d["color"]), name=c.path)]
+
+
 def _defaults():
     from ..components.multibody import (Body, BodyBox, BodyCylinder, BodyShape,
                                         FixedTranslation, PointMass, Revolute, RollingWheel,
                                         RollingWheelSet)
+    from ..components.multibody.visualizers import FixedArrow, FixedFrame, FixedShape
+    register(FixedShape, _fixed_shape)
+    register(FixedFrame, _fixed_frame)
+    register(FixedArrow, _fixed_arrow)
     register(Body, _body)
     register(BodyShape, _body_shape)
     register(BodyBox, _shaped("box"))
