@@ -115,9 +115,19 @@ def _projection_step(J, b, r, nx: int):
         P = np.eye(J.shape[0])
     PJx = P @ Jx
     rx = r[:nx]
-    dx = rx + np.linalg.lstsq(PJx, P @ b - PJx @ rx, rcond=1e-12)[0]
-    dz = np.linalg.lstsq(Jz, b - Jx @ dx, rcond=1e-12)[0] if Jz.shape[1] else np.zeros(0)
+    dx = rx + _lstsq(PJx, P @ b - PJx @ rx)
+    dz = _lstsq(Jz, b - Jx @ dx) if Jz.shape[1] else np.zeros(0)
     return np.concatenate([dx, dz])
+
+
+def _lstsq(A, b):
+    """The minimum-norm least-squares solution of A x = b, singular values of A below
+    1e-12 · max(1, σ_max) taken as 0. The cut is absolute for rows of unit size (as the
+    scaled rows here): when z takes up every equation, P·Jx is rounding noise (1e-16) that a
+    cut relative to its own σ_max would invert into a step of the states."""
+    U, sv, Vt = np.linalg.svd(A, full_matrices=False)
+    keep = sv > 1e-12 * max(1.0, sv.max(initial=0.0))
+    return Vt[keep].T @ ((U[:, keep].T @ b) / sv[keep])
 
 
 def _descend(equations, wk, limited, scale: float, iterations: int = 100):

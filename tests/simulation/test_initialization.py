@@ -131,3 +131,24 @@ def test_guess_errors_name_the_variable():
         compiled.simulate(0.01, guess={"wall.flange.s": 0.7})
     with pytest.raises(ac.errors.InitializationError, match="x0 and guess values conflict"):
         compiled.simulate(0.01, x0={"mass.s": 1.0}, guess={"spring.s_rel": 0.7})
+
+
+def test_states_stay_at_their_start_when_the_algebraic_variables_solve_the_equations():
+    """H(x, z) = A·z − B·x (3 equations, A invertible): the algebraic variables z can meet
+    every equation, so the projection keeps the states x at their start values exactly and
+    gives z = A⁻¹·B·x (the start values of a body hung from massless junctions between
+    3-D springs, MSL's ThreeSprings)."""
+    from acausal.numerics import project
+    rng = np.random.default_rng(7)
+    A, B = rng.normal(size=(3, 3)) + 3 * np.eye(3), rng.normal(size=(3, 3))
+    x_start = rng.normal(size=4)
+    B4 = np.c_[B, np.zeros(3)]
+
+    def equations(w):
+        x, z = w[:4], w[4:]
+        return A @ z - B4 @ x, np.c_[-B4, A]
+
+    start = np.r_[x_start, 0.1, -0.2, 0.2]
+    w = project(equations, start, start, 4, ["row"] * 3, [])
+    assert np.array_equal(w[:4], x_start)
+    assert np.allclose(w[4:], np.linalg.solve(A, B4 @ x_start), rtol=0, atol=1e-13)

@@ -2,9 +2,8 @@
 (component names, parameters, connections as in the MSL):
 ``Examples.Elementary.ForceAndTorque``, ``SpringMassSystem``, ``PointGravity``,
 ``ThreeSprings`` and ``Examples.Rotational3DEffects.MovingActuatedDrive``,
-``GyroscopicEffects``. Free bodies and spherical joints (not in the library yet) are
-written as chains of prismatic and revolute joints that move the same (see each model).
-MSL's visualization parameters (widths, diameters, colors) are left out; the World's
+``GyroscopicEffects`` (free bodies and Spherical joints with their quaternion states and
+MSL's start values), and ``FreeBody``. MSL's visualization parameters (widths, diameters, colors) are left out; the World's
 defaults apply.
 """
 from __future__ import annotations
@@ -13,14 +12,14 @@ import casadi as ca
 
 from ..components import rotational, signals, translational
 from ..components.multibody import (Body, BodyCylinder, BodyShape, Fixed, FixedRotation,
-                                    FixedTranslation, Mounting1D, Prismatic, Revolute,
-                                    Rotor1D, World)
+                                    FixedTranslation, GravityTypes, Mounting1D, Prismatic,
+                                    Revolute, Rotor1D, Spherical, World)
 from ..components.multibody import forces
 from ..components.multibody.resolving import ResolveInFrameAB
 from ..core import Model
 
 __all__ = ["ForceAndTorqueExample", "SpringMassSystem", "MovingActuatedDrive", "PointGravity",
-           "ThreeSprings", "GyroscopicEffects"]
+           "ThreeSprings", "GyroscopicEffects", "FreeBody"]
 
 
 class ForceAndTorqueExample(Model):
@@ -134,62 +133,43 @@ class MovingActuatedDrive(Model):
         self.connect(self.sine1_1.y, self.torque1.tau)
 
 
-def _translations(model: Model, prefix: str, frame_a, axes=((1, 0, 0), (0, 1, 0), (0, 0, 1))):
-    """Prismatic joints ``<prefix>x``, ``<prefix>y``, ``<prefix>z`` in series from
-    ``frame_a`` along the world axes; returns the last frame_b (world orientation)."""
-    for axis, n in zip("xyz", axes):
-        joint = Prismatic(n=n)
-        setattr(model, f"{prefix}{axis}", joint)
-        model.connect(frame_a, joint.frame_a)
-        frame_a = joint.frame_b
-    return frame_a
-
-
 class PointGravity(Model):
-    """Elementary.PointGravity: two bodies (m = 1 kg, I = 0.1·1 kg.m², centre of mass at
-    frame_a) in the point gravity field of the World (mu = 1 m³/s²), starting at
+    """Elementary.PointGravity: two free bodies (m = 1 kg, I = 0.1·1 kg.m², centre of mass
+    at frame_a) in the point gravity field of the World (mu = 1 m³/s²), starting at
     r_0 = {0, 0.6, 0} m with v_0 = {1, 0, 0} m/s (a circle) and at {0.6, 0.6, 0} m with
-    {0.6, 0, 0} m/s (an ellipse), at rest in rotation.
-
-    MSL's bodies are free (6 degrees of freedom); here each hangs from the world on three
-    prismatic joints (``body1_x`` .. ``body1_z``), which keep its orientation: the same
-    motion, exactly, since gravity acts at the centre of mass (no torque) and the bodies
-    start without angular velocity. x0 = ``START``."""
-    START = {"body1_x.s": 0.0, "body1_y.s": 0.6, "body1_x.v": 1.0,
-             "body2_x.s": 0.6, "body2_y.s": 0.6, "body2_x.v": 0.6}
+    {0.6, 0, 0} m/s (an ellipse), at rest in rotation (MSL's start values, the bodies'
+    13 states each)."""
 
     def __init__(self, name: str | None = None):
         super().__init__(name or "PointGravity")
-        from ..components.multibody import GravityTypes
         self.world = World(mu=1, gravityType=GravityTypes.PointGravity)
-        for k in (1, 2):
-            body = Body(m=1, I_11=0.1, I_22=0.1, I_33=0.1, r_CM=(0, 0, 0))
-            setattr(self, f"body{k}", body)
-            self.connect(_translations(self, f"body{k}_", self.world.frame_b), body.frame_a)
+        self.body1 = Body(m=1, I_11=0.1, I_22=0.1, I_33=0.1, r_0_start=(0, 0.6, 0),
+                          v_0_start=(1, 0, 0), angles_fixed=True, w_0_fixed=True,
+                          r_CM=(0, 0, 0))
+        self.body2 = Body(m=1, I_11=0.1, I_22=0.1, I_33=0.1, r_0_start=(0.6, 0.6, 0),
+                          v_0_start=(0.6, 0, 0), angles_fixed=True, w_0_fixed=True,
+                          r_CM=(0, 0, 0))
 
 
 class ThreeSprings(Model):
-    """Elementary.ThreeSprings: a body (m = 0.8 kg, r_CM = {0, -0.2, 0} m, I = 0.1·1
+    """Elementary.ThreeSprings: a free body (m = 0.8 kg, r_CM = {0, -0.2, 0} m, I = 0.1·1
     kg.m²) hanging under gravity from three 3-D Springs connected in series and parallel
     without mass at their junction: spring1 (c = 20 N/m) from bar1 ({0.3, 0, 0}) and
     spring3 (c = 20 N/m) from bar2 ({0, 0, 0.3}) to the junction, spring2 (c = 40 N/m) from
     the junction to the body; unstretched lengths 0.1 m. The body starts at r_0 = {0.5,
-    -0.3, 0} m at rest, its frame parallel to the world's.
+    -0.3, 0} m at rest, its frame parallel to the world's (MSL's start values).
 
     The junction's orientation is fixed by spring3's fixedRotationAtFrame_b, as in MSL (its
-    position spring3.r_b_0 is then algebraic: no mass, the spring forces in balance). MSL's
-    body is free; here it hangs from the world on three prismatic joints (``body_x`` ..
-    ``body_z``) and three revolutes about x, y, z (``body_rx`` .. ``body_rz``: MSL's angles
-    sequence {1, 2, 3} as coordinates, singular only at a ±90° second angle), which move
-    the same. x0 = ``START``, guess = ``GUESS`` (MSL's guess of the junction, {0.1, -0.2,
-    0.2} m)."""
-    START = {"body_x.s": 0.5, "body_y.s": -0.3}
-    GUESS = {"spring3.r_b_0[1]": 0.1, "spring3.r_b_0[2]": -0.2, "spring3.r_b_0[3]": 0.2}
+    position spring3.r_b_0 is then algebraic: no mass, the spring forces in balance).
+    guess = ``GUESS``: MSL's spring1.lineForce.r_rel_0(start = {-0.2, -0.2, 0.2}) m."""
+    GUESS = {"spring1.r_rel_0[1]": -0.2, "spring1.r_rel_0[2]": -0.2,
+             "spring1.r_rel_0[3]": 0.2}
 
     def __init__(self, name: str | None = None):
         super().__init__(name or "ThreeSprings")
         self.world = World()
-        self.body1 = Body(r_CM=(0, -0.2, 0), m=0.8, I_11=0.1, I_22=0.1, I_33=0.1)
+        self.body1 = Body(r_CM=(0, -0.2, 0), m=0.8, I_11=0.1, I_22=0.1, I_33=0.1,
+                          r_0_start=(0.5, -0.3, 0), angles_fixed=True, w_0_fixed=True)
         self.bar1 = FixedTranslation(r=(0.3, 0, 0))
         self.spring1 = forces.Spring(s_unstretched=0.1, c=20)
         self.bar2 = FixedTranslation(r=(0, 0, 0.3))
@@ -202,66 +182,69 @@ class ThreeSprings(Model):
         self.connect(self.spring2.frame_b, self.body1.frame_a)
         self.connect(self.spring3.frame_b, self.spring1.frame_b)
         self.connect(self.spring2.frame_a, self.spring1.frame_b)
-        frame = _translations(self, "body_", self.world.frame_b)
-        for axis, n in zip(("rx", "ry", "rz"), ((1, 0, 0), (0, 1, 0), (0, 0, 1))):
-            joint = Revolute(n=n)
-            setattr(self, f"body_{axis}", joint)
-            self.connect(frame, joint.frame_a)
-            frame = joint.frame_b
-        self.connect(frame, self.body1.frame_a)
-
-
-def _spherical(model: Model, prefix: str, frame_a, sequence=(2, 3, 1)):
-    """Three revolutes ``<prefix>1..3`` in series from ``frame_a`` about the axes
-    ``sequence`` (a spherical joint in angle coordinates, singular where the second angle is
-    ±90°); returns the last frame_b."""
-    for k, axis in enumerate(sequence, start=1):
-        n = [0.0, 0.0, 0.0]
-        n[axis - 1] = 1.0
-        joint = Revolute(n=tuple(n))
-        setattr(model, f"{prefix}{k}", joint)
-        model.connect(frame_a, joint.frame_a)
-        frame_a = joint.frame_b
-    return frame_a
 
 
 class GyroscopicEffects(Model):
     """Rotational3DEffects.GyroscopicEffects: a steel rod (BodyCylinder, 0.25 m × 0.05 m)
-    hanging from a spherical joint at the world's origin carries, behind a 45° turn about
+    hanging from a Spherical joint at the world's origin carries, behind a 45° turn about
     y, a cylinder (0.2 m × 0.1 m) spinning about its axis at 10 rad/s, once as a
     Revolute with the BodyCylinder on it (bodyCylinder2), once as the same cylinder fixed
     to the rod (bodyCylinder4) plus a Rotor1D of its axial inertia (J = bodyCylinder4's
-    I[1, 1]); both start with the joints at 0 and at rest but for the spin: x0 = ``START``.
-
-    MSL's Spherical joints are written as three revolutes about y, z, x (``spherical1_1``
-    .. ``spherical1_3``; the angles sequence {2, 3, 1} starting at 0, singular only where
-    the rod would point vertically), which move the same."""
+    I[1, 1]); the spherical joints start at angles 0 and at rest (angles_fixed,
+    w_rel_a_fixed), the spins by MSL's w(start = 10, fixed = true): x0 = ``START``."""
     START = {"revolute.w": 10.0, "rotor1D.w": 10.0}
 
     def __init__(self, name: str | None = None):
         super().__init__(name or "GyroscopicEffects")
         self.world = World(driveTrainMechanics3D=True)
+        self.spherical1 = Spherical(angles_fixed=True, w_rel_a_fixed=True,
+                                    z_rel_a_fixed=False)
         self.bodyCylinder1 = BodyCylinder(r=(0.25, 0, 0), diameter=0.05)
         self.fixedRotation1 = FixedRotation(angle=45, n=(0, 1, 0))
         self.revolute = Revolute(n=(1, 0, 0))
         self.fixedTranslation = FixedTranslation(r=(-0.1, 0, 0))
         self.bodyCylinder2 = BodyCylinder(diameter=0.1, r=(0.2, 0, 0))
         self.fixed = Fixed()
+        self.spherical2 = Spherical(angles_fixed=True, w_rel_a_fixed=True,
+                                    z_rel_a_fixed=False)
         self.bodyCylinder3 = BodyCylinder(r=(0.25, 0, 0), diameter=0.05)
         self.fixedRotation2 = FixedRotation(n=(0, 1, 0), angle=45)
         self.fixedTranslation1 = FixedTranslation(r=(-0.1, 0, 0))
         self.bodyCylinder4 = BodyCylinder(diameter=0.1, r=(0.2, 0, 0))
         J = float(ca.evalf(self.bodyCylinder4.mass_properties()[2][0, 0]))
         self.rotor1D = Rotor1D(J=J, n=(1, 0, 0))
-        self.connect(_spherical(self, "spherical1_", self.world.frame_b),
-                     self.bodyCylinder1.frame_a)
+        self.connect(self.world.frame_b, self.spherical1.frame_a)
+        self.connect(self.spherical1.frame_b, self.bodyCylinder1.frame_a)
         self.connect(self.bodyCylinder1.frame_b, self.fixedRotation1.frame_a)
         self.connect(self.fixedRotation1.frame_b, self.revolute.frame_a)
         self.connect(self.revolute.frame_b, self.fixedTranslation.frame_a)
         self.connect(self.fixedTranslation.frame_b, self.bodyCylinder2.frame_a)
-        self.connect(_spherical(self, "spherical2_", self.fixed.frame_b),
-                     self.bodyCylinder3.frame_a)
+        self.connect(self.spherical2.frame_b, self.bodyCylinder3.frame_a)
         self.connect(self.bodyCylinder3.frame_b, self.fixedRotation2.frame_a)
-        self.connect(self.fixedRotation2.frame_b, self.fixedTranslation1.frame_a)
+        self.connect(self.fixed.frame_b, self.spherical2.frame_a)
         self.connect(self.fixedTranslation1.frame_b, self.bodyCylinder4.frame_a)
+        self.connect(self.fixedRotation2.frame_b, self.fixedTranslation1.frame_a)
         self.connect(self.rotor1D.frame_a, self.fixedRotation2.frame_b)
+
+
+class FreeBody(Model):
+    """Elementary.FreeBody: a free BodyShape (m = 1 kg, I = 1 kg.m² on the diagonal, frame_b
+    at r = {0.4, 0, 0} m, r_CM = {0.2, 0, 0} m) held by two Springs (c = 20 N/m,
+    s_unstretched = 0) from the world's origin and from bar2's end {0.8, 0, 0} m; it
+    starts at r_0 = {0.2, -0.5, 0.1} m, turned by 10° about each of the axes 1, 2, 3, at
+    rest (MSL's start values)."""
+
+    def __init__(self, name: str | None = None):
+        super().__init__(name or "FreeBody")
+        self.world = World()
+        self.bar2 = FixedTranslation(r=(0.8, 0, 0), animation=False)
+        self.spring1 = forces.Spring(c=20, s_unstretched=0)
+        self.body = BodyShape(m=1, I_11=1, I_22=1, I_33=1, r=(0.4, 0, 0), r_CM=(0.2, 0, 0),
+                              r_0_start=(0.2, -0.5, 0.1), angles_fixed=True, w_0_fixed=True,
+                              angles_start=(0.174532925199433,) * 3)
+        self.spring2 = forces.Spring(c=20, s_unstretched=0)
+        self.connect(self.bar2.frame_a, self.world.frame_b)
+        self.connect(self.spring1.frame_b, self.body.frame_a)
+        self.connect(self.bar2.frame_b, self.spring2.frame_a)
+        self.connect(self.spring1.frame_a, self.world.frame_b)
+        self.connect(self.body.frame_b, self.spring2.frame_b)

@@ -50,16 +50,16 @@ def _matches(res, ref, names):
 
 
 def test_three_springs_match_the_msl_reference(reference_result):
-    """ThreeSprings (the free body as a joint chain, see the model; the massless junction
-    by spring3's fixedRotationAtFrame_b, as MSL): the body's position, velocity and
-    angular velocity, and the forces at the junction in balance."""
+    """ThreeSprings (a free body, the massless junction by spring3's
+    fixedRotationAtFrame_b, as MSL's; MSL's start values): the body's position, velocity
+    and angular velocity, and the forces at the junction in balance."""
     ref = reference_result("MAP-LIB_ReferenceResults",
                            "Modelica.Mechanics.MultiBody.Examples.Elementary.ThreeSprings")
     t = ref["time"]
     model = acausal.compile(ThreeSprings())
     assert [v.name for v in model.algebraics] == [f"spring3.r_b_0[{k}]" for k in (1, 2, 3)]
-    res = model.simulate(float(t[-1]), t=t, x0=ThreeSprings.START, guess=ThreeSprings.GUESS,
-                         rtol=1e-9, atol=1e-11)
+    assert len(model.x_names) == 13                      # r_0, Q, v_0, w_a
+    res = model.simulate(float(t[-1]), t=t, guess=ThreeSprings.GUESS, rtol=1e-9, atol=1e-11)
     _matches(res, ref, [f"body1.{v}[{k}]" for v in ("frame_a.r_0", "v_0", "w_a")
                         for k in (1, 2, 3)])
     # the massless junction: the three spring forces in balance
@@ -79,8 +79,9 @@ def test_point_gravity_matches_the_reference_and_kepler(reference_result):
     ref = reference_result("MAP-LIB_ReferenceResults",
                            "Modelica.Mechanics.MultiBody.Examples.Elementary.PointGravity")
     t = ref["time"]
-    res = acausal.compile(PointGravity()).simulate(float(t[-1]), t=t, x0=PointGravity.START,
-                                                   rtol=1e-12, atol=1e-13)
+    model = acausal.compile(PointGravity())
+    assert len(model.x_names) == 26                      # two free bodies
+    res = model.simulate(float(t[-1]), t=t, rtol=1e-12, atol=1e-13)
     _matches(res, ref, [f"body1.{v}[{k}]" for v in ("frame_a.r_0", "v_0", "w_a")
                         for k in (1, 2, 3)] + [f"body2.w_a[{k}]" for k in (1, 2, 3)])
     kepler = lambda _, y: np.r_[y[2:], -y[:2] / np.linalg.norm(y[:2]) ** 3]  # noqa: E731
@@ -108,15 +109,19 @@ def test_rotor1d_and_its_3d_twin_put_the_same_torques_on_their_mounts():
 
 
 def test_gyroscopic_effects_rotor1d_loads_its_mount_as_the_spinning_body():
-    """GyroscopicEffects: the joint at the world (3-D spinning cylinder) and the joint at
-    ``fixed`` (rigid cylinder + Rotor1D) transmit the same force and torque (MSL's
-    documentation of the example), the gyroscopic torques included."""
+    """GyroscopicEffects: the spherical joint at the world (3-D spinning cylinder) and the
+    one at ``fixed`` (rigid cylinder + Rotor1D) transmit the same force (MSL's
+    documentation of the example) and no torque, and the rods carry the same force and
+    torque at their ends (frame_b), the gyroscopic torques included."""
     res = acausal.compile(GyroscopicEffects()).simulate(
         2.0, t=np.linspace(0, 2, 201), x0=GyroscopicEffects.START, rtol=1e-10, atol=1e-12)
-    for v in ("f", "t"):
-        for k in (1, 2, 3):
-            a, b = res[f"spherical1_1.frame_b.{v}[{k}]"], res[f"spherical2_1.frame_b.{v}[{k}]"]
-            assert np.max(np.abs(a - b)) < 1e-6 * (1 + np.max(np.abs(a))), (v, k)
+    for a_, b_ in (("spherical1", "spherical2"), ("bodyCylinder1", "bodyCylinder3")):
+        for v in ("f", "t"):
+            for k in (1, 2, 3):
+                a, b = res[f"{a_}.frame_b.{v}[{k}]"], res[f"{b_}.frame_b.{v}[{k}]"]
+                assert np.max(np.abs(a - b)) < 1e-6 * (1 + np.max(np.abs(a))), (a_, v, k)
+    assert max(np.max(np.abs(res[f"spherical1.frame_b.t[{k}]"])) for k in (1, 2, 3)) < 1e-10
+    assert np.max(np.abs(res["bodyCylinder1.frame_b.t[2]"])) > 1.0   # the gyroscopic part
 
 
 def _rotating_rod(shape=True, **spring):

@@ -12,51 +12,15 @@ from scipy.integrate import solve_ivp
 
 import acausal
 from acausal import frames
-from acausal.components.multibody import (Body, BodyShape, FixedTranslation, Frame_a,
-                                          Frame_b, FreeMotion, GravityTypes, Spherical,
-                                          World)
-from acausal.core import Component, Model, Parameter
-
-
-class LineSpring(Component):
-    """A massless linear spring between the origins of two 3-D frames (MSL's
-    Forces.Spring with m = 0): potential ½·c·(|r_b − r_a| − s_unstretched)²."""
-    c = Parameter(1.0, "N/m", "spring constant", nonnegative=True)
-    s_unstretched = Parameter(0.0, "m", "unstretched spring length")
-    frame_a = Frame_a("first end")
-    frame_b = Frame_b("second end")
-
-    def physics(self, e):
-        ra, _ = frames.parts(e.pos(self.frame_a))
-        rb, _ = frames.parts(e.pos(self.frame_b))
-        d = ca.norm_2(rb - ra) - self.s_unstretched
-        e.potential_energy(0.5 * self.c * d * d)
-
-
-def free_body() -> Model:
-    """MSL's MultiBody.Examples.Elementary.FreeBody: a BodyShape with no joint, held by two
-    springs to the world; its start position, orientation (10° about each of the axes 1,
-    2, 3) and rest as MSL's."""
-    m = Model("FreeBody")
-    m.world = World()
-    m.bar2 = FixedTranslation(r=(0.8, 0, 0), animation=False)
-    m.spring1 = LineSpring(c=20)
-    m.spring2 = LineSpring(c=20, s_unstretched=0)
-    m.body = BodyShape(m=1, I_11=1, I_22=1, I_33=1, r=(0.4, 0, 0), r_CM=(0.2, 0, 0),
-                       r_0_start=(0.2, -0.5, 0.1), angles_fixed=True, w_0_fixed=True,
-                       angles_start=(0.174532925199433,) * 3)
-    m.connect(m.bar2.frame_a, m.world.frame_b)
-    m.connect(m.spring1.frame_b, m.body.frame_a)
-    m.connect(m.bar2.frame_b, m.spring2.frame_a)
-    m.connect(m.spring1.frame_a, m.world.frame_b)
-    m.connect(m.body.frame_b, m.spring2.frame_b)
-    return m
+from acausal.components.multibody import Body, FreeMotion, GravityTypes, Spherical, World
+from acausal.core import Model
+from acausal.models.multibody_forces import FreeBody
 
 
 def test_free_body_matches_the_msl_reference(reference_result):
     ref = reference_result("MAP-LIB_ReferenceResults",
                            "Modelica.Mechanics.MultiBody.Examples.Elementary.FreeBody")
-    compiled = acausal.compile(free_body())
+    compiled = acausal.compile(FreeBody())
     assert len(compiled.x_names) == 13                  # r_0, Q, v_0, w_a
     t = ref["time"]
     res = compiled.simulate(float(t[-1]), t=t, rtol=1e-9, atol=1e-11)

@@ -57,11 +57,17 @@ static int solved(const ac_loop_work *l, double scale) {
 }
 
 /* the least-squares problem A e = b, A = the rows in use of ∂H/∂x over their scales `s`, the
- * free columns only, transposed into l->at (column i: row i of A) */
+ * free columns only, transposed into l->at (column i: row i of A). Column by column of
+ * ∂H/∂x: with the row loop outside, GCC 12 (-O1 and up) addressed l->at from the induction
+ * variable of l->free scaled by 2, as an integer from a null base, after which its local
+ * pure-const pass took this function for pure and dropped every call to it (the matrix
+ * stayed 0: 3-D loops failed to assemble or to stay closed). */
 static void scaled_rows(ac_loop_work *l, const double *s) {
-    int i, j, nf = l->nfree;
-    for (i = 0; i < l->nrows; i++)
-        for (j = 0; j < nf; j++) l->at[j + i * nf] = l->Hx[i + l->free[j] * AC_NH] / s[i];
+    int i, j, nf = l->nfree, nr = l->nrows;
+    for (j = 0; j < nf; j++) {
+        const double *column = l->Hx + l->free[j] * AC_NH;
+        for (i = 0; i < nr; i++) l->at[j + i * nf] = column[i] / s[i];
+    }
 }
 
 /* l->d: the step from x onto H + ∂H/∂x d = 0 (least squares where inconsistent) whose free
