@@ -331,23 +331,8 @@ def _check_structure(eqs, unknowns, labels, what, explicit):
         by_row[r].append(c)
         by_col[c].append(r)
     if unmatched_rows:                  # over-determined: rows reachable by alternating paths
-        seen, stack = set(unmatched_rows), list(unmatched_rows)
-        while stack:
-            r = stack.pop()
-            for c in by_row[r]:
-                r2 = col_match[c]
-                if r2 >= 0 and r2 not in seen:
-                    seen.add(r2)
-                    stack.append(r2)
-        return sorted(seen)
-    seen, stack = set(unmatched_cols), list(unmatched_cols)
-    while stack:
-        c = stack.pop()
-        for r in by_col[c]:
-            c2 = match[r]
-            if c2 >= 0 and c2 not in seen:
-                seen.add(c2)
-                stack.append(c2)
+        return sorted(_alternating(unmatched_rows, by_row, col_match))
+    seen = _alternating(unmatched_cols, by_col, match)
     nodes = sorted({w.name for kind, w in (what[c] for c in seen) if kind == "node"})
     others = sorted({w.path for kind, w in (what[c] for c in seen) if kind != "node"})
     raise StructureError(
@@ -376,6 +361,19 @@ def _singular_rows(eqs: list, unknowns: list):
             return None
     w = np.abs(N[:, 0])
     return [r for r in range(len(eqs)) if w[r] > 1e-9 * w.max()]
+
+
+def _alternating(start: list, neighbours: list, partner) -> set:
+    """The vertices of one side of the matching graph reachable from the unmatched ``start``
+    by alternating paths: to a neighbour, then to its matched partner (Dulmage-Mendelsohn)."""
+    seen, stack = set(start), list(start)
+    while stack:
+        for other in neighbours[stack.pop()]:
+            nxt = partner[other]
+            if nxt >= 0 and nxt not in seen:
+                seen.add(nxt)
+                stack.append(nxt)
+    return seen
 
 
 def _check_reference(nodes: list, eqs: list) -> None:

@@ -11,7 +11,7 @@ from __future__ import annotations
 from ...core import Component
 from ...core.ports import MultiBodyFrame
 
-__all__ = ["Frame", "Frame_a", "Frame_b", "Animated"]
+__all__ = ["Frame", "Frame_a", "Frame_b", "Animated", "PartialTwoFrames"]
 
 Frame = MultiBodyFrame
 
@@ -32,3 +32,11 @@ class Animated(Component):
     visualization parameters MSL has are not accepted (the animation draws MSL's default
     shapes)."""
     options = {"animation": True}
+
+
+class PartialTwoFrames(Animated):
+    """MSL's Interfaces.PartialTwoFrames: a joint's frame_a and frame_b."""
+    frame_a = Frame_a("coordinate system fixed to the joint with one cut-force and "
+                      "cut-torque")
+    frame_b = Frame_b("coordinate system fixed to the joint with one cut-force and "
+                      "cut-torque")

@@ -19,20 +19,16 @@ from __future__ import annotations
 from ...core import Parameter, RotationalFlange, StateSelect, TranslationalFlange
 from ...core.ports import ROTATIONAL, TRANSLATIONAL
 from ..interfaces import PartialDrivenJoint, drive_flanges, unit_direction
-from .interfaces import Animated, Frame_a, Frame_b
+from .interfaces import PartialTwoFrames
 
 __all__ = ["Revolute", "Prismatic"]
 
 
-class _Joint(PartialDrivenJoint, Animated):
+class _Joint(PartialDrivenJoint, PartialTwoFrames):
     """frame_a, frame_b and the optional drive flanges (``useAxisFlange``); ``stateSelect``
     is accepted as a hint (StateSelect)."""
     drive_option = "useAxisFlange"
     options = {"useAxisFlange": False, "stateSelect": StateSelect.prefer}
-    frame_a = Frame_a("coordinate system fixed to the joint with one cut-force and "
-                      "cut-torque")
-    frame_b = Frame_b("coordinate system fixed to the joint with one cut-force and "
-                      "cut-torque")
 
 
 class Revolute(_Joint):

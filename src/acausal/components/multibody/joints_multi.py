@@ -33,20 +33,13 @@ from ... import frames
 from ...core import Parameter, StateSelect
 from ...core.ports import MULTIBODY, ROTATIONAL, TRANSLATIONAL
 from ..interfaces import unit_direction
-from .interfaces import Animated, Frame_a, Frame_b
+from .interfaces import PartialTwoFrames
 from .parts import _record, check_sequence
 
 __all__ = ["Spherical", "FreeMotion", "Universal", "Cylindrical", "Planar"]
 
 
-class _TwoFrames(Animated):
-    frame_a = Frame_a("coordinate system fixed to the joint with one cut-force and "
-                      "cut-torque")
-    frame_b = Frame_b("coordinate system fixed to the joint with one cut-force and "
-                      "cut-torque")
-
-
-class _FreeRotation(_TwoFrames):
+class _FreeRotation(PartialTwoFrames):
     """The relative orientation held by the internal node ``rel`` (quaternion states)."""
     options = {"angles_fixed": False, "w_rel_a_fixed": False, "z_rel_a_fixed": False,
                "enforceStates": False, "useQuaternions": True}
@@ -137,7 +130,7 @@ class FreeMotion(_FreeRotation):
                 "m/s2", "= der(v_rel_a)")
 
 
-class _JointChain(_TwoFrames):
+class _JointChain(PartialTwoFrames):
     """MSL's composite joints: Revolute and Prismatic joints in series through internal
     frames; ``stateSelect`` is accepted (a hint)."""
     options = {"stateSelect": StateSelect.prefer}

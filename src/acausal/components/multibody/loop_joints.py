@@ -16,19 +16,11 @@ import casadi as ca
 from ... import frames
 from ...core import Parameter
 from ..interfaces import unit_direction
-from .interfaces import Animated, Frame_a, Frame_b
+from .interfaces import Frame_a, PartialTwoFrames
 from .world import World
 
 __all__ = ["RevolutePlanarLoopConstraint", "SphericalSpherical", "UniversalSpherical",
            "rod_with_mass", "universal_rod_frame"]
-
-
-class _TwoFrames(Animated):
-    """MSL's PartialTwoFrames."""
-    frame_a = Frame_a("coordinate system fixed to the joint with one cut-force and "
-                      "cut-torque")
-    frame_b = Frame_b("coordinate system fixed to the joint with one cut-force and "
-                      "cut-torque")
 
 
 def _planar_axes(e):
@@ -47,7 +39,7 @@ def _rel_position(vals):
     return ca.mtimes(Ta, rb - ra), Ta
 
 
-class RevolutePlanarLoopConstraint(_TwoFrames):
+class RevolutePlanarLoopConstraint(PartialTwoFrames):
     """Revolute joint that cuts a planar loop with its 2 positional constraints only (MSL):
     the origin of frame_b lies on the axis n [1] (resolved in frame_a, default {0, 0, 1})
     through frame_a's origin, ex_a·r_rel_a = ey_a·r_rel_a = 0. The rotation about n and the
@@ -82,7 +74,7 @@ def _rod_length(c, s, length):
                                "(computed at initialization)")
 
 
-class SphericalSpherical(_TwoFrames):
+class SphericalSpherical(PartialTwoFrames):
     """Two spherical joints joined by a massless rod of ``rodLength`` [m] (MSL's
     SphericalSpherical): one constraint |r_b − r_a| = rodLength, no states; an optional
     point mass m [kg] in the middle of the rod (kinetic and potential energy of the mid
@@ -164,7 +156,7 @@ def universal_rod_frame(pose_a, r_rel, n1, r_ia):
     return frames.pose(ra, ca.mtimes(T_rel, Ta))
 
 
-class UniversalSpherical(_TwoFrames):
+class UniversalSpherical(PartialTwoFrames):
     """A universal joint at frame_a and a spherical joint at frame_b joined by a rigid rod
     (MSL's UniversalSpherical): one constraint |r_b − r_a| = |rRod_ia| [m], no states. The
     rod carries frame_ia (origin at frame_a's), oriented analytically as MSL does: axis 1
