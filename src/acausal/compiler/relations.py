@@ -469,23 +469,36 @@ class SpatialTransform(SpatialRelation):
         r, T = par[0], ca.reshape(par[1], 3, 3)
         if len(self.dims) == 1:
             return pose(r, T), None
-        if j == 1:
-            ra, Ta = parts(vals[0])
-            return pose(ra + ca.mtimes(Ta.T, r), ca.mtimes(T, Ta)), None
-        rb, Tb = parts(vals[1])
-        Ta = ca.mtimes(T.T, Tb)
-        return pose(rb - ca.mtimes(Ta.T, r), Ta), None
+        return _composed(j, vals, r, T), None
 
     def velocity_local(self, j, vals, vels, par):
         r, T = par[0], ca.reshape(par[1], 3, 3)
         if len(self.dims) == 1:
             return ca.SX.zeros(6)
-        if j == 1:            # v_b = T(v_a + w_a × r), w_b = T w_a
-            v, w = vels[0][:3], vels[0][3:]
-            return ca.vertcat(ca.mtimes(T, v + ca.cross(w, r)), ca.mtimes(T, w))
-        v, w = vels[1][:3], vels[1][3:]
-        wa = ca.mtimes(T.T, w)
-        return ca.vertcat(ca.mtimes(T.T, v) - ca.cross(wa, r), wa)
+        return _composed_twist(j, vels, r, T, ca.SX.zeros(6))
+
+
+def _composed(j, vals, r, T):
+    """Frame j (1: frame_b, 0: frame_a) of frame_b = frame_a followed by (r [m] resolved in
+    frame_a, T from frame_a to frame_b), from the other frame in ``vals``."""
+    if j == 1:
+        ra, Ta = parts(vals[0])
+        return pose(ra + ca.mtimes(Ta.T, r), ca.mtimes(T, Ta))
+    rb, Tb = parts(vals[1])
+    Ta = ca.mtimes(T.T, Tb)
+    return pose(rb - ca.mtimes(Ta.T, r), Ta)
+
+
+def _composed_twist(j, vels, r, T, rel):
+    """The twist of frame j of ``_composed`` from the other's, ``rel`` = (v_rel, w_rel) the
+    relative motion resolved in frame_b: v_b = T(v_a + w_a × r) + v_rel, w_b = T w_a + w_rel."""
+    vr, wr = rel[:3], rel[3:]
+    if j == 1:
+        v, w = vels[0][:3], vels[0][3:]
+        return ca.vertcat(ca.mtimes(T, v + ca.cross(w, r)) + vr, ca.mtimes(T, w) + wr)
+    v, w = vels[1][:3], vels[1][3:]
+    wa = ca.mtimes(T.T, w - wr)
+    return ca.vertcat(ca.mtimes(T.T, v - vr) - ca.cross(wa, r), wa)
 
 
 class SpatialRevolute(SpatialRelation):
@@ -571,20 +584,7 @@ class SpatialCompose(SpatialRelation):
         return j != 2                      # the relative pose is never solved from frames
 
     def solve_local(self, j, vals, par):
-        rr, Tr = parts(vals[2])
-        if j == 1:
-            ra, Ta = parts(vals[0])
-            return pose(ra + ca.mtimes(Ta.T, rr), ca.mtimes(Tr, Ta)), None
-        rb, Tb = parts(vals[1])
-        Ta = ca.mtimes(Tr.T, Tb)
-        return pose(rb - ca.mtimes(Ta.T, rr), Ta), None
+        return _composed(j, vals, *parts(vals[2])), None
 
     def velocity_local(self, j, vals, vels, par):
-        rr, Tr = parts(vals[2])
-        vr, wr = vels[2][:3], vels[2][3:]
-        if j == 1:            # v_b = T_rel(v_a + w_a × r_rel) + v_rel, w_b = T_rel w_a + w_rel
-            v, w = vels[0][:3], vels[0][3:]
-            return ca.vertcat(ca.mtimes(Tr, v + ca.cross(w, rr)) + vr, ca.mtimes(Tr, w) + wr)
-        v, w = vels[1][:3], vels[1][3:]
-        wa = ca.mtimes(Tr.T, w - wr)
-        return ca.vertcat(ca.mtimes(Tr.T, v - vr) - ca.cross(wa, rr), wa)
+        return _composed_twist(j, vels, *parts(vals[2]), vels[2])
