@@ -184,12 +184,15 @@ class Lagrange:
         return sympy_form.SympyEquations(self, simplify)
 
     def __str__(self):
-        """The sympy form (``to_sympy``; simplified for up to 4 coordinates) when sympy is
-        installed, else CasADi's."""
-        try:
-            return str(self.to_sympy(simplify=self.q.numel() <= 4))
-        except ImportError:
-            return self._casadi_str()
+        """The simplified sympy form (``to_sympy``) for up to 4 coordinates when sympy is
+        installed; else CasADi's, whose shared subexpressions (@1 = …) keep the text of
+        larger models short (a sympy expression tree repeats them)."""
+        if self.q.numel() <= 4:
+            try:
+                return str(self.to_sympy())
+            except ImportError:
+                pass
+        return self._casadi_str()
 
     def _casadi_str(self):
         def show(name, ex):
