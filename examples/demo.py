@@ -1,4 +1,5 @@
-"""Main demo: a three-storey shear frame (masses, springs, dampers) under a wind force on its top floor.
+"""Main demo: a three-storey shear frame (masses, springs, dampers) under a wind force on its
+top floor.
 
 Builds the model from components, compiles it into CasADi equations of motion, simulates 10 s,
 prints a summary and saves a plot (demo.png, or under $ACAUSAL_OUT).
