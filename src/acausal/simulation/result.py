@@ -5,7 +5,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import VariableNameError
+from ..errors import SimulationError, VariableNameError
 
 
 @dataclass(frozen=True)
@@ -176,6 +176,17 @@ class Result:
         if path is not None:
             axes[0].figure.savefig(path, dpi=120, bbox_inches="tight")
         return axes[0] if len(axes) == 1 else axes
+
+    def animate(self, **kwargs):
+        """The model's parts moving as in this result (``acausal.analysis.animation``):
+        ``.save("run.gif" | "run.mp4" | "run.html")``, shown by itself in a notebook;
+        keywords ``shapes``, ``azimuth``, ``elevation`` [deg]."""
+        animation = getattr(self._model, "animation", None)
+        if animation is None:
+            raise SimulationError(f"the result of '{self.model_name}' was made from the "
+                                  f"compiler's record alone; animate the result of a model "
+                                  f"compiled with acausal.compile")
+        return animation(self, **kwargs)
 
     def _panels(self, names) -> list[list[str]]:
         """What ``plot`` draws: the names on one panel, else the states by unit."""
