@@ -139,7 +139,7 @@ class Component:
         super().__init_subclass__(**kwargs)
         parameters, options = cls.parameters(), cls.all_options()
         cls.__doc__ = documentation.reference(cls.__doc__, parameters, cls.required, options,
-                                              _port_rows(cls))
+                                              port_rows(cls))
         cls.__signature__ = documentation.signature(cls.__init__, parameters, cls.required,
                                                     options)
 
@@ -275,7 +275,7 @@ class Component:
         """Contribute energies, flows, state derivatives, outputs. Default: none."""
 
 
-def _port_rows(cls) -> list[tuple[str, str, str, str]]:
+def port_rows(cls) -> list[tuple[str, str, str, str]]:
     """(name, type, description, condition) of the ports a component class declares."""
     rows = []
     for name, t in cls._declared((Port, ConditionalPort, VectorPort)).items():
