@@ -35,6 +35,13 @@ M(Q)·[v̇; ẇ] + ... = Q_gen, the gyroscopic w × I·w coming from the first-o
 the frame's axes); ``lagrange.function`` takes the positions in the states' layout (Q in
 place of θ: ``lagrange.q_state``).
 
+Closed loops through such a frame (a Spherical joint or a free body in the spanning tree
+of a loop): the loop constraints Φ are expressions of θ like any others, so Φ_θ at θ = 0
+is their Jacobian in the quasi-velocities w and Φ̈ comes out right (θ̈ = ẇ at θ = 0);
+``compiled.lagrange.phi`` is Φ at θ = 0 (a function of Q, what the initialization projects
+onto), and the stabilized index-2 form's correction Φ_θᵀμ of θ's rate enters Q's rate
+(``_layout``), so the quaternion is held on Φ = 0 as the other coordinates are.
+
 Why not minimal angles with a chart switch: that needs an event and a reinit of three
 states each time the angles near their singularity, and the equations of motion in angles
 are long (the inverse of the angles' velocity map); the local chart here is that idea
@@ -169,16 +176,23 @@ def norm_gain(w) -> ca.SX:
 
 def _layout(charts: list[Chart], q: ca.SX, rates: ca.SX):
     """(position, rate) pairs of q in the states' layout: each chart's θ (3 entries)
-    replaced by its Q (4 entries) with Q's rate ½·G(Q)·w + k·(1 − |Q|²)·Q."""
+    replaced by its Q (4 entries) with Q's rate ½·G(Q)·θ̇ + k·(1 − |Q|²)·Q, θ̇ the rates
+    given for θ (w, and in a closed loop w + Φ_θᵀμ, the stabilized index-2 form's
+    correction, which moves the orientation back onto Φ = 0 as it moves the other
+    coordinates)."""
     first = {c.theta[0].name(): c for c in charts if c.Q.numel()}
     rest = {c.theta[i].name() for c in charts if c.Q.numel() for i in (1, 2)}
+    rate_of = {s.name(): r for s, r in zip(ca.vertsplit(q), ca.vertsplit(rates))}
     out = []
-    for s, rate in zip(ca.vertsplit(q), ca.vertsplit(rates)):
+    for s in ca.vertsplit(q):
         c = first.get(s.name())
         if c is not None:
-            out.append((c.Q, Q_rate(c.Q, c.w) + norm_gain(c.w) * (1 - ca.dot(c.Q, c.Q)) * c.Q))
+            # θ's rate: w, plus the loops' stabilizing correction Φ_θᵀμ where there is one
+            theta_rate = _vc(*[rate_of[th.name()] for th in ca.vertsplit(c.theta)])
+            out.append((c.Q, Q_rate(c.Q, theta_rate)
+                        + norm_gain(c.w) * (1 - ca.dot(c.Q, c.Q)) * c.Q))
         elif s.name() not in rest:
-            out.append((s, rate))
+            out.append((s, rate_of[s.name()]))
     return out
 
 

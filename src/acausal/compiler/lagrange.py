@@ -78,7 +78,7 @@ class Lagrange:
     def __init__(self, tree, R: Residuals, phi, t, p, u, u_names, z):
         self.q, self.qd, self.qdd = tree.q, tree.qd, tree.qdd
         self.q_names, self.qd_names = tree.q_names, tree.qd_names
-        self.phi, self.t, self.p, self.u, self.u_names, self.z = phi, t, p, u, list(u_names), z
+        self._phi, self.t, self.p, self.u, self.u_names, self.z = phi, t, p, u, list(u_names), z
         self._R = R
         self._cache = {}
         charts = tree.charts
@@ -134,8 +134,12 @@ class Lagrange:
         return self._lazy("Q", self._split_Q)[2]
 
     @property
+    def phi(self) -> ca.SX:
+        return self._lazy("phi", lambda: self._phi)
+
+    @property
     def phi_q(self) -> ca.SX:
-        return self._lazy("phi_q", lambda: ca.jacobian(self.phi, self.q))
+        return self._lazy("phi_q", lambda: ca.jacobian(self._phi, self.q))
 
     @property
     def R0(self) -> ca.SX:
@@ -155,11 +159,11 @@ class Lagrange:
         if not subs:
             return self
         sym, val = ca.vertcat(*[a for a, _ in subs]), ca.vertcat(*[b for _, b in subs])
-        R = ca.substitute([self._R.inertia, self._R.conservative, self._R.flows, self.phi],
+        R = ca.substitute([self._R.inertia, self._R.conservative, self._R.flows, self._phi],
                           [sym], [val])
         out = Lagrange.__new__(Lagrange)
         out.__dict__.update(self.__dict__)
-        out._R, out.phi, out._cache = Residuals(*(ca.simplify(r) for r in R[:3])), R[3], {}
+        out._R, out._phi, out._cache = Residuals(*(ca.simplify(r) for r in R[:3])), R[3], {}
         return out
 
     def function(self, *names: str) -> ca.Function:

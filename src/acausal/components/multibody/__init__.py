@@ -42,7 +42,8 @@ accelerations of trees come from the O(N) articulated-body recursion in spatial 
 Robot arms from Denavit–Hartenberg tables and URDF files: ``acausal.multibody``. The
 animation (``acausal.analysis.animation``) draws the parts from their shapes.
 
-Not here yet: loops through free or spherical joints, JointUPS.
+Loops may run through free bodies and Spherical or FreeMotion joints (their quaternion
+states held on the loop constraints as the joint coordinates are).
 """
 from .interfaces import Frame, Frame_a, Frame_b
 from .assemblies import JointRRP, JointRRR, JointSSP, JointSSR, JointUPS, JointUSP, JointUSR
