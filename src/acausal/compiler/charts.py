@@ -55,7 +55,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 
 from ..errors import StructureError
-from ..frames import Q_rate, from_Q, pose, skew
+from ..frames import Q_rate, axes_rotations, axes_rotations_Q, from_Q, pose, skew
 
 _vc = ca.vertcat
 
@@ -74,6 +74,34 @@ class FreeFrame:
     rotation: bool = True
     start: dict = field(default_factory=dict)       # 'r', 'v', 'Q', 'w' -> 3- or 4-vector
     base: str = ""                                  # prefix of the names (owner's path)
+    angles: tuple = ()                              # names of the recorded angles
+    angle_rates: tuple = ()                         # names of their rates
+    sequence: object = (1, 2, 3)                    # the angles' axes (numbers, parameters)
+
+
+@dataclass
+class AngleStart:
+    """The orientation of a free frame given by three angles about the axes of a sequence
+    (MSL's phi[3], e.g. of a Spherical joint's sequence_angleStates, and phi_d = der(phi)),
+    as its states: ``function`` (angles [rad], their rates [rad/s], p) -> (Q, w), Q =
+    axes_rotations_Q(sequence, angles) and w the angular velocity resolved in the frame
+    (MSL's Frames.angularVelocity2 of axesRotations). ``angles``, ``rates``, ``Q``, ``w``:
+    the names."""
+    angles: tuple
+    rates: tuple
+    Q: tuple
+    w: tuple
+    function: ca.Function | None = None
+
+    def build(self, a: ca.SX, ad: ca.SX, sequence, p: ca.SX) -> "AngleStart":
+        """With ``function`` made for the symbols a, ad (3 each) and the parameters p."""
+        T = axes_rotations(sequence, a)
+        dT = ca.reshape(ca.jtimes(ca.vec(T), a, ad), 3, 3)
+        w = _vc(ca.mtimes(T[2, :], dT[1, :].T), -ca.mtimes(T[2, :], dT[0, :].T),
+                ca.mtimes(T[1, :], dT[0, :].T))
+        self.function = ca.Function("angle_start", [a, ad, p],
+                                    [axes_rotations_Q(sequence, a), w])
+        return self
 
 
 @dataclass
@@ -85,6 +113,7 @@ class Chart:
     w: ca.SX
     start: dict
     units: dict
+    angles: tuple = ()          # (names of the angles, of their rates, sequence) if recorded
 
 
 def free_root(node, spec: FreeFrame | None, der_table: dict):
@@ -137,7 +166,17 @@ def free_root(node, spec: FreeFrame | None, der_table: dict):
     units.update({x[4]: "m/s" for x in coords[:3 if spec.translation else 0]})
     units.update({q.name(): "1" for q in ca.vertsplit(Q)})
     units.update({s.name(): "rad/s" for s in ca.vertsplit(w)})
-    return Chart(th, Q, w, start, units), coords
+    angles = (tuple(name(a) for a in spec.angles), tuple(name(a) for a in spec.angle_rates),
+              spec.sequence) if spec.rotation and spec.angles else ()
+    return Chart(th, Q, w, start, units, angles), coords
+
+
+def angle_starts(charts: list[Chart], p: ca.SX) -> list[AngleStart]:
+    """The AngleStart of every chart whose component records angles for it."""
+    a, ad = ca.SX.sym("angles", 3), ca.SX.sym("der_angles", 3)
+    return [AngleStart(c.angles[0], c.angles[1], tuple(q.name() for q in ca.vertsplit(c.Q)),
+                       tuple(s.name() for s in ca.vertsplit(c.w))).build(a, ad, c.angles[2], p)
+            for c in charts if c.angles]
 
 
 def _starts(sym: ca.SX, values) -> dict:
