@@ -72,7 +72,8 @@ class Lagrange:
     is given at θ = 0, an expression of the frame's quaternion Q (M(Q) the mass matrix in
     (v, w), coriolis with the gyroscopic w × I·w, gravity and K the generalized forces and
     stiffness about the frame's axes); ``function`` takes q in the states' layout, Q in
-    place of θ (``q_state``, ``q_state_names``).
+    place of θ (``q_state``, ``q_state_names``; ``chart_names`` pairs each chart's θ
+    names with its Q names).
     """
 
     def __init__(self, tree, R: Residuals, phi, t, p, u, u_names, z):
@@ -85,6 +86,10 @@ class Lagrange:
         self._theta = _vc(*[c.theta for c in charts]) if charts else ca.SX(0, 1)
         self.q_state = state_positions(charts, self.q)
         self.q_state_names = [s.name() for s in ca.vertsplit(self.q_state)]
+        #: (names of θ[1..3], names of Q[1..4]) of each free frame's chart
+        self.chart_names = [(tuple(s.name() for s in ca.vertsplit(c.theta)),
+                             tuple(s.name() for s in ca.vertsplit(c.Q)))
+                            for c in charts if c.Q.numel()]
 
     def _lazy(self, key, make):
         if key not in self._cache:
