@@ -15,12 +15,12 @@ from acausal.components.multibody import (Body, BodyBox, FixedTranslation, Joint
 from acausal.components.translational import Damper
 from acausal.core import Model
 
-e_axis = np.array([0.7, 1.2, 0.0]) / np.linalg.norm([0.7, 1.2, 0.0])
 m = Model("lineForceWithTwoMasses")
 m.world = World()
 m.rod1, m.rod2 = FixedTranslation(r=(0, -0.9, 0)), FixedTranslation(r=(0, 0.3, 0))
 m.revolute1, m.bodyBox1 = Revolute(), BodyBox(r=(0.7, 0, 0))
 m.jointUPS = JointUPS(nAxis_ia=(0.7, 1.2, 0))
+e_axis = np.array(m.jointUPS.eAxis_ia)
 m.body1 = Body(m=1.0, r_CM=tuple(0.2 * e_axis), I_11=0, I_22=0, I_33=0)
 m.body2 = Body(m=1.0, r_CM=tuple(-0.2 * e_axis), I_11=0, I_22=0, I_33=0)
 m.damper1 = Damper(d=3)

@@ -74,7 +74,9 @@ def test_joint_ups_line_force_with_two_masses_equals_the_lagrangian_by_hand():
     """MSL's example (JointUPS, 1 coordinate, no loop row) against the hand-written
     Lagrangian: the pendulum's angle to 1e-8 rad over MSL's 3 s; s = ℓ − s_offset and the
     damper's force f = −d·ṡ (MSL's axis.f) from the same run."""
-    compiled = acausal.compile(_line_force_with_two_masses())
+    model = _line_force_with_two_masses()
+    assert np.allclose(model.jointUPS.eAxis_ia, E_AXIS, rtol=0, atol=1e-15)
+    compiled = acausal.compile(model)
     assert (compiled.coordinates, compiled.loop_rows) == (["revolute1.phi"], [])
     t = np.linspace(0.0, 3.0, 61)
     res = compiled.simulate(3.0, t=t, **TOL)

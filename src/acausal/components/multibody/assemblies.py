@@ -324,7 +324,8 @@ class JointUPS(Animated):
     s_offset); ``bearing`` is fixed; a force on ``axis`` pushes frame_b away from frame_a
     along the line. Massless: the loads on frame_ia and frame_ib pass to frame_a and frame_b
     by virtual work (MSL's force balance, not written). Records s, axisLength [m] and f
-    [N] (= axis.f). Singular where the line is parallel to n1_a (as MSL's)."""
+    [N] (= axis.f). Singular where the line is parallel to n1_a (as MSL's). ``eAxis_ia``
+    is MSL's final parameter, the unit vector along nAxis_ia (for the bodies' r_CM)."""
     options = {"showUniversalAxes": True, "checkTotalPower": False}
     n1_a = Parameter((0.0, 0.0, 1.0), "1", "axis 1 of universal joint resolved in frame_a "
                                            "(axis 2 is orthogonal to axis 1 and to line from "
@@ -343,6 +344,14 @@ class JointUPS(Animated):
     axis = TranslationalFlange("1-dim. translational flange that drives the prismatic joint")
     bearing = TranslationalFlange("1-dim. translational flange of the drive bearing of the "
                                   "prismatic joint")
+
+    @property
+    def eAxis_ia(self) -> tuple:
+        """Unit vector from origin of frame_a to origin of frame_b, resolved in frame_ia [1]
+        (MSL's final parameter: nAxis_ia normalized)."""
+        n = [float(v) for v in self.nAxis_ia]
+        length = math.sqrt(sum(v * v for v in n))
+        return tuple(v / length for v in n)
 
     def structure(self, s):
         def line_frame(vals, par):
