@@ -1,7 +1,7 @@
 """Robots with a floating base from URDF files (``from_urdf(..., floating_base=True)``:
 the root link on a FreeMotion from the World) against Pinocchio with a JointModelFreeFlyer
-root: Solo12 (a quadruped of example-robot-data): M(q) equals CRBA to 1e-10 and the
-accelerations ABA to 1e-9, at random states. Pinocchio's free-flyer velocity is in the
+root: Solo12 and Talos (a quadruped and a humanoid of example-robot-data): M(q) equals
+CRBA to 1e-10 and the accelerations ABA to 1e-9, at random states. Pinocchio's free-flyer velocity is in the
 root link's frame, the FreeMotion's linear velocity v_rel_a in the world's: M and the
 accelerations are compared through that map. A ``planar`` URDF joint against Pinocchio's
 JointModelPlanar and a ``floating`` joint in the middle of a tree likewise; a
@@ -127,18 +127,25 @@ def _revolute(name):
     return block
 
 
-def test_solo12_on_a_floating_base_equals_pinocchio_free_flyer():
-    """Solo12 (12 revolute joints, fixed ones with rotated origins) with floating_base:
-    18 degrees of freedom, a FreeMotion ``root_joint`` (13 states) from the World."""
+@pytest.mark.parametrize("robot, dof", [("solo_description/robots/solo12.urdf", 18),
+                                        ("talos_data/robots/talos_reduced.urdf", 38)],
+                         ids=["solo12", "talos_reduced"])
+def test_legged_robot_on_a_floating_base_equals_pinocchio_free_flyer(robot, dof):
+    """Solo12 (a quadruped: 12 revolute joints, fixed ones with rotated origins) and Talos
+    (a humanoid, reduced: 32 revolute joints; its grippers' mimic joints read as joints of
+    their own, as Pinocchio reads them by default) with floating_base: a FreeMotion
+    ``root_joint`` (13 states) from the World, the accelerations by the articulated-body
+    recursion."""
     pin = _pinocchio()
-    path = _robot_file("solo_description/robots/solo12.urdf")
+    path = _robot_file(robot)
     pmodel = pin.buildModelFromUrdf(path, pin.JointModelFreeFlyer())
     pmodel.gravity.linear = np.array(G)
-    model = from_urdf(path, gravity=G, floating_base=True)
+    model = from_urdf(path, gravity=G, floating_base=True, mimic=False)
     blocks = {n: _revolute(n) for n in list(pmodel.names)[2:]}
     blocks["root_joint"] = _free_flyer("root_joint")
     compiled = _equal_pinocchio(model, pmodel, blocks)
-    assert len(compiled.lagrange.qd_names) == 18 == pmodel.nv
+    assert len(compiled.lagrange.qd_names) == dof == pmodel.nv
+    assert compiled.method == "articulated-body recursion"
 
 
 URDF_PLANAR = """<robot name="r">
