@@ -74,11 +74,15 @@ def by_angles(model, values: dict | None, p: np.ndarray) -> dict:
     states, and the three rates (phi_d[1..3]) given with them by its angular velocity
     states (``charts.AngleStart``): exact for any angles, where a projection onto the
     recorded angles would be singular at gimbal lock and miss angles beyond their range.
-    Angles given in part are left as they are (held by the projection)."""
+    Angles given in part are completed by the start orientation's (the recorded angles at
+    the states' start values)."""
     out = dict(values or {})
     for a in model.angle_starts:
-        if not all(n in out for n in a.angles):
+        if not any(n in out for n in a.angles):
             continue
+        if not all(n in out for n in a.angles):
+            at_start = _start_values(model, a.angles, p)
+            out.update({n: v for n, v in zip(a.angles, at_start) if n not in out})
         phi = [float(out.pop(n)) for n in a.angles]
         rates = [float(out.pop(n)) for n in a.rates] if all(n in out for n in a.rates) \
             else None
@@ -87,6 +91,15 @@ def by_angles(model, values: dict | None, p: np.ndarray) -> dict:
         if rates is not None:
             out.update(zip(a.w, np.array(w, dtype=float).ravel()))
     return out
+
+
+def _start_values(model, names, p: np.ndarray) -> list[float]:
+    """The variables ``names`` (of the states and parameters only) at the states' start
+    values."""
+    f = ca.Function("at_start", [model.x, model.p], [ca.vertcat(*[model.expression(n)
+                                                                 for n in names])])
+    x = np.array(model.start(p), dtype=float).ravel()[:model.x.numel()]
+    return [float(v) for v in np.array(f(x, p)).ravel()]
 
 
 def _rows(model, what: str, values: dict, w: ca.SX) -> list:

@@ -133,3 +133,18 @@ def test_free_body_by_msl_names_moves_as_from_msl_start_parameters():
                         ).simulate(2.0, t=t, x0=x0, **TOL)
     _same_motion(a, b, "body.frame_a")
     assert np.ptp(vector(b, "body.r_0")[:, 1]) > 1.0
+
+
+def test_angles_given_in_part_keep_the_others_at_their_start_values():
+    """x0 of phi[2] = 2.5 rad alone (beyond the range the recorded phi[2] takes with phi[1]
+    in [−π/2, π/2]) on a Spherical joint starting at angles_start {0.2, 0.3, 0.4} about
+    {1, 2, 3}: the bar starts at the angles {0.2, 2.5, 0.4} exactly (its frame's R.T)."""
+    m = model("sphericalPendulum", lambda m: (
+        (m.world.frame_b, m.sph.frame_a), (m.sph.frame_b, m.bar.frame_a)),
+        world=World(), sph=Spherical(angles_start=(0.2, 0.3, 0.4)),
+        bar=BodyShape(r=(1.0, 0, 0), r_CM=(0.5, 0, 0), m=1.0, I_11=0.01, I_22=0.1,
+                      I_33=0.1))
+    res = acausal.compile(m).simulate(0.1, t=np.linspace(0, 0.1, 3), x0={"sph.phi[2]": 2.5},
+                                      **TOL)
+    T0 = orientation(res, "bar.frame_a")[0]
+    assert np.max(np.abs(T0 - _T((1, 2, 3), (0.2, 2.5, 0.4)))) < 1e-12

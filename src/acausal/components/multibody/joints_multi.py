@@ -14,8 +14,9 @@ holds). MSL's ``useQuaternions=False`` (three angles as states) is accepted and 
 nothing: the states are always quaternions, so no orientation is singular; the angles MSL
 would use as states, in the sequence ``sequence_angleStates``, are recorded as ``phi``, their
 rates as ``phi_d`` (outputs: they jump by 2π and are undefined at gimbal lock, the states
-are not). Given by name in ``x0`` or ``guess``, all three phi set Q (any angles, also
-beyond the range the recorded phi take), and with them all three phi_d set w.
+are not). Given by name in ``x0`` or ``guess``, phi set Q (any angles, also beyond the
+range the recorded phi take; those not given at their start values), and with all three
+phi all three phi_d set w.
 
 Start values as MSL's: the relative orientation by ``angles_start`` [rad] about the axes
 ``sequence_start``, the relative angular velocity ``w_rel_a_start`` [rad/s] (resolved in
