@@ -8,7 +8,9 @@ then about x): a conical pendulum under gravity (-y), line by line as in Modelic
 It starts tilted (rev2.phi = 0.6 rad) and turning about the vertical (rev1.w = 3 rad/s).
 Prints Lagrange's mass matrix M(q) (``compiled.lagrange``), checks that the energy
 ½q̇ᵀM(q)q̇ + m·g·y_CM (m and the centre of mass by hand: ρπL(d/2)², r/2) stays constant, and
-saves ``pendulum_3d.png`` (in $ACAUSAL_OUT, default the current directory).
+saves ``pendulum_3d.png`` (in $ACAUSAL_OUT, default the current directory). Last, the modes
+hanging at rest next to those of the same rod on a Spherical joint (quaternion states,
+analysed in their tangent coordinates θ: the two swings and a free turn about the rod).
 """
 from __future__ import annotations
 
@@ -17,7 +19,8 @@ import os
 import numpy as np
 
 import acausal
-from acausal.components.multibody import BodyCylinder, Revolute, World
+from acausal.analysis import modes
+from acausal.components.multibody import BodyCylinder, Revolute, Spherical, World
 
 R_ROD, D_ROD = np.array([0.0, -0.6, 0.0]), 0.05
 
@@ -70,6 +73,14 @@ def main():
     out = os.path.join(os.environ.get("ACAUSAL_OUT", "."), "pendulum_3d.png")
     fig.savefig(out, dpi=100)
     print(f"plot saved to {out}")
+
+    spherical = acausal.Model("spherical")
+    spherical.world, spherical.joint = World(), Spherical()
+    spherical.rod = BodyCylinder(r=tuple(R_ROD), diameter=D_ROD)
+    spherical.connect(spherical.world.frame_b, spherical.joint.frame_a)
+    spherical.connect(spherical.joint.frame_b, spherical.rod.frame_a)
+    print("modes hanging at rest [Hz]: Cardan joint", modes(model, {}).frequencies.round(4),
+          "; Spherical joint", modes(acausal.compile(spherical), {}).frequencies.round(4))
 
 
 if __name__ == "__main__":

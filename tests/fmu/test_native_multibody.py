@@ -12,7 +12,8 @@ inertia.phi = bearing.phi); the cylinder starts from its start value s = 0 in bo
 both assemble the same branch. Engine1a also with b2 a plain Revolute (MSL's
 over-constrained planar loop: 6 rows, 3 of them redundant, switched off at the assembled
 configuration; its FMU takes 45 s to compile, so FMI 2.0 only). FreeBody's w_a[1] is not compared: it stays at rounding
-noise (1e-18 rad/s) in both.
+noise (1e-18 rad/s) in both. A loop through a Spherical joint (a bar on it, its tip held by
+a SphericalSpherical rod): the FMU keeps the joint's quaternion on the loop (FMI 2.0 only).
 """
 from __future__ import annotations
 
@@ -24,6 +25,8 @@ import pytest
 fmpy = pytest.importorskip("fmpy")
 
 import acausal                                                     # noqa: E402
+from acausal.components.multibody import (BodyShape, FixedTranslation, Spherical,  # noqa: E402
+                                          SphericalSpherical, World)
 from acausal.models.multibody_forces import FreeBody                # noqa: E402
 from acausal.models.multibody_loops import MultiBodyEngine1a       # noqa: E402
 from test_native_events import RTOL, VERSIONS, fmusim              # noqa: E402
@@ -44,6 +47,27 @@ CASES = {
                       {"bearing.w": 10.0, "inertia.J": 0.5}, ENGINE_SIGNALS, ("2.0",)),
 }
 CASES_VERSIONS = [(n, v) for n, case in CASES.items() for v in case[5]]
+
+
+def spherical_rod_loop() -> acausal.Model:
+    """A bar on a Spherical joint at the origin (turning and spinning at the start), its tip
+    tied to {1, 1, 0} by a SphericalSpherical rod of 1 m."""
+    m = acausal.Model("sphericalRodLoop")
+    m.world, m.fix = World(), FixedTranslation(r=(1.0, 1.0, 0))
+    m.sph = Spherical(w_rel_a_start=(1.0 + 2.0 ** 0.5, 2.0 ** 0.5, 0.0))
+    m.bar = BodyShape(r=(1.0, 0, 0), r_CM=(0.5, 0, 0), m=1.0, I_11=0.01, I_22=0.1, I_33=0.1)
+    m.rod = SphericalSpherical(rodLength=1.0)
+    for a, b in ((m.world.frame_b, m.sph.frame_a), (m.sph.frame_b, m.bar.frame_a),
+                 (m.world.frame_b, m.fix.frame_a), (m.bar.frame_b, m.rod.frame_a),
+                 (m.fix.frame_b, m.rod.frame_b)):
+        m.connect(a, b)
+    return m
+
+
+CASES["spherical_loop"] = (spherical_rod_loop, 2.0, 0.01, {"bar.m": 3.0},
+                           ["sph.Q[1]", "sph.Q[2]", "sph.Q[4]", "sph.w_rel[1]",
+                            "bar.frame_b.r_0[3]"], ("2.0",))
+CASES_VERSIONS.append(("spherical_loop", "2.0"))
 
 
 @pytest.fixture(scope="module")

@@ -228,11 +228,11 @@ def test_ur5_inverse_dynamics_equals_pinocchio_rnea(ur5):
 
 
 def test_from_urdf_refuses_what_it_cannot_build(tmp_path):
-    bad = tmp_path / "free.urdf"
+    bad = tmp_path / "ball.urdf"
     bad.write_text('<robot name="r"><link name="a"/><link name="b"/>'
-                   '<joint name="j" type="floating"><parent link="a"/><child link="b"/>'
+                   '<joint name="j" type="ball"><parent link="a"/><child link="b"/>'
                    '</joint></robot>')
-    with pytest.raises(acausal.StructureError, match="joint 'j' is of type 'floating'"):
+    with pytest.raises(acausal.StructureError, match="joint 'j' is of type 'ball'"):
         from_urdf(bad)
     two = tmp_path / "two.urdf"
     two.write_text('<robot name="r"><link name="a"/><link name="b"/></robot>')

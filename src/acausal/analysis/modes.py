@@ -56,12 +56,20 @@ class Modes:
 
 def modes(model, x=None, **kwargs) -> Modes:
     """Modes of ``model`` (a CompiledModel, linearized at x with ``kwargs`` as for
-    ``linearize``, ``mode=`` the discrete modes included, or a LinearModel)."""
-    lin = model if isinstance(model, LinearModel) else linearize(model, x, inputs=[],
-                                                                   outputs=[], **kwargs)
+    ``linearize``, ``mode=`` the discrete modes included, or a LinearModel). Quaternion
+    states (free bodies, Spherical, FreeMotion) are taken in their tangent coordinates θ
+    (``linearize(..., tangent=True)``): the mode shapes name θ[1..3], the rotation resolved
+    in the frame; a free body has six rigid-body modes at 0 Hz."""
+    lin = model if isinstance(model, LinearModel) else linearize(
+        model, x, inputs=[], outputs=[], **dict(dict(tangent=True), **kwargs))
     if not lin.coordinates:
         raise AnalysisError("modes: the linear model has no mechanical coordinates (with "
-                            "mass) among its states")
+                            "mass) among its states (orientations as quaternion states: "
+                            "linearize with tangent=True, or give modes() the compiled "
+                            "model)")
+    if lin.mass is None:
+        raise AnalysisError("modes: the linear model has quaternion states; linearize with "
+                            "tangent=True (or give modes() the compiled model)")
     iq = [lin.states.index(n) for n in lin.coordinates]
     iv = [lin.states.index(n) for n in lin.rates]
     M = lin.mass

@@ -33,7 +33,7 @@ from ..core.parameter import Parameter, symbolic_parameters
 from ..errors import StructureError, did_you_mean
 from .batch import run_physics
 from .builders import StructureBuilder, Workspace
-from .charts import at_origin, check_inertia, quaternion_states
+from .charts import angle_starts, at_origin, check_inertia, quaternion_states
 from .compiled import CompiledModel, Reinit, ScalarVariable, StateEvents, coinciding
 from .flatten import flatten
 from .kinematics import Node, choose_tree, motion_symbols
@@ -340,6 +340,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
                         for o, _, n in ws.initials],
         smooth=ws.smooth,
         index_reduction=ws.index_reduction,
+        angle_starts=angle_starts(tree.charts, p),
         source=model,
     )
 

@@ -283,18 +283,23 @@ class StructureBuilder(_Base):
     def free_frame(self, frame, *, r=("r[1]", "r[2]", "r[3]"), v=("v[1]", "v[2]", "v[3]"),
                    Q=("Q[1]", "Q[2]", "Q[3]", "Q[4]"), w=("w[1]", "w[2]", "w[3]"),
                    translation: bool = True, rotation: bool = True,
-                   start: dict | None = None) -> None:
+                   start: dict | None = None, angles: tuple = (), angle_rates: tuple = (),
+                   sequence=(1, 2, 3)) -> None:
         """Name the states a 3-D ``frame`` (a port or internal node) gets if it has no path
         through joints to the world (``compiler.charts``): position r [m] and its rate v
         (unless ``translation`` is False: a rotation only), quaternion Q and angular
         velocity w [rad/s] resolved in the frame (unless ``rotation`` is False: a point
         mass, the frame keeps the world's orientation); ``start`` their start values by
         'r', 'v', 'Q', 'w' (numbers or expressions of parameters). Such frames are
-        preferred when choosing free coordinates."""
+        preferred when choosing free coordinates. ``angles`` / ``angle_rates``: the names of
+        the three angles [rad] about the axes ``sequence`` (numbers or parameters) the
+        component records for the orientation, and of their rates [rad/s]: values given
+        for them by name (x0, guess) set Q and w (``charts.AngleStart``)."""
         self._mine(frame)
         self._ws.state_names[frame] = FreeFrame(tuple(r), tuple(v), tuple(Q), tuple(w),
                                                 translation, rotation, dict(start or {}),
-                                                self._owner.path)
+                                                self._owner.path, tuple(angles),
+                                                tuple(angle_rates), sequence)
 
     def node(self, name: str, domain: Domain, *, velocity: str = "", acceleration: str = "",
              preferred: bool = True) -> InternalNode:

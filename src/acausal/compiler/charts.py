@@ -35,6 +35,13 @@ M(Q)·[v̇; ẇ] + ... = Q_gen, the gyroscopic w × I·w coming from the first-o
 the frame's axes); ``lagrange.function`` takes the positions in the states' layout (Q in
 place of θ: ``lagrange.q_state``).
 
+Closed loops through such a frame (a Spherical joint or a free body in the spanning tree
+of a loop): the loop constraints Φ are expressions of θ like any others, so Φ_θ at θ = 0
+is their Jacobian in the quasi-velocities w and Φ̈ comes out right (θ̈ = ẇ at θ = 0);
+``compiled.lagrange.phi`` is Φ at θ = 0 (a function of Q, what the initialization projects
+onto), and the stabilized index-2 form's correction Φ_θᵀμ of θ's rate enters Q's rate
+(``_layout``), so the quaternion is held on Φ = 0 as the other coordinates are.
+
 Why not minimal angles with a chart switch: that needs an event and a reinit of three
 states each time the angles near their singularity, and the equations of motion in angles
 are long (the inverse of the angles' velocity map); the local chart here is that idea
@@ -48,7 +55,7 @@ from dataclasses import dataclass, field
 import casadi as ca
 
 from ..errors import StructureError
-from ..frames import Q_rate, from_Q, pose, skew
+from ..frames import Q_rate, axes_rotations, axes_rotations_Q, from_Q, pose, skew
 
 _vc = ca.vertcat
 
@@ -67,6 +74,34 @@ class FreeFrame:
     rotation: bool = True
     start: dict = field(default_factory=dict)       # 'r', 'v', 'Q', 'w' -> 3- or 4-vector
     base: str = ""                                  # prefix of the names (owner's path)
+    angles: tuple = ()                              # names of the recorded angles
+    angle_rates: tuple = ()                         # names of their rates
+    sequence: object = (1, 2, 3)                    # the angles' axes (numbers, parameters)
+
+
+@dataclass
+class AngleStart:
+    """The orientation of a free frame given by three angles about the axes of a sequence
+    (MSL's phi[3], e.g. of a Spherical joint's sequence_angleStates, and phi_d = der(phi)),
+    as its states: ``function`` (angles [rad], their rates [rad/s], p) -> (Q, w), Q =
+    axes_rotations_Q(sequence, angles) and w the angular velocity resolved in the frame
+    (MSL's Frames.angularVelocity2 of axesRotations). ``angles``, ``rates``, ``Q``, ``w``:
+    the names."""
+    angles: tuple
+    rates: tuple
+    Q: tuple
+    w: tuple
+    function: ca.Function | None = None
+
+    def build(self, a: ca.SX, ad: ca.SX, sequence, p: ca.SX) -> "AngleStart":
+        """With ``function`` made for the symbols a, ad (3 each) and the parameters p."""
+        T = axes_rotations(sequence, a)
+        dT = ca.reshape(ca.jtimes(ca.vec(T), a, ad), 3, 3)
+        w = _vc(ca.mtimes(T[2, :], dT[1, :].T), -ca.mtimes(T[2, :], dT[0, :].T),
+                ca.mtimes(T[1, :], dT[0, :].T))
+        self.function = ca.Function("angle_start", [a, ad, p],
+                                    [axes_rotations_Q(sequence, a), w])
+        return self
 
 
 @dataclass
@@ -78,6 +113,7 @@ class Chart:
     w: ca.SX
     start: dict
     units: dict
+    angles: tuple = ()          # (names of the angles, of their rates, sequence) if recorded
 
 
 def free_root(node, spec: FreeFrame | None, der_table: dict):
@@ -130,7 +166,17 @@ def free_root(node, spec: FreeFrame | None, der_table: dict):
     units.update({x[4]: "m/s" for x in coords[:3 if spec.translation else 0]})
     units.update({q.name(): "1" for q in ca.vertsplit(Q)})
     units.update({s.name(): "rad/s" for s in ca.vertsplit(w)})
-    return Chart(th, Q, w, start, units), coords
+    angles = (tuple(name(a) for a in spec.angles), tuple(name(a) for a in spec.angle_rates),
+              spec.sequence) if spec.rotation and spec.angles else ()
+    return Chart(th, Q, w, start, units, angles), coords
+
+
+def angle_starts(charts: list[Chart], p: ca.SX) -> list[AngleStart]:
+    """The AngleStart of every chart whose component records angles for it."""
+    a, ad = ca.SX.sym("angles", 3), ca.SX.sym("der_angles", 3)
+    return [AngleStart(c.angles[0], c.angles[1], tuple(q.name() for q in ca.vertsplit(c.Q)),
+                       tuple(s.name() for s in ca.vertsplit(c.w))).build(a, ad, c.angles[2], p)
+            for c in charts if c.angles]
 
 
 def _starts(sym: ca.SX, values) -> dict:
@@ -169,16 +215,23 @@ def norm_gain(w) -> ca.SX:
 
 def _layout(charts: list[Chart], q: ca.SX, rates: ca.SX):
     """(position, rate) pairs of q in the states' layout: each chart's θ (3 entries)
-    replaced by its Q (4 entries) with Q's rate ½·G(Q)·w + k·(1 − |Q|²)·Q."""
+    replaced by its Q (4 entries) with Q's rate ½·G(Q)·θ̇ + k·(1 − |Q|²)·Q, θ̇ the rates
+    given for θ (w, and in a closed loop w + Φ_θᵀμ, the stabilized index-2 form's
+    correction, which moves the orientation back onto Φ = 0 as it moves the other
+    coordinates)."""
     first = {c.theta[0].name(): c for c in charts if c.Q.numel()}
     rest = {c.theta[i].name() for c in charts if c.Q.numel() for i in (1, 2)}
+    rate_of = {s.name(): r for s, r in zip(ca.vertsplit(q), ca.vertsplit(rates))}
     out = []
-    for s, rate in zip(ca.vertsplit(q), ca.vertsplit(rates)):
+    for s in ca.vertsplit(q):
         c = first.get(s.name())
         if c is not None:
-            out.append((c.Q, Q_rate(c.Q, c.w) + norm_gain(c.w) * (1 - ca.dot(c.Q, c.Q)) * c.Q))
+            # θ's rate: w, plus the loops' stabilizing correction Φ_θᵀμ where there is one
+            theta_rate = _vc(*[rate_of[th.name()] for th in ca.vertsplit(c.theta)])
+            out.append((c.Q, Q_rate(c.Q, theta_rate)
+                        + norm_gain(c.w) * (1 - ca.dot(c.Q, c.Q)) * c.Q))
         elif s.name() not in rest:
-            out.append((s, rate))
+            out.append((s, rate_of[s.name()]))
     return out
 
 

@@ -137,7 +137,9 @@ class CompiledModel:
     z, u, p); ``PhysicsBuilder.initial``), ``initial_labels`` one label each.
     ``smooth``: compiled in smooth form (``compile(model, smooth=True)``);
     ``index_reduction``: networks' loops and cut sets reduced (``compile(model,
-    index_reduction=True)``, kept by ``recompile``). ``source``: the
+    index_reduction=True)``, kept by ``recompile``). ``angle_starts``: the free rotations
+    whose angles (and rates) given by name set their quaternion (and angular velocity)
+    states (``charts.AngleStart``). ``source``: the
     Model compiled (a reference, nothing of it copied: ``recompile`` compiles it as it is
     then)."""
     name: str
@@ -173,6 +175,7 @@ class CompiledModel:
     initial_labels: list[str] = field(default_factory=list)
     smooth: bool = False    # compiled in smooth form (no events; see PhysicsBuilder.smooth)
     index_reduction: bool = False   # networks' loops and cut sets reduced (compiler.networks)
+    angle_starts: list = field(default_factory=list)    # charts.AngleStart of free rotations
     source: object = field(default=None, repr=False, compare=False)     # the Model compiled
     _cache: dict = field(default_factory=dict, repr=False)
 

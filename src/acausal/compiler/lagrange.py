@@ -73,19 +73,24 @@ class Lagrange:
     is given at θ = 0, an expression of the frame's quaternion Q (M(Q) the mass matrix in
     (v, w), coriolis with the gyroscopic w × I·w, gravity and K the generalized forces and
     stiffness about the frame's axes); ``function`` takes q in the states' layout, Q in
-    place of θ (``q_state``, ``q_state_names``).
+    place of θ (``q_state``, ``q_state_names``; ``chart_names`` pairs each chart's θ
+    names with its Q names).
     """
 
     def __init__(self, tree, R: Residuals, phi, t, p, u, u_names, z):
         self.q, self.qd, self.qdd = tree.q, tree.qd, tree.qdd
         self.q_names, self.qd_names = tree.q_names, tree.qd_names
-        self.phi, self.t, self.p, self.u, self.u_names, self.z = phi, t, p, u, list(u_names), z
+        self._phi, self.t, self.p, self.u, self.u_names, self.z = phi, t, p, u, list(u_names), z
         self._R = R
         self._cache = {}
         charts = tree.charts
         self._theta = _vc(*[c.theta for c in charts]) if charts else ca.SX(0, 1)
         self.q_state = state_positions(charts, self.q)
         self.q_state_names = [s.name() for s in ca.vertsplit(self.q_state)]
+        #: (names of θ[1..3], names of Q[1..4]) of each free frame's chart
+        self.chart_names = [(tuple(s.name() for s in ca.vertsplit(c.theta)),
+                             tuple(s.name() for s in ca.vertsplit(c.Q)))
+                            for c in charts if c.Q.numel()]
 
     def _lazy(self, key, make):
         if key not in self._cache:
@@ -135,8 +140,12 @@ class Lagrange:
         return self._lazy("Q", self._split_Q)[2]
 
     @property
+    def phi(self) -> ca.SX:
+        return self._lazy("phi", lambda: self._phi)
+
+    @property
     def phi_q(self) -> ca.SX:
-        return self._lazy("phi_q", lambda: ca.jacobian(self.phi, self.q))
+        return self._lazy("phi_q", lambda: ca.jacobian(self._phi, self.q))
 
     @property
     def R0(self) -> ca.SX:
@@ -156,11 +165,11 @@ class Lagrange:
         if not subs:
             return self
         sym, val = ca.vertcat(*[a for a, _ in subs]), ca.vertcat(*[b for _, b in subs])
-        R = ca.substitute([self._R.inertia, self._R.conservative, self._R.flows, self.phi],
+        R = ca.substitute([self._R.inertia, self._R.conservative, self._R.flows, self._phi],
                           [sym], [val])
         out = Lagrange.__new__(Lagrange)
         out.__dict__.update(self.__dict__)
-        out._R, out.phi, out._cache = Residuals(*(ca.simplify(r) for r in R[:3])), R[3], {}
+        out._R, out._phi, out._cache = Residuals(*(ca.simplify(r) for r in R[:3])), R[3], {}
         return out
 
     def function(self, *names: str) -> ca.Function:

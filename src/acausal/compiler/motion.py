@@ -24,6 +24,7 @@ from dataclasses import dataclass
 import casadi as ca
 
 from ..errors import SingularModelError, StructureError
+from .charts import at_origin
 from .recursive import articulated_solve
 from .symbolic import der_with
 
@@ -154,8 +155,12 @@ def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
     diagonal = all(i == j for i, j in zip(*sp.get_triplet()))
     qdd_M = None
     if not nc and not massless and not diagonal and nq > 2:
-        # a planar tree: the O(N) articulated-body recursion, if the model fits it
-        qdd_M = articulated_solve(q, qd, *bodies, -R0, M_times, probe, ws.p, ws.p_default)
+        # a tree: the O(N) articulated-body recursion, if the model fits it
+        # (the positions include the quaternions of free frames, the charts' bases; the
+        # charts' coordinates θ are 0 where the result is used)
+        positions = _vc(q, *[c.Q for c in tree.charts])
+        qdd_M = articulated_solve(positions, qd, *bodies, -R0, M_times, probe, ws.p,
+                                  ws.p_default, at_origin(tree.charts))
     A = None if qdd_M is not None else ca.jacobian(R_q, qdd)
     A_MM = A[massive, massive] if A is not None and massive else ca.SX(0, 0)
     ggl = None

@@ -94,16 +94,20 @@ STEPS = {d: (_backward(d), _forward(d)) for d in (3, 6)}
 
 
 def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_times: ca.SX,
-                      probe: ca.SX, p: ca.SX, p_default: list):
+                      probe: ca.SX, p: ca.SX, p_default: list, origin=((), ())):
     """q̈ = M⁻¹ τ by the articulated-body recursion, or None when the model is outside its
     assumptions (checked numerically against ``M_times`` = M·probe, the Lagrangian mass
     matrix applied to the symbol ``probe``).
 
-    ``q``, ``qd``: positions and velocities (``qd`` the velocities the accelerations are
+    ``q``, ``qd``: positions (every symbol of the configuration: the coordinates and the
+    quaternions of free frames) and velocities (``qd`` the velocities the accelerations are
     of); ``bodies``: each rigid body packed as ``PhysicsBuilder.rigid_body`` registers it
     (planar: pose and rates of the centre of mass, m, I; 3-D: pose and twist of its frame,
     m, r_CM, I); ``T_other``: the rest of the kinetic energy (1-D inertias), which must be
-    Σ ½ J_i q̇_i² (armature).
+    Σ ½ J_i q̇_i² (armature). ``origin``: (from, to) substitutions of the point where the
+    result is used and checked (free frames' chart coordinates θ at 0: ``charts``; away
+    from it the chart's rotation is not orthogonal, and the recursion's spatial inertias
+    assume it is).
     """
     n = qd.numel()
     kinds = {b.numel() for b in bodies}
@@ -155,6 +159,9 @@ def articulated_solve(q: ca.SX, qd: ca.SX, bodies: list, T_other, tau: ca.SX, M_
         ap = a[parent[i]] if parent[i] is not None else ca.SX.zeros(d)
         qdd[i], a[i] = FORWARD(U[i], D[i], u[i], S[i], ap)
     qdd = ca.vertcat(*qdd)
+    frm, to = origin
+    if frm:
+        qdd, M_times = ca.substitute([qdd, M_times], list(frm), list(to))
     if not _agrees(q, tau, qdd, M_times, probe, p, p_default):
         return None
     return ca.substitute(qdd, tau, tau_value)

@@ -17,8 +17,8 @@ from pathlib import Path
 
 import numpy as np
 
-from ..components.multibody import (Body, FixedRotation, FixedTranslation, Prismatic,
-                                    Revolute, RotationTypes, World)
+from ..components.multibody import (Body, FixedRotation, FixedTranslation, FreeMotion,
+                                    Planar, Prismatic, Revolute, RotationTypes, World)
 from ..components.rotational import IdealGear
 from ..core import Model
 from ..errors import ParameterError, StructureError
@@ -106,18 +106,27 @@ class JointLimits(dict):
 
 
 def from_urdf(path, name: str | None = None, useAxisFlange: bool = True,
-              gravity: Sequence[float] = (0.0, 0.0, -9.81), mimic: bool = True) -> Model:
-    """The Model of a fixed-base robot described by the URDF file ``path``.
+              gravity: Sequence[float] = (0.0, 0.0, -9.81), mimic: bool = True,
+              floating_base: bool = False) -> Model:
+    """The Model of a robot described by the URDF file ``path``.
 
     Every link with mass becomes a ``Body`` (URDF <inertial>: mass, origin and inertia,
     rotated into the link frame) named after the link; every joint a ``FixedRotation`` (or
     ``FixedTranslation``) named ``<joint>_origin`` for its <origin> (xyz [m], rpy [rad]:
     R = Rot_z(yaw)·Rot_y(pitch)·Rot_x(roll), the child frame in the parent's), then, for
     ``revolute`` and ``continuous`` joints a ``Revolute``, for ``prismatic`` ones a
-    ``Prismatic`` about/along its <axis>, with the axis flanges (``useAxisFlange``) for motors;
-    ``fixed`` joints are the origin only. Names are the URDF's, with characters other than
-    letters, digits and '_' replaced by '_'. The root link is fixed to the World, whose
-    gravity is ``gravity`` [m/s²] (world frame = root link frame).
+    ``Prismatic`` about/along its <axis>, with the axis flanges (``useAxisFlange``) for motors
+    (a ``continuous`` joint turns without end: lower and upper are not recorded even where
+    the file gives them, as the URDF specification ignores them there);
+    ``fixed`` joints are the origin only; a ``floating`` joint is a ``FreeMotion`` (states
+    r_rel_a, v_rel_a in the parent link's frame, the quaternion Q and w_rel_b in the child's),
+    a ``planar`` one a ``Planar`` moving in the plane orthogonal to its <axis> (s_x along the
+    parent's x axis projected into it, or y where x is the axis; s_y; phi). Names are the
+    URDF's, with characters other than letters, digits and '_' replaced by '_'. The root
+    link is fixed to the World, whose gravity is ``gravity`` [m/s²] (world frame = root
+    link frame); with ``floating_base`` it moves freely, on a FreeMotion ``root_joint`` from
+    the World (Pinocchio's JointModelFreeFlyer root; its velocity v_rel_a is resolved in the
+    world, Pinocchio's in the root link).
 
     ``model.limits`` maps each moving joint's name to its ``JointLimits`` (lower, upper,
     effort, velocity as the file gives them; type and axis); ``model.joints`` lists the
@@ -126,8 +135,7 @@ def from_urdf(path, name: str | None = None, useAxisFlange: bool = True,
     flanges for multiplier 1, an IdealGear ``<joint>_mimic`` of ratio 1/multiplier between
     revolute ones; offsets other than 0 are refused), or is a joint of its own when not
     (as Pinocchio's ``buildModelFromUrdf`` reads it by default). Meshes, collisions and
-    transmissions are read past; ``floating`` and ``planar`` joints are refused (free joints
-    are not here yet).
+    transmissions are read past.
     """
     path = Path(path)
     try:
@@ -161,8 +169,15 @@ def from_urdf(path, name: str | None = None, useAxisFlange: bool = True,
         taken.add(out)
         return out
 
-    frame_of = {roots[0]: model.world.frame_b}
-    _add_body(model, links[roots[0]], model.world.frame_b, unique)
+    root_frame = model.world.frame_b
+    if floating_base:
+        model.root_joint = FreeMotion()
+        taken.add("root_joint")
+        model.connect(root_frame, model.root_joint.frame_a)
+        root_frame = model.root_joint.frame_b
+        model.joints.append(model.root_joint)
+    frame_of = {roots[0]: root_frame}
+    _add_body(model, links[roots[0]], root_frame, unique)
     pending = list(joints)
     while pending:                       # parents first, whatever the file's order
         ready = [j for j in pending if j.find("parent").get("link") in frame_of]
@@ -251,15 +266,32 @@ def _add_body(model, link, frame, unique) -> None:
     model.connect(frame, body.frame_a)
 
 
+def _planar(axis) -> Planar:
+    """MSL's Planar in the plane orthogonal to ``axis``: x along the parent's x axis
+    projected into the plane (its y axis where x is the axis)."""
+    n = axis / np.linalg.norm(axis)
+    n_x = (1.0, 0.0, 0.0) if abs(n[0]) < 0.9 else (0.0, 1.0, 0.0)
+    return Planar(n=tuple(float(a) for a in n), n_x=n_x)
+
+
 def _add_joint(model, j, frame_of, unique, useAxisFlange: bool, links):
     """Origin, joint and the child link's body; the child link's frame."""
     jname, kind = j.get("name"), j.get("type")
-    if kind not in ("revolute", "continuous", "prismatic", "fixed"):
+    if kind not in ("revolute", "continuous", "prismatic", "fixed", "floating", "planar"):
         raise StructureError(f"from_urdf: joint '{jname}' is of type '{kind}'; revolute, "
-                             f"continuous, prismatic and fixed joints are supported")
+                             f"continuous, prismatic, fixed, floating and planar joints are "
+                             f"supported")
     frame = _placement(model, f"{jname}_origin", j.find("origin"),
                        frame_of[j.find("parent").get("link")], unique)
-    if kind != "fixed":
+    if kind in ("floating", "planar"):
+        joint = FreeMotion() if kind == "floating" else _planar(_floats(j.find("axis"), "xyz",
+                                                                        "1 0 0"))
+        setattr(model, unique(jname), joint)
+        model.connect(frame, joint.frame_a)
+        frame = joint.frame_b
+        model.joints.append(joint)
+        model.joint_of[jname] = joint
+    elif kind != "fixed":
         axis = _floats(j.find("axis"), "xyz", "1 0 0")
         cls = Prismatic if kind == "prismatic" else Revolute
         joint = cls(n=tuple(float(a) for a in axis), useAxisFlange=useAxisFlange)
@@ -270,7 +302,8 @@ def _add_joint(model, j, frame_of, unique, useAxisFlange: bool, links):
                                                                     "velocity")),
                                                       ("dynamics", ("damping", "friction")))
                  for el in [j.find(tag)] if el is not None for k in keys
-                 if el.get(k) is not None}
+                 if el.get(k) is not None
+                 and not (kind == "continuous" and k in ("lower", "upper"))}
         model.limits[jname] = JointLimits(given, type=kind,
                                           axis=tuple(float(a) for a in axis))
         model.joints.append(joint)

@@ -36,6 +36,7 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     w = ca.vertcat(model.x, model.z)
     nx = model.x.numel()
     names = model.x_names + model.z_names
+    x0, guess = by_angles(model, x0, p), by_angles(model, guess, p)
     given = _rows(model, "x0", x0, w)
     eqs = [h - v for h, v in zip(given, x0.values())]
     labels, targets = list(x0), [float(v) for v in x0.values()]
@@ -65,6 +66,40 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     if note:
         warn_user(note)
     return wk[:nx], wk[nx:]
+
+
+def by_angles(model, values: dict | None, p: np.ndarray) -> dict:
+    """``values`` (x0 or guess) with the three angles of a free rotation given by name (a
+    Spherical joint's, a FreeMotion's or a free Body's phi[1..3]) replaced by its quaternion
+    states, and the three rates (phi_d[1..3]) given with them by its angular velocity
+    states (``charts.AngleStart``): exact for any angles, where a projection onto the
+    recorded angles would be singular at gimbal lock and miss angles beyond their range.
+    Angles given in part are completed by the start orientation's (the recorded angles at
+    the states' start values)."""
+    out = dict(values or {})
+    for a in model.angle_starts:
+        if not any(n in out for n in a.angles):
+            continue
+        if not all(n in out for n in a.angles):
+            at_start = _start_values(model, a.angles, p)
+            out.update({n: v for n, v in zip(a.angles, at_start) if n not in out})
+        phi = [float(out.pop(n)) for n in a.angles]
+        rates = [float(out.pop(n)) for n in a.rates] if all(n in out for n in a.rates) \
+            else None
+        Q, w = a.function(phi, rates or [0.0] * 3, p)
+        out.update(zip(a.Q, np.array(Q, dtype=float).ravel()))
+        if rates is not None:
+            out.update(zip(a.w, np.array(w, dtype=float).ravel()))
+    return out
+
+
+def _start_values(model, names, p: np.ndarray) -> list[float]:
+    """The variables ``names`` (of the states and parameters only) at the states' start
+    values."""
+    f = ca.Function("at_start", [model.x, model.p], [ca.vertcat(*[model.expression(n)
+                                                                 for n in names])])
+    x = np.array(model.start(p), dtype=float).ravel()[:model.x.numel()]
+    return [float(v) for v in np.array(f(x, p)).ravel()]
 
 
 def _rows(model, what: str, values: dict, w: ca.SX) -> list:

@@ -33,7 +33,8 @@ with 6 constraint rows (position, MSL's Frames.Orientation.equalityConstraint); 
 redundant at the assembled configuration are found from the rank (``compiled.mobility``).
 ``loop_joints`` (RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical)
 close loops with fewer rows, ``assemblies`` (JointSSP, JointSSR, JointUSR, JointUSP,
-JointRRR, JointRRP) in closed form.
+JointRRR, JointRRP) in closed form; JointUPS places the two parts of a line force with
+mass (a hydraulic cylinder) between two frames placed by other paths.
 
 The bodies register their mass properties with the compiler (``e.rigid_body``), so the
 accelerations of trees come from the O(N) articulated-body recursion in spatial vectors
@@ -41,10 +42,11 @@ accelerations of trees come from the O(N) articulated-body recursion in spatial 
 Robot arms from Denavit–Hartenberg tables and URDF files: ``acausal.multibody``. The
 animation (``acausal.analysis.animation``) draws the parts from their shapes.
 
-Not here yet: loops through free or spherical joints, JointUPS.
+Loops may run through free bodies and Spherical or FreeMotion joints (their quaternion
+states held on the loop constraints as the joint coordinates are).
 """
 from .interfaces import Frame, Frame_a, Frame_b
-from .assemblies import JointRRP, JointRRR, JointSSP, JointSSR, JointUSP, JointUSR
+from .assemblies import JointRRP, JointRRR, JointSSP, JointSSR, JointUPS, JointUSP, JointUSR
 from .joints import Prismatic, Revolute
 from .joints_multi import Cylindrical, FreeMotion, Planar, Spherical, Universal
 from .loop_joints import RevolutePlanarLoopConstraint, SphericalSpherical, UniversalSpherical
@@ -64,4 +66,4 @@ __all__ = ["Frame", "Frame_a", "Frame_b", "World", "GravityTypes", "Fixed",
            "RollingConstraintVerticalWheel", "forces", "sensors", "visualizers", "Rotor1D",
            "Mounting1D", "RevolutePlanarLoopConstraint", "SphericalSpherical",
            "UniversalSpherical", "JointSSP", "JointSSR", "JointUSR", "JointUSP", "JointRRR",
-           "JointRRP"]
+           "JointRRP", "JointUPS"]

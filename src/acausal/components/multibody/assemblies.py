@@ -1,6 +1,7 @@
 """Joint assemblies that close a kinematic loop analytically
 (Modelica.Mechanics.MultiBody.Joints.Assemblies): JointSSP, JointSSR, JointUSR, JointUSP,
-JointRRR and JointRRP, with MSL's names, parameters, defaults and sign conventions.
+JointRRR and JointRRP, and JointUPS, with MSL's names, parameters, defaults and sign
+conventions.
 
 As in MSL, the assembly computes the coordinate of its joint with a length constraint
 (MSL's Internal.PrismaticWithLengthConstraint / RevoluteWithLengthConstraint) in closed
@@ -29,7 +30,7 @@ from .interfaces import Animated, Frame_a, Frame_b
 from .loop_joints import rod_with_mass, universal_rod_frame
 
 __all__ = ["JointSSP", "JointSSR", "JointUSR", "JointRRR", "JointUSP", "JointRRP",
-           "length_constraint_distance", "length_constraint_angle"]
+           "JointUPS", "length_constraint_distance", "length_constraint_angle"]
 
 
 def length_constraint_distance(r_a, r_b, e, length, positive: bool):
@@ -308,3 +309,80 @@ class JointRRR(JointUSR):
 
     def _axis_1(self):
         return unit_direction(self, "n_a", "(0, 0, 1)")
+
+
+class JointUPS(Animated):
+    """Universal - prismatic - spherical joint aggregation (MSL's JointUPS), no constraints
+    and no states: a universal joint at frame_a (axis 1 n1_a [1], resolved in frame_a; axis 2
+    orthogonal to axis 1 and to the line from frame_a to frame_b), a prismatic joint along
+    that line and a spherical joint at frame_b. Both frame_a and frame_b are placed by other
+    paths; the assembly adds frame_ia (origin at frame_a's, on the line: MSL's universal rod
+    frame, parallel to frame_a when the universal joint's angles are 0, the line then along
+    nAxis_ia [1], resolved in frame_ia) and frame_ib (origin at frame_b's, parallel to
+    frame_ia), where the masses of a hydraulic cylinder's two parts attach. ``axis``.s = s,
+    the distance between frame_a and frame_b less s_offset [m] (axisLength = s +
+    s_offset); ``bearing`` is fixed; a force on ``axis`` pushes frame_b away from frame_a
+    along the line. Massless: the loads on frame_ia and frame_ib pass to frame_a and frame_b
+    by virtual work (MSL's force balance, not written). Records s, axisLength [m] and f
+    [N] (= axis.f). Singular where the line is parallel to n1_a (as MSL's). ``eAxis_ia``
+    is MSL's final parameter, the unit vector along nAxis_ia (for the bodies' r_CM)."""
+    options = {"showUniversalAxes": True, "checkTotalPower": False}
+    n1_a = Parameter((0.0, 0.0, 1.0), "1", "axis 1 of universal joint resolved in frame_a "
+                                           "(axis 2 is orthogonal to axis 1 and to line from "
+                                           "universal to spherical joint)")
+    nAxis_ia = Parameter((1.0, 0.0, 0.0), "m", "axis vector along line from origin of "
+                                               "frame_a to origin of frame_b, resolved in "
+                                               "frame_ia")
+    s_offset = Parameter(0.0, "m", "relative distance offset (distance between frame_a and "
+                                   "frame_b = s(t) + s_offset)")
+    frame_a = Frame_a("coordinate system fixed to the component with one cut-force and "
+                      "cut-torque")
+    frame_b = Frame_b("coordinate system fixed to the component with one cut-force and "
+                      "cut-torque")
+    frame_ia = Frame_a("coordinate system at origin of frame_a fixed at prismatic joint")
+    frame_ib = Frame_b("coordinate system at origin of frame_b fixed at prismatic joint")
+    axis = TranslationalFlange("1-dim. translational flange that drives the prismatic joint")
+    bearing = TranslationalFlange("1-dim. translational flange of the drive bearing of the "
+                                  "prismatic joint")
+
+    @property
+    def eAxis_ia(self) -> tuple:
+        """Unit vector from origin of frame_a to origin of frame_b, resolved in frame_ia [1]
+        (MSL's final parameter: nAxis_ia normalized)."""
+        n = [float(v) for v in self.nAxis_ia]
+        length = math.sqrt(sum(v * v for v in n))
+        return tuple(v / length for v in n)
+
+    def structure(self, s):
+        def line_frame(vals, par):
+            n1, axis_ia = par
+            ra, Ta = frames.parts(vals[0])
+            rb, _ = frames.parts(vals[1])
+            return universal_rod_frame(vals[0], ca.mtimes(Ta, rb - ra), n1, axis_ia), None
+
+        def parallel_frame(vals, par):
+            rb, _ = frames.parts(vals[0])
+            _, T_ia = frames.parts(vals[1])
+            return frames.pose(rb, T_ia), None
+
+        def residual(solve, k):
+            return lambda vals, par: s.frame_residual(solve(vals, par)[0], vals[k])
+
+        rows = tuple(frames.FRAME_ROWS)
+        s.relation([self.frame_a, self.frame_b, self.frame_ia],
+                   [unit_direction(self, "n1_a", "(0, 0, 1)"), self.nAxis_ia],
+                   solve={2: line_frame}, residual=residual(line_frame, 2),
+                   rows=tuple(f"frame_ia.{r}" for r in rows), name="universal")
+        s.relation([self.frame_b, self.frame_ia, self.frame_ib], [],
+                   solve={2: parallel_frame}, residual=residual(parallel_frame, 2),
+                   rows=tuple(f"frame_ib.{r}" for r in rows), name="spherical")
+        length = s.node("axisLength", TRANSLATIONAL, preferred=False)
+        s.distance(self.frame_a, self.frame_b, length)
+        s.linear({length: 1.0, self.axis: -1.0}, self.s_offset, f"{self.path}: s_offset")
+        s.linear({self.bearing: 1.0}, 0.0, f"{self.path}: bearing")
+
+    def physics(self, e):
+        e.variable("s", e.pos(self.axis), "m", "relative distance between frame_a and "
+                                               "frame_b along axis nAxis = s + s_offset")
+        e.variable("f", e.cut_flow(self.axis), "N", "= axis.f (driving force in the axis; "
+                                                    "= -bearing.f)")

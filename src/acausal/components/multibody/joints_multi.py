@@ -12,8 +12,11 @@ r_rel_a with its rate v_rel_a (resolved in frame_a): 13 states (see
 ``acausal.compiler.charts`` for why quaternions, and for what ``compiled.lagrange``
 holds). MSL's ``useQuaternions=False`` (three angles as states) is accepted and changes
 nothing: the states are always quaternions, so no orientation is singular; the angles MSL
-would use as states, in the sequence ``sequence_angleStates``, are recorded as ``phi``
-(outputs only: they jump by 2π and are undefined at gimbal lock, the states are not).
+would use as states, in the sequence ``sequence_angleStates``, are recorded as ``phi``, their
+rates as ``phi_d`` (outputs: they jump by 2π and are undefined at gimbal lock, the states
+are not). Given by name in ``x0`` or ``guess``, phi set Q (any angles, also beyond the
+range the recorded phi take; those not given at their start values), and with all three
+phi all three phi_d set w.
 
 Start values as MSL's: the relative orientation by ``angles_start`` [rad] about the axes
 ``sequence_start``, the relative angular velocity ``w_rel_a_start`` [rad/s] (resolved in
@@ -69,7 +72,9 @@ class _FreeRotation(PartialTwoFrames):
                  "w": ca.mtimes(T0, ca.vertcat(self.w_rel_a_start))}
         start.update(self._start_translation())
         s.free_frame(rel, r=_names("r_rel_a"), v=_names("v_rel_a"), Q=_names("Q", 4),
-                     w=_names(self.w_name), translation=self.translation, start=start)
+                     w=_names(self.w_name), translation=self.translation, start=start,
+                     angles=_names("phi"), angle_rates=_names("phi_d"),
+                     sequence=self.sequence_angleStates)
         s.compose(self.frame_a, self.frame_b, rel)
 
     def _start_translation(self) -> dict:
@@ -78,8 +83,10 @@ class _FreeRotation(PartialTwoFrames):
     def physics(self, e):
         rel = e.node("rel")
         _, T = frames.parts(e.pos(rel))
-        _record(e, "phi", frames.axes_rotations_angles(T, self.sequence_angleStates), "rad",
-                "relative rotation angles in the sequence sequence_angleStates (output)")
+        phi = frames.axes_rotations_angles(T, self.sequence_angleStates)
+        _record(e, "phi", phi, "rad", "relative rotation angles in the sequence "
+                                      "sequence_angleStates (output)")
+        _record(e, "phi_d", e.der(phi), "rad/s", "= der(phi)")
         _record(e, "z_rel_b" if self.translation else "z_rel", e.acc(rel)[3:], "rad/s2",
                 "relative angular acceleration of frame_b with respect to frame_a, resolved "
                 "in frame_b")

@@ -179,8 +179,9 @@ class _BodyStates(Animated):
     take precedence); MSL's z_0_start (an acceleration) is not accepted.
     ``useQuaternions=False`` (angles as states) and ``enforceStates`` are accepted and
     change nothing: the states are always quaternions, never singular; the angles in
-    ``sequence_angleStates`` from the world to frame_a are recorded as ``phi`` [rad]
-    (outputs, undefined at gimbal lock). Bodies moved by joints have no states of their own
+    ``sequence_angleStates`` from the world to frame_a are recorded as ``phi`` [rad], their
+    rates as ``phi_d`` (outputs, undefined at gimbal lock; all three phi, and phi_d, given
+    by name in ``x0`` or ``guess`` set Q and w_a). Bodies moved by joints have no states of their own
     (these start values are then unused)."""
     options = {"enforceStates": False, "useQuaternions": True, "angles_fixed": False,
                "w_0_fixed": False, "z_0_fixed": False}
@@ -216,13 +217,18 @@ class _BodyStates(Animated):
                      start={"r": ca.vertcat(self.r_0_start), "v": ca.vertcat(self.v_0_start),
                             "Q": frames.axes_rotations_Q(self.sequence_start,
                                                          self.angles_start),
-                            "w": ca.mtimes(T0, ca.vertcat(self.w_0_start))})
+                            "w": ca.mtimes(T0, ca.vertcat(self.w_0_start))},
+                     angles=tuple(f"{b}phi[{i}]" for i in (1, 2, 3)),
+                     angle_rates=tuple(f"{b}phi_d[{i}]" for i in (1, 2, 3)),
+                     sequence=self.sequence_angleStates)
 
     def _angles(self, e) -> None:
         _, T = frames.parts(e.pos(self.frame_a))
-        _record(e, self._states_in + "phi", frames.axes_rotations_angles(
-            T, self.sequence_angleStates), "rad", "angles from the world frame to frame_a in "
-                                                   "the sequence sequence_angleStates")
+        phi = frames.axes_rotations_angles(T, self.sequence_angleStates)
+        _record(e, self._states_in + "phi", phi, "rad", "angles from the world frame to "
+                                                         "frame_a in the sequence "
+                                                         "sequence_angleStates")
+        _record(e, self._states_in + "phi_d", e.der(phi), "rad/s", "= der(phi)")
 
 
 class _Body(_BodyStates):
