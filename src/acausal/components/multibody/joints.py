@@ -11,8 +11,8 @@ and drive trains of the Rotational and Translational libraries drive and load th
 as MSL's ``tau = -frame_b.t*e``.
 
 ``animation`` is accepted and changes nothing. The joints with several degrees of
-freedom are in ``joints_multi``. Not here yet: loops of 3-D frames, the other
-visualization parameters.
+freedom are in ``joints_multi``, the loop-closing ones in ``loop_joints`` and ``assemblies``.
+The visualization parameters other than ``animation`` are not declared.
 """
 from __future__ import annotations
 
