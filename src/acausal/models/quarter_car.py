@@ -1,9 +1,10 @@
-"""A quarter car on a road given as a model input: body and wheel on springs, the tyre a
-linear spring between the road and the wheel.
+"""A quarter car on a road: body and wheel on springs, the tyre a linear spring between the
+road and the wheel; the road height a model input, or a measured table of it.
 
     body: Mass (m_s) ── suspension: SpringDamper (c_s, d_s) ── wheel: Mass (m_u)
     wheel ← tyreForce: Force (f = tyre.k·(road − wheel.s)) ← tyre: Gain ← deflection:
-    Feedback(road, wheelPosition: PositionSensor)
+    Feedback(road, wheelPosition: PositionSensor); road: Input ``road`` or
+    roadTable: CombiTimeTable
 
 The tyre's force is built from signal blocks (as MSL's examples wire a force law) so that
 the road may be any model input, sampled or varied per run, without its derivative.
@@ -27,12 +28,20 @@ TYRE_C = 160e3                            # N/m
 class QuarterCar(Model):
     """m_s: body (sprung) mass [kg]; m_u: wheel (unsprung) mass [kg]; c_s, d_s: suspension
     stiffness [N/m] and damping [N.s/m] (``suspension.c``, ``suspension.d``); c_t: tyre
-    stiffness [N/m] (``tyre.k``). Input ``road``: the road height under the tyre [m]."""
+    stiffness [N/m] (``tyre.k``). ``road``: None for an input ``road``, the road height
+    under the tyre [m]; or a table of rows [time [s], height [m]] (a ``CombiTimeTable``
+    ``roadTable``, linear between rows: a road measured along its length, driven at a
+    speed)."""
 
     def __init__(self, name="quarter_car", m_s=BODY, m_u=WHEEL, c_s=SUSPENSION_C,
-                 d_s=SUSPENSION_D, c_t=TYRE_C):
+                 d_s=SUSPENSION_D, c_t=TYRE_C, road=None):
         super().__init__(name)
-        self.road = Input(unit="m", description="road height under the tyre")
+        if road is None:
+            self.road = Input(unit="m", description="road height under the tyre")
+            height = self.road.y
+        else:
+            self.roadTable = sg.CombiTimeTable(table=road)
+            height = self.roadTable.y[1]
         self.wheelPosition = PositionSensor()
         self.tyreDeflection = sg.Feedback()
         self.tyre = sg.Gain(k=c_t)
@@ -44,7 +53,7 @@ class QuarterCar(Model):
         self.deflection = RelPositionSensor()
         self.a_body = Output(unit="m/s2", description="body acceleration")
         self.travel = Output(unit="m", description="suspension travel body.s - wheel.s")
-        for a, b in [(self.road.y, self.tyreDeflection.u1),
+        for a, b in [(height, self.tyreDeflection.u1),
                      (self.wheelPosition.s, self.tyreDeflection.u2),
                      (self.tyreDeflection.y, self.tyre.u), (self.tyre.y, self.tyreForce.f),
                      (self.tyreForce.flange, self.wheel.flange_a),
