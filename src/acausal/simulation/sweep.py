@@ -37,7 +37,8 @@ KINDS = ("params", "x0", "inputs")
 class SweepResult:
     """The runs of a sweep: ``dataset`` (an ``xarray.Dataset``, dims run × time, a variable
     per name asked for, the varied values as coordinates along run: parameters by name,
-    start values as ``<name>(0)``, constant inputs by name; ``failed`` a boolean coordinate);
+    start values as ``<name>(0)``, constant inputs by name; ``failed`` (boolean) and
+    ``solver`` (the one that ran, as simulate()'s ``Result.solver``) coordinates too);
     ``res[name]``: a (runs × times) array; ``as_frame()``: a long pandas frame; ``runs``:
     each run's variation (list of dicts {name: value} by kind); ``failed``: the failed runs,
     index → error message (their values are NaN); ``method``: "map" (one mapped integrator)
@@ -117,15 +118,15 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
     settings = dict(guess=guess, solver=solver, rtol=rtol, atol=atol, max_step=max_step,
                     nominal=nominal, options=options)
     if _needs_loop(model, table, grid):
-        values, failed = _simulate_loop(model, grid, table, variables, settings)
+        values, failed, solvers = _simulate_loop(model, grid, table, variables, settings)
         method = "simulate"
     else:
         with _cluster(client, cluster, workers) as dask_client:
             engine = _Engine(model, grid, table, settings, threads, chunk, dask_client)
-            values, failed = engine.run(variables)
+            values, failed, solvers = engine.run(variables)
         method = "map"
-    return SweepResult(grid, _dataset(grid, table, variables, values, failed), table, failed,
-                       method)
+    return SweepResult(grid, _dataset(grid, table, variables, values, failed, solvers), table,
+                       failed, method)
 
 
 # ---- variations ---------------------------------------------------------------------------
@@ -225,6 +226,7 @@ class _Engine:
         self.threads = threads or os.cpu_count() or 1
         self.chunk, self.client = chunk, client
         self.failed: dict[int, str] = {}
+        self.solvers = np.array([""] * len(table), dtype=object)     # the solver of each run
         self._inputs(table)
         self._starts(table)
         self.q = ca.vertcat(model.p, self.nominal, self.u_sym)
@@ -367,8 +369,10 @@ class _Engine:
                 extra["max_num_steps"] = max(adams_step_budget(r, float(np.max(np.diff(grid))))
                                              for r in rho[runs])
             failed = self._integrate(self.integrator(solver, extra), runs, W)
+            self.solvers[runs] = solver
             retry = self._retry(solver, auto)
             if failed and retry:
+                self.solvers[sorted(failed)] = retry[0]
                 failed = self._integrate(self.integrator(*retry), sorted(failed), W)
             errors.update(failed)
         s = self.settings
@@ -384,7 +388,8 @@ class _Engine:
         values = {name: v.reshape(n, nt).copy() for name, v in values.items()}
         for v in values.values():
             v[failed] = np.nan
-        return values, {k: self.failed[k] for k in failed}
+        self.solvers[failed] = ""
+        return values, {k: self.failed[k] for k in failed}, list(self.solvers)
 
     def _retry(self, solver: str, auto: bool):
         """(solver, options) for the runs that failed, as simulate() retries them: Adams
@@ -518,7 +523,7 @@ class _cluster:
             raise SimulationError("cluster='local' needs dask.distributed: pip install "
                                   "'acausal[sweep]'") from None
         cluster = LocalCluster(n_workers=self.workers, threads_per_worker=1, processes=True,
-                               dashboard_address=None)
+                               dashboard_address=":0")
         self.own = (Client(cluster), cluster)
         return self.own[0]
 
@@ -532,7 +537,7 @@ class _cluster:
 def _simulate_loop(model, grid, table, variables, settings):
     """Each run through simulate(), the values on the grid (see ``sweep``)."""
     values = {name: np.full((len(table), grid.size), np.nan) for name in variables}
-    failed = {}
+    failed, solvers = {}, [""] * len(table)
     for k, run in enumerate(table):
         try:
             res = simulate(model, grid[-1], t=grid, params=run["params"], x0=run["x0"],
@@ -544,11 +549,12 @@ def _simulate_loop(model, grid, table, variables, settings):
         inside = grid <= res.t[-1]
         for name in variables:
             values[name][k, inside] = res[name][at[inside]]
-    return values, failed
+        solvers[k] = res.solver
+    return values, failed, solvers
 
 
 # ---- the result -----------------------------------------------------------------------------
-def _dataset(grid, table, variables, values, failed):
+def _dataset(grid, table, variables, values, failed, solvers):
     try:
         import xarray as xr
     except ImportError:
@@ -556,7 +562,8 @@ def _dataset(grid, table, variables, values, failed):
                               "'acausal[sweep]'") from None
     n = len(table)
     coords = {"run": np.arange(n), "time": grid,
-              "failed": ("run", np.array([k in failed for k in range(n)]))}
+              "failed": ("run", np.array([k in failed for k in range(n)])),
+              "solver": ("run", np.array(solvers, dtype=str))}
     for (kind, name), vals in _varied(table).items():
         label = f"{name}(0)" if kind == "x0" else name
         if label in variables or any(np.ndim(v) for v in vals):
