@@ -71,7 +71,7 @@ def samples(distributions: dict, n: int, seed: int | None = None):
             values = dist.draw(rng, int(n))
         elif hasattr(dist, "rvs"):
             values = dist.rvs(size=int(n), random_state=rng)
-        elif np.ndim(dist) == 0 and np.isfinite(dist):
+        elif isinstance(dist, (int, float, np.number)) and np.isfinite(dist):
             values = np.full(int(n), float(dist))
         else:
             raise ParameterError(f"samples: '{name}' must be a distribution (normal, uniform, "
