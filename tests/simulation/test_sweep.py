@@ -191,3 +191,21 @@ def test_local_cluster_equals_local_bit_for_bit(quarter_car):
     assert there.method == "map" and not there.failed
     for name in here.dataset.data_vars:
         np.testing.assert_array_equal(there[name], here[name])
+
+
+def test_time_events_at_the_runs_parameters():
+    """A road table starting at a parameter's time: a run whose start falls inside the
+    grid has a time event (simulate() restarts there), so those runs go through simulate();
+    runs without one share the mapped integrator."""
+    x = np.linspace(0.0, 60.0, 300)
+    car = acausal.compile(models.QuarterCar(road=np.column_stack([x / 10.0, road(x / 10.0)])))
+    mapped = car.sweep(T_END, t=GRID, params={"body.m": [250.0, 300.0]}, variables=["body.s"])
+    assert mapped.method == "map"
+    moved = car.sweep(T_END, t=GRID, params={"roadTable.startTime": [0.0, 0.5]},
+                      variables=["body.s"])
+    assert moved.method == "simulate"
+    for res, name, values in ((mapped, "body.m", (250.0, 300.0)),
+                              (moved, "roadTable.startTime", (0.0, 0.5))):
+        for k, v in enumerate(values):
+            ref = car.simulate(T_END, t=GRID, params={name: v})
+            np.testing.assert_allclose(res["body.s"][k], ref["body.s"], rtol=0, atol=1e-8)

@@ -9,9 +9,9 @@ run by run to find which runs failed and why: those get NaN trajectories and an 
 ``SweepResult.failed``, never dropped. On a cluster the integrator travels once, serialized
 (``casadi.Function.serialize``), to every worker; each task integrates a chunk of runs.
 
-Models with state events or modes, closed loops, time events, or per-run inputs other than
-numbers and arrays on the grid are run as a loop of ``simulate()`` instead (serial, in this
-process), with the same result.
+Models with state events or modes, closed loops, declared time events (a Step, a sampled
+block), or per-run inputs other than numbers and arrays on the grid are run as a loop of
+``simulate()`` instead (serial, in this process), with the same result.
 """
 from __future__ import annotations
 
@@ -24,6 +24,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import AcausalError, SimulationError
+from ..numerics import event_times
 from .diagnosis import failure_message, quiet_stderr
 from .initialization import initial_state
 from .inputs import Samples, input_signal
@@ -99,8 +100,9 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
                tcp://host:8786`` on each machine, with acausal and casadi installed) and
                pass ``client=Client("tcp://host:8786")``.
 
-    Models with state events or modes, closed loops or time events, and per-run inputs that
-    are not numbers or arrays on the grid, run as a serial loop of simulate() in this process
+    Models with state events or modes, closed loops or declared time events (a Step, a
+    sampled block), and per-run inputs that are not numbers or arrays on the grid, run as a
+    serial loop of simulate() in this process
     (``method`` "simulate"; client and cluster unused), with the values on the grid t (at an
     event on a grid time: the value after it; after a termination: NaN).
 
@@ -208,12 +210,28 @@ def _needs_loop(model, table, grid) -> bool:
         if kind == "inputs" and any(callable(v) or isinstance(v, (Samples, tuple))
                                     for v in values):
             return True
-    p = model.param_vector()
-    if model.event_times(p, grid[0], grid[-1]):
+    if _time_events(model, table, grid):
         return True
     run = table[0]["inputs"]
     return any(input_signal(v.name, run.get(v.name, v.start), model.t, grid).events
                for v in model.inputs)
+
+
+def _time_events(model, table, grid) -> bool:
+    """Whether a run has a declared time event (a Step, a sampled block) inside the grid,
+    at its parameters (values a parameter refuses left at the default: that run fails)."""
+    if not model.events.numel_out(0):
+        return False
+    index = {name: i for i, name in enumerate(model.param_names)}
+    P = np.tile(model.param_vector()[:, None], (1, len(table)))
+    for k, run in enumerate(table):
+        for name, value in run["params"].items():
+            if name in index and isinstance(value, (int, float, np.number)):
+                P[index[name], k] = value
+    times, periods = (np.array(v, dtype=float).reshape(-1, len(table))
+                      for v in model.events.map(len(table))(P))
+    return any(event_times(times[:, k], periods[:, k], grid[0], grid[-1])
+               for k in range(len(table)))
 
 
 # ---- the mapped integrator ----------------------------------------------------------------
