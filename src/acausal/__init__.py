@@ -31,7 +31,7 @@ from .errors import (AcausalError, AnalysisError, DisabledPortError, FmuExportEr
                      VariableNameError)
 from .facade import CompiledModel, compile
 from .simulation import Result, simulate
-from . import montecarlo
+from .simulation import montecarlo
 
 __version__ = version("acausal")
 __all__ = ["Model", "Component", "Parameter", "Input", "Output", "connect", "compile",

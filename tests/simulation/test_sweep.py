@@ -209,3 +209,22 @@ def test_time_events_at_the_runs_parameters():
         for k, v in enumerate(values):
             ref = car.simulate(T_END, t=GRID, params={name: v})
             np.testing.assert_allclose(res["body.s"][k], ref["body.s"], rtol=0, atol=1e-8)
+
+
+def test_dae_runs_with_idas():
+    """A massless node between a spring and a damper (an algebraic variable): IDAS, the
+    runs as simulate()'s."""
+    from acausal.components.translational import Damper, Fixed, Mass, Spring
+    m = acausal.Model("node")
+    m.wall, m.spring, m.node = Fixed(), Spring(c=100.0), Mass(m=0.0)
+    m.damper, m.mass, m.spring2 = Damper(d=5.0), Mass(m=1.0), Spring(c=10.0)
+    for a, b in [(m.wall.flange, m.spring.flange_a), (m.spring.flange_b, m.node.flange_a),
+                 (m.node.flange_b, m.damper.flange_a), (m.damper.flange_b, m.mass.flange_a),
+                 (m.wall.flange, m.spring2.flange_a), (m.spring2.flange_b, m.mass.flange_b)]:
+        m.connect(a, b)
+    compiled = acausal.compile(m)
+    assert compiled.z_names == ["node.v"]
+    res = compiled.sweep(T_END, t=GRID, params={"spring.c": [50.0, 100.0]},
+                         x0={"mass.s": [0.3, -0.1]}, variables=["mass.s", "node.s", "node.v"])
+    np.testing.assert_array_equal(res.dataset["solver"], ["idas"] * 4)
+    assert_as_loop(compiled, res)

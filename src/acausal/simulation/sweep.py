@@ -88,7 +88,9 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
 
     The other arguments are simulate()'s (``acausal.simulation.simulate``: the solver is
     chosen per run as simulate() chooses it, and a run Adams fails is run again with
-    'cvodes'), and:
+    'cvodes'; runs with Adams equal simulate()'s to round-off, runs with BDF, whose Newton
+    iterations round differently with the parameters as symbols, to the integration
+    error), and:
     variables  the dotted names recorded (default: the states and the outputs);
     threads    threads of the mapped integrator (default: the machine's cores);
     chunk      runs per call of the mapped integrator (per task on a cluster);
@@ -98,13 +100,14 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
                each) for this call, and close it after. To use a cluster of machines, start
                a scheduler and workers there (``dask scheduler``; ``dask worker
                tcp://host:8786`` on each machine, with acausal and casadi installed) and
-               pass ``client=Client("tcp://host:8786")``.
+               pass ``client=Client("tcp://host:8786")``. Processes start by importing
+               the script: call sweep under ``if __name__ == "__main__":`` there.
 
     Models with state events or modes, closed loops or declared time events (a Step, a
     sampled block), and per-run inputs that are not numbers or arrays on the grid, run as a
-    serial loop of simulate() in this process
-    (``method`` "simulate"; client and cluster unused), with the values on the grid t (at an
-    event on a grid time: the value after it; after a termination: NaN).
+    serial loop of simulate() in this process (``method`` "simulate"; client and cluster
+    unused), with the values on the grid t (at an event on a grid time: the value after it;
+    after a termination: NaN).
 
     A run that cannot start (a parameter out of its range, inconsistent start values) or
     whose integration fails is reported in ``failed`` (index → message) with NaN values.

@@ -1,5 +1,6 @@
-"""Monte-Carlo studies on ``compiled.sweep``: parameters (start values, inputs) drawn from
-distributions, and statistics of the results over the runs.
+"""Monte-Carlo studies on ``compiled.sweep`` (also ``acausal.montecarlo``): parameters
+(start values, inputs) drawn from distributions, and statistics of the results over the
+runs.
 
     runs = montecarlo.samples({"spring.c": montecarlo.uniform(0.8, 1.2),
                                "mass.m": montecarlo.normal(1.0, 0.05)}, n=500, seed=1)
@@ -18,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import ParameterError
+from ..errors import ParameterError
 
 
 @dataclass(frozen=True)
