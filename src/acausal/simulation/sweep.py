@@ -499,6 +499,8 @@ def integrate_chunk(integrator, X0: np.ndarray, Z0: np.ndarray, Q: np.ndarray,
     if isinstance(integrator, str):
         key = hash(integrator)
         if key not in _DESERIALIZED:
+            if len(_DESERIALIZED) >= 4:                  # the last few sweeps' only
+                _DESERIALIZED.pop(next(iter(_DESERIALIZED)))
             _DESERIALIZED[key] = ca.Function.deserialize(integrator)
         integrator = _DESERIALIZED[key]
     n = X0.shape[1]
