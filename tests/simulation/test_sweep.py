@@ -138,6 +138,11 @@ def test_input_variations_constant_and_on_the_grid(quarter_car):
         assert_within_own_error(on_grid, k, quarter_car.simulate(T_END, **kw),
                                 quarter_car.simulate(T_END, rtol=1e-11, atol=1e-13, **kw))
     np.testing.assert_allclose(on_grid["road"], arrays, atol=1e-15)
+    # one array on the grid is one signal for every run, as simulate() takes it
+    fixed = quarter_car.sweep(T_END, t=GRID, inputs={"road": arrays[0]},
+                              params={"body.m": [250.0, 300.0]})
+    assert len(fixed) == 2
+    assert_as_loop(quarter_car, fixed, inputs={"road": arrays[0]})
 
 
 def test_failed_runs_are_reported_by_index():
@@ -176,6 +181,8 @@ def test_models_with_events_run_as_a_simulate_loop():
 def test_bad_arguments_are_named(quarter_car):
     with pytest.raises(VariableNameError, match="body.x"):
         quarter_car.sweep(T_END, params={"body.m": [1.0, 2.0]}, variables=["body.x"])
+    with pytest.raises(VariableNameError, match="body.z"):
+        quarter_car.sweep(T_END, runs=[{"body.z": 0.1}, {"body.z": 0.2}])
     with pytest.raises(acausal.ParameterError, match="body.mass"):
         quarter_car.sweep(T_END, params={"body.mass": [1.0, 2.0]})
     with pytest.raises(acausal.SimulationError, match="road"):

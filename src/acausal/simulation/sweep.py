@@ -80,8 +80,9 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
     params, x0, inputs   dicts name → value; a list (or 1-D array) of values varies it, one
              run per value, and several lists make a grid (their Cartesian product); any
              other value holds for every run. An input's value per run is a number or an
-             array on the grid t (a list of such arrays, or a 2-D array with one row per
-             run); a fixed input may be anything ``simulate`` takes;
+             array on the grid t (a list of such, or a 2-D array with one row per run); a
+             fixed input may be anything ``simulate`` takes (a 1-D array: one signal on
+             the grid t for every run);
     runs     a list of dicts, or a pandas DataFrame (a column per name), one run per row:
              names of parameters, inputs or any variable's start value (x0); combined with
              the lists of params / x0 / inputs as a grid (every row with every grid point).
@@ -118,7 +119,7 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
     table = variations(model, runs, params, x0, inputs)
     variables = list(variables) if variables is not None else \
         model.x_names + model.output_names
-    for name in variables:
+    for name in set(variables).union(*[run["x0"] for run in table]):
         model.locate(name)                   # VariableNameError naming it, before any run
     settings = dict(guess=guess, solver=solver, rtol=rtol, atol=atol, max_step=max_step,
                     nominal=nominal, options=options)
@@ -135,11 +136,12 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
 
 
 # ---- variations ---------------------------------------------------------------------------
-def _alternatives(value):
-    """The values a sweep argument takes over the runs (a list), or None when it is fixed."""
+def _alternatives(kind: str, value):
+    """The values a sweep argument takes over the runs (a list), or None when it is fixed
+    (an input's 1-D array is one signal on the grid, as simulate() takes it)."""
     if isinstance(value, (list, range)) or type(value).__name__ == "Series":
         return list(value)
-    if isinstance(value, np.ndarray) and value.ndim >= 1:
+    if isinstance(value, np.ndarray) and value.ndim >= (2 if kind == "inputs" else 1):
         return [np.asarray(v) if np.ndim(v) else float(v) for v in value]
     return None
 
@@ -151,7 +153,7 @@ def variations(model, runs=None, params=None, x0=None, inputs=None) -> list[dict
     axes = []
     for kind, given in zip(KINDS, (params, x0, inputs)):
         for name, value in (given or {}).items():
-            alt = _alternatives(value)
+            alt = _alternatives(kind, value)
             if alt is None:
                 fixed[kind][name] = value
             elif not alt:
