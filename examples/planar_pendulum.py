@@ -102,6 +102,9 @@ def main():
     out = os.path.join(os.environ.get("ACAUSAL_OUT", "."), "planar_pendulum.png")
     fig.savefig(out, dpi=110)
     print(f"plot saved to {out}")
+    gif = os.path.join(os.environ.get("ACAUSAL_OUT", "."), "planar_pendulum.gif")
+    res.animate().save(gif, frames=40)     # or .html (interactive), .mp4 (with ffmpeg)
+    print(f"animation saved to {gif}")
 
 
 if __name__ == "__main__":

@@ -4,8 +4,8 @@ A top module, above every package (core → components → compiler → simulati
 analysis | fmu | ocp): it may import any of them and none imports it. The compiler's record
 (``acausal.compiler.CompiledModel``, the seam) knows nothing of simulation or FMUs; the
 ``CompiledModel`` returned here is that record with the calls users write on it —
-``simulate``, ``sweep``, ``export_fmu``, ``mobility`` — each delegating to the layer that
-does the work.
+``simulate``, ``sweep``, ``export_fmu``, ``mobility``, ``animation`` (behind
+``Result.animate``) — each delegating to the layer that does the work.
 """
 from __future__ import annotations
 
@@ -39,6 +39,12 @@ class CompiledModel(compiler.CompiledModel):
         """Export as an FMU; see ``acausal.fmu.export_fmu`` for the arguments."""
         from .fmu import export_fmu          # needs the 'fmu' extra only when used
         return export_fmu(self, path, **kwargs)
+
+    def animation(self, result: Result, **kwargs):
+        """The parts of the model moving as in ``result`` (what ``result.animate()`` gives);
+        see ``acausal.analysis.animation.Animation`` for the arguments."""
+        from .analysis.animation import Animation
+        return Animation(self, result, **kwargs)
 
     def mobility(self, params: dict | None = None, x0: dict | None = None,
                  guess: dict | None = None, t0: float = 0.0) -> Mobility:

@@ -167,3 +167,50 @@ def test_bad_input_is_named(pendulum):
     empty.world = World()
     with pytest.raises(AnalysisError, match="no part to draw"):
         Animation(empty, res)
+
+
+def test_planar_results_animate_seen_from_z(tmp_path):
+    """Result.animate() of a planar double pendulum: PlanarMechanics' shapes, the GIF's
+    bob at the recorded body2.frame_a (x, y) in every frame."""
+    from acausal.models.pendulums import PendulumChain
+    res = acausal.compile(PendulumChain(2)).simulate(2.0, t=np.linspace(0, 2, 41),
+                                                      x0={"rev1.phi": 1.0})
+    anim = res.animate()
+    assert anim.planar and (anim.azimuth, anim.elevation) == (0.0, 0.0)
+    assert [(s.name, s.kind) for s in anim.shapes] == [
+        ("rev1", "cylinder"), ("bar1", "cylinder"), ("body1", "sphere"),
+        ("rev2", "cylinder"), ("bar2", "cylinder"), ("body2", "sphere")]
+    for s in anim.shapes:
+        if s.name == "body2":
+            s.color = MAGENTA
+    anim = res.animate(shapes=anim.shapes)
+    idx = anim.save(tmp_path / "double.gif", frames=8)
+    gif = Image.open(tmp_path / "double.gif")
+    for i, k in enumerate(idx):
+        gif.seek(i)
+        rows, cols = np.nonzero(_magenta(np.asarray(gif.convert("RGB"))))
+        bob = (res["body2.frame_a.x"][k], res["body2.frame_a.y"][k], 0.0)
+        expected = anim.project(bob)[0]
+        assert rows.size > 100 and np.hypot(cols.mean() - expected[0],
+                                            rows.mean() - expected[1]) < 3, k
+    page = anim._repr_html_()
+    assert page.startswith("<iframe") and "&quot;poses&quot;" in page
+    with pytest.raises(AnalysisError, match=".html, .gif or .mp4"):
+        anim.save(tmp_path / "double.png")
+
+
+def test_a_prismatic_is_drawn_as_long_as_its_stroke():
+    """PlanarMechanics' Prismatic box runs from frame_a along r for the length s."""
+    from acausal.models import CartPole
+    res = acausal.compile(CartPole()).simulate(1.0, t=np.linspace(0, 1, 11),
+                                               inputs={"F": 5.0})
+    anim = res.animate()
+    (k,) = [i for i, s in enumerate(anim.shapes) if s.name == "rail"]
+    v = anim.meshes[k][0]
+    for j in range(len(anim.t)):
+        P = anim.poses[j, k]
+        world = v @ P[:3, :3].T + P[:3, 3]
+        start, s = res["rail.frame_a.x"][j], res["rail.s"][j]
+        np.testing.assert_allclose([world[:, 0].min(), world[:, 0].max()],
+                                   sorted([start, start + s]), atol=1e-12)
+    assert res["rail.s"][-1] > 0.5              # pushed along the rail

@@ -101,6 +101,27 @@ def test_plot_writes_png(res, tmp_path):
     plt.close("all")
 
 
+def test_plot_without_names_draws_the_states_by_unit(res):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    axes = res.plot()
+    assert [a.get_ylabel() for a in axes] == ["[m]", "[m/s]"]
+    (s,), (v,) = (a.get_lines() for a in axes)
+    assert (s.get_label(), v.get_label()) == ("mass.s", "mass.v")
+    # the oscillation about the equilibrium: s − S_EQ = 0.05 cos(ωt), v = −0.05 ω sin(ωt)
+    np.testing.assert_allclose(s.get_ydata(), S_EQ + 0.05 * np.cos(OMEGA * res.t), atol=1e-6)
+    np.testing.assert_allclose(v.get_ydata(), -0.05 * OMEGA * np.sin(OMEGA * res.t),
+                               atol=1e-6)
+    _, mine = plt.subplots(2, 1)
+    assert res.plot(ax=mine) == list(mine)              # the caller's Axes, one per unit
+    _, one = plt.subplots()
+    assert res.plot(ax=one) is one and len(one.get_lines()) == 2
+    with pytest.raises(ValueError, match="2 panels"):
+        res.plot(ax=plt.subplots(3, 1)[1])
+    plt.close("all")
+
+
 def test_static_reactions(compiled):
     """Started at rest in equilibrium it stays there; the walls carry the spring tension:
     left.flange.f = +F_EQ (pulled towards +s), right.flange.f = −F_EQ (Modelica: cut force

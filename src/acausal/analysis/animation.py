@@ -1,5 +1,6 @@
-"""Animation of 3-D multibody results: the parts drawn from their shapes as MSL draws them,
-in an interactive view in the browser (a self-contained HTML file) and as a GIF.
+"""Animation of multibody results, 3-D and planar: the parts drawn from their shapes as MSL
+and PlanarMechanics draw them, in an interactive view in the browser (a self-contained HTML
+file, also what a notebook shows) and as a GIF or MP4 (``Result.animate()``).
 
 Shapes follow MSL's Visualizers.Advanced.Shape: a primitive (box, cylinder, sphere) placed in
 a frame of a part by r_shape [m], lengthDirection and widthDirection (resolved in the frame),
@@ -15,10 +16,17 @@ default (world.nominalLength = 1 m):
   along its axis from frame_a to frame_b;
 - RollingWheel, RollingWheelSet: the wheels as discs (width, radius); PointMass: a sphere.
 
+Planar parts (``acausal.components.planar``) draw what PlanarMechanics draws, in the plane
+z = 0 (planarWorld.nominalLength = 1 m): Body a sphere at frame_a (diameter 1/9 m),
+FixedTranslation a cylinder along r (width |r|/20), Revolute a cylinder along z (length and
+diameter 0.1 m), Prismatic a box from frame_a along r of length s (width |r|/20).
+
 Other part classes draw nothing unless a drawing function is registered for them
 (``register``). A shape's pose at each instant comes from its frame's recorded r_0 and R.T
-in the Result (every frame records them). The world's up direction is against its gravity
-(``World.n``).
+in the Result (every frame records them; a planar frame its x, y, phi); a shape whose length
+follows a variable (``length_variable``: a Prismatic's s) is stretched along its length
+direction at each instant. The world's up direction is against its gravity (``World.n``); a
+planar model is seen from +z.
 
 Rendering is this module's own: triangle meshes, orthographic projection and flat shading
 sorted back to front (painter's algorithm). The HTML view repeats it in a small script
@@ -31,6 +39,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from html import escape
 
 import numpy as np
 
@@ -43,7 +52,9 @@ __all__ = ["Shape", "Animation", "register", "shapes_of"]
 class Shape:
     """A primitive drawn in the frame ``frame`` (a port's dotted path): ``kind`` "box",
     "cylinder" (along lengthDirection, diameter width, height) or "sphere" (diameter
-    length, starting at r_shape as in MSL); dimensions [m]; ``color`` RGB 0..255."""
+    length, starting at r_shape as in MSL); dimensions [m]; ``color`` RGB 0..255;
+    ``length_variable``: the name of a variable [m] that is the length at each instant
+    (``length`` is then the length the mesh is built with)."""
     frame: str
     kind: str
     length: float
@@ -54,6 +65,7 @@ class Shape:
     widthDirection: tuple = (0.0, 1.0, 0.0)
     color: tuple = (0, 128, 255)
     name: str = field(default="")
+    length_variable: str = ""       # a variable whose value is the length at each instant
 
     def local(self) -> np.ndarray:
         """4×4 pose of the primitive in its frame (x along lengthDirection)."""
@@ -229,7 +241,40 @@ def _fixed_arrow(c):
                   d["r_tail"], d["n"], color=_rgb(d["color"]), name=c.path)]
 
 
+# ---- planar parts (PlanarMechanics' defaults, in the plane z = 0) ------------------------
+_JOINT = 0.1                 # planarWorld.defaultJointLength = defaultJointWidth [m]
+
+
+def _planar_body(c):
+    return [Shape(_path(c, "frame_a"), "sphere", _BODY_D, _BODY_D, _BODY_D,
+                  (-_BODY_D / 2, 0.0, 0.0), color=(0, 128, 255), name=c.path)]
+
+
+def _planar_translation(c):
+    r = (*_val(c, "r"), 0.0)
+    L = float(np.linalg.norm(r))
+    if L == 0:
+        return []
+    return [Shape(_path(c, "frame_a"), "cylinder", L, L / _WIDTH_FRACTION, L / _WIDTH_FRACTION,
+                  lengthDirection=r, color=(155, 155, 155), name=c.path)]
+
+
+def _planar_revolute(c):
+    return [Shape(_path(c, "frame_a"), "cylinder", _JOINT, _JOINT, _JOINT,
+                  (0.0, 0.0, -_JOINT / 2), (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (255, 0, 0),
+                  c.path)]
+
+
+def _planar_prismatic(c):
+    r = (*_val(c, "r"), 0.0)
+    w = float(np.linalg.norm(r)) / _WIDTH_FRACTION
+    return [Shape(_path(c, "frame_a"), "box", 1.0, w, w, lengthDirection=r,
+                  widthDirection=(0.0, 0.0, 1.0), color=(255, 0, 0), name=c.path,
+                  length_variable=f"{c.path}.s" if c.path else "s")]
+
+
 def _defaults():
+    from ..components import planar
     from ..components.multibody import (Body, BodyBox, BodyCylinder, BodyShape,
                                         FixedTranslation, PointMass, Revolute, RollingWheel,
                                         RollingWheelSet)
@@ -246,6 +291,10 @@ def _defaults():
     register(PointMass, _point_mass)
     register(RollingWheel, lambda c: [_wheel(_val(c, "radius"), _val(c, "width"),
                                               _path(c, "frame_a"), c.path)])
+    register(planar.Body, _planar_body)
+    register(planar.FixedTranslation, _planar_translation)
+    register(planar.Revolute, _planar_revolute)
+    register(planar.Prismatic, _planar_prismatic)
     register(RollingWheelSet, lambda c: [
         _wheel(_val(c, "R_wheel"), _val(c, "width_wheel"), _path(c, f), c.path)
         for f in ("frame1", "frame2")])
@@ -274,11 +323,14 @@ def shapes_of(model) -> list[Shape]:
 
 
 def _up(model) -> np.ndarray:
-    """The world's up direction: against World.n (default y up)."""
+    """The world's up direction: against World.n (a planar World's n in the plane z = 0;
+    default y up)."""
+    from ..components import planar
     from ..components.multibody import World
     for c in _walk(model):
-        if isinstance(c, World):
+        if isinstance(c, (World, planar.World)):
             n = np.asarray(_val(c, "n"))
+            n = np.append(n, 0.0) if n.size == 2 else n
             return -n / np.linalg.norm(n)
     return np.array([0.0, 1.0, 0.0])
 
@@ -287,20 +339,28 @@ class Animation:
     """The parts of ``model`` (a Model, or a CompiledModel compiled from one) moving as in
     ``result``; ``shapes`` replaces the parts' own (a list of Shape). Camera: orthographic,
     looking from ``azimuth`` / ``elevation`` [deg] about the world's up direction (0, 0:
-    from +z with x to the right when y is up, from −y when z is up, MSL's default views)."""
+    from +z with x to the right when y is up, from −y when z is up, MSL's default views;
+    default 30, 20 for a 3-D model, 0, 0 for a planar one). In a notebook the interactive
+    view shows itself; ``save`` writes it (.html), a GIF or an MP4."""
 
     def __init__(self, model, result, shapes: list[Shape] | None = None,
-                 azimuth: float = 30.0, elevation: float = 20.0):
+                 azimuth: float | None = None, elevation: float | None = None):
         model = getattr(model, "source", None) or model
         self.shapes = shapes_of(model) if shapes is None else list(shapes)
         if not self.shapes:
             raise AnalysisError(f"model '{model.name}' has no part to draw (no Body, BodyShape, "
-                                f"BodyBox, BodyCylinder, FixedTranslation, wheel ...)")
+                                f"BodyBox, BodyCylinder, FixedTranslation, wheel, planar Body "
+                                f"...)")
         self.t = np.asarray(result.t, float)
         self.up = _up(model)
-        self.azimuth, self.elevation = float(azimuth), float(elevation)
         self.meshes = [_mesh(s) for s in self.shapes]
-        self.poses = np.stack([self._frame_poses(result, s.frame) for s in self.shapes], 1)
+        poses = [self._frame_poses(result, s.frame) for s in self.shapes]
+        self.planar = all(planar for _, planar in poses)
+        view = (0.0, 0.0) if self.planar else (30.0, 20.0)
+        self.azimuth = float(view[0] if azimuth is None else azimuth)
+        self.elevation = float(view[1] if elevation is None else elevation)
+        self.poses = np.stack([P @ self._stretch(result, s) for (P, _), s in
+                               zip(poses, self.shapes)], 1)
         pts = np.concatenate([np.einsum("tij,vj->tvi", P[:, :3, :3], v).reshape(-1, 3)
                               + np.repeat(P[:, :3, 3], len(v), 0)
                               for P, (v, _) in zip(self.poses.transpose(1, 0, 2, 3),
@@ -308,9 +368,17 @@ class Animation:
         self.lo, self.hi = pts.min(0), pts.max(0)
 
     @staticmethod
-    def _frame_poses(result, frame: str) -> np.ndarray:
-        """4×4 poses (world from frame) of ``frame`` at every instant of ``result``."""
+    def _frame_poses(result, frame: str) -> tuple[np.ndarray, bool]:
+        """4×4 poses (world from frame) of ``frame`` at every instant of ``result``, and
+        whether it is a planar frame (x, y, phi in the plane z = 0)."""
         try:
+            if f"{frame}.x" in result:
+                x, y, phi = (result[f"{frame}.{v}"] for v in ("x", "y", "phi"))
+                P = np.zeros((len(x), 4, 4))
+                P[:, 0, 0], P[:, 0, 1], P[:, 0, 3] = np.cos(phi), -np.sin(phi), x
+                P[:, 1, 0], P[:, 1, 1], P[:, 1, 3] = np.sin(phi), np.cos(phi), y
+                P[:, 2, 2] = P[:, 3, 3] = 1
+                return P, True
             r = np.column_stack([result[f"{frame}.r_0[{k}]"] for k in (1, 2, 3)])
             T = np.stack([[result[f"{frame}.R.T[{i},{j}]"] for j in (1, 2, 3)]
                           for i in (1, 2, 3)])
@@ -321,7 +389,20 @@ class Animation:
         P[:, :3, :3] = np.transpose(T, (2, 1, 0))      # world from frame = Tᵀ
         P[:, :3, 3] = r
         P[:, 3, 3] = 1
-        return P
+        return P, False
+
+    @staticmethod
+    def _stretch(result, shape: Shape) -> np.ndarray:
+        """Per instant, the affine map (in the shape's frame) that gives a shape with a
+        ``length_variable`` that length: a scaling along its length direction from
+        r_shape; the identity for the others."""
+        if not shape.length_variable:
+            return np.eye(4)
+        M = shape.local()
+        k = np.asarray(result[shape.length_variable], float) / shape.length
+        D = np.tile(np.eye(4), (len(k), 1, 1))
+        D[:, 0, 0] = k
+        return M @ D @ np.linalg.inv(M)
 
     def camera(self) -> np.ndarray:
         """3×3 rows: screen right, screen up, towards the viewer (world coordinates)."""
@@ -373,11 +454,35 @@ class Animation:
         order = np.argsort(depth)
         return polys[order], cols[order]
 
+    def save(self, path, **kwargs):
+        """Write the animation to ``path`` by its suffix: .html (``save_html``), .gif
+        (``save_gif``) or .mp4 (``save_mp4``)."""
+        kind = str(path).rsplit(".", 1)[-1].lower()
+        writers = {"html": self.save_html, "gif": self.save_gif, "mp4": self.save_mp4}
+        if kind not in writers:
+            raise AnalysisError(f"cannot save an animation as '.{kind}' ({path}); give a path "
+                                f"ending in .html, .gif or .mp4")
+        return writers[kind](path, **kwargs)
+
     def save_gif(self, path, fps: float = 15, size=(480, 360), frames: int | None = None):
         """Write the animation as a GIF (matplotlib, Pillow writer), ``frames`` instants
         evenly spread over the result (default all); returns the indices of the instants
         drawn."""
-        from matplotlib.animation import FuncAnimation, PillowWriter
+        from matplotlib.animation import PillowWriter
+        return self._write(path, PillowWriter(fps=fps), size, frames)
+
+    def save_mp4(self, path, fps: float = 15, size=(480, 360), frames: int | None = None):
+        """Write the animation as an MP4 video (matplotlib's ffmpeg writer: needs ffmpeg on
+        the PATH); as ``save_gif`` otherwise."""
+        from matplotlib.animation import FFMpegWriter, writers
+        if not writers.is_available("ffmpeg"):
+            raise AnalysisError(f"saving '{path}' as MP4 needs ffmpeg on the PATH (not found); "
+                                f"install ffmpeg, or save a .gif or .html")
+        return self._write(path, FFMpegWriter(fps=fps), size, frames)
+
+    def _write(self, path, writer, size, frames):
+        """Draw the frames with matplotlib and hand them to ``writer``."""
+        from matplotlib.animation import FuncAnimation
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.collections import PolyCollection
         from matplotlib.figure import Figure
@@ -392,8 +497,7 @@ class Animation:
         coll = PolyCollection([], edgecolors="face", linewidths=0.3)
         ax.add_collection(coll)
         label = ax.text(8, 18, "", fontsize=9)
-        idx = np.arange(len(self.t)) if frames is None else \
-            np.unique(np.linspace(0, len(self.t) - 1, frames).round().astype(int))
+        idx = self._instants(frames)
 
         def draw(i):
             k = idx[i]
@@ -405,15 +509,19 @@ class Animation:
             return coll, label
 
         anim = FuncAnimation(fig, draw, frames=len(idx), blit=False)
-        anim.save(str(path), writer=PillowWriter(fps=fps), dpi=dpi)
+        anim.save(str(path), writer=writer, dpi=dpi)
         return idx
 
     def save_html(self, path, title: str = "acausal animation", frames: int | None = None):
         """Write a self-contained HTML file (no external resources) with the interactive
         view: drag to turn, wheel to zoom, slider and play button for time (``#frame=k``
         after the file's address opens it paused at the k-th instant drawn)."""
-        idx = np.arange(len(self.t)) if frames is None else \
-            np.unique(np.linspace(0, len(self.t) - 1, frames).round().astype(int))
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(self.html(title, frames))
+
+    def html(self, title: str = "acausal animation", frames: int | None = None) -> str:
+        """The self-contained HTML page of the interactive view (``save_html``)."""
+        idx = self._instants(frames)
         data = {
             "t": [round(float(x), 6) for x in self.t[idx]],
             "up": self.up.tolist(), "azimuth": self.azimuth, "elevation": self.elevation,
@@ -423,9 +531,19 @@ class Animation:
                        zip(self.meshes, self.shapes)],
             "poses": np.round(self.poses[idx][:, :, :3, :].reshape(len(idx), -1), 7).tolist(),
         }
-        html = _HTML.replace("__TITLE__", title).replace("__DATA__", json.dumps(data))
-        with open(path, "w", encoding="utf-8") as f:
-            f.write(html)
+        return _HTML.replace("__TITLE__", title).replace("__DATA__", json.dumps(data))
+
+    def _instants(self, frames: int | None) -> np.ndarray:
+        """Indices of ``frames`` instants evenly spread over the result (default all)."""
+        return np.arange(len(self.t)) if frames is None else \
+            np.unique(np.linspace(0, len(self.t) - 1, frames).round().astype(int))
+
+    def _repr_html_(self) -> str:
+        """The interactive view in a notebook (the page in an iframe, at most 200
+        instants)."""
+        page = self.html(frames=min(len(self.t), 200))
+        return ('<iframe style="width:100%;height:420px;border:0" srcdoc="'
+                + escape(page, quote=True) + '"></iframe>')
 
 
 _HTML = r"""<!DOCTYPE html>

@@ -475,9 +475,32 @@ class CompiledModel:
                         self.loop_rows, self.loop_rows_dropped)
 
     def __repr__(self):
-        return (f"<CompiledModel '{self.name}': {len(self.states)} states, "
+        """A summary: the counts, then coordinates, states, algebraic variables, loops,
+        events, inputs, outputs and parameters by name (long lists cut)."""
+        def listed(items, limit=8):
+            items = list(items)
+            more = f", … ({len(items) - limit} more)" if len(items) > limit else ""
+            return ", ".join(items[:limit]) + more if items else "none"
+
+        def unit(v):
+            return f" [{v.unit}]" if v.unit else ""
+
+        modes = set(self.mode_params)
+        rows = [("coordinates", listed(self.coordinates)),
+                ("states", listed(self.x_names)),
+                ("algebraic", listed(self.z_names)),
+                ("loops", f"{len(self.loop_rows)} constraint rows ({self.method})"
+                 if self.loop_rows else "none"),
+                ("events", f"{len(self.state_events.indicators)} indicators, "
+                 f"{len(self.mode_params)} modes" if self.has_events else "none"),
+                ("inputs", listed(v.name + unit(v) for v in self.inputs)),
+                ("outputs", listed(v.name + unit(v) for v in self.outputs)),
+                ("parameters", listed(f"{v.name} = {v.start:g}{unit(v)}"
+                                      for i, v in enumerate(self.params) if i not in modes))]
+        head = (f"CompiledModel '{self.name}': {len(self.states)} states, "
                 f"{len(self.algebraics)} algebraic, {len(self.params)} parameters, "
-                f"{len(self.inputs)} inputs, {len(self.outputs)} outputs>")
+                f"{len(self.inputs)} inputs, {len(self.outputs)} outputs")
+        return "\n".join([head] + [f"  {k:<13}{v}" for k, v in rows])
 
 
 def coinciding(v: ca.SX, w: ca.SX, free: ca.SX) -> tuple[int, ca.SX] | None:

@@ -15,6 +15,7 @@ from dataclasses import dataclass
 
 import casadi as ca
 
+from . import sympy_form
 from .charts import state_positions
 from .symbolic import der_with
 
@@ -174,7 +175,26 @@ class Lagrange:
         return ca.Function("lagrange", [self.t, self.q_state, self.qd, self.u, self.p], outs,
                            ["t", "q", "qd", "u", "p"], list(names), {"allow_free": True})
 
+    def to_sympy(self, simplify: bool = True):
+        """The equations as sympy Matrices with the coordinates, rates, inputs and
+        parameters as Symbols of their dotted names (``sympy_form.SympyEquations``: M, C, K,
+        gravity, coriolis, B, Q_rest, phi, phi_q; ``latex()``); ``simplify``: collected as
+        a hand derivation writes them (seconds for a two-link arm with every length
+        symbolic; ``with_values`` first fixes what need not stay a symbol). Needs sympy."""
+        return sympy_form.SympyEquations(self, simplify)
+
     def __str__(self):
+        """The simplified sympy form (``to_sympy``) for up to 4 coordinates when sympy is
+        installed; else CasADi's, whose shared subexpressions (@1 = …) keep the text of
+        larger models short (a sympy expression tree repeats them)."""
+        if self.q.numel() <= 4:
+            try:
+                return str(self.to_sympy())
+            except ImportError:
+                pass
+        return self._casadi_str()
+
+    def _casadi_str(self):
         def show(name, ex):
             return f"{name} =\n{ex}" if ex is not None else f"{name}: not linear"
         lines = [f"q = [{', '.join(self.q_names)}]", f"u = [{', '.join(self.u_names)}]",

@@ -26,6 +26,7 @@ import functools
 from enum import Enum
 
 from ..errors import DisabledPortError, ParameterError, PortConnectionError
+from . import documentation
 from .parameter import Parameter
 from .ports import PhysicalPort, Port, PortVector, RealOutput, VectorPort
 
@@ -39,6 +40,17 @@ def who(c: "Component") -> str:
 def _shown(value) -> str:
     """An option value as written in a call: True, 'frame_resolve'."""
     return repr(value.value if isinstance(value, Enum) else value)
+
+
+@functools.cache
+def _class_declarations(cls, types) -> dict:
+    """``Component._declared``, once per class (a model has many instances of a class)."""
+    out = {}
+    for klass in reversed(cls.__mro__):
+        for n, v in vars(klass).items():
+            if isinstance(v, types):
+                out[n] = v
+    return out
 
 
 class StateSelect(str, Enum):
@@ -120,6 +132,16 @@ class Component:
     """
     options: dict[str, bool | Enum] = {}
     required: tuple[str, ...] = ()
+
+    def __init_subclass__(cls, **kwargs):
+        """Write the class's parameters, options and ports into its docstring and call
+        signature (``acausal.core.documentation``): what ``help()`` shows."""
+        super().__init_subclass__(**kwargs)
+        parameters, options = cls.parameters(), cls.all_options()
+        cls.__doc__ = documentation.reference(cls.__doc__, parameters, cls.required, options,
+                                              port_rows(cls))
+        cls.__signature__ = documentation.signature(cls.__init__, parameters, cls.required,
+                                                    options)
 
     def __init__(self, name: str | None = None, **params):
         d = self.__dict__
@@ -242,7 +264,8 @@ class Component:
 
     def __repr__(self):
         vals = ", ".join(f"{k}={v}" for k, v in self._values.items())
-        return f"{type(self).__name__}({vals}) at '{self.path or self._name}'"
+        where = self.path or self._name
+        return f"{type(self).__name__}({vals})" + (f" at '{where}'" if where else "")
 
     # ---- the two phases (defaults: nothing) ----------------------------------------------
     def structure(self, s) -> None:
@@ -250,6 +273,21 @@ class Component:
 
     def physics(self, e) -> None:
         """Contribute energies, flows, state derivatives, outputs. Default: none."""
+
+
+def port_rows(cls) -> list[tuple[str, str, str, str]]:
+    """(name, type, description, condition) of the ports a component class declares."""
+    rows = []
+    for name, t in cls._declared((Port, ConditionalPort, VectorPort)).items():
+        if isinstance(t, Port):
+            rows.append((name, type(t).__name__, t.description, ""))
+        elif isinstance(t, ConditionalPort):
+            rows.append((name, type(t.port).__name__, t.port.description,
+                         f"{t.option} = {documentation.shown(t.value)}"))
+        else:
+            rows.append((f"{name}[{len(t.descriptions)}]", t.port_cls.__name__,
+                         t.descriptions[0].removesuffix(" [1]"), ""))
+    return rows
 
 
 def _attribute(owner: Component, key: str) -> str:
@@ -386,13 +424,3 @@ def _common_model(a: Port, b: Port) -> Model:
         f"'{a.path}' and '{b.path}' are not in one model: assign both components to "
         f"attributes of the same Model before connecting them")
 
-
-@functools.cache
-def _class_declarations(cls, types) -> dict:
-    """``Component._declared``, once per class (a model has many instances of a class)."""
-    out = {}
-    for klass in reversed(cls.__mro__):
-        for n, v in vars(klass).items():
-            if isinstance(v, types):
-                out[n] = v
-    return out

@@ -55,9 +55,19 @@ class Parameter:
         self.nonnegative = nonnegative
         self.structural_zero = structural_zero
         self.name = ""
+        self.owner = ""
 
     def __set_name__(self, owner, name):
-        self.name = name
+        self.name, self.owner = name, getattr(owner, "__name__", "")
+
+    def __repr__(self):
+        where = f"{self.owner}.{self.name}" if self.owner else self.name or "?"
+        value = self.default if self.size is None else list(self.default)
+        bounds = ", ".join(k for k, on in (("> 0", self.positive), (">= 0", self.nonnegative),
+                                           ("!= 0", self.nonzero)) if on)
+        return (f"<Parameter {where} = {value}" + (f" [{self.unit}]" if self.unit else "")
+                + (f" ({bounds})" if bounds else "")
+                + (f": {self.description}" if self.description else "") + ">")
 
     def __get__(self, instance, owner=None):
         if instance is None:

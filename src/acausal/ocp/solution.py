@@ -7,7 +7,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import VariableNameError
-from ..simulation.result import Result
+from ..simulation.result import Result, by_unit
 from ..errors import OCPError
 
 
@@ -58,34 +58,26 @@ class Solution(Result):
                            f"{self._view.compiled.input_names}")
         return self._U[self._view.index(name)]
 
-    def plot(self, *names: str, path=None):
-        """One panel per name (default: every state and control), controls as steps; saved
-        to ``path`` if given (a directory: ``ocp_<model>.png`` in it). Returns the figure."""
-        import matplotlib
-        if path is not None:
-            matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
+    def plot(self, *names: str, ax=None, path=None, title: str | None = None):
+        """One panel per name (default: the states, one panel per unit, then the controls,
+        as steps); ``ax``: one Axes (everything on it) or one per panel; saved to ``path``
+        if given (a directory: ``ocp_<model>.png`` in it). Returns the figure."""
+        if path is not None and os.path.isdir(path):
+            path = os.path.join(path, f"ocp_{self._view.compiled.name}.png")
+        axes = super().plot(*names, ax=ax, path=path, title=title)
+        return np.atleast_1d(axes)[0].figure
+
+    def _panels(self, names) -> list[list[str]]:
         c = self._view.compiled
-        names = names or tuple(c.x_names) + tuple(c.input_names)
-        fig, axes = plt.subplots(len(names), 1, sharex=True, squeeze=False,
-                                 figsize=(7, 1.8 * len(names) + 1))
-        for ax, name in zip(axes[:, 0], names):
-            unit = self.units.get(name, "")
-            step = "post" if name in c.input_names else None
-            if step:
-                ax.step(self.t, self[name], where=step)
-            else:
-                ax.plot(self.t, self[name], ".-", ms=3)
-            ax.set_ylabel(f"{name} [{unit}]" if unit else name, fontsize=8)
-            ax.grid(True)
-        axes[-1, 0].set_xlabel("time [s]")
-        axes[0, 0].set_title(f"{c.name}: cost {self.cost:.6g}, T = {self.T:.4g} s "
-                             f"({self.status})", fontsize=9)
-        if path is not None:
-            if os.path.isdir(path):
-                path = os.path.join(path, f"ocp_{c.name}.png")
-            fig.savefig(path, dpi=120, bbox_inches="tight")
-        return fig
+        return [[n] for n in names] if names else (by_unit(c.x_names, self.units)
+                                                   + by_unit(c.input_names, self.units))
+
+    def _steps(self) -> set[str]:
+        return set(self._view.compiled.input_names)
+
+    def _title(self) -> str:
+        return (f"{self._view.compiled.name}: cost {self.cost:.6g}, T = {self.T:.4g} s "
+                f"({self.status})")
 
     def __repr__(self):
         form = f", smooth form of {', '.join(self.regularized)}" if self.regularized else (

@@ -5,7 +5,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import VariableNameError
+from ..errors import SimulationError, VariableNameError
 
 
 @dataclass(frozen=True)
@@ -135,24 +135,78 @@ class Result:
         header = ",".join(["time"] + names)
         np.savetxt(path, data, delimiter=",", header=header, comments="")
 
-    def plot(self, *names: str, ax=None, path=None):
-        """Plot variables against time (needs matplotlib); save to ``path`` if given."""
+    def plot(self, *names: str, ax=None, path=None, title: str | None = None):
+        """Plot against time (needs matplotlib): the ``names`` on one Axes, or with no
+        names every state, one panel per unit (positions [m], angles [rad], …). ``ax``: an
+        Axes to draw on (everything on it) or one Axes per panel; ``path``: save the figure
+        there; ``title`` above the first panel (default: the model's name). Returns the
+        Axes, or the list of them for several panels."""
         import matplotlib
-        if path is not None:
+        if path is not None and ax is None:
             matplotlib.use("Agg")
         import matplotlib.pyplot as plt
+        panels = self._panels(names)
         if ax is None:
-            _, ax = plt.subplots()
-        for n in names:
-            unit = self.units.get(n, "")
-            ax.plot(self.t, self[n], label=f"{n} [{unit}]" if unit else n)
-        ax.set_xlabel("time [s]")
-        ax.grid(True)
-        ax.legend()
+            _, grid = plt.subplots(len(panels), 1, sharex=True, squeeze=False,
+                                   figsize=(7, 1.8 * len(panels) + 1.2))
+            axes = list(grid[:, 0])
+        else:
+            axes = list(np.atleast_1d(ax))
+            if len(axes) == 1:
+                panels = [[n for p in panels for n in p]]
+            elif len(axes) != len(panels):
+                raise ValueError(f"plot: {len(panels)} panels ({panels}) need 1 or "
+                                 f"{len(panels)} Axes, got {len(axes)}")
+        steps = self._steps()
+        for a, group in zip(axes, panels):
+            units = {self.units.get(n, "") for n in group}
+            for n in group:
+                unit = self.units.get(n, "")
+                label = n if len(units) == 1 else (f"{n} [{unit}]" if unit else n)
+                if n in steps:
+                    a.step(self.t, self[n], where="post", label=label)
+                else:
+                    a.plot(self.t, self[n], label=label)
+            if len(units) == 1 and units != {""}:
+                a.set_ylabel(f"[{units.pop()}]")
+            a.grid(True)
+            a.legend(fontsize=8)
+        axes[-1].set_xlabel("time [s]")
+        axes[0].set_title(self._title() if title is None else title, fontsize=9)
         if path is not None:
-            ax.figure.savefig(path, dpi=120, bbox_inches="tight")
-        return ax
+            axes[0].figure.savefig(path, dpi=120, bbox_inches="tight")
+        return axes[0] if len(axes) == 1 else axes
+
+    def animate(self, **kwargs):
+        """The model's parts moving as in this result (``acausal.analysis.animation``):
+        ``.save("run.gif" | "run.mp4" | "run.html")``, shown by itself in a notebook;
+        keywords ``shapes``, ``azimuth``, ``elevation`` [deg]."""
+        animation = getattr(self._model, "animation", None)
+        if animation is None:
+            raise SimulationError(f"the result of '{self.model_name}' was made from the "
+                                  f"compiler's record alone; animate the result of a model "
+                                  f"compiled with acausal.compile")
+        return animation(self, **kwargs)
+
+    def _panels(self, names) -> list[list[str]]:
+        """What ``plot`` draws: the names on one panel, else the states by unit."""
+        return [list(names)] if names else by_unit(self._model.x_names, self.units)
+
+    def _steps(self) -> set[str]:
+        """Names drawn as steps (held values)."""
+        return set()
+
+    def _title(self) -> str:
+        return f"{self.model_name}"
 
     def __repr__(self):
         return (f"<Result of '{self.model_name}': {len(self.t)} time points, "
                 f"{len(self.names)} variables>")
+
+
+def by_unit(names, units: dict) -> list[list[str]]:
+    """The names grouped by their unit, groups in order of first appearance."""
+    groups: dict[str, list[str]] = {}
+    for n in names:
+        groups.setdefault(units.get(n, ""), []).append(n)
+    return list(groups.values())
