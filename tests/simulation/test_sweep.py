@@ -235,3 +235,19 @@ def test_dae_runs_with_idas():
                          x0={"mass.s": [0.3, -0.1]}, variables=["mass.s", "node.s", "node.v"])
     np.testing.assert_array_equal(res.dataset["solver"], ["idas"] * 4)
     assert_as_loop(compiled, res)
+
+
+def test_failed_run_on_a_cluster_is_reported_as_here():
+    """A run that fails on a worker (the softening spring's runaway) is reported with the
+    same index and message as in this process; the others are equal bit for bit."""
+    distributed = pytest.importorskip("distributed")
+    duffing = acausal.compile(models.duffing_model())
+    kw = dict(params={"spring.c3": [40.0, -40.0, 10.0]}, x0={"mass.s": 2.0},
+              options={"max_num_steps": 5000})
+    here = duffing.sweep(5.0, **kw)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=":0") as cluster, \
+            distributed.Client(cluster) as client:
+        there = duffing.sweep(5.0, client=client, chunk=1, **kw)
+    assert there.failed == here.failed and sorted(there.failed) == [1]
+    np.testing.assert_array_equal(there["mass.s"], here["mass.s"])
