@@ -31,10 +31,11 @@ from .errors import (AcausalError, AnalysisError, DisabledPortError, FmuExportEr
                      VariableNameError)
 from .facade import CompiledModel, compile
 from .simulation import Result, simulate
+from .simulation import montecarlo
 
 __version__ = version("acausal")
 __all__ = ["Model", "Component", "Parameter", "Input", "Output", "connect", "compile",
-           "CompiledModel", "simulate", "Result", "AcausalError", "ParameterError",
+           "CompiledModel", "simulate", "Result", "montecarlo", "AcausalError", "ParameterError",
            "PortConnectionError", "StructureError", "SingularModelError",
            "InitializationError", "SimulationError", "VariableNameError", "DisabledPortError",
            "AnalysisError", "OCPError", "SolveError", "FmuExportError", "FmuPathError"]

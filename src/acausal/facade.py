@@ -4,8 +4,8 @@ A top module, above every package (core → components → compiler → simulati
 analysis | fmu | ocp): it may import any of them and none imports it. The compiler's record
 (``acausal.compiler.CompiledModel``, the seam) knows nothing of simulation or FMUs; the
 ``CompiledModel`` returned here is that record with the calls users write on it —
-``simulate``, ``export_fmu``, ``mobility``, ``animation`` (behind ``Result.animate``) — each
-delegating to the layer that does the work.
+``simulate``, ``sweep``, ``export_fmu``, ``mobility``, ``animation`` (behind
+``Result.animate``) — each delegating to the layer that does the work.
 """
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from pathlib import Path
 from . import compiler
 from .compiler.loops import Mobility
 from .core.component import Model
-from .simulation import Result, initial_state, simulate
+from .simulation import Result, SweepResult, initial_state, simulate, sweep
 
 
 class CompiledModel(compiler.CompiledModel):
@@ -24,6 +24,11 @@ class CompiledModel(compiler.CompiledModel):
     def simulate(self, t_final: float, **kwargs) -> Result:
         """Simulate; see ``acausal.simulation.simulate`` for the arguments."""
         return simulate(self, t_final, **kwargs)
+
+    def sweep(self, t_final: float, **kwargs) -> SweepResult:
+        """Many runs (parameter, start-value and input variations) in one mapped integrator,
+        on threads or a dask cluster; see ``acausal.simulation.sweep`` for the arguments."""
+        return sweep(self, t_final, **kwargs)
 
     def recompiled(self, smooth: bool) -> "CompiledModel":
         """The Model this was compiled from, compiled again in smooth form or not (see

@@ -19,6 +19,7 @@ no compiler or simulation imports.
                         RotationalEMF and Inertia (equal to rotational.DCMotor)
     elastic_bearing     ElasticBearing: MSL's gearbox on an elastic bearing (nominals)
     oscillators         Oscillator: mass on a spring and a damper
+    quarter_car         QuarterCar: body and wheel on springs over a road height (input road)
     bouncing_ball       BouncingBall, Floor: a state event with a reinit (impacts)
     friction            RotationalFriction: MSL's drive train with a clutch and a brake
     clutches            CoupledClutches: MSL's drive train with 3 coupled clutches;
@@ -75,6 +76,7 @@ from .robots import dh_chain, from_urdf
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
+from .quarter_car import QuarterCar
 from .robot_axis import OneAxis
 from .translational_friction import PreLoad, TranslationalBrake, TranslationalFriction
 
@@ -82,7 +84,7 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "Flywheel", "SimpleDCMotor", "duffing_model", "motor_model", "DiskDriveHead",
            "Drivetrain", "DrivenFourBar", "ElasticBearing", "FourBar", "KinematicLoop",
            "Parallelogram", "PistonEngine", "SliderCrank", "add_link", "Oscillator",
-           "PendulumOnCart", "PendulumChain", "RotationalFriction", "CoupledClutches",
+           "PendulumOnCart", "PendulumChain", "QuarterCar", "RotationalFriction", "CoupledClutches",
            "OneWayClutchDrive", "OneWayClutchDisengaged", "PreLoad", "TranslationalBrake",
            "TranslationalFriction", "Backlash", "LossyGearDemo1", "LossyGearDemo2",
            "LossyGearDemo3", "SampledPController", "Thermostat", "CauerLowPassAnalog",

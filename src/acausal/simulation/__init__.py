@@ -5,5 +5,6 @@ from .initialization import initial_state
 from .result import Event, Result
 from .inputs import Samples, input_signal
 from .simulate import simulate
+from .sweep import SweepResult, sweep
 
-__all__ = ["simulate", "Result", "Event", "Samples", "initial_state", "input_signal"]
+__all__ = ["simulate", "sweep", "SweepResult", "Result", "Event", "Samples", "initial_state", "input_signal"]

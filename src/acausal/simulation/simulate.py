@@ -106,21 +106,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         xdot = ca.Function("xdot", [model.x, model.z, model.t], [ode])
     opts.update(options or {})
 
-    def problem(solver):
-        """The DAE for the integrator. Adams with functional iteration never evaluates a
-        Jacobian, so the ODE goes in as a call whose derivatives would be finite
-        differences: CasADi then builds no symbolic Jacobian (O(N²) for the recursion)."""
-        if solver == "adams":
-            f = ca.Function("ode", [model.x, model.t], [ode], _NO_AD)
-            x, t = ca.MX.sym("x", model.x.numel()), ca.MX.sym("t")
-            return {"x": x, "t": t, "ode": f(x, t)}
-        dae = {"x": model.x, "t": model.t, "ode": ode}
-        if has_alg:
-            dae.update(z=model.z, alg=alg)
-        return dae
-
     def integrate(plugin, opts):
-        dae = problem(solver)
+        dae = integrator_problem(model, solver, ode, alg)
         X = [np.asarray(xs, dtype=float).reshape(-1, 1) / scale[:nx, None]]
         Z = [np.asarray(zs, dtype=float).reshape(-1, 1) / scale[nx:, None]]
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
@@ -232,15 +219,40 @@ def _algebraic_only(model, alg, grid, z0) -> np.ndarray:
     return np.column_stack(Z)
 
 
+def integrator_problem(model, solver: str, ode, alg, params: ca.SX | None = None) -> dict:
+    """The DAE ẋ = ode, 0 = alg for ``casadi.integrator`` with ``solver``: in the model's
+    x, z, t and ``params`` (symbols, the integrator's parameters ``p``; None: no parameters).
+    Adams with functional iteration never evaluates a Jacobian, so the ODE goes in as a call
+    whose derivatives would be finite differences: CasADi then builds no symbolic Jacobian
+    (O(N²) for the recursion)."""
+    params = ca.SX(0, 1) if params is None else params
+    if solver == "adams":
+        f = ca.Function("ode", [model.x, model.t, params], [ode], _NO_AD)
+        x, t = ca.MX.sym("x", model.x.numel()), ca.MX.sym("t")
+        q = ca.MX.sym("p", params.numel())
+        dae = {"x": x, "t": t, "ode": f(x, t, q)}
+        return dict(dae, p=q) if params.numel() else dae
+    dae = {"x": model.x, "t": model.t, "ode": ode}
+    if params.numel():
+        dae["p"] = params
+    if model.z.numel():
+        dae.update(z=model.z, alg=alg)
+    return dae
+
+
 def scaled(model, ode, alg, nominal):
     """The DAE ẋ = ode, 0 = alg in [x; z] divided by their nominals (x = N_x·x̃,
     z = N_z·z̃): dx̃/dt = ode/N_x, 0 = alg, with the model's symbols x, z standing for x̃,
     z̃. The integrator's absolute tolerance atol on x̃_i is atol·nominal_i on x_i (CVODES
-    takes one absolute tolerance only); its relative error test is unchanged."""
+    takes one absolute tolerance only); its relative error test is unchanged. ``nominal``:
+    numbers, or symbols (parameters of the integrator, one value per run of a sweep)."""
     nx = model.x.numel()
-    if np.all(nominal == 1.0):
+    if isinstance(nominal, ca.SX):
+        Nx, Nz = nominal[:nx], nominal[nx:]
+    elif np.all(nominal == 1.0):
         return ode, alg
-    Nx, Nz = ca.DM(nominal[:nx]), ca.DM(nominal[nx:])
+    else:
+        Nx, Nz = ca.DM(nominal[:nx]), ca.DM(nominal[nx:])
     ode, alg = ca.substitute([ode, alg], [model.x, model.z], [Nx * model.x, Nz * model.z])
     return ode / Nx, alg
 
