@@ -1,0 +1,271 @@
+"""Sphinx directives of acausal's documentation, generated from the code when the docs build.
+
+``component-tables`` (argument: a module of ``acausal.components``)
+    for every component class the module exports: its description, a table of its parameters
+    (default, unit, description, from the ``Parameter`` declarations), its ports and its
+    structural options; then the differences from the MSL its docstrings state.
+``gallery``
+    every script of ``examples/`` with its description and the figures it saved. The scripts
+    run when the docs build (``MPLBACKEND=Agg``, ``ACAUSAL_OUT`` a folder of the build
+    directory); ``ACAUSAL_DOCS_GALLERY=0`` skips running them (a quick build: the gallery then
+    shows the figures of an earlier full build, if any).
+
+Docstrings are read as reStructuredText, with ``|x|`` an absolute value (not a substitution);
+one that is not valid reStructuredText (a hand-aligned table of arguments, say) is shown as
+it is written, as preformatted text, instead of failing the build (``readable``).
+"""
+from __future__ import annotations
+
+import importlib
+import inspect
+import io
+import os
+import re
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import docutils.core
+from docutils import nodes
+from docutils.parsers.rst import directives
+from docutils.statemachine import StringList
+from sphinx.util import logging
+from sphinx.util.docutils import SphinxDirective
+
+from acausal.core.component import Component, port_rows
+from acausal.core.documentation import SECTIONS, parameter_rows, shown
+
+logger = logging.getLogger(__name__)
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLES = ROOT / "examples"
+GALLERY = "_gallery"                      # folder of the html output holding the figures
+#: Where a docstring says how a component differs from its MSL / PlanarMechanics original.
+DIFFERENCE = re.compile(r"(Differences? from (the )?(MSL|PlanarMechanics|Modelica)|"
+                        r"(MSL|PlanarMechanics) differences|[Nn]ot an MSL (class|component|block))")
+
+
+def escape_bars(text: str) -> str:
+    """``text`` with every ``|`` outside ``literal`` spans escaped (an absolute value, not a
+    substitution reference)."""
+    parts = text.split("``")
+    return "``".join(p if i % 2 else p.replace("|", r"\|") for i, p in enumerate(parts))
+
+
+def valid_rst(text: str) -> bool:
+    """Whether docutils parses ``text`` without a warning (Sphinx's own roles and directives,
+    unknown to plain docutils, aside)."""
+    report = io.StringIO()
+    docutils.core.publish_doctree(text, settings_overrides={
+        "warning_stream": report, "report_level": 2, "halt_level": 5})
+    problems = re.findall(r"\((?:WARNING|ERROR|SEVERE)/\d\) (.*)", report.getvalue())
+    return all(p.startswith(("Unknown interpreted text role", "Unknown directive type"))
+               for p in problems)
+
+
+def readable(text: str) -> str:
+    """``text`` as reStructuredText to parse: the docstring itself (bars escaped) if valid,
+    else a literal block of it, as written."""
+    escaped = escape_bars(text)
+    if valid_rst(escaped):
+        return escaped
+    return "::\n\n" + "\n".join("    " + line for line in text.splitlines()) + "\n"
+
+
+def description(cls) -> str:
+    """A component's docstring without the sections generated from its declarations."""
+    doc = inspect.cleandoc(cls.__doc__ or "")
+    for title in SECTIONS:
+        doc = doc.split(f"\n{title}\n{'-' * len(title)}")[0]
+    return doc.strip()
+
+
+def summary(text: str) -> str:
+    """The first sentence of ``text``, on one line."""
+    first = " ".join(text.split("\n\n")[0].split())
+    end = re.search(r"[.:;](\s|$)", first)
+    return first[:end.start() + 1] if end else first
+
+
+def differences(text: str) -> list[str]:
+    """The paragraphs of ``text`` from where they state a difference from the MSL."""
+    out = []
+    for paragraph in text.split("\n\n"):
+        flat = " ".join(paragraph.split())
+        found = DIFFERENCE.search(flat)
+        if found:
+            out.append(flat[found.start():])
+    return out
+
+
+def components(module) -> list[tuple[str, type]]:
+    """The component classes ``module`` exports, partial (base) classes last."""
+    names = getattr(module, "__all__", None) or [n for n in vars(module) if not n.startswith("_")]
+    found = [(n, getattr(module, n)) for n in names]
+    found = [(n, c) for n, c in found if inspect.isclass(c) and issubclass(c, Component)]
+    return sorted(found, key=lambda nc: nc[0].lower().startswith("partial"))
+
+
+def table(header: list[str], rows: list[list[str]], widths: list[int]) -> nodes.table:
+    """A table of plain text cells (no markup is parsed in them)."""
+    group = nodes.tgroup(cols=len(header))
+    group += [nodes.colspec(colwidth=w) for w in widths]
+    head, body = nodes.thead(), nodes.tbody()
+    for cells, part in [(header, head)] + [(r, body) for r in rows]:
+        row = nodes.row()
+        for cell in cells:
+            entry = nodes.entry()
+            entry += nodes.paragraph(text=cell)
+            row += entry
+        part += row
+    group += head
+    group += body
+    out = nodes.table(classes=["component-table"])
+    out += group
+    return out
+
+
+class ComponentTables(SphinxDirective):
+    """The reference of every component of a module (see the module's docstring)."""
+    required_arguments = 1
+    option_spec = {"no-module-doc": directives.flag}
+
+    def parse(self, text: str) -> list[nodes.Node]:
+        holder = nodes.container()
+        self.state.nested_parse(StringList(readable(text).splitlines(), self.arguments[0]),
+                                0, holder)
+        return holder.children
+
+    def section(self, key: str, title: str) -> nodes.section:
+        sec = nodes.section(ids=[nodes.make_id(key)], names=[nodes.fully_normalize_name(key)])
+        sec += nodes.title(text=title)
+        self.state.document.note_implicit_target(sec)
+        return sec
+
+    def run(self) -> list[nodes.Node]:
+        name = self.arguments[0]
+        module = importlib.import_module(name)
+        self.env.note_dependency(inspect.getsourcefile(module))
+        short = name.rsplit(".", 1)[-1]
+        out: list[nodes.Node] = []
+        if "no-module-doc" not in self.options:
+            out += self.parse(inspect.cleandoc(module.__doc__ or ""))
+        found = components(module)
+        rows = [[n, summary(description(c))] for n, c in found]
+        out.append(table(["component", "what it is"], rows, [20, 80]))
+        notes = []
+        for cname, cls in found:
+            sec = self.section(f"{short}-{cname}", cname)
+            sec += nodes.paragraph("", "", nodes.literal(text=f"{name}.{cname}"))
+            text = description(cls)
+            sec += self.parse(text)
+            params = parameter_rows(cls.parameters(), cls.required)
+            if params:
+                sec += nodes.rubric(text="Parameters")
+                sec += table(["name", "default", "unit", "description"],
+                             [list(r) for r in params], [18, 16, 12, 54])
+            ports = port_rows(cls)
+            if ports:
+                sec += nodes.rubric(text="Ports")
+                sec += table(["name", "type", "description", "exists if"],
+                             [list(r) for r in ports], [18, 20, 46, 16])
+            options = cls.all_options()
+            if options:
+                sec += nodes.rubric(text="Options (structural)")
+                sec += table(["name", "default", "values"],
+                             [[k, shown(v), ", ".join(repr(m.value) for m in type(v))
+                               if hasattr(type(v), "__members__") else "True, False"]
+                              for k, v in options.items()], [25, 25, 50])
+            out.append(sec)
+            notes += [(cname, d) for d in differences(text)]
+        if notes:
+            sec = self.section(f"{short}-differences", "Differences from the MSL")
+            items = nodes.bullet_list()
+            for cname, text in notes:
+                item = nodes.list_item()
+                item += nodes.paragraph("", "", nodes.strong(text=cname), nodes.Text(": "))
+                item += self.parse(text)
+                items += item
+            sec += items
+            out.append(sec)
+        return out
+
+
+def example_scripts() -> list[Path]:
+    return sorted(EXAMPLES.glob("*.py"))
+
+
+def run_examples(app) -> None:
+    """Run every example into ``<html output>/_gallery/<example>/`` (its working directory
+    and ``ACAUSAL_OUT``) unless ``ACAUSAL_DOCS_GALLERY=0``; an example already run since its
+    last change is not run again."""
+    if os.environ.get("ACAUSAL_DOCS_GALLERY", "1") == "0" or app.builder.format != "html":
+        return
+    env = dict(os.environ, MPLBACKEND="Agg",
+               PYTHONPATH=os.pathsep.join([str(ROOT / "src"), os.environ.get("PYTHONPATH", "")]))
+    for script in example_scripts():
+        out = Path(app.outdir) / GALLERY / script.stem
+        stamp = out / ".done"
+        if stamp.exists() and stamp.stat().st_mtime > script.stat().st_mtime:
+            continue
+        out.mkdir(parents=True, exist_ok=True)
+        t0 = time.perf_counter()
+        run = subprocess.run([sys.executable, str(script)], cwd=out, capture_output=True,
+                             text=True, env=dict(env, ACAUSAL_OUT=str(out)), timeout=1800)
+        (out / "output.txt").write_text(run.stdout + run.stderr)
+        if run.returncode:
+            logger.warning(f"example {script.name} failed (exit {run.returncode}): "
+                           f"{run.stderr.strip().splitlines()[-1:]}")
+            continue
+        stamp.touch()
+        logger.info(f"gallery: {script.name} ran in {time.perf_counter() - t0:.1f} s")
+
+
+class Gallery(SphinxDirective):
+    """Every example: its description, how to run it, the figures it saved."""
+
+    def run(self) -> list[nodes.Node]:
+        out: list[nodes.Node] = []
+        for script in example_scripts():
+            self.env.note_dependency(str(script))
+            doc = inspect.cleandoc(_module_docstring(script))
+            sec = nodes.section(ids=[nodes.make_id(f"example-{script.stem}")],
+                                names=[script.name])
+            sec += nodes.title(text=script.name)
+            self.state.document.note_implicit_target(sec)
+            holder = nodes.container()
+            self.state.nested_parse(StringList(readable(doc).splitlines(), str(script)),
+                                    0, holder)
+            sec += holder.children
+            sec += nodes.literal_block(text=f"python examples/{script.name}",
+                                       language="console")
+            folder = Path(self.env.app.outdir) / GALLERY / script.stem
+            for figure in sorted(folder.glob("*.png")) + sorted(folder.glob("*.gif")):
+                uri = f"{GALLERY}/{script.stem}/{figure.name}"
+                sec += nodes.raw("", f'<a href="{uri}"><img class="gallery-figure" src="{uri}" '
+                                     f'alt="{figure.name}"/></a>', format="html")
+            out.append(sec)
+        return out
+
+
+def _module_docstring(script: Path) -> str:
+    import ast
+    return ast.get_docstring(ast.parse(script.read_text())) or ""
+
+
+def readable_docstring(app, what, name, obj, options, lines) -> None:
+    """autodoc, before napoleon reads the sections: the prose of a docstring made
+    ``readable``; the sections generated from a component's declarations kept for napoleon."""
+    text = "\n".join(lines)
+    cut = min([text.find(f"\n{t}\n{'-' * len(t)}") for t in SECTIONS
+               if f"\n{t}\n{'-' * len(t)}" in text] or [len(text)])
+    lines[:] = (readable(text[:cut]) + text[cut:]).split("\n")
+
+
+def setup(app):
+    app.add_directive("component-tables", ComponentTables)
+    app.add_directive("gallery", Gallery)
+    app.connect("builder-inited", run_examples)
+    app.connect("autodoc-process-docstring", readable_docstring, priority=400)
+    return {"parallel_read_safe": True, "version": "1"}
