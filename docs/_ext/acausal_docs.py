@@ -4,6 +4,8 @@
     for every component class the module exports: its description, a table of its parameters
     (default, unit, description, from the ``Parameter`` declarations), its ports and its
     structural options; then the differences from the MSL its docstrings state.
+``example-figure`` (argument: an example's name)
+    the figures that example saved;
 ``gallery``
     every script of ``examples/`` with its description and the figures it saved. The scripts
     run when the docs build (``MPLBACKEND=Agg``, ``ACAUSAL_OUT`` a folder of the build
@@ -222,6 +224,30 @@ def run_examples(app) -> None:
         logger.info(f"gallery: {script.name} ran in {time.perf_counter() - t0:.1f} s")
 
 
+def figures(directive: SphinxDirective, stem: str) -> list[nodes.Node]:
+    """The figures example ``stem`` saved in the gallery's folder, as images linked from the
+    page that ``directive`` is on (none in a build that did not run the examples)."""
+    folder = Path(directive.env.app.outdir) / GALLERY / stem
+    up = "../" * directive.env.docname.count("/")
+    out = []
+    for figure in sorted(folder.glob("*.png")) + sorted(folder.glob("*.gif")):
+        uri = f"{up}{GALLERY}/{stem}/{figure.name}"
+        out.append(nodes.raw("", f'<a href="{uri}"><img class="gallery-figure" src="{uri}" '
+                                 f'alt="{figure.name}"/></a>', format="html"))
+    return out
+
+
+class ExampleFigure(SphinxDirective):
+    """The figures of one example (argument: its file name without .py)."""
+    required_arguments = 1
+
+    def run(self) -> list[nodes.Node]:
+        self.env.note_dependency(str(EXAMPLES / f"{self.arguments[0]}.py"))
+        return figures(self, self.arguments[0]) or [nodes.paragraph(
+            text=f"(The figure of examples/{self.arguments[0]}.py appears here when the "
+                 f"documentation is built with the gallery.)")]
+
+
 class Gallery(SphinxDirective):
     """Every example: its description, how to run it, the figures it saved."""
 
@@ -240,11 +266,7 @@ class Gallery(SphinxDirective):
             sec += holder.children
             sec += nodes.literal_block(text=f"python examples/{script.name}",
                                        language="console")
-            folder = Path(self.env.app.outdir) / GALLERY / script.stem
-            for figure in sorted(folder.glob("*.png")) + sorted(folder.glob("*.gif")):
-                uri = f"{GALLERY}/{script.stem}/{figure.name}"
-                sec += nodes.raw("", f'<a href="{uri}"><img class="gallery-figure" src="{uri}" '
-                                     f'alt="{figure.name}"/></a>', format="html")
+            sec += figures(self, script.stem)
             out.append(sec)
         return out
 
@@ -266,6 +288,7 @@ def readable_docstring(app, what, name, obj, options, lines) -> None:
 def setup(app):
     app.add_directive("component-tables", ComponentTables)
     app.add_directive("gallery", Gallery)
+    app.add_directive("example-figure", ExampleFigure)
     app.connect("builder-inited", run_examples)
     app.connect("autodoc-process-docstring", readable_docstring, priority=400)
     return {"parallel_read_safe": True, "version": "1"}
