@@ -83,11 +83,13 @@ def description(cls) -> str:
     return doc.strip()
 
 
-def summary(text: str) -> str:
-    """The first sentence of ``text``, on one line."""
-    first = " ".join(text.split("\n\n")[0].split())
-    end = re.search(r"[.:;](\s|$)", first)
-    return first[:end.start() + 1] if end else first
+def summary(text: str, width: int = 160) -> str:
+    """The first sentence of ``text``, on one line, as plain text, at most about ``width``
+    characters."""
+    first = " ".join(text.split("\n\n")[0].split()).replace("``", "")
+    end = re.search(r"\.(\s|$)", first)
+    first = first[:end.start() + 1] if end else first.rstrip(":;, ") + " …"
+    return first if len(first) <= width else first[:first.rfind(" ", 0, width)] + " …"
 
 
 def differences(text: str) -> list[str]:
@@ -252,7 +254,7 @@ class Gallery(SphinxDirective):
     """Every example: its description, how to run it, the figures it saved."""
 
     def run(self) -> list[nodes.Node]:
-        out: list[nodes.Node] = []
+        out: list[nodes.Node] = [self.thumbnails()]
         for script in example_scripts():
             self.env.note_dependency(str(script))
             doc = inspect.cleandoc(_module_docstring(script))
@@ -269,6 +271,19 @@ class Gallery(SphinxDirective):
             sec += figures(self, script.stem)
             out.append(sec)
         return out
+
+
+    def thumbnails(self) -> nodes.raw:
+        """A grid of the examples' first figures, each a link to the example's section."""
+        cells = []
+        for script in example_scripts():
+            shown = figures(self, script.stem)[:1]
+            image = re.search(r'<img [^>]*/>', shown[0].astext()).group(0) if shown \
+                else '<span class="gallery-none">prints only</span>'
+            cells.append(f'<a class="gallery-thumb" href="#{nodes.make_id("example-" + script.stem)}">'
+                         f'{image}<span>{script.stem}</span></a>')
+        return nodes.raw("", '<div class="gallery-grid">' + "".join(cells) + "</div>",
+                         format="html")
 
 
 def _module_docstring(script: Path) -> str:
