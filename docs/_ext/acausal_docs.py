@@ -30,8 +30,9 @@ from pathlib import Path
 
 import docutils.core
 from docutils import nodes
+from docutils.parsers.rst import Parser as RstParser
 from docutils.parsers.rst import directives
-from docutils.statemachine import StringList
+from docutils.utils import new_document
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
 
@@ -130,16 +131,20 @@ def table(header: list[str], rows: list[list[str]], widths: list[int]) -> nodes.
     return out
 
 
+def parse_rst(directive: SphinxDirective, text: str, source: str) -> list[nodes.Node]:
+    """A docstring ``readable`` as reStructuredText (the page itself may be Markdown)."""
+    document = new_document(source, directive.state.document.settings)
+    RstParser().parse(readable(text), document)
+    return document.children
+
+
 class ComponentTables(SphinxDirective):
     """The reference of every component of a module (see the module's docstring)."""
     required_arguments = 1
     option_spec = {"no-module-doc": directives.flag}
 
     def parse(self, text: str) -> list[nodes.Node]:
-        holder = nodes.container()
-        self.state.nested_parse(StringList(readable(text).splitlines(), self.arguments[0]),
-                                0, holder)
-        return holder.children
+        return parse_rst(self, text, self.arguments[0])
 
     def section(self, key: str, title: str) -> nodes.section:
         sec = nodes.section(ids=[nodes.make_id(key)], names=[nodes.fully_normalize_name(key)])
@@ -262,10 +267,7 @@ class Gallery(SphinxDirective):
                                 names=[script.name])
             sec += nodes.title(text=script.name)
             self.state.document.note_implicit_target(sec)
-            holder = nodes.container()
-            self.state.nested_parse(StringList(readable(doc).splitlines(), str(script)),
-                                    0, holder)
-            sec += holder.children
+            sec += parse_rst(self, doc, str(script.relative_to(ROOT)))
             sec += nodes.literal_block(text=f"python examples/{script.name}",
                                        language="console")
             sec += figures(self, script.stem)
