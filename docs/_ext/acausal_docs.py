@@ -13,8 +13,8 @@
     shows the figures of an earlier full build, if any).
 
 Docstrings are read as reStructuredText, with ``|x|`` an absolute value (not a substitution);
-one that is not valid reStructuredText (a hand-aligned table of arguments, say) is shown as
-it is written, as preformatted text, instead of failing the build (``readable``).
+a paragraph that is not valid reStructuredText (a hand-aligned table of arguments, say) is
+shown as it is written, as preformatted text, instead of failing the build (``readable``).
 """
 from __future__ import annotations
 
@@ -67,13 +67,30 @@ def valid_rst(text: str) -> bool:
                for p in problems)
 
 
+def chunks(text: str) -> list[str]:
+    """``text`` split at the blank lines followed by an unindented line (an indented block
+    stays with the paragraph that introduces it)."""
+    out, lines = [], text.splitlines()
+    start = 0
+    for i in range(1, len(lines)):
+        if not lines[i - 1].strip() and lines[i].strip() and not lines[i][0].isspace():
+            out.append("\n".join(lines[start:i]))
+            start = i
+    out.append("\n".join(lines[start:]))
+    return out
+
+
 def readable(text: str) -> str:
-    """``text`` as reStructuredText to parse: the docstring itself (bars escaped) if valid,
-    else a literal block of it, as written."""
-    escaped = escape_bars(text)
-    if valid_rst(escaped):
-        return escaped
-    return "::\n\n" + "\n".join("    " + line for line in text.splitlines()) + "\n"
+    """``text`` as reStructuredText to parse: each paragraph as written (bars escaped) where
+    it is valid, else as a literal block of it, shown as written."""
+    out = []
+    for chunk in chunks(text):
+        escaped = escape_bars(chunk)
+        if valid_rst(escaped):
+            out.append(escaped)
+        else:
+            out.append("::\n\n" + "\n".join("    " + line for line in chunk.splitlines()) + "\n")
+    return "\n".join(out)
 
 
 def description(cls) -> str:
@@ -299,7 +316,7 @@ def readable_docstring(app, what, name, obj, options, lines) -> None:
     text = "\n".join(lines)
     cut = min([text.find(f"\n{t}\n{'-' * len(t)}") for t in SECTIONS
                if f"\n{t}\n{'-' * len(t)}" in text] or [len(text)])
-    lines[:] = (readable(text[:cut]) + text[cut:]).split("\n")
+    lines[:] = (readable(text[:cut]).rstrip("\n") + "\n\n" + text[cut:].lstrip("\n")).split("\n")
 
 
 def setup(app):
