@@ -69,6 +69,8 @@ def test_docs_build_without_warnings(tmp_path):
     declared = Mass.parameters()["m"]
     for cell in ("m", "1", declared.unit, declared.description, "flange_a", "flange_b"):
         assert f"<p>{cell}</p>" in mass, f"Mass's table lacks {cell!r}"
+    differences = page[page.index('id="translational-differences"'):]
+    assert "HardStop" in differences and "Not an MSL class" in differences
     page = html.unescape((out / "components" / "multibody.html").read_text())
     revolute = page[page.index('id="joints-revolute"'):]
     assert "<p>useAxisFlange = True</p>" in revolute          # axis exists only with the option

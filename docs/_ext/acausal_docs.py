@@ -31,7 +31,6 @@ from pathlib import Path
 import docutils.core
 from docutils import nodes
 from docutils.parsers.rst import Parser as RstParser
-from docutils.parsers.rst import directives
 from docutils.utils import new_document
 from sphinx.util import logging
 from sphinx.util.docutils import SphinxDirective
@@ -158,7 +157,6 @@ def parse_rst(directive: SphinxDirective, text: str, source: str) -> list[nodes.
 class ComponentTables(SphinxDirective):
     """The reference of every component of a module (see the module's docstring)."""
     required_arguments = 1
-    option_spec = {"no-module-doc": directives.flag}
 
     def parse(self, text: str) -> list[nodes.Node]:
         return parse_rst(self, text, self.arguments[0])
@@ -174,13 +172,12 @@ class ComponentTables(SphinxDirective):
         module = importlib.import_module(name)
         self.env.note_dependency(inspect.getsourcefile(module))
         short = name.rsplit(".", 1)[-1]
-        out: list[nodes.Node] = []
-        if "no-module-doc" not in self.options:
-            out += self.parse(inspect.cleandoc(module.__doc__ or ""))
+        out: list[nodes.Node] = self.parse(inspect.cleandoc(module.__doc__ or ""))
         found = components(module)
         rows = [[n, summary(description(c))] for n, c in found]
         out.append(table(["component", "what it is"], rows, [20, 80]))
-        notes = []
+        notes = [(f"{short} (the module)", d)
+                 for d in differences(inspect.cleandoc(module.__doc__ or ""))]
         for cname, cls in found:
             sec = self.section(f"{short}-{cname}", cname)
             sec += nodes.paragraph("", "", nodes.literal(text=f"{name}.{cname}"))
