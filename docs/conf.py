@@ -15,7 +15,7 @@ copyright = "acausal contributors"
 extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax",
               "myst_parser", "acausal_docs"]
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
-exclude_patterns = ["_build", "_ext", "README.md"]
+exclude_patterns = ["_build", "_ext"]
 myst_enable_extensions = ["dollarmath", "colon_fence"]
 myst_heading_anchors = 3
 
@@ -31,4 +31,3 @@ html_theme = "furo"
 html_title = "acausal"
 html_static_path = ["_static"]
 html_css_files = ["acausal.css"]
-pygments_style = "sphinx"

@@ -18,6 +18,7 @@ shown as it is written, as preformatted text, instead of failing the build (``re
 """
 from __future__ import annotations
 
+import html
 import importlib
 import inspect
 import io
@@ -221,22 +222,24 @@ def example_scripts() -> list[Path]:
 
 def run_examples(app) -> None:
     """Run every example into ``<html output>/_gallery/<example>/`` (its working directory
-    and ``ACAUSAL_OUT``) unless ``ACAUSAL_DOCS_GALLERY=0``; an example already run since its
-    last change is not run again."""
+    and ``ACAUSAL_OUT``) unless ``ACAUSAL_DOCS_GALLERY=0``; an example already run since the
+    last change of it or of the package is not run again."""
     if os.environ.get("ACAUSAL_DOCS_GALLERY", "1") == "0" or app.builder.format != "html":
         return
     env = dict(os.environ, MPLBACKEND="Agg",
                PYTHONPATH=os.pathsep.join([str(ROOT / "src"), os.environ.get("PYTHONPATH", "")]))
+    package = max(p.stat().st_mtime for p in (ROOT / "src").rglob("*.py"))
     for script in example_scripts():
         out = Path(app.outdir) / GALLERY / script.stem
         stamp = out / ".done"
-        if stamp.exists() and stamp.stat().st_mtime > script.stat().st_mtime:
+        if stamp.exists() and stamp.stat().st_mtime > max(package, script.stat().st_mtime):
             continue
         out.mkdir(parents=True, exist_ok=True)
         t0 = time.perf_counter()
         run = subprocess.run([sys.executable, str(script)], cwd=out, capture_output=True,
                              text=True, env=dict(env, ACAUSAL_OUT=str(out)), timeout=1800)
-        (out / "output.txt").write_text(run.stdout + run.stderr)
+        printed = (run.stdout + run.stderr).replace(str(out), ".").replace(f"{ROOT}/", "")
+        (out / "output.txt").write_text(printed)
         if run.returncode:
             logger.warning(f"example {script.name} failed (exit {run.returncode}): "
                            f"{run.stderr.strip().splitlines()[-1:]}")
@@ -285,6 +288,11 @@ class Gallery(SphinxDirective):
             sec += nodes.literal_block(text=f"python examples/{script.name}",
                                        language="console")
             sec += figures(self, script.stem)
+            printed = Path(self.env.app.outdir) / GALLERY / script.stem / "output.txt"
+            if printed.exists():
+                sec += nodes.raw("", "<details><summary>what it printed</summary><pre>"
+                                     + html.escape(printed.read_text()) + "</pre></details>",
+                                 format="html")
             out.append(sec)
         return out
 
