@@ -14,6 +14,7 @@ from . import compiler
 from .compiler.loops import Mobility
 from .core.component import Model
 from .simulation import Result, initial_state, simulate
+from .simulation.stepper import Stepper
 
 
 class CompiledModel(compiler.CompiledModel):
@@ -23,6 +24,11 @@ class CompiledModel(compiler.CompiledModel):
     def simulate(self, t_final: float, **kwargs) -> Result:
         """Simulate; see ``acausal.simulation.simulate`` for the arguments."""
         return simulate(self, t_final, **kwargs)
+
+    def stepper(self, dt: float, **kwargs) -> Stepper:
+        """A simulation stepped by ``step(u)`` every ``dt`` [s] with the inputs held; see
+        ``acausal.simulation.stepper.Stepper`` for the arguments."""
+        return Stepper(self, dt, **kwargs)
 
     def recompiled(self, smooth: bool) -> "CompiledModel":
         """The Model this was compiled from, compiled again in smooth form or not (see
