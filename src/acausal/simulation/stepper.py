@@ -15,8 +15,8 @@ through a CasADi buffer (no conversion of arguments: a few microseconds per call
   restarted at every sample) then;
 - DAEs (closed loops, massless nodes; solver 'collocation', the default for them): CasADi's
   fixed-step Radau IIA collocation (order 5 in x) with ``substeps`` finite elements per
-  sample; 'cvodes' / 'idas': CasADi's variable-step integrators to the tolerances, restarted
-  at every sample (the slowest, the most robust);
+  sample (a Newton solve per call: milliseconds per step); 'cvodes' / 'idas' (not for closed
+  loops): CasADi's variable-step integrators to the tolerances, restarted at every sample;
 - models with state events or modes (friction, impacts, sampled blocks): every step runs
   the event engine of ``simulate()`` (``acausal.simulation.events``: crossings located,
   modes iterated, reinits applied) over the sample period, with the modes carried from step
@@ -126,6 +126,10 @@ class Stepper:
             raise SimulationError(f"model '{model.name}' has algebraic variables "
                                   f"({', '.join(model.z_names[:3])}, ...): step it with "
                                   f"solver='collocation' or 'idas'")
+        if solver == "idas" and model.has_loops:
+            raise SimulationError(f"model '{model.name}' has closed kinematic loops, whose "
+                                  f"restarts IDAS cannot initialize at every sample: step it "
+                                  f"with solver='collocation'")
         self.solver = solver
         self.substeps = int(substeps or (1 if solver == "dopri" else 4))
         if self.substeps < 1:
@@ -147,7 +151,7 @@ class Stepper:
             "outputs", [ca.vertcat(*[model.expression(n) for n in self.output_names])]),
             [self._t, self._x, self._z, self.u, self.p])
         self._integrator = None
-        self.reset(x0=x0, t0=t0)
+        self.reset(t0=t0)
 
     @property
     def t(self) -> float:
@@ -168,8 +172,8 @@ class Stepper:
         if u is not None:
             self._set_inputs(u)
         self._t[0] = float(t0)
-        self._x0 = dict(x0) if x0 is not None else self._x0
-        x, z = initial_state(model, self._x0, self.p, self.u, self.t, self._guess,
+        x0 = dict(x0) if x0 is not None else self._x0
+        x, z = initial_state(model, x0, self.p, self.u, self.t, self._guess,
                              initial_equations=True)
         self._x[:], self._z[:] = np.ravel(x), np.ravel(z)
         if model.has_loops:
@@ -281,9 +285,7 @@ class Stepper:
                                            "collocation_scheme": "radau",
                                            "interpolation_order": 3}
         else:
-            plugin, opts, loops = integrator_settings(model, self.solver, self.rtol, self.atol)
-            if loops:          # IDAS computes the consistent start derivatives itself
-                opts.pop("calc_ic", None)
+            plugin, opts, _ = integrator_settings(model, self.solver, self.rtol, self.atol)
         self._integrator = ca.integrator("step", plugin, dae, 0.0, [1.0], opts)
 
     def _dopri_over(self, h: float) -> None:
