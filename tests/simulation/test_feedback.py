@@ -136,15 +136,17 @@ class _InterruptAfter:
 
 
 def test_ctrl_c_in_simulate_returns_the_run_so_far(compiled, monkeypatch):
-    full = compiled.simulate(3.0, t=GRID, inputs={"F": 1.0}, progress=True)
+    full = compiled.simulate(3.0, t=GRID, inputs={"F": 1.0}, progress=True, rtol=1e-10,
+                             atol=1e-12)
     monkeypatch.setattr(simulate_module, "progress_bar", _InterruptAfter(1.0))
     with pytest.warns(UserWarning, match="interrupted"):
-        part = compiled.simulate(3.0, t=GRID, inputs={"F": 1.0}, progress=True)
+        part = compiled.simulate(3.0, t=GRID, inputs={"F": 1.0}, progress=True, rtol=1e-10,
+                                 atol=1e-12)
     n = part.t.size
     assert part.partial and 0.9 < part.t[-1] < 1.2
     np.testing.assert_allclose(part["mass.s"], full["mass.s"][:n], rtol=0, atol=1e-14)
     # the free mass under a constant force: s = F t² / (2 m)
-    np.testing.assert_allclose(full["mass.s"], GRID ** 2 / (2 * MASS), atol=1e-9)
+    np.testing.assert_allclose(full["mass.s"], GRID ** 2 / (2 * MASS), atol=1e-8)
 
 
 def test_progress_is_off_by_default(compiled, capfd):
