@@ -8,6 +8,8 @@ with ``progress=True``. Every caller takes ``progress`` as a flag, default off.
 """
 from __future__ import annotations
 
+import casadi as ca
+
 from ..errors import warn_user
 
 DELAY = 2.0         # s of work before a bar is shown
@@ -23,8 +25,10 @@ class _Silent:
         pass
 
 
-def progress_bar(total: float, description: str, progress: bool | None, unit: str = "s"):
-    """A progress bar over ``total`` (seconds of simulated time, runs, iterations: ``unit``)
+def progress_bar(total: float | None, description: str, progress: bool | None,
+                 unit: str = "s"):
+    """A progress bar over ``total`` (seconds of simulated time, runs, iterations: ``unit``;
+    None: a counter without an end)
     if ``progress`` is True (see the module docstring); ``update(n)`` advances it by n,
     ``close()`` ends it."""
     if not progress:
@@ -36,4 +40,35 @@ def progress_bar(total: float, description: str, progress: bool | None, unit: st
         return _Silent()
     return tqdm(total=total, desc=description, unit=unit, delay=DELAY, leave=False,
                 bar_format="{l_bar}{bar}| {n:.4g}/{total:.4g} {unit} [{elapsed}<{remaining}]"
-                if unit == "s" else None)
+                if unit == "s" and total else None)
+
+
+class IterationProgress(ca.Callback):
+    """An ``iteration_callback`` for a CasADi nlpsol with nx variables, ng constraints and np
+    parameters: advances ``bar`` (a ``progress_bar``, set before each solve) by one per
+    iteration and never stops the solver."""
+
+    def __init__(self, nx: int, ng: int, np_: int):
+        ca.Callback.__init__(self)
+        self.sizes = {"x": nx, "lam_x": nx, "g": ng, "lam_g": ng, "lam_p": np_, "f": 1}
+        self.bar = _Silent()
+        self.construct("iterations", {})
+
+    def get_n_in(self):
+        return ca.nlpsol_n_out()
+
+    def get_n_out(self):
+        return 1
+
+    def get_name_in(self, i):
+        return ca.nlpsol_out(i)
+
+    def get_name_out(self, i):
+        return "ret"
+
+    def get_sparsity_in(self, i):
+        return ca.Sparsity.dense(self.sizes.get(ca.nlpsol_out(i), 0), 1)
+
+    def eval(self, arg):
+        self.bar.update(1)
+        return [0]
