@@ -8,6 +8,10 @@ spread min..max of the 10 000-step loop):
 
 - stepper: ``compiled.stepper(1e-3, rtol=...)``, ``step({"F": F})`` per sample (Dormand–Prince
   substeps with error control, called through a CasADi buffer);
+- stepper (cvodes): the same with ``solver='cvodes'``: one CasADi CVODES integrator built
+  once (u, p, the step's start as its parameters) and called per sample. CVODES cannot carry
+  its state across calls of a CasADi Function: every call re-initializes it (order 1, a
+  fresh first step), which is what this line measures;
 - FMU: the native co-simulation FMU of the same model (``compiled.export_fmu(...,
   fmu_type='cs')``), driven from Python by fmpy's FMU2Slave: getReal of the states, setReal
   of F, doStep per sample (the FMU's RODAS4, which carries its step size from sample to
@@ -48,8 +52,8 @@ def controller(s, phi, v, w):
     return 20.0 * (1.0 - s) - 12.0 * v + 30.0 * phi + 5.0 * w
 
 
-def run_stepper(compiled, rtol):
-    st = compiled.stepper(DT, rtol=rtol, atol=rtol * 1e-2, outputs=STATES)
+def run_stepper(compiled, rtol, solver=None):
+    st = compiled.stepper(DT, rtol=rtol, atol=rtol * 1e-2, outputs=STATES, solver=solver)
     y = st.outputs()
     out = np.empty((STEPS, 4))
     t0 = time.perf_counter()
@@ -114,11 +118,13 @@ def main():
         unzipped = extract(str(path), str(Path(tmp) / "unzipped"))
         build_fmu = time.perf_counter() - t0
         ref = reference(compiled)
-        times = {"stepper": [], "FMU (fmpy)": []}
+        times = {"stepper": [], "FMU (fmpy)": [], "stepper (cvodes)": []}
         errors = {}
         for _ in range(args.repeat):                       # interleaved
             for name, run in (("stepper", lambda: run_stepper(compiled, args.rtol)),
-                              ("FMU (fmpy)", lambda: run_fmu(unzipped, md, args.rtol))):
+                              ("FMU (fmpy)", lambda: run_fmu(unzipped, md, args.rtol)),
+                              ("stepper (cvodes)",
+                               lambda: run_stepper(compiled, args.rtol, "cvodes"))):
                 dt, out = run()
                 times[name].append(dt)
                 errors[name] = float(np.max(np.abs(out - ref)))
@@ -126,11 +132,11 @@ def main():
           f"{args.repeat} interleaved repeats")
     print(f"set-up: stepper {build_stepper * 1e3:.1f} ms; FMU export + unzip "
           f"{build_fmu * 1e3:.0f} ms")
-    print(f"{'':>12s} | {'median [s]':>10s} | {'min..max [s]':>15s} | {'per step':>9s} | "
+    print(f"{'':>16s} | {'median [s]':>10s} | {'min..max [s]':>15s} | {'per step':>9s} | "
           f"{'max error':>9s}")
     for name, ts in times.items():
         med = float(np.median(ts))
-        print(f"{name:>12s} | {med:10.4f} | {min(ts):6.4f}..{max(ts):6.4f} | "
+        print(f"{name:>16s} | {med:10.4f} | {min(ts):6.4f}..{max(ts):6.4f} | "
               f"{med / STEPS * 1e6:6.1f} µs | {errors[name]:9.2e}")
     ratio = np.median(times["stepper"]) / np.median(times["FMU (fmpy)"])
     print(f"stepper / FMU: {ratio:.2f}× (target ≤ 1.5×)")

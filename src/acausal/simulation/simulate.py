@@ -60,8 +60,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              points of the grid to report (results equal to the tolerances).
 
     Ctrl-C (KeyboardInterrupt) between two restarts of the integrator (time events, the
-    progress points, sample instants of a sampled controller) ends the run there: the
-    Result holds the output times reached, ``Result.partial`` is True and a warning says so.
+    progress points, sample instants of a sampled controller; not in a model with state
+    events or modes) ends the run there: the Result holds the output times reached,
+    ``Result.partial`` is True and a warning says so.
 
     A model with state events or discrete modes (components' ``indicator``, ``mode``,
     ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
