@@ -232,7 +232,8 @@ T_TAB = np.linspace(0.0, 3.0, 121)
 def test_new_table_values_without_recompiling(smoothness):
     """The values of a compiled CombiTimeTable changed by params equal a model compiled with
     those values, and numpy's interpolation of them (the jump at t = 1 kept)."""
-    old = acausal.compile(_probe(sg.CombiTimeTable(table=ROWS, smoothness=smoothness)))
+    old = acausal.compile(_probe(sg.CombiTimeTable(table=ROWS, smoothness=smoothness,
+                                                   table_parameter=True)))
     new_tab = np.column_stack([ROWS[:, 0], NEW])
     fresh = acausal.compile(_probe(sg.CombiTimeTable(table=new_tab, smoothness=smoothness)))
     changed = old.simulate(3.0, t=T_TAB, params={"src.table": NEW}, **SIM)
@@ -249,7 +250,7 @@ def test_new_table_values_without_recompiling(smoothness):
 
 def test_new_time_table_values_follow_numpy():
     tab = [[0.0, 0.0], [1.0, 2.0], [2.5, -1.0]]
-    c = acausal.compile(_probe(sg.TimeTable(table=tab)))
+    c = acausal.compile(_probe(sg.TimeTable(table=tab, table_parameter=True)))
     assert [n for n in c.param_names if n.startswith("src.table")] == \
         ["src.table[1]", "src.table[2]", "src.table[3]"]
     res = c.simulate(2.5, t=T_TAB[T_TAB <= 2.5], params={"src.table": [1.0, -1.0, 3.0]}, **SIM)
@@ -257,3 +258,9 @@ def test_new_time_table_values_follow_numpy():
                                atol=1e-12)
     with pytest.raises(ParameterError, match="3 elements"):
         c.param_vector({"src.table": [1.0, 2.0]})
+    fixed = acausal.compile(_probe(sg.TimeTable(table=tab, shiftTime=0.5)))
+    assert not any(n.startswith("src.table") for n in fixed.param_names)
+    for src in (sg.TimeTable(table=tab, table_parameter=True, shiftTime=0.5),
+                sg.CombiTimeTable(table=ROWS, table_parameter=True)):
+        copy = pickle.loads(pickle.dumps(src))
+        assert type(copy) is type(src) and copy.table == src.table

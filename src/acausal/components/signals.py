@@ -280,14 +280,15 @@ def _table_values(tau, times: np.ndarray, values, smoothness: Smoothness,
                   extrapolation: Extrapolation) -> list:
     """The value columns of a table at table time ``tau``, one expression per column:
     ``times`` (structural: where the pieces and events are), ``values`` the rows without
-    their time, flattened row by row (numbers, or the symbols of the ``table`` parameter:
-    changeable without recompiling). Linear segments are CasADi linear interpolants with the
-    values as an argument (a binary search, not one branch per row), one per piece between
-    repeated times (a jump: the later row holds from that time on); constant segments give
-    the row at or before tau."""
-    n = times.size
-    m = _numel(values) // n
-    vals = ca.reshape(ca.SX(values) if not isinstance(values, ca.SX) else values, m, n).T
+    their time, flattened row by row: numbers (folded into the interpolants), or the
+    symbols of the ``table`` parameter (an argument of the interpolants, changeable without
+    recompiling; every evaluation then passes them). Linear segments are CasADi linear
+    interpolants (a binary search, not one branch per row), one per piece between repeated
+    times (a jump: the later row holds from that time on); constant segments give the row
+    at or before tau."""
+    n, symbolic = times.size, isinstance(values, ca.SX)
+    m = (values.numel() if symbolic else len(values)) // n
+    vals = ca.reshape(values, m, n).T if symbolic else ca.SX(np.reshape(values, (n, m)))
     if n == 1:
         return [vals[0, j] for j in range(m)]
     t_min, t_max = times[0], times[-1]
@@ -305,6 +306,9 @@ def _table_values(tau, times: np.ndarray, values, smoothness: Smoothness,
         def piece(a, b):
             if b - a == 1:                      # a last row of its own: held
                 return vals[a, :].T
+            if not symbolic:
+                return ca.interpolant("table", "linear", [times[a:b]],
+                                      np.ravel(np.reshape(values, (n, m))[a:b]))(tau)
             f = ca.interpolant("table", "linear", [times[a:b]], m)
             return f(tau, ca.vec(vals[a:b, :].T))
 
@@ -336,10 +340,6 @@ def _table_events(times: np.ndarray, smoothness: Smoothness, extrapolation: Extr
         rows = times[1:][times[1:] == times[:-1]]
     rows = set(map(float, rows)) | ({float(times[-1])} if periodic else set())
     return [(tk, period) for tk in sorted(rows)]
-
-
-def _numel(values) -> int:
-    return values.numel() if isinstance(values, ca.SX) else len(values)
 
 
 def _table_parameter(rows: int, columns: int) -> Parameter:
@@ -395,15 +395,17 @@ class TimeTable(SignalSource):
     first column.
 
     The table is a CasADi linear interpolant: the integrator restarts only at jumps
-    (repeated times), not at every row. Its values are the parameter ``table`` (the value
-    column, ``table[1]`` .. ``table[n]``): ``params={"<name>.table": values}`` changes them
-    without recompiling; its times (``times``) are fixed when the model is compiled (as
-    are the events at its jumps; offset, startTime, shiftTime and timeScale are parameters).
+    (repeated times), not at every row. It is fixed when the model is compiled (offset,
+    startTime, shiftTime and timeScale are parameters), unless ``table_parameter=True``:
+    its values are then the parameter ``table`` (``table[1]`` .. ``table[n]``), changed
+    without recompiling by ``params={"<name>.table": values}`` (its times, ``times``, and
+    so its events stay; every evaluation of the equations then passes the n values).
     """
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
     _classes: dict = {}
 
-    def __new__(cls, name=None, *, table=None, shiftTime=None, **params):
+    def __new__(cls, name=None, *, table=None, shiftTime=None, table_parameter=False,
+                **params):
         if cls is TimeTable:
             if name is not None and not isinstance(name, str):
                 raise ParameterError("TimeTable: give the table by keyword, "
@@ -413,7 +415,9 @@ class TimeTable(SignalSource):
                 raise ParameterError(f"TimeTable: table must have rows [time, value] (shape "
                                      f"(n, 2)), got shape {tab.shape}; CombiTimeTable takes "
                                      f"several columns")
-            cls = TimeTable._variant(tab.shape[0], shiftTime is not None)
+            shifted = shiftTime is not None
+            cls = TimeTable._variant(tab.shape[0], shifted) if table_parameter else (
+                _ShiftedTimeTable if shifted else TimeTable)
         return super().__new__(cls)
 
     @staticmethod
@@ -426,17 +430,24 @@ class TimeTable(SignalSource):
                 "__qualname__": "TimeTable", "table": _table_parameter(rows, 1)})
         return TimeTable._classes[key]
 
-    def __reduce_ex__(self, protocol):        # the class is made per table size: rebuild it
+    def __reduce_ex__(self, protocol):
+        if "table" not in self.parameters():
+            return super().__reduce_ex__(protocol)
+        # the class is made per table size: rebuild it so
         return _new_table, (TimeTable, len(self.times), isinstance(self, _ShiftedTimeTable)), \
             self.__dict__
 
-    def __init__(self, name: str | None = None, *, table=None, shiftTime=None, **params):
+    def __init__(self, name: str | None = None, *, table=None, shiftTime=None,
+                 table_parameter: bool = False, **params):
         if shiftTime is not None:
             params["shiftTime"] = shiftTime
         tab = _check_table(table, "TimeTable", first_at_zero=True)
-        params["table"] = tuple(tab[:, 1])
+        if table_parameter:
+            params["table"] = tuple(tab[:, 1])
         super().__init__(name, **params)
         self.__dict__["times"] = tab[:, 0]
+        if not table_parameter:
+            self.__dict__["table"] = tuple(tab[:, 1])
 
     def _shift(self):
         return self.startTime
@@ -469,10 +480,10 @@ class CombiTimeTable(Component):
     """Table look-up in time with several output columns (MSL Sources.CombiTimeTable).
 
     Constructor arguments (fixed when the model is compiled): ``table`` (rows [time, values
-    ...], times non-decreasing; a time given twice is a jump; its values, the selected
-    columns without the time, are the parameter ``table``, row by row: ``params={
-    "<name>.table": values}`` of shape (rows, nout) changes them without recompiling, the
-    times stay), ``columns`` (the table
+    ...], times non-decreasing; a time given twice is a jump; with ``table_parameter=True``
+    its values, the selected columns without the time, are the parameter ``table``, row by
+    row: ``params={"<name>.table": values}`` of shape (rows, nout) changes them without
+    recompiling, the times stay), ``columns`` (the table
     columns to output, numbered from 1 as in Modelica, time being column 1; default
     2..ncols), the options ``smoothness`` (LinearSegments, ConstantSegments: the row at or
     before the time), ``extrapolation`` (HoldLastPoint, LastTwoPoints, Periodic,
@@ -501,29 +512,33 @@ class CombiTimeTable(Component):
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
     _classes: dict = {}
 
-    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None, **params):
+    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None,
+                table_parameter=False, **params):
         if cls is CombiTimeTable:
             tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
             cls = CombiTimeTable._variant(len(_columns(tab, columns)), shiftTime is not None,
-                                          tab.shape[0])
+                                          tab.shape[0] if table_parameter else 0)
         return super().__new__(cls)
 
     @staticmethod
     def _variant(nout: int, shifted: bool, rows: int) -> type:
+        """The class for nout outputs, a shiftTime parameter or not, and a ``table``
+        parameter of ``rows`` rows (0: none)."""
         key = (nout, shifted, rows)
         if key not in CombiTimeTable._classes:
             attrs = {"__doc__": CombiTimeTable.__doc__, "__module__": __name__,
                      "__qualname__": "CombiTimeTable", "_nout": nout,
                      "offset": Parameter((0.0,) * nout, "", "offsets of output signals"),
-                     "y": VectorPort(RealOutput, nout, "connector of Real output signals"),
-                     "table": _table_parameter(rows, nout)}
+                     "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+            if rows:
+                attrs["table"] = _table_parameter(rows, nout)
             if shifted:
                 attrs["shiftTime"] = Parameter(0.0, "s", "shift time of first table column")
             CombiTimeTable._classes[key] = type("CombiTimeTable", (CombiTimeTable,), attrs)
         return CombiTimeTable._classes[key]
 
     def __init__(self, name: str | None = None, *, table=None, columns=None, shiftTime=None,
-                 offset=0.0, **params):
+                 offset=0.0, table_parameter: bool = False, **params):
         if name is not None and not isinstance(name, str):
             raise ParameterError("CombiTimeTable: give the table by keyword, "
                                  "CombiTimeTable(table=...)")
@@ -536,12 +551,15 @@ class CombiTimeTable(Component):
         params["offset"] = tuple(offsets) * (self._nout // offsets.size)
         tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
         tab = tab[:, [0] + [c - 1 for c in _columns(tab, columns)]]
-        params["table"] = tuple(tab[:, 1:].ravel())
+        if table_parameter:
+            params["table"] = tuple(tab[:, 1:].ravel())
         super().__init__(name, **params)
         if self.smoothness not in (Smoothness.LinearSegments, Smoothness.ConstantSegments):
             raise ParameterError(f"{who(self)}: smoothness={self.smoothness.value} (a spline) "
                                  f"is not available; use LinearSegments or ConstantSegments")
         self.__dict__["times"] = tab[:, 0]
+        if not table_parameter:
+            self.__dict__["table"] = tuple(tab[:, 1:].ravel())
 
     @property
     def nout(self) -> int:
@@ -549,7 +567,8 @@ class CombiTimeTable(Component):
 
     def __reduce_ex__(self, protocol):          # the class is made per nout: rebuild it so
         return _new_table, (CombiTimeTable, self._nout, "shiftTime" in self.parameters(),
-                            len(self.times)), self.__dict__
+                            len(self.times) if "table" in self.parameters() else 0), \
+            self.__dict__
 
     def physics(self, e):
         t = e.time
