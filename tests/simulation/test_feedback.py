@@ -154,3 +154,19 @@ def test_progress_is_off_by_default(compiled, capfd):
         warnings.simplefilter("error")
         compiled.simulate(1.0, inputs={"F": 1.0})
     assert capfd.readouterr().err == ""
+
+
+def test_ctrl_c_between_state_events_returns_the_run_so_far(monkeypatch):
+    from acausal.models.bouncing_ball import BouncingBall
+    e, g, h = 0.8, 9.81, 1.0
+    model = acausal.compile(BouncingBall(e=e, g=g))
+    full = model.simulate(2.0, x0={"ball.s": h}, rtol=1e-10, atol=1e-12)
+    monkeypatch.setattr(simulate_module, "progress_bar", _InterruptAfter(1.0))
+    with pytest.warns(UserWarning, match="interrupted"):
+        part = model.simulate(2.0, x0={"ball.s": h}, rtol=1e-10, atol=1e-12, progress=True)
+    n = part.t.size
+    hit = np.sqrt(2 * h / g)                    # the first impact, by the closed form
+    assert part.partial and n < full.t.size and part.t[-1] >= hit - 1e-9
+    np.testing.assert_array_equal(part.t, full.t[:n])
+    np.testing.assert_allclose(part["ball.s"], full["ball.s"][:n], rtol=0, atol=1e-14)
+    assert part.events[0].time == pytest.approx(hit, abs=1e-9)

@@ -238,6 +238,8 @@ class EventSimulation(ModeIteration):
         self.terminated: Termination | None = None
         self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
         self.log: list[Event] = []
+        self.cols: list = []                  # the columns of ``run`` so far
+        self.reached = lambda t: None         # called with the time integrated to
 
     def _integrators(self, alg):
         """(the DAE with algebraic equations ``alg``, the integrator over a normalized
@@ -495,7 +497,7 @@ class EventSimulation(ModeIteration):
         d = self.p[self.model.mode_params]
         self.ticks = self._clock_instants(t, float(grid[-1]))
         x, z, d = self.event(t, x, z, d, {})
-        cols = [(t, x, z, d)]
+        self.cols = cols = [(t, x, z, d)]
         sides = side(self.indicators(t, x, z, d), np.ones(len(self.names)))
         recent = deque(maxlen=CHATTER_EVENTS)
         span = CHATTER_SPAN * (grid[-1] - grid[0])
@@ -507,6 +509,7 @@ class EventSimulation(ModeIteration):
             while t < end:
                 times, output = _checks(grid, t, end, window)
                 X, Z = self.integrate(t, times, x, z, d)
+                self.reached(times[-1])
                 i, after = self._first_event(self.indicators_along(times, X, Z, d), sides)
                 if i is None and times[-1] != end and window < MAX_WINDOW:
                     window *= 2         # again from t, further (no restart mid-way)

@@ -30,9 +30,9 @@ from typing import Callable, Sequence
 import casadi as ca
 import numpy as np
 
-from ..errors import SimulationError, warn_user
+from ..errors import SimulationError
 from .inputs import input_signal
-from .progress import progress_bar
+from .progress import progress_bar, warn_interrupted
 from .result import Result
 from .stepper import Stepper
 
@@ -225,8 +225,7 @@ def _sampled(model, held, subs, sampled, grid, *, params, x0, guess, rtol, atol,
         partial = False
     except KeyboardInterrupt:
         partial = True
-        warn_user(f"simulation of '{model.name}' interrupted at t = {st.t:g} s: the Result "
-                  f"holds the {len(cols)} output times up to there (Result.partial)")
+        warn_interrupted(model.name, cols[-1][0] if cols else st.t)
     finally:
         bar.close()
     if not cols:

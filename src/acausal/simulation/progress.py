@@ -1,4 +1,5 @@
-"""Progress bars on long work (a simulation, a sweep, an optimization's iterations).
+"""Progress bars on long work (a simulation, a sweep, an optimization's iterations), and
+the warning of a run interrupted by Ctrl-C.
 
 ``progress_bar(total, description, progress)`` is a ``tqdm`` bar (the optional dependency
 of the 'progress' extra) when ``progress`` is True, and an object that does nothing
@@ -41,6 +42,25 @@ def progress_bar(total: float | None, description: str, progress: bool | None,
     return tqdm(total=total, desc=description, unit=unit, delay=DELAY, leave=False,
                 bar_format="{l_bar}{bar}| {n:.4g}/{total:.4g} {unit} [{elapsed}<{remaining}]"
                 if unit == "s" and total else None)
+
+
+def time_reporter(bar, t0: float):
+    """A callable of the time integrated to that advances ``bar`` (over simulated time from
+    t0) to it."""
+    done = [t0]
+
+    def reached(t: float) -> None:
+        if t > done[0]:
+            bar.update(t - done[0])
+            done[0] = t
+    return reached
+
+
+def warn_interrupted(name: str, t: float) -> None:
+    """The warning of a simulation of ``name`` interrupted (Ctrl-C), its Result kept up to
+    t [s]."""
+    warn_user(f"simulation of '{name}' interrupted: the Result holds the output times up to "
+              f"t = {t:g} s (Result.partial is True)")
 
 
 class IterationProgress(ca.Callback):

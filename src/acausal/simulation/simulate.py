@@ -6,14 +6,14 @@ from contextlib import nullcontext
 import casadi as ca
 import numpy as np
 
-from ..errors import SimulationError, warn_user
+from ..errors import SimulationError
 from ..numerics import just_before
 from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
 from .inputs import input_signal
 from .result import Result
-from .progress import progress_bar
+from .progress import progress_bar, time_reporter, warn_interrupted
 from .stiffness import adams_step_budget, is_stiff, spectral_radius
 
 SOLVERS = ("cvodes", "adams", "idas", "rk", "collocation")
@@ -59,9 +59,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              shown once the run takes more than 2 s: the integrator then restarts at 100
              points of the grid to report (results equal to the tolerances).
 
-    Ctrl-C (KeyboardInterrupt) between two restarts of the integrator (time events, the
-    progress points, sample instants of a sampled controller; not in a model with state
-    events or modes) ends the run there: the Result holds the output times reached,
+    Ctrl-C (KeyboardInterrupt) between two calls of the integrator (time events, the
+    progress points, sample instants of a sampled controller, the windows between state
+    events) ends the run there: the Result holds the output times reached,
     ``Result.partial`` is True and a warning says so.
 
     A model with state events or discrete modes (components' ``indicator``, ``mode``,
@@ -201,7 +201,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     interrupted = []
     if model.has_events:
         return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
-                            signals, solver, mobility)
+                            signals, solver, mobility, progress)
     retry = plugin == "idas" and "suppress_algebraic" not in opts
     try:
         with quiet_stderr() if retry else nullcontext():
@@ -221,8 +221,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         X, Z = integrate(plugin, opts)
     if interrupted:
         grid = grid[:X.shape[1]]
-        warn_user(f"simulation of '{model.name}' interrupted: the Result holds the output times "
-                  f"up to t = {grid[-1]:g} s (Result.partial)")
+        warn_interrupted(model.name, grid[-1])
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
     res = Result(model, grid, X, Z, U, p)
@@ -233,18 +232,29 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
 
 
 def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, signals,
-                 solver, mobility) -> Result:
+                 solver, mobility, progress) -> Result:
     """simulate() of a model with state events or modes (``events``)."""
     time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
         e for s in signals for e in s.events if grid[0] < e < grid[-1]))
     run = EventSimulation(model, ode, alg, p, u_expr, scale, plugin, opts)
-    T, X, Z, D = run.run(grid, np.asarray(xs, dtype=float).ravel(),
-                         np.asarray(zs, dtype=float).ravel(), time_events)
+    bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+    run.reached = time_reporter(bar, grid[0])
+    try:
+        T, X, Z, D = run.run(grid, np.asarray(xs, dtype=float).ravel(),
+                             np.asarray(zs, dtype=float).ravel(), time_events)
+        partial = False
+    except KeyboardInterrupt:
+        T, X, Z, D = run._columns(run.cols)
+        partial = True
+        warn_interrupted(model.name, T[-1])
+    finally:
+        bar.close()
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(T.size)(T.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, T.size))
     P = np.tile(p.reshape(-1, 1), (1, T.size))
     P[model.mode_params] = D
     res = Result(model, T, X, Z, U, P)
+    res.partial = partial
     res.events = run.log
     res.terminated = run.terminated
     res.mobility = mobility
