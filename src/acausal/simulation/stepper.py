@@ -19,8 +19,9 @@ through a CasADi buffer (no conversion of arguments: a few microseconds per call
   loops): CasADi's variable-step integrators to the tolerances, restarted at every sample;
 - models with state events or modes (friction, impacts, sampled blocks): every step runs
   the event engine of ``simulate()`` (``acausal.simulation.events``: crossings located,
-  modes iterated, reinits applied) over the sample period, with the modes carried from step
-  to step (slower: its integrators are built per step); ``events`` is the log.
+  modes iterated, reinits applied) over the sample period, its indicators checked
+  ``EVENT_CHECKS`` times per step, the modes carried from step to step (milliseconds per
+  step: its integrators are built per step); ``events`` is the log.
 """
 from __future__ import annotations
 
@@ -37,6 +38,8 @@ from .simulate import integrator_settings, scaled
 
 SOLVERS = ("dopri", "collocation", "cvodes", "idas")
 MAX_SUBSTEPS = 2 ** 16      # a sample period split further than this: the model is stiff
+EVENT_CHECKS = 16           # indicator checks per step of a model with events (two
+#                             crossings closer than dt / EVENT_CHECKS are not seen)
 
 # Dormand–Prince 5(4): nodes, stages, 5th-order weights (taken), 4th-order weights (error)
 _C = (0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0)
@@ -346,6 +349,7 @@ class Stepper:
         ode, alg = scaled(model, ode, alg, self.scale)
         run = EventSimulation(model, ode, alg, self.p, ca.SX(ca.DM(self.u)), self.scale,
                               plugin, opts)
+        run.checks_per_run = EVENT_CHECKS
         grid = np.array([self.t, self.t + h])
         T, X, Z, D = run.run(grid, self._x, self._z, model.event_times(self.p, *grid))
         self._x[:], self._z[:] = X[:, -1], Z[:, -1]
