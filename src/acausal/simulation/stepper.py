@@ -235,12 +235,7 @@ class Stepper:
 
     def advance(self, h: float) -> None:
         """Integrate over [t, t + h] with the held inputs (``step`` without outputs)."""
-        if self.model.has_events:
-            self._events_over(h)
-        elif self.solver == "dopri":
-            self._dopri_over(h)
-        else:
-            self._integrate_over(h)
+        self._over(h)
         self._t[0] += h
 
     def outputs(self) -> dict[str, float]:
@@ -249,7 +244,7 @@ class Stepper:
         return dict(zip(self.output_names, self._outputs.res[0].tolist()))
 
     def _set_inputs(self, u) -> None:
-        if isinstance(u, Mapping):
+        if type(u) is dict or isinstance(u, Mapping):
             for n, v in u.items():
                 i = self._input_index.get(n)
                 if i is None:
@@ -269,8 +264,10 @@ class Stepper:
         """The integrator for the present parameters."""
         model = self.model
         if model.has_events:
+            self._over = self._events_over
             return
         if self.solver == "dopri":
+            self._over = self._dopri_over
             self._work = np.zeros((3, 1))            # the substep's start time, length
             self._integrator = _Buffered(dopri_step(model, self.p), [
                 self._x.copy(), self.u, self._work[0], self._work[1],
@@ -290,6 +287,7 @@ class Stepper:
         else:
             plugin, opts, _ = integrator_settings(model, self.solver, self.rtol, self.atol)
         self._integrator = ca.integrator("step", plugin, dae, 0.0, [1.0], opts)
+        self._over = self._integrate_over
 
     def _dopri_over(self, h: float) -> None:
         """Dormand–Prince substeps over [t, t + h], as many as the error needs."""
