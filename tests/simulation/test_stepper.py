@@ -130,3 +130,21 @@ def test_wrong_inputs_are_refused(compiled):
         st.step([1.0, 2.0])
     with pytest.raises(SimulationError, match="dt must be"):
         compiled.stepper(-1.0)
+
+
+def test_models_without_states():
+    """Signals only (2 sin(2πt), the closed form) and an algebraic circuit (simulate())."""
+    from acausal.components import signals as sg
+    from acausal.models.circuits import ResistorExample
+    m = acausal.Model("sig")
+    m.s, m.g = sg.Sine(amplitude=1.0, f=1.0), sg.Gain(k=2.0)
+    m.connect(m.s.y, m.g.u)
+    st = acausal.compile(m).stepper(0.1, outputs=["g.y"])
+    np.testing.assert_allclose([st.step()["g.y"] for _ in range(5)],
+                               2 * np.sin(2 * np.pi * 0.1 * np.arange(1, 6)), atol=1e-12)
+    circuit = acausal.compile(ResistorExample())
+    st = circuit.stepper(0.01, outputs=circuit.z_names)
+    got = [list(st.step().values()) for _ in range(10)]
+    res = circuit.simulate(0.1, t=np.linspace(0.0, 0.1, 11))
+    np.testing.assert_allclose(got, np.column_stack([res[n][1:] for n in circuit.z_names]),
+                               rtol=1e-10)

@@ -71,7 +71,7 @@ def dopri_step(model, p: np.ndarray) -> ca.Function:
                   ca.SX.zeros(x.numel()))
     weight = tol_abs + rtol * ca.fmax(ca.fabs(x), ca.fabs(x5))
     return ca.Function("dopri_step", [x, u, t, h, tol_abs, rtol],
-                       [x5, ca.mmax(ca.fabs(err) / weight)],
+                       [x5, ca.mmax(ca.vertcat(0, ca.fabs(err) / weight))],
                        ["x", "u", "t", "h", "tol_abs", "rtol"], ["xf", "err"])
 
 
@@ -266,6 +266,12 @@ class Stepper:
         if model.has_events:
             self._over = self._events_over
             return
+        if not self._x.size and self.has_alg:    # algebraic only: Newton at each step's end
+            self._integrator = ca.rootfinder("step", "newton", {
+                "x": model.z, "p": ca.vertcat(model.t, model.u, model.p), "g": model.alg},
+                {"abstol": 1e-14, "max_iter": 100, "error_on_fail": True})
+            self._over = self._algebraic_over
+            return
         if self.solver == "dopri":
             self._over = self._dopri_over
             self._work = np.zeros((3, 1))            # the substep's start time, length
@@ -319,6 +325,16 @@ class Stepper:
             n //= 2
         self.substeps = n
         self._x[:] = x
+
+    def _algebraic_over(self, h: float) -> None:
+        """The algebraic variables at t + h, by Newton's method from those at t."""
+        try:
+            z = self._integrator(self._z, np.concatenate([[self.t + h], self.u, self.p]))
+        except RuntimeError:
+            raise SimulationError(f"the algebraic equations of '{self.model.name}' have no "
+                                  f"solution near the previous one at t = {self.t + h:g} s: "
+                                  f"check the inputs and parameters") from None
+        self._z[:] = np.array(z, dtype=float).ravel()
 
     def _integrate_over(self, h: float) -> None:
         """One call of the CasADi integrator over [t, t + h]."""
