@@ -4,7 +4,7 @@ controller, given as inputs.
 - continuous: ``inputs={"F": lambda t, y: ...}`` — a callable of time and the model's
   variables by name (its Outputs and states by default), written with arithmetic and numpy
   ufuncs, so it accepts CasADi symbols: it enters the equations exactly (no sampling);
-- sampled: ``Feedback(fn, period=0.05)`` — any Python code (here an ``if`` and a
+- sampled: ``Controller(fn, period=0.05)`` — any Python code (here an ``if`` and a
   saturation), called once every 50 ms with the states there, its force held in between (a
   digital controller with a zero-order hold); the plant is integrated exactly between the
   samples.
@@ -21,7 +21,7 @@ import numpy as np
 
 import acausal
 from acausal.models.crane import GantryCrane
-from acausal.simulation import Feedback
+from acausal.simulation import Controller
 
 TARGET, F_MAX = 2.0, 15.0          # m, N
 
@@ -41,7 +41,7 @@ def main():
     compiled = acausal.compile(GantryCrane())
     t = np.linspace(0.0, 15.0, 751)
     cont = compiled.simulate(15.0, t=t, inputs={"F": lambda t, y: pd(y)})
-    samp = compiled.simulate(15.0, t=t, inputs={"F": Feedback(digital, period=0.05)})
+    samp = compiled.simulate(15.0, t=t, inputs={"F": Controller(digital, period=0.05)})
     for name, res in (("continuous", cont), ("sampled 20 Hz", samp)):
         print(f"{name:>14s}: cart at {res.final('rail.s'):.4f} m, largest sway "
               f"{np.degrees(np.abs(res['hinge.phi']).max()):.2f} deg, largest force "

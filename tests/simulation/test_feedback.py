@@ -12,7 +12,7 @@ from scipy.linalg import expm
 import acausal
 from acausal.components.translational import Force, Mass
 from acausal.errors import SimulationError
-from acausal.simulation import Feedback
+from acausal.simulation import Controller
 
 simulate_module = importlib.import_module("acausal.simulation.simulate")
 
@@ -47,7 +47,7 @@ def continuous_loop(t, x0):
 def test_casadi_function_controller_equals_the_closed_loop(compiled):
     y = ca.SX.sym("y", 2)
     ctrl = ca.Function("pd", [ca.SX.sym("t"), y], [pd(y[0], y[1])])
-    res = compiled.simulate(3.0, t=GRID, inputs={"F": Feedback(ctrl, of=["mass.s", "mass.v"])},
+    res = compiled.simulate(3.0, t=GRID, inputs={"F": Controller(ctrl, of=["mass.s", "mass.v"])},
                             rtol=1e-10, atol=1e-12)
     exact = continuous_loop(GRID, [0.0, 0.0])
     np.testing.assert_allclose(res["mass.s"], exact[:, 0], atol=1e-8)
@@ -93,7 +93,7 @@ def test_sampled_controller_equals_the_exact_discretization(compiled):
     def ctrl(t, y):
         calls.append(t)
         return pd(y["mass.s"], y["mass.v"])
-    res = compiled.simulate(3.0, t=GRID, inputs={"F": Feedback(ctrl, period=0.2)},
+    res = compiled.simulate(3.0, t=GRID, inputs={"F": Controller(ctrl, period=0.2)},
                             rtol=1e-11, atol=1e-13)
     np.testing.assert_allclose(res["mass.s"], sampled_loop(0.2, GRID, [0.0, 0.0])[:, 0],
                                atol=1e-9)
@@ -105,10 +105,10 @@ def test_ctrl_c_in_a_sampled_run_returns_the_run_so_far(compiled):
         if t > 1.0:
             raise KeyboardInterrupt
         return pd(y["mass.s"], y["mass.v"])
-    full = compiled.simulate(3.0, t=GRID, inputs={"F": Feedback(
+    full = compiled.simulate(3.0, t=GRID, inputs={"F": Controller(
         lambda t, y: pd(y["mass.s"], y["mass.v"]), period=0.2)})
     with pytest.warns(UserWarning, match="interrupted"):
-        part = compiled.simulate(3.0, t=GRID, inputs={"F": Feedback(ctrl, period=0.2)})
+        part = compiled.simulate(3.0, t=GRID, inputs={"F": Controller(ctrl, period=0.2)})
     assert part.partial and not full.partial
     n = part.t.size
     assert 1.0 <= part.t[-1] < 1.2 + 1e-9

@@ -5,8 +5,8 @@ from .initialization import initial_state
 from .result import Event, Result
 from .inputs import Samples, input_signal
 from .simulate import simulate
-from .feedback import Feedback
+from .feedback import Controller
 from .stepper import Stepper
 
-__all__ = ["simulate", "Result", "Event", "Samples", "initial_state", "input_signal", "Feedback",
-           "Stepper"]
+__all__ = ["simulate", "Result", "Event", "Samples", "initial_state", "input_signal",
+           "Controller", "Stepper"]

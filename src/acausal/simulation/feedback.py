@@ -2,7 +2,7 @@
 
 ``simulate(..., inputs={"F": controller})`` where the controller is
 
-- a ``Feedback(fn, of=names, period=None)``;
+- a ``Controller(fn, of=names, period=None)``;
 - a CasADi Function of (t, y) — y the vector of the variables named in ``of`` (default: the
   model's Outputs, then its states, in ``output_names`` + ``x_names`` order) — or a Python
   callable of two arguments (t, y), y a dict of those variables by name. (A callable of one
@@ -38,7 +38,7 @@ from .stepper import Stepper
 
 
 @dataclass(frozen=True)
-class Feedback:
+class Controller:
     """A controller of one input: ``fn(t, y)`` (see the module docstring), ``of`` the dotted
     names of the variables in y (default: the model's Outputs, then its states), ``period``
     [s] for a sampled controller (None: continuous)."""
@@ -47,14 +47,14 @@ class Feedback:
     period: float | None = None
 
 
-def feedback_inputs(inputs: dict | None) -> dict[str, Feedback]:
+def feedback_inputs(inputs: dict | None) -> dict[str, Controller]:
     """The inputs given as controllers, by input name."""
     out = {}
     for name, value in (inputs or {}).items():
-        if isinstance(value, Feedback):
+        if isinstance(value, Controller):
             out[name] = value
         elif isinstance(value, ca.Function) or (callable(value) and _arguments(value) == 2):
-            out[name] = Feedback(value)
+            out[name] = Controller(value)
     return out
 
 
@@ -86,7 +86,7 @@ def simulate_feedback(simulate, model, t_final, grid, inputs, feedback, *, param
     if continuous and model.has_events:
         raise SimulationError(f"model '{model.name}' has events: a continuous controller of "
                               f"{sorted(continuous)} cannot enter its event functions; give "
-                              f"it a period (Feedback(fn, period=...))")
+                              f"it a period (Controller(fn, period=...))")
     others = {n: v for n, v in inputs.items() if n not in feedback}
     if not sampled:
         closed = _closed(model, continuous)
@@ -109,14 +109,14 @@ def simulate_feedback(simulate, model, t_final, grid, inputs, feedback, *, param
                     solver=kwargs.get("solver"))
 
 
-def _names(model, fb: Feedback) -> list[str]:
+def _names(model, fb: Controller) -> list[str]:
     names = list(fb.of) if fb.of is not None else model.output_names + model.x_names
     for n in names:
         model.locate(n)
     return names
 
 
-def _expression(model, name, fb: Feedback) -> ca.SX:
+def _expression(model, name, fb: Controller) -> ca.SX:
     """The continuous controller's output as an expression in (t, x, z, u, p)."""
     names = _names(model, fb)
     y = [model.expression(n) for n in names]
@@ -132,7 +132,7 @@ def _expression(model, name, fb: Feedback) -> ca.SX:
         raise SimulationError(
             f"input '{name}': the controller does not accept CasADi symbols ({e}), so it "
             f"cannot enter the equations; write it with casadi operations (casadi.if_else, "
-            f"numpy ufuncs) or sample it: Feedback(fn, period=...)") from None
+            f"numpy ufuncs) or sample it: Controller(fn, period=...)") from None
     if out.numel() != 1:
         raise SimulationError(f"input '{name}': the controller returns {out.numel()} values; "
                               f"one is needed")
@@ -238,7 +238,7 @@ def _sampled(model, held, subs, sampled, grid, *, params, x0, guess, rtol, atol,
     return _on_model(model, held, res, subs)
 
 
-def _call(fb: Feedback, name: str, t: float, y: dict) -> float:
+def _call(fb: Controller, name: str, t: float, y: dict) -> float:
     """The sampled controller's value at t from the values y of the variables it reads."""
     if isinstance(fb.fn, ca.Function):
         out = np.array(fb.fn(t, list(y.values())), dtype=float).ravel()

@@ -32,7 +32,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     inputs   per input name: a number, a callable of time, ``Samples(times, values,
              interpolation='linear' | 'hold')``, (times, values) or values on t (see
              ``acausal.simulation.inputs``), or a controller: a CasADi Function or callable
-             of (t, y), a ``Feedback(fn, of=..., period=...)``, continuous or sampled
+             of (t, y), a ``Controller(fn, of=..., period=...)``, continuous or sampled
              (``acausal.simulation.feedback``);
     x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``),
              held exactly, as the components' initial equations (``PhysicsBuilder.initial``)
