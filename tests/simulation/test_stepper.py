@@ -148,3 +148,12 @@ def test_models_without_states():
     res = circuit.simulate(0.1, t=np.linspace(0.0, 0.1, 11))
     np.testing.assert_allclose(got, np.column_stack([res[n][1:] for n in circuit.z_names]),
                                rtol=1e-10)
+
+
+def test_reset_starts_the_modes_again():
+    """After an impact and a reset, the ball falls and bounces as the first time."""
+    from acausal.models.bouncing_ball import BouncingBall
+    st = acausal.compile(BouncingBall()).stepper(0.1, x0={"ball.s": 1.0}, outputs=["ball.s"])
+    first = [st.step()["ball.s"] for _ in range(8)]
+    st.reset()
+    assert [st.step()["ball.s"] for _ in range(8)] == first and len(st.events) == 1

@@ -149,11 +149,12 @@ class Stepper:
         # buffers of the Functions read them
         self._x, self._z = np.zeros(model.x.numel()), np.zeros(model.z.numel())
         self.u, self._t = np.zeros(model.u.numel()), np.zeros(1)
-        self.p = model.param_vector(params)
+        self._params = dict(params or {})
+        self.p = model.param_vector(self._params)
         self._outputs = _Buffered(model.function(
             "outputs", [ca.vertcat(*[model.expression(n) for n in self.output_names])]),
             [self._t, self._x, self._z, self.u, self.p])
-        self._integrator = None
+        self._integrator, self._built_for = None, None
         self.reset(t0=t0)
 
     @property
@@ -165,11 +166,13 @@ class Stepper:
     def reset(self, x0: dict | None = None, t0: float = 0.0, params: dict | None = None,
               u: Mapping[str, float] | Sequence[float] | None = None) -> dict:
         """Start again at t0 [s] from x0 (default: the x0 given when made), with new
-        parameter overrides if ``params`` is given, and inputs ``u`` (default: their start
-        values); returns the outputs there."""
+        parameter overrides if ``params`` is given (kept for later resets; default: the
+        last ones), and inputs ``u`` (default: their start values); returns the outputs
+        there."""
         model = self.model
         if params is not None:
-            self.p[:] = model.param_vector(params)
+            self._params = dict(params)
+        self.p[:] = model.param_vector(self._params)      # (modes and loop rows: at start)
         self.scale = model.nominals(self.p)
         self.u[:] = np.array(model.input_start, dtype=float).ravel()
         if u is not None:
@@ -261,7 +264,10 @@ class Stepper:
         self.u[:] = values
 
     def _build(self) -> None:
-        """The integrator for the present parameters."""
+        """The integrator for the present parameters (kept while they are the same)."""
+        if self._built_for == self.p.tobytes():
+            return
+        self._built_for = self.p.tobytes()
         model = self.model
         if model.has_events:
             self._over = self._events_over
@@ -274,9 +280,8 @@ class Stepper:
             return
         if self.solver == "dopri":
             self._over = self._dopri_over
-            self._work = np.zeros((3, 1))            # the substep's start time, length
             self._integrator = _Buffered(dopri_step(model, self.p), [
-                self._x.copy(), self.u, self._work[0], self._work[1],
+                self._x.copy(), self.u, np.zeros(1), np.zeros(1),         # x, u, t, h
                 self.atol * self.scale[:self._x.size], np.array([self.rtol])])
             return
         # τ ∈ [0, 1] over the step [t0, t0 + h]: the step's start and length are parameters
