@@ -10,8 +10,8 @@ output grid:
 - ``Samples(times, values, interpolation)`` or a pair ``(times, values)`` (linear): between
   samples linear, or held (zero-order hold: each value holds until the next sample time);
   a time given twice is a step (the value jumps there). Like MSL's CombiTimeTable, linear
-  samples extrapolate the first and last two points (CasADi linear interpolants: a binary
-  search per evaluation); held ones hold the end values.
+  samples extrapolate the first and last two points; held ones hold the end values (both
+  on CasADi interpolants: a binary search per evaluation, not a branch per sample).
   Integration restarts at every jump (a time event), never stepping across it;
 - an array with one value per output time: linear between them.
 """
@@ -97,6 +97,17 @@ def _linear(t, times: np.ndarray, values: np.ndarray) -> ca.SX:
                           np.asarray(values, dtype=float))(t)
 
 
+def _held(t, times: np.ndarray, values: np.ndarray) -> ca.SX:
+    """values[k] from times[k] (strictly increasing) until the next time; values[0] before,
+    the last value after: the sample's index by a linear interpolant of the times, rounded
+    down, then its value (two binary searches per evaluation, not a branch per sample)."""
+    n = times.size
+    index = ca.interpolant("index", "linear", [times], np.arange(n, dtype=float))(t)
+    k = ca.fmin(ca.fmax(ca.floor(index), 0), n - 1)
+    return ca.interpolant("held", "linear", [np.arange(n, dtype=float)],
+                          np.asarray(values, dtype=float))(k)
+
+
 def _samples(name, s: Samples, t) -> InputSignal:
     tt, vv = (np.asarray(a, dtype=float).ravel() for a in (s.times, s.values))
     if s.interpolation not in ("linear", "hold"):
@@ -115,7 +126,7 @@ def _samples(name, s: Samples, t) -> InputSignal:
         keep = np.append(tt[1:] != tt[:-1], True)       # a step: the value after it holds
         tt, vv = tt[keep], vv[keep]
         jumps = tuple(float(a) for a, dv in zip(tt[1:], np.diff(vv)) if dv != 0)
-        return InputSignal(ca.pw_const(t, ca.DM(tt[1:]), ca.DM(vv)), jumps)
+        return InputSignal(_held(t, tt, vv), jumps)
     if not steps:
         return InputSignal(_linear(t, tt, vv))
     # linear pieces between the steps, each chosen on its interval
