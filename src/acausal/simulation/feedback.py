@@ -207,19 +207,19 @@ def _sampled(model, held, subs, sampled, grid, *, params, x0, guess, rtol, atol,
     try:
         while True:
             t_k = t0 + k * period
-            y = np.array(read(st.t, st._x, st._z, st.u, st.p), dtype=float).ravel()
+            y = np.array(read(st.t, st.x, st.z, st.u, st.p), dtype=float).ravel()
             y = dict(zip(of, y.tolist()))
-            st._set_inputs({name: _call(fb, name, st.t, {n: y[n] for n in names[name]})
+            st.hold({name: _call(fb, name, st.t, {n: y[n] for n in names[name]})
                             for name, fb in sampled.items()})
             t_next = min(t_k + period, t_end)
             for tg in grid[(grid >= t_k - on_grid) & (grid < t_next - on_grid)]:
                 if tg > st.t:
                     st.advance(float(tg) - st.t)
-                cols.append((float(tg), st._x.copy(), st._z.copy(), st.u.copy()))
+                cols.append((float(tg), st.x, st.z, st.u.copy()))
             st.advance(t_next - st.t)
             bar.update(t_next - t_k)
             if t_next >= t_end - on_grid:
-                cols.append((t_end, st._x.copy(), st._z.copy(), st.u.copy()))
+                cols.append((t_end, st.x, st.z, st.u.copy()))
                 break
             k += 1
         partial = False

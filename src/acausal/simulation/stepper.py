@@ -94,8 +94,9 @@ class Stepper:
     """A simulation of ``model`` advanced by ``step(u)``, one sample period ``dt`` [s] at a
     time, the inputs held over each step (see the module docstring).
 
-    params   parameter overrides by dotted name (``reset(params=...)`` changes them without
-             rebuilding anything); x0, guess: initial values as in ``simulate()``;
+    params   parameter overrides by dotted name (``reset(params=...)`` changes them: no
+             recompiling, the integrator rebuilt in milliseconds); x0, guess: initial values
+             as in ``simulate()``; t0: the start time [s];
     outputs  dotted names of the variables ``step`` returns (default: the model's Outputs,
              or its states if it has none);
     solver   'dopri' (ODEs), 'collocation' (DAEs), 'cvodes', 'idas' (see the module
@@ -104,8 +105,10 @@ class Stepper:
              number of Dormand–Prince substeps to start with.
 
     ``t`` [s], ``state`` (the states by name; set it with a dict of some of them),
-    ``x`` (the state vector in ``x_names`` order, settable), ``u`` (the held inputs),
-    ``input_names``, ``output_names``, ``reset(x0=..., t0=..., params=...)``.
+    ``x`` (the state vector in ``x_names`` order, settable), ``z`` (the algebraic
+    variables), ``u`` (the held inputs; ``hold(u)`` sets them, ``advance(h)`` integrates
+    over h [s]), ``p`` (the parameter vector), ``input_names``, ``output_names``,
+    ``reset(x0=..., t0=..., params=...)``.
     """
 
     def __init__(self, model, dt: float, *, params: dict | None = None,
@@ -155,7 +158,8 @@ class Stepper:
             "outputs", [ca.vertcat(*[model.expression(n) for n in self.output_names])]),
             [self._t, self._x, self._z, self.u, self.p])
         self._integrator, self._built_for = None, None
-        self.reset(t0=t0)
+        self._t0 = float(t0)
+        self.reset()
 
     @property
     def t(self) -> float:
@@ -163,9 +167,10 @@ class Stepper:
         return float(self._t[0])
 
     # ---- state ----------------------------------------------------------------------------
-    def reset(self, x0: dict | None = None, t0: float = 0.0, params: dict | None = None,
+    def reset(self, x0: dict | None = None, t0: float | None = None,
+              params: dict | None = None,
               u: Mapping[str, float] | Sequence[float] | None = None) -> dict:
-        """Start again at t0 [s] from x0 (default: the x0 given when made), with new
+        """Start again at t0 [s] from x0 (default: the t0 and x0 given when made), with new
         parameter overrides if ``params`` is given (kept for later resets; default: the
         last ones), and inputs ``u`` (default: their start values); returns the outputs
         there."""
@@ -176,8 +181,8 @@ class Stepper:
         self.scale = model.nominals(self.p)
         self.u[:] = np.array(model.input_start, dtype=float).ravel()
         if u is not None:
-            self._set_inputs(u)
-        self._t[0] = float(t0)
+            self.hold(u)
+        self._t[0] = self._t0 if t0 is None else float(t0)
         x0 = dict(x0) if x0 is not None else self._x0
         x, z = initial_state(model, x0, self.p, self.u, self.t, self._guess,
                              initial_equations=True)
@@ -201,6 +206,11 @@ class Stepper:
             raise SimulationError(f"the state of '{self.model.name}' is {self._x.size} numbers "
                                   f"({', '.join(self.model.x_names)}), got {values.size}")
         self.state = dict(zip(self.model.x_names, values))
+
+    @property
+    def z(self) -> np.ndarray:
+        """The algebraic variables [z_names order] (a copy)."""
+        return self._z.copy()
 
     @property
     def state(self) -> dict[str, float]:
@@ -232,7 +242,7 @@ class Stepper:
         values in ``input_names`` order; None: all kept) over [t, t + dt] and integrate:
         the outputs at t + dt by name."""
         if u is not None:
-            self._set_inputs(u)
+            self.hold(u)
         self.advance(self.dt)
         return self.outputs()
 
@@ -246,7 +256,8 @@ class Stepper:
         self._outputs.call()
         return dict(zip(self.output_names, self._outputs.res[0].tolist()))
 
-    def _set_inputs(self, u) -> None:
+    def hold(self, u: Mapping[str, float] | Sequence[float]) -> None:
+        """Hold the inputs ``u`` from now on (as ``step`` takes them)."""
         if type(u) is dict or isinstance(u, Mapping):
             for n, v in u.items():
                 i = self._input_index.get(n)
