@@ -170,3 +170,33 @@ def test_ctrl_c_between_state_events_returns_the_run_so_far(monkeypatch):
     np.testing.assert_array_equal(part.t, full.t[:n])
     np.testing.assert_allclose(part["ball.s"], full["ball.s"][:n], rtol=0, atol=1e-14)
     assert part.events[0].time == pytest.approx(hit, abs=1e-9)
+
+
+def test_continuous_controller_on_a_model_with_impacts():
+    """A ball held by a controller F = −k·s (a spring to the floor level) in gravity,
+    bouncing on the floor: between impacts s = s_eq + A cos ω(t − t_i) + B sin ω(t − t_i)
+    (s_eq = −m g / k), at an impact v → −e·v."""
+    from acausal.models.bouncing_ball import Floor
+    from acausal.components.translational import ConstantForce
+    m_, g, e, k, s0 = 1.0, 9.81, 0.8, 20.0, 1.0
+    model = acausal.Model("held_ball")
+    model.ball, model.gravity, model.floor = Mass(m=m_), ConstantForce(f_constant=-m_ * g), \
+        Floor(e=e)
+    model.force, model.F = Force(), acausal.Input(unit="N")
+    for a, b in [(model.gravity.flange, model.ball.flange_a),
+                 (model.floor.flange, model.ball.flange_a),
+                 (model.force.flange, model.ball.flange_b), (model.F.y, model.force.f)]:
+        model.connect(a, b)
+    compiled = acausal.compile(model)
+    t = np.linspace(0.0, 0.6, 61)
+    res = compiled.simulate(0.6, t=t, x0={"ball.s": s0}, rtol=1e-11, atol=1e-13,
+                            inputs={"F": lambda t, y: -k * y["ball.s"]})
+    w, s_eq = np.sqrt(k / m_), -m_ * g / k
+    t1 = np.arccos(-s_eq / (s0 - s_eq)) / w                   # the first impact
+    v1 = -e * (-(s0 - s_eq) * w * np.sin(w * t1))             # the speed after it
+    tt = res.t
+    exact = np.where(tt < t1, s_eq + (s0 - s_eq) * np.cos(w * tt),
+                     s_eq - s_eq * np.cos(w * (tt - t1)) + v1 / w * np.sin(w * (tt - t1)))
+    assert len(res.events) == 1 and res.events[0].time == pytest.approx(t1, abs=1e-9)
+    np.testing.assert_allclose(res["ball.s"], exact, atol=1e-8)
+    np.testing.assert_allclose(res["F"], -k * res["ball.s"], atol=1e-12)

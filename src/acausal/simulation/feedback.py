@@ -9,7 +9,7 @@
   argument stays an input given as a function of time.)
 
 Continuous (period None): the controller's expression in the model's symbols replaces the
-input in the equations (exact: no sampling). A CasADi Function always has one; a Python
+input in the equations and the event functions (exact: no sampling). A CasADi Function always has one; a Python
 callable must accept CasADi symbols (arithmetic, numpy ufuncs, ``casadi.if_else``) — one
 that does not (an ``if`` on a value, a neural network in another framework) is refused:
 give it a ``period``.
@@ -83,10 +83,6 @@ def simulate_feedback(simulate, model, t_final, grid, inputs, feedback, *, param
                               f"periods; give them one period")
     continuous = {n: _expression(model, n, fb) for n, fb in feedback.items()
                   if fb.period is None}
-    if continuous and model.has_events:
-        raise SimulationError(f"model '{model.name}' has events: a continuous controller of "
-                              f"{sorted(continuous)} cannot enter its event functions; give "
-                              f"it a period (Controller(fn, period=...))")
     others = {n: v for n, v in inputs.items() if n not in feedback}
     if not sampled:
         closed = _closed(model, continuous)
@@ -155,9 +151,15 @@ def _closed(model, exprs: dict):
     new = list(exprs.values())
     ode, alg, y, init = ca.substitute([model.ode, model.alg, model.y, model.initial_equations],
                                       old, new)
+    ev = model.state_events
+    g, update, values, end = ca.substitute(
+        [ev.indicator, ev.mode_update, ev.reinit_values, ev.terminate], old, new)
+    events = replace(ev, indicator=g, mode_update=update, reinit_values=values, terminate=end,
+                     reinits=[replace(r, value=ca.substitute([ca.SX(r.value)], old, new)[0])
+                              for r in ev.reinits])
     return replace(model, u=ca.vertcat(*[model.u[k] for k in keep]) if keep else ca.SX(0, 1),
                    inputs=[model.inputs[k] for k in keep], ode=ode, alg=alg, y=y,
-                   initial_equations=init, _cache={})
+                   initial_equations=init, state_events=events, _cache={})
 
 
 def _on_model(model, closed, res: Result, subs: dict) -> Result:
