@@ -15,6 +15,7 @@ from . import compiler
 from .compiler.loops import Mobility
 from .core.component import Model
 from .simulation import Result, SweepResult, initial_state, simulate, sweep
+from .simulation.stepper import Stepper
 
 
 class CompiledModel(compiler.CompiledModel):
@@ -29,6 +30,11 @@ class CompiledModel(compiler.CompiledModel):
         """Many runs (parameter, start-value and input variations) in one mapped integrator,
         on threads or a dask cluster; see ``acausal.simulation.sweep`` for the arguments."""
         return sweep(self, t_final, **kwargs)
+
+    def stepper(self, dt: float, **kwargs) -> Stepper:
+        """A simulation stepped by ``step(u)`` every ``dt`` [s] with the inputs held; see
+        ``acausal.simulation.stepper.Stepper`` for the arguments."""
+        return Stepper(self, dt, **kwargs)
 
     def recompiled(self, smooth: bool) -> "CompiledModel":
         """The Model this was compiled from, compiled again in smooth form or not (see

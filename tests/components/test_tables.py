@@ -220,3 +220,47 @@ def test_parameters_change_without_recompiling_and_pickle():
 def test_bad_tables_and_options_are_refused(kwargs, match):
     with pytest.raises(ParameterError, match=match):
         sg.CombiTimeTable(**kwargs)
+
+
+ROWS = np.array([[0.0, 1.0, -1.0], [1.0, 2.0, 0.5], [1.0, 0.0, 0.0], [2.0, 3.0, 2.0],
+                 [3.0, 1.0, 1.0]])                       # a jump at t = 1
+NEW = np.array([[0.5, 2.0], [-1.0, 1.0], [4.0, -2.0], [1.0, 0.0], [2.0, 2.0]])
+T_TAB = np.linspace(0.0, 3.0, 121)
+
+
+@pytest.mark.parametrize("smoothness", ["LinearSegments", "ConstantSegments"])
+def test_new_table_values_without_recompiling(smoothness):
+    """The values of a compiled CombiTimeTable changed by params equal a model compiled with
+    those values, and numpy's interpolation of them (the jump at t = 1 kept)."""
+    old = acausal.compile(_probe(sg.CombiTimeTable(table=ROWS, smoothness=smoothness,
+                                                   table_parameter=True)))
+    new_tab = np.column_stack([ROWS[:, 0], NEW])
+    fresh = acausal.compile(_probe(sg.CombiTimeTable(table=new_tab, smoothness=smoothness)))
+    changed = old.simulate(3.0, t=T_TAB, params={"src.table": NEW}, **SIM)
+    ref = fresh.simulate(3.0, t=T_TAB, **SIM)
+    for name in ("src.y[1]", "src.y[2]", "i1.y", "i2.y"):
+        np.testing.assert_allclose(changed[name], ref[name], rtol=0, atol=1e-12)
+    if smoothness == "LinearSegments":              # after the jump: the rows from t = 1 on
+        after = T_TAB > 1.0
+        np.testing.assert_allclose(changed["src.y[2]"][after],
+                                   np.interp(T_TAB[after], ROWS[2:, 0], NEW[2:, 1]), atol=1e-12)
+    assert old.event_times(old.param_vector({"src.table": NEW}), 0.0, 3.0) == \
+        fresh.event_times(fresh.param_vector(), 0.0, 3.0)
+
+
+def test_new_time_table_values_follow_numpy():
+    tab = [[0.0, 0.0], [1.0, 2.0], [2.5, -1.0]]
+    c = acausal.compile(_probe(sg.TimeTable(table=tab, table_parameter=True)))
+    assert [n for n in c.param_names if n.startswith("src.table")] == \
+        ["src.table[1]", "src.table[2]", "src.table[3]"]
+    res = c.simulate(2.5, t=T_TAB[T_TAB <= 2.5], params={"src.table": [1.0, -1.0, 3.0]}, **SIM)
+    np.testing.assert_allclose(res["src.y"], np.interp(res.t, [0.0, 1.0, 2.5], [1.0, -1.0, 3.0]),
+                               atol=1e-12)
+    with pytest.raises(ParameterError, match="3 elements"):
+        c.param_vector({"src.table": [1.0, 2.0]})
+    fixed = acausal.compile(_probe(sg.TimeTable(table=tab, shiftTime=0.5)))
+    assert not any(n.startswith("src.table") for n in fixed.param_names)
+    for src in (sg.TimeTable(table=tab, table_parameter=True, shiftTime=0.5),
+                sg.CombiTimeTable(table=ROWS, table_parameter=True)):
+        copy = pickle.loads(pickle.dumps(src))
+        assert type(copy) is type(src) and copy.table == src.table

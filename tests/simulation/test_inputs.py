@@ -194,3 +194,21 @@ def test_non_finite_or_bad_settings_are_refused(compiled, kwargs, message):
     used to hang inside the integrator)."""
     with pytest.raises(acausal.SimulationError, match=message):
         compiled.simulate(**kwargs)
+
+
+def test_many_held_and_linear_samples_read_exactly(compiled):
+    """300 samples: the input on a grid between and at the sample times equals numpy's
+    lookup (hold) and interpolation (linear) of them."""
+    rng = np.random.default_rng(3)
+    times = np.cumsum(rng.uniform(0.005, 0.015, 300))
+    values = rng.normal(size=300)
+    grid = np.unique(np.concatenate([np.linspace(0.0, 3.0, 301), times[times < 3.0]]))
+    held = compiled.simulate(3.0, t=grid, inputs={"F": acausal.simulation.Samples(
+        times, values, "hold")})
+    index = np.clip(np.searchsorted(times, grid, side="right") - 1, 0, times.size - 1)
+    np.testing.assert_array_equal(held["F"], values[index])
+    linear = compiled.simulate(3.0, t=grid,
+                               inputs={"F": acausal.simulation.Samples(times, values)})
+    inside = (grid >= times[0]) & (grid <= times[-1])
+    np.testing.assert_allclose(linear["F"][inside], np.interp(grid[inside], times, values),
+                               rtol=0, atol=1e-14)

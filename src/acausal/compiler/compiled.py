@@ -264,10 +264,12 @@ class CompiledModel:
         return self.loop_mu + self.loop_nu
 
     def param_vector(self, overrides: dict | None = None) -> np.ndarray:
-        """Parameter values [defaults with ``overrides`` by dotted name], checked."""
+        """Parameter values [defaults with ``overrides`` by dotted name], checked; a vector
+        parameter by its name takes all its elements (``{"table.table": values}``, an array
+        flattened row by row, for ``table[1]``, ``table[2]``, ...)."""
         values = self.param_defaults
         index = self._index("params")
-        for name, v in (overrides or {}).items():
+        for name, v in _elements(overrides or {}, index).items():
             if name in self.fixed_params:
                 raise ParameterError(
                     f"parameter '{name}' of model '{self.name}' was fixed at 0 when it was "
@@ -504,6 +506,28 @@ class CompiledModel:
                 f"{len(self.algebraics)} algebraic, {len(self.params)} parameters, "
                 f"{len(self.inputs)} inputs, {len(self.outputs)} outputs")
         return "\n".join([head] + [f"  {k:<13}{v}" for k, v in rows])
+
+
+def _elements(overrides: dict, index: dict) -> dict:
+    """``overrides`` with every vector parameter given by its name (``r``, not ``r[1]``)
+    split into its elements."""
+    out = {}
+    for name, v in overrides.items():
+        n = 0
+        while name not in index and f"{name}[{n + 1}]" in index:
+            n += 1
+        if not n:
+            out[name] = v
+            continue
+        try:
+            flat = np.asarray(v, dtype=float).ravel()
+        except (TypeError, ValueError):
+            flat = None
+        if flat is None or flat.size != n:
+            raise ParameterError(f"parameter '{name}' has {n} elements ({name}[1] .. "
+                                 f"{name}[{n}]); got {v!r}")
+        out.update((f"{name}[{k + 1}]", float(x)) for k, x in enumerate(flat))
+    return out
 
 
 def coinciding(v: ca.SX, w: ca.SX, free: ca.SX) -> tuple[int, ca.SX] | None:

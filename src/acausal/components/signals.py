@@ -276,16 +276,21 @@ class TimeEvents(str, Enum):
     NoTimeEvents = "NoTimeEvents"
 
 
-def _table_values(tau, tab: np.ndarray, smoothness: Smoothness,
+def _table_values(tau, times: np.ndarray, values, smoothness: Smoothness,
                   extrapolation: Extrapolation) -> list:
-    """The columns 2.. of table ``tab`` (rows [time, values...]) at table time ``tau``, one
-    expression per column. Linear segments are CasADi linear interpolants (a binary search,
-    not one branch per row), one per piece between repeated times (a jump: the later row
-    holds from that time on); constant segments give the row at or before tau."""
-    times, vals = tab[:, 0], tab[:, 1:]
-    n, m = vals.shape
+    """The value columns of a table at table time ``tau``, one expression per column:
+    ``times`` (structural: where the pieces and events are), ``values`` the rows without
+    their time, flattened row by row: numbers (folded into the interpolants), or the
+    symbols of the ``table`` parameter (an argument of the interpolants, changeable without
+    recompiling; every evaluation then passes them). Linear segments are CasADi linear
+    interpolants (a binary search, not one branch per row), one per piece between repeated
+    times (a jump: the later row holds from that time on); constant segments give the row
+    at or before tau."""
+    n, symbolic = times.size, isinstance(values, ca.SX)
+    m = (values.numel() if symbolic else len(values)) // n
+    vals = ca.reshape(values, m, n).T if symbolic else ca.SX(np.reshape(values, (n, m)))
     if n == 1:
-        return [ca.SX(v) for v in vals[0]]
+        return [vals[0, j] for j in range(m)]
     t_min, t_max = times[0], times[-1]
     if extrapolation is Extrapolation.HoldLastPoint:
         tau = ca.fmin(ca.fmax(tau, t_min), t_max)
@@ -293,16 +298,19 @@ def _table_values(tau, tab: np.ndarray, smoothness: Smoothness,
         period = t_max - t_min
         tau = tau - period * ca.floor((tau - t_min) / period)
     if smoothness is Smoothness.ConstantSegments:
-        out = [ca.pw_const(tau, ca.DM(times[1:]), ca.DM(vals[:, j])) for j in range(m)]
+        out = [ca.pw_const(tau, ca.SX(ca.DM(times[1:])), vals[:, j]) for j in range(m)]
     else:
         cuts = [0] + [i for i in range(1, n) if times[i] == times[i - 1]] + [n]
         pieces = [(a, b) for a, b in zip(cuts[:-1], cuts[1:]) if b - a > 1 or b == n]
 
         def piece(a, b):
             if b - a == 1:                      # a last row of its own: held
-                return ca.SX(ca.DM(vals[a]))
-            f = ca.interpolant("table", "linear", [times[a:b]], vals[a:b].ravel())
-            return f(tau)
+                return vals[a, :].T
+            if not symbolic:
+                return ca.interpolant("table", "linear", [times[a:b]],
+                                      np.ravel(np.reshape(values, (n, m))[a:b]))(tau)
+            f = ca.interpolant("table", "linear", [times[a:b]], m)
+            return f(tau, ca.vec(vals[a:b, :].T))
 
         a, b = pieces[-1]
         expr = piece(a, b)
@@ -315,13 +323,12 @@ def _table_values(tau, tab: np.ndarray, smoothness: Smoothness,
     return out
 
 
-def _table_events(tab: np.ndarray, smoothness: Smoothness, extrapolation: Extrapolation,
+def _table_events(times: np.ndarray, smoothness: Smoothness, extrapolation: Extrapolation,
                   timeEvents: TimeEvents) -> list:
     """Table times where the interpolated signal restarts the integrator, as (time, period
     or None) pairs in table time: every row with ``Always`` or constant segments, repeated
     times with ``AtDiscontinuities`` (and the wrap of a periodic table)."""
-    times = tab[:, 0]
-    if tab.shape[0] == 1 or timeEvents is TimeEvents.NoTimeEvents:
+    if times.size == 1 or timeEvents is TimeEvents.NoTimeEvents:
         return []
     periodic = extrapolation is Extrapolation.Periodic
     period = times[-1] - times[0] if periodic else None
@@ -333,6 +340,16 @@ def _table_events(tab: np.ndarray, smoothness: Smoothness, extrapolation: Extrap
         rows = times[1:][times[1:] == times[:-1]]
     rows = set(map(float, rows)) | ({float(times[-1])} if periodic else set())
     return [(tk, period) for tk in sorted(rows)]
+
+
+def _table_parameter(rows: int, columns: int) -> Parameter:
+    """The ``table`` parameter of a table of ``rows`` rows and ``columns`` value columns:
+    its values without the time column, row by row (``table[1]`` .. ``table[rows·columns]``);
+    ``params={"<table>.table": values}`` (shape (rows, columns)) changes them at simulation
+    time. The times are structural (the interpolation's pieces and time events)."""
+    return Parameter((0.0,) * (rows * columns), "",
+                     f"table values ({rows} rows x {columns} columns, without the time "
+                     f"column), row by row")
 
 
 def _check_table(table, kind: str, first_at_zero: bool) -> np.ndarray:
@@ -378,42 +395,73 @@ class TimeTable(SignalSource):
     first column.
 
     The table is a CasADi linear interpolant: the integrator restarts only at jumps
-    (repeated times), not at every row. The table is fixed when the model is compiled
-    (offset, startTime, shiftTime and timeScale are parameters).
+    (repeated times), not at every row. It is fixed when the model is compiled (offset,
+    startTime, shiftTime and timeScale are parameters), unless ``table_parameter=True``:
+    its values are then the parameter ``table`` (``table[1]`` .. ``table[n]``), changed
+    without recompiling by ``params={"<name>.table": values}`` (its times, ``times``, and
+    so its events stay; every evaluation of the equations then passes the n values).
     """
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
+    _classes: dict = {}
 
-    def __new__(cls, name=None, *, table=None, shiftTime=None, **params):
-        if cls is TimeTable and shiftTime is not None:
-            cls = _ShiftedTimeTable
+    def __new__(cls, name=None, *, table=None, shiftTime=None, table_parameter=False,
+                **params):
+        if cls is TimeTable:
+            if name is not None and not isinstance(name, str):
+                raise ParameterError("TimeTable: give the table by keyword, "
+                                     "TimeTable(table=...)")
+            tab = _check_table(table, "TimeTable", first_at_zero=True)
+            if tab.shape[1] != 2:
+                raise ParameterError(f"TimeTable: table must have rows [time, value] (shape "
+                                     f"(n, 2)), got shape {tab.shape}; CombiTimeTable takes "
+                                     f"several columns")
+            shifted = shiftTime is not None
+            cls = TimeTable._variant(tab.shape[0], shifted) if table_parameter else (
+                _ShiftedTimeTable if shifted else TimeTable)
         return super().__new__(cls)
 
-    def __init__(self, name: str | None = None, *, table=None, shiftTime=None, **params):
-        if name is not None and not isinstance(name, str):
-            raise ParameterError("TimeTable: give the table by keyword, TimeTable(table=...)")
+    @staticmethod
+    def _variant(rows: int, shifted: bool) -> type:
+        key = (rows, shifted)
+        if key not in TimeTable._classes:
+            base = _ShiftedTimeTable if shifted else TimeTable
+            TimeTable._classes[key] = type("TimeTable", (base,), {
+                "__doc__": TimeTable.__doc__, "__module__": __name__,
+                "__qualname__": "TimeTable", "table": _table_parameter(rows, 1)})
+        return TimeTable._classes[key]
+
+    def __reduce_ex__(self, protocol):
+        if "table" not in self.parameters():
+            return super().__reduce_ex__(protocol)
+        # the class is made per table size: rebuild it so
+        return _new_table, (TimeTable, len(self.times), isinstance(self, _ShiftedTimeTable)), \
+            self.__dict__
+
+    def __init__(self, name: str | None = None, *, table=None, shiftTime=None,
+                 table_parameter: bool = False, **params):
         if shiftTime is not None:
             params["shiftTime"] = shiftTime
-        super().__init__(name, **params)
         tab = _check_table(table, "TimeTable", first_at_zero=True)
-        if tab.shape[1] != 2:
-            raise ParameterError(f"TimeTable: table must have rows [time, value] (shape "
-                                 f"(n, 2)), got shape {tab.shape}; CombiTimeTable takes "
-                                 f"several columns")
-        self.__dict__["table"] = tab
+        if table_parameter:
+            params["table"] = tuple(tab[:, 1])
+        super().__init__(name, **params)
+        self.__dict__["times"] = tab[:, 0]
+        if not table_parameter:
+            self.__dict__["table"] = tuple(tab[:, 1])
 
     def _shift(self):
         return self.startTime
 
     def signal(self, t):
         tau = (t - self._shift()) / self.timeScale
-        return _table_values(tau, self.table, Smoothness.LinearSegments,
+        return _table_values(tau, self.times, self.table, Smoothness.LinearSegments,
                              Extrapolation.LastTwoPoints)[0]
 
     def events(self):
         shift = self._shift()
         return [(self.startTime, None)] + [
             (shift + self.timeScale * tk, None) for tk, _ in _table_events(
-                self.table, Smoothness.LinearSegments, Extrapolation.LastTwoPoints,
+                self.times, Smoothness.LinearSegments, Extrapolation.LastTwoPoints,
                 TimeEvents.AtDiscontinuities)]
 
 
@@ -432,7 +480,10 @@ class CombiTimeTable(Component):
     """Table look-up in time with several output columns (MSL Sources.CombiTimeTable).
 
     Constructor arguments (fixed when the model is compiled): ``table`` (rows [time, values
-    ...], times non-decreasing; a time given twice is a jump), ``columns`` (the table
+    ...], times non-decreasing; a time given twice is a jump; with ``table_parameter=True``
+    its values, the selected columns without the time, are the parameter ``table``, row by
+    row: ``params={"<name>.table": values}`` of shape (rows, nout) changes them without
+    recompiling, the times stay), ``columns`` (the table
     columns to output, numbered from 1 as in Modelica, time being column 1; default
     2..ncols), the options ``smoothness`` (LinearSegments, ConstantSegments: the row at or
     before the time), ``extrapolation`` (HoldLastPoint, LastTwoPoints, Periodic,
@@ -461,27 +512,33 @@ class CombiTimeTable(Component):
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
     _classes: dict = {}
 
-    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None, **params):
+    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None,
+                table_parameter=False, **params):
         if cls is CombiTimeTable:
             tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
-            cls = CombiTimeTable._variant(len(_columns(tab, columns)), shiftTime is not None)
+            cls = CombiTimeTable._variant(len(_columns(tab, columns)), shiftTime is not None,
+                                          tab.shape[0] if table_parameter else 0)
         return super().__new__(cls)
 
     @staticmethod
-    def _variant(nout: int, shifted: bool) -> type:
-        key = (nout, shifted)
+    def _variant(nout: int, shifted: bool, rows: int) -> type:
+        """The class for nout outputs, a shiftTime parameter or not, and a ``table``
+        parameter of ``rows`` rows (0: none)."""
+        key = (nout, shifted, rows)
         if key not in CombiTimeTable._classes:
             attrs = {"__doc__": CombiTimeTable.__doc__, "__module__": __name__,
                      "__qualname__": "CombiTimeTable", "_nout": nout,
                      "offset": Parameter((0.0,) * nout, "", "offsets of output signals"),
                      "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+            if rows:
+                attrs["table"] = _table_parameter(rows, nout)
             if shifted:
                 attrs["shiftTime"] = Parameter(0.0, "s", "shift time of first table column")
             CombiTimeTable._classes[key] = type("CombiTimeTable", (CombiTimeTable,), attrs)
         return CombiTimeTable._classes[key]
 
     def __init__(self, name: str | None = None, *, table=None, columns=None, shiftTime=None,
-                 offset=0.0, **params):
+                 offset=0.0, table_parameter: bool = False, **params):
         if name is not None and not isinstance(name, str):
             raise ParameterError("CombiTimeTable: give the table by keyword, "
                                  "CombiTimeTable(table=...)")
@@ -492,36 +549,44 @@ class CombiTimeTable(Component):
             raise ParameterError(f"CombiTimeTable: offset has {offsets.size} elements but "
                                  f"there are {self._nout} outputs (give 1 or {self._nout})")
         params["offset"] = tuple(offsets) * (self._nout // offsets.size)
+        tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
+        tab = tab[:, [0] + [c - 1 for c in _columns(tab, columns)]]
+        if table_parameter:
+            params["table"] = tuple(tab[:, 1:].ravel())
         super().__init__(name, **params)
         if self.smoothness not in (Smoothness.LinearSegments, Smoothness.ConstantSegments):
             raise ParameterError(f"{who(self)}: smoothness={self.smoothness.value} (a spline) "
                                  f"is not available; use LinearSegments or ConstantSegments")
-        tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
-        self.__dict__["table"] = tab[:, [0] + [c - 1 for c in _columns(tab, columns)]]
+        self.__dict__["times"] = tab[:, 0]
+        if not table_parameter:
+            self.__dict__["table"] = tuple(tab[:, 1:].ravel())
 
     @property
     def nout(self) -> int:
         return self._nout
 
     def __reduce_ex__(self, protocol):          # the class is made per nout: rebuild it so
-        return _new_combi, (self._nout, "shiftTime" in self.parameters()), self.__dict__
+        return _new_table, (CombiTimeTable, self._nout, "shiftTime" in self.parameters(),
+                            len(self.times) if "table" in self.parameters() else 0), \
+            self.__dict__
 
     def physics(self, e):
         t = e.time
         shift = self.shiftTime if "shiftTime" in self.parameters() else self.startTime
         tau = (t - shift) / self.timeScale
-        values = _table_values(tau, self.table, self.smoothness, self.extrapolation)
+        values = _table_values(tau, self.times, self.table, self.smoothness, self.extrapolation)
         for i, (port, y) in enumerate(zip(self.y, values)):
             e.output(port, self.offset[i] + ca.if_else(t < self.startTime, 0, y))
         e.time_event(self.startTime)
-        for tk, period in _table_events(self.table, self.smoothness, self.extrapolation,
+        for tk, period in _table_events(self.times, self.smoothness, self.extrapolation,
                                         self.timeEvents):
             e.time_event(shift + self.timeScale * tk,
                          None if period is None else self.timeScale * period)
 
 
-def _new_combi(nout: int, shifted: bool) -> CombiTimeTable:
-    return object.__new__(CombiTimeTable._variant(nout, shifted))
+def _new_table(cls, *key) -> Component:
+    """An empty instance of the table class ``cls`` made for ``key`` (unpickling)."""
+    return object.__new__(cls._variant(*key))
 
 
 def _columns(tab: np.ndarray, columns) -> list[int]:

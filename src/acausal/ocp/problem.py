@@ -7,6 +7,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import OCPError, SmoothFormWarning, SolveError, warn_user
+from ..simulation.progress import IterationProgress, progress_bar
 from .model import ModelView, smooth_form
 from .nlp import DEFAULT_IPOPT, NLP, SUCCESS, canonical
 from .solution import Solution
@@ -205,19 +206,28 @@ class OCP:
             self._guess[name] = v
 
     # ---- solving ------------------------------------------------------------------------------
-    def solve(self, ipopt: dict | None = None, options: dict | None = None) -> Solution:
+    def solve(self, ipopt: dict | None = None, options: dict | None = None,
+              progress: bool = False) -> Solution:
         """Solve with IPOPT. ``ipopt``: IPOPT options (default quiet: print_level 0);
-        ``options``: nlpsol options (e.g. {'expand': True}). Raises SolveError with IPOPT's
-        return status if it does not converge."""
+        ``options``: nlpsol options (e.g. {'expand': True}); ``progress``: a progress bar
+        of IPOPT's iterations (tqdm, shown once the solve takes 2 s;
+        ``acausal.simulation.progress``). Raises SolveError with IPOPT's return status if
+        it does not converge."""
         opts = {"print_time": False, **(options or {}),
                 "ipopt": {**DEFAULT_IPOPT, **(ipopt or {})}}
-        key = repr(opts)
+        key = repr(opts) + repr(progress)
         if self._built is None or self._built[0] != key:
-            self._built = (key, *self._build(opts))
-        _, nlp, solver, resolve = self._built
+            self._built = (key, *self._build(opts, progress))
+        _, nlp, solver, resolve, iterations = self._built
         self._fill(nlp)
         lbw, ubw, w0, lbg, ubg = nlp.bounds_and_guess()
-        out = solver(x0=w0, lbx=lbw, ubx=ubw, lbg=lbg, ubg=ubg)
+        if iterations is not None:
+            iterations.bar = progress_bar(None, f"IPOPT {self.model.name}", True, unit="it")
+        try:
+            out = solver(x0=w0, lbx=lbw, ubx=ubw, lbg=lbg, ubg=ubg)
+        finally:
+            if iterations is not None:
+                iterations.bar.close()
         stats = solver.stats()
         sol = Solution(self, nlp, np.array(out["x"]).ravel(), float(out["f"]), stats, resolve)
         if stats["return_status"] not in SUCCESS:
@@ -228,7 +238,7 @@ class OCP:
                              stats["return_status"], sol)
         return sol
 
-    def _build(self, opts):
+    def _build(self, opts, progress: bool = False):
         nlp = self._nlp.copy()
         Q = self.transcription.transcribe(nlp, self.nodes, self._integrands)
         syms = ca.vertcat(*self._integrals)
@@ -245,12 +255,16 @@ class OCP:
             for name, v in store.items():
                 if self.view.kind(name) == "variable":
                     nlp.equal(self[name][k], v)
+        iterations = None
+        if progress:
+            iterations = IterationProgress(nlp.w.numel(), sum(g.numel() for g in nlp.g), 0)
+            opts = dict(opts, iteration_callback=iterations)
         try:
             solver = nlp.solver(resolve(self._objective), opts)
         except RuntimeError as e:
             raise OCPError(f"cannot make the IPOPT solver: {str(e).strip().splitlines()[-1]}") \
                 from None
-        return nlp, solver, resolve
+        return nlp, solver, resolve, iterations
 
     def _fill(self, nlp: NLP) -> None:
         """Bounds and guesses of the node variables, from bounds/initial/final/guess."""

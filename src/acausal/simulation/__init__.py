@@ -6,5 +6,8 @@ from .result import Event, Result
 from .inputs import Samples, input_signal
 from .simulate import simulate
 from .sweep import SweepResult, sweep
+from .feedback import Controller
+from .stepper import Stepper
 
-__all__ = ["simulate", "sweep", "SweepResult", "Result", "Event", "Samples", "initial_state", "input_signal"]
+__all__ = ["simulate", "sweep", "SweepResult", "Result", "Event", "Samples", "initial_state",
+           "input_signal", "Controller", "Stepper"]

@@ -238,6 +238,9 @@ class EventSimulation(ModeIteration):
         self.terminated: Termination | None = None
         self.ticks: list[np.ndarray] = []     # the instants of each sample trigger (run)
         self.log: list[Event] = []
+        self.cols: list = []                  # the columns of ``run`` so far
+        self.checks_per_run = CHECKS_PER_RUN  # indicator checks over a run, at least
+        self.reached = lambda t: None         # called with the time integrated to
 
     def _integrators(self, alg):
         """(the DAE with algebraic equations ``alg``, the integrator over a normalized
@@ -495,7 +498,7 @@ class EventSimulation(ModeIteration):
         d = self.p[self.model.mode_params]
         self.ticks = self._clock_instants(t, float(grid[-1]))
         x, z, d = self.event(t, x, z, d, {})
-        cols = [(t, x, z, d)]
+        self.cols = cols = [(t, x, z, d)]
         sides = side(self.indicators(t, x, z, d), np.ones(len(self.names)))
         recent = deque(maxlen=CHATTER_EVENTS)
         span = CHATTER_SPAN * (grid[-1] - grid[0])
@@ -505,8 +508,9 @@ class EventSimulation(ModeIteration):
         for stop in stops:
             end = stop if stop == grid[-1] else just_before(stop)
             while t < end:
-                times, output = _checks(grid, t, end, window)
+                times, output = _checks(grid, t, end, window, self.checks_per_run)
                 X, Z = self.integrate(t, times, x, z, d)
+                self.reached(times[-1])
                 i, after = self._first_event(self.indicators_along(times, X, Z, d), sides)
                 if i is None and times[-1] != end and window < MAX_WINDOW:
                     window *= 2         # again from t, further (no restart mid-way)
@@ -605,11 +609,11 @@ class EventSimulation(ModeIteration):
             f"that holds at the switching surface (a stuck mode) or end the simulation before")
 
 
-def _checks(grid, t, end, limit: int):
+def _checks(grid, t, end, limit: int, per_run: int = CHECKS_PER_RUN):
     """The output times in (t, end], end itself, and checks between them: CHECKS per output
-    interval, none further apart than 1/CHECKS_PER_RUN of the simulated time; the first
+    interval, none further apart than 1/``per_run`` of the simulated time; the first
     ``limit`` of them, and whether each is an output time."""
-    spacing = (grid[-1] - grid[0]) / CHECKS_PER_RUN
+    spacing = (grid[-1] - grid[0]) / per_run
     stops = grid[(grid > t) & (grid <= end)][:limit]
     output = np.ones(len(stops), dtype=bool)
     if not len(stops) or stops[-1] != end:

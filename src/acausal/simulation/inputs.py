@@ -10,7 +10,8 @@ output grid:
 - ``Samples(times, values, interpolation)`` or a pair ``(times, values)`` (linear): between
   samples linear, or held (zero-order hold: each value holds until the next sample time);
   a time given twice is a step (the value jumps there). Like MSL's CombiTimeTable, linear
-  samples extrapolate the first and last two points; held ones hold the end values.
+  samples extrapolate the first and last two points; held ones hold the end values (both
+  on CasADi interpolants: a binary search per evaluation, not a branch per sample).
   Integration restarts at every jump (a time event), never stepping across it;
 - an array with one value per output time: linear between them.
 """
@@ -59,7 +60,7 @@ def input_signal(name: str, value, t: ca.SX, grid: np.ndarray) -> InputSignal:
     if arr.size != len(grid):
         raise SimulationError(f"input '{name}': {arr.size} samples but the output grid has "
                               f"{len(grid)} points; give Samples(times, values) instead")
-    return InputSignal(ca.pw_lin(t, ca.DM(grid), ca.DM(arr.ravel())))
+    return InputSignal(_linear(t, grid, arr.ravel()))
 
 
 def _callable(name, f, t, grid) -> InputSignal:
@@ -85,7 +86,26 @@ def _callable(name, f, t, grid) -> InputSignal:
               f"a ramp {fine[1] - fine[0]:.3g} s wide); for exact results write it with casadi "
               f"operations (casadi.if_else, numpy ufuncs) or give "
               f"Samples(times, values, interpolation='hold' or 'linear')")
-    return InputSignal(ca.pw_lin(t, ca.DM(fine), ca.DM(vals)))
+    return InputSignal(_linear(t, fine, vals))
+
+
+def _linear(t, times: np.ndarray, values: np.ndarray) -> ca.SX:
+    """Linear interpolation through (times, values), strictly increasing times, extrapolated
+    through the first and last two: a CasADi interpolant (a binary search per evaluation,
+    not one branch per sample)."""
+    return ca.interpolant("samples", "linear", [np.asarray(times, dtype=float)],
+                          np.asarray(values, dtype=float))(t)
+
+
+def _held(t, times: np.ndarray, values: np.ndarray) -> ca.SX:
+    """values[k] from times[k] (strictly increasing) until the next time; values[0] before,
+    the last value after: the sample's index by a linear interpolant of the times, rounded
+    down, then its value (two binary searches per evaluation, not a branch per sample)."""
+    n = times.size
+    index = ca.interpolant("index", "linear", [times], np.arange(n, dtype=float))(t)
+    k = ca.fmin(ca.fmax(ca.floor(index), 0), n - 1)
+    return ca.interpolant("held", "linear", [np.arange(n, dtype=float)],
+                          np.asarray(values, dtype=float))(k)
 
 
 def _samples(name, s: Samples, t) -> InputSignal:
@@ -106,9 +126,9 @@ def _samples(name, s: Samples, t) -> InputSignal:
         keep = np.append(tt[1:] != tt[:-1], True)       # a step: the value after it holds
         tt, vv = tt[keep], vv[keep]
         jumps = tuple(float(a) for a, dv in zip(tt[1:], np.diff(vv)) if dv != 0)
-        return InputSignal(ca.pw_const(t, ca.DM(tt[1:]), ca.DM(vv)), jumps)
+        return InputSignal(_held(t, tt, vv), jumps)
     if not steps:
-        return InputSignal(ca.pw_lin(t, ca.DM(tt), ca.DM(vv)))
+        return InputSignal(_linear(t, tt, vv))
     # linear pieces between the steps, each chosen on its interval
     cuts = [0] + [i + 1 for i in range(tt.size - 1) if tt[i] == tt[i + 1]] + [tt.size]
     pieces = [(tt[a:b], vv[a:b]) for a, b in zip(cuts, cuts[1:])]
@@ -117,7 +137,7 @@ def _samples(name, s: Samples, t) -> InputSignal:
         if tk.size == 1:                     # a lone sample between two steps: constant
             line = ca.SX(vk[0])
         else:
-            line = ca.pw_lin(t, ca.DM(tk), ca.DM(vk))
+            line = _linear(t, tk, vk)
         onehot = np.zeros(len(pieces))
         onehot[k] = 1.0
         expr = expr + ca.pw_const(t, ca.DM(list(steps)), ca.DM(onehot)) * line

@@ -70,6 +70,7 @@ class Result:
         self._units = None
         self.events: list[Event] = []
         self.terminated: Termination | None = None
+        self.partial = False         # the run was interrupted (Ctrl-C): t ends early
 
     @property
     def names(self) -> list[str]:

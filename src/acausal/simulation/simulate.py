@@ -13,22 +13,27 @@ from .events import EventSimulation
 from .initialization import initial_state
 from .inputs import input_signal
 from .result import Result
+from .progress import progress_bar, time_reporter, warn_interrupted
 from .stiffness import adams_step_budget, is_stiff, spectral_radius
 
 SOLVERS = ("cvodes", "adams", "idas", "rk", "collocation")
+PROGRESS_POINTS = 100       # restarts of the integrator to report progress at
 
 
 def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              inputs: dict | None = None, x0: dict | None = None, guess: dict | None = None,
              solver: str | None = None,
              rtol: float = 1e-8, atol: float = 1e-10, max_step: float | None = None,
-             nominal: dict | None = None, options: dict | None = None) -> Result:
+             nominal: dict | None = None, options: dict | None = None,
+             progress: bool = False) -> Result:
     """Simulate ``model`` from t = 0 (or t[0]) to ``t_final`` [s].
 
     t        output grid (default: 501 points); params: overrides by dotted name;
     inputs   per input name: a number, a callable of time, ``Samples(times, values,
              interpolation='linear' | 'hold')``, (times, values) or values on t (see
-             ``acausal.simulation.inputs``);
+             ``acausal.simulation.inputs``), or a controller: a CasADi Function or callable
+             of (t, y), a ``Controller(fn, of=..., period=...)``, continuous or sampled
+             (``acausal.simulation.feedback``);
     x0       initial values by the dotted name of any variable (``mass.s``, ``inertia.w``),
              held exactly, as the components' initial equations (``PhysicsBuilder.initial``)
              are;
@@ -49,7 +54,15 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     nominal  nominal magnitudes by the dotted name of a state or of a variable that
              coincides with one (``springDamper.w_rel``), replacing the model's
              (``CompiledModel.nominals``: 1 unless a component declares one, e.g.
-             MSL's phi_nominal of a SpringDamper, or ``nominal={...}`` on a component).
+             MSL's phi_nominal of a SpringDamper, or ``nominal={...}`` on a component);
+    progress a progress bar (tqdm, ``acausal.simulation.progress``) over the simulated time,
+             shown once the run takes more than 2 s: the integrator then restarts at 100
+             points of the grid to report (results equal to the tolerances).
+
+    Ctrl-C (KeyboardInterrupt) between two calls of the integrator (time events, the
+    progress points, sample instants of a sampled controller, the windows between state
+    events) ends the run there: the Result holds the output times reached,
+    ``Result.partial`` is True and a warning says so.
 
     A model with state events or discrete modes (components' ``indicator``, ``mode``,
     ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
@@ -62,6 +75,12 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
+    from .feedback import feedback_inputs, simulate_feedback   # (they step with simulate's
+    if feedback_inputs(inputs):                                 # integrator settings)
+        return simulate_feedback(simulate, model, t_final, grid, dict(inputs),
+                                 feedback_inputs(inputs), params=params, x0=x0, guess=guess,
+                                 solver=solver, rtol=rtol, atol=atol, max_step=max_step,
+                                 nominal=nominal, options=options, progress=progress)
     p = model.param_vector(params)
     inputs = dict(inputs or {})
     unknown = set(inputs) - set(model.input_names)
@@ -117,45 +136,59 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             return np.zeros((0, grid.size)), _algebraic_only(model, alg, grid, z) * scale[
                 nx:, None]
         events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
-            e for s in signals for e in s.events if grid[0] < e < grid[-1]))
-        for a, b, pts in _segments(grid, events):
-            # integrate up to just before an event, restart at it (never step over a jump)
-            if a != grid[0] and a in grid:           # an output time exactly at the event
-                X.append(x.reshape(-1, 1))
-                Z.append(z.reshape(-1, 1))
-            end = b if b == grid[-1] else just_before(b)
-            tout = list(pts) + ([] if pts and pts[-1] == b else [end])
-            tout = [min(tt, end) for tt in tout]
-            if loops:
-                opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
-                opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
-            try:
-                F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
-                sol = F(x0=x, z0=z)
-            except RuntimeError as e:
-                def state_near(t_fail, a=a, x=x, z=z):
-                    """(x, z) shortly before the failure, by a second run; None if it fails."""
-                    try:
-                        probe = ca.integrator("probe", plugin, dae, float(a),
-                                              [a + (t_fail - a) * (1 - 1e-6)], opts)
-                        sol = probe(x0=x, z0=z)
-                    except RuntimeError:
-                        return None
-                    return np.array(sol["xf"]).ravel(), np.array(sol["zf"]).ravel()
-                raise SimulationError(failure_message(
-                    model, e, a, b, rtol, atol, state_near if loops else None, p,
-                    lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel())
-                ) from None
-            xf = np.array(sol["xf"])
-            zf = np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
-            X.append(xf[:, :len(pts)])
-            Z.append(zf[:, :len(pts)])
-            x, z = xf[:, -1], (zf[:, -1] if has_alg else z)
+            e for s in signals for e in s.events if grid[0] < e < grid[-1]).union(
+            grid[1:-1:max(1, grid.size // PROGRESS_POINTS)] if progress else ()))
+        bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+        try:
+            for a, b, pts in _segments(grid, events):
+                x, z = step(dae, a, b, pts, x, z, X, Z)
+                bar.update(b - a)
+        except KeyboardInterrupt:
+            interrupted.append(x)
+        finally:
+            bar.close()
         return np.hstack(X) * scale[:nx, None], np.hstack(Z) * scale[nx:, None]
 
+    def step(dae, a, b, pts, x, z, X, Z):
+        """Integrate ``dae`` from (x, z) at a to b, the output times pts appended to X, Z:
+        (x, z) at b."""
+        # integrate up to just before an event, restart at it (never step over a jump)
+        if a != grid[0] and a in grid:           # an output time exactly at the event
+            X.append(x.reshape(-1, 1))
+            Z.append(z.reshape(-1, 1))
+        end = b if b == grid[-1] else just_before(b)
+        tout = list(pts) + ([] if pts and pts[-1] == b else [end])
+        tout = [min(tt, end) for tt in tout]
+        if loops:
+            opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
+            opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
+        try:
+            F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
+            sol = F(x0=x, z0=z)
+        except RuntimeError as e:
+            def state_near(t_fail, a=a, x=x, z=z):
+                """(x, z) shortly before the failure, by a second run; None if it fails."""
+                try:
+                    probe = ca.integrator("probe", plugin, dae, float(a),
+                                          [a + (t_fail - a) * (1 - 1e-6)], opts)
+                    sol = probe(x0=x, z0=z)
+                except RuntimeError:
+                    return None
+                return np.array(sol["xf"]).ravel(), np.array(sol["zf"]).ravel()
+            raise SimulationError(failure_message(
+                model, e, a, b, rtol, atol, state_near if loops else None, p,
+                lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel())
+            ) from None
+        xf = np.array(sol["xf"])
+        zf = np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
+        X.append(xf[:, :len(pts)])
+        Z.append(zf[:, :len(pts)])
+        return xf[:, -1], (zf[:, -1] if has_alg else z)
+
+    interrupted = []
     if model.has_events:
         return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
-                            signals, solver, mobility)
+                            signals, solver, mobility, progress)
     retry = plugin == "idas" and "suppress_algebraic" not in opts
     try:
         with quiet_stderr() if retry else nullcontext():
@@ -173,27 +206,42 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         else:
             raise
         X, Z = integrate(plugin, opts)
+    if interrupted:
+        grid = grid[:X.shape[1]]
+        warn_interrupted(model.name, grid[-1])
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
     res = Result(model, grid, X, Z, U, p)
+    res.partial = bool(interrupted)
     res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
     res.solver = solver
     return res
 
 
 def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, signals,
-                 solver, mobility) -> Result:
+                 solver, mobility, progress) -> Result:
     """simulate() of a model with state events or modes (``events``)."""
     time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
         e for s in signals for e in s.events if grid[0] < e < grid[-1]))
     run = EventSimulation(model, ode, alg, p, u_expr, scale, plugin, opts)
-    T, X, Z, D = run.run(grid, np.asarray(xs, dtype=float).ravel(),
-                         np.asarray(zs, dtype=float).ravel(), time_events)
+    bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+    run.reached = time_reporter(bar, grid[0])
+    try:
+        T, X, Z, D = run.run(grid, np.asarray(xs, dtype=float).ravel(),
+                             np.asarray(zs, dtype=float).ravel(), time_events)
+        partial = False
+    except KeyboardInterrupt:
+        T, X, Z, D = run._columns(run.cols)
+        partial = True
+        warn_interrupted(model.name, T[-1])
+    finally:
+        bar.close()
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(T.size)(T.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, T.size))
     P = np.tile(p.reshape(-1, 1), (1, T.size))
     P[model.mode_params] = D
     res = Result(model, T, X, Z, U, P)
+    res.partial = partial
     res.events = run.log
     res.terminated = run.terminated
     res.mobility = mobility
