@@ -36,7 +36,8 @@ SCHEMES = ("radau", "legendre")
 @dataclass
 class Nodes:
     """The NLP's values at the mesh nodes: states X (nx × N+1), controls U (nu × N),
-    algebraic variables Z (nz × N+1), parameters P (np × 1), times t (1 × N+1), step h."""
+    algebraic variables Z (nz × N+1), parameters P (np × 1), times t (1 × N+1), step h; MX
+    of the NLP's variables, or SX of their twins (``NLP.as_sx``)."""
     X: ca.MX
     U: ca.MX
     Z: ca.MX
@@ -51,19 +52,23 @@ class Nodes:
     @property
     def U_nodes(self) -> ca.MX:
         """Controls at the nodes (nu × N+1): the last interval's value held at t_N."""
-        return ca.horzcat(self.U, self.U[:, -1]) if self.U.numel() else ca.MX(0, self.N + 1)
+        return ca.horzcat(self.U, self.U[:, -1]) if self.U.numel() else \
+            type(self.U)(0, self.N + 1)
 
 
 class Transcription:
     """The shared core; subclasses implement ``intervals`` (and ``fill_guess`` if they add
-    variables)."""
+    variables). ``in_sx``: whether the transcription can be written in SX (every Function
+    it calls evaluates on SX), the fixed numbers then folded into its arithmetic."""
+
+    in_sx = True
 
     def __init__(self, view: ModelView):
         self.view = view
 
     def transcribe(self, nlp: NLP, nodes: Nodes, integrands: list) -> ca.MX:
         """Add the dynamics to ``nlp``; return the integrals over [t_0, t_N] of
-        ``integrands`` (SX in the model's symbols), stacked."""
+        ``integrands`` (SX in the model's symbols), stacked (MX or SX as ``nodes``)."""
         view, N, c = self.view, nodes.N, self.view.compiled
         # integrands of the controls and parameters alone are constant on each interval:
         # h·g is their exact integral; the others use the transcription's quadrature
@@ -73,7 +78,7 @@ class Transcription:
         g = view.function([integrands[i] for i in other], "integrands") if other else None
         X_end, Q_other = self.intervals(nlp, nodes, g)
         nlp.equal(nodes.X[:, 1:] - X_end)
-        Q = ca.MX(len(integrands), 1)
+        Q = type(nodes.X)(len(integrands), 1)
         if held:
             gh = view.function([integrands[i] for i in held], "held").map(N)
             Q[held] = nodes.h * ca.sum2(gh(nodes.t[:, :N], nodes.X[:, :N], nodes.Z[:, :N],
@@ -123,6 +128,8 @@ class Collocation(Transcription):
         E = ca.DM.eye(N)
         Xc = self._Xc = nlp.variable("X_colloc", view.nx, N * d)
         Zc = nlp.variable("Z_colloc", view.nz, N * d, view.z_start.reshape(-1, 1))
+        if isinstance(nodes.X, ca.SX):
+            Xc, Zc = nlp.twin(Xc), nlp.twin(Zc)
         spread = ca.kron(E, ca.DM.ones(1, d))                   # interval -> its points
         Tc = nodes.t[:, :N] @ spread + nodes.h * ca.DM(np.tile(self.tau, N)).T
         Uc = nodes.U @ spread
@@ -167,7 +174,7 @@ class MultipleShooting(Transcription):
                            f"'{view.compiled.name}' has algebraic variables "
                            f"{view.compiled.z_names[:4]}; use 'collocation' or 'idas'")
         self.options = {**INTEGRATOR_DEFAULTS.get(self.plugin, {}), **(options or {})}
-
+        self.in_sx = self.plugin == "rk"        # explicit steps: one SX Function
     def intervals(self, nlp, nodes, g):
         view, c, N = self.view, self.view.compiled, nodes.N
         tau, tk, h = ca.SX.sym("tau"), ca.SX.sym("t_k"), ca.SX.sym("h")
