@@ -22,7 +22,7 @@ is printed with IPOPT's iteration counts. Targets: total ≤ 1.0×, IPOPT ≤ 1.
 """
 from __future__ import annotations
 
-import timing  # noqa: F401  (first: pins the BLAS threads before numpy is imported)
+from timing import interleaved, median, print_table, spread  # first: pins BLAS threads
 
 import argparse
 import sys
@@ -34,7 +34,6 @@ import numpy as np
 
 import acausal
 from acausal.models import CartPole
-from timing import interleaved, median, print_table, spread
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "examples"))
 import ocp_cartpole as ex  # noqa: E402   (the problem and its hand-written reference)
