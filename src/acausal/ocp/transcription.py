@@ -177,22 +177,32 @@ class MultipleShooting(Transcription):
         self.in_sx = self.plugin == "rk"        # explicit steps: one SX Function
     def intervals(self, nlp, nodes, g):
         view, c, N = self.view, self.view.compiled, nodes.N
-        tau, tk, h = ca.SX.sym("tau"), ca.SX.sym("t_k"), ca.SX.sym("h")
-        scaled = lambda e: ca.substitute(e, c.t, tk + h * tau)
+        s, tk, h = ca.SX.sym("s"), ca.SX.sym("t_k"), ca.SX.sym("h")
+        # a fixed step: the integrator runs in time over [0, h], t = t_k + s; a free final
+        # time: in τ ∈ [0, 1], t = t_k + h·τ, the rates scaled by the step h (a parameter)
+        fixed = nodes.h.is_constant()
+        local = tk + s if fixed else tk + h * s
+
+        def scaled(rates):
+            rates = ca.substitute(rates, c.t, local)
+            return rates if fixed else h * rates
+
         xdot, alg = view.f(c.t, c.x, c.z, c.u, c.p)
-        dae = {"x": c.x, "p": ca.vertcat(c.p, c.u, tk, h), "t": tau, "ode": h * scaled(xdot)}
+        dae = {"x": c.x, "p": ca.vertcat(c.p, c.u, tk, *([] if fixed else [h])), "t": s,
+               "ode": scaled(xdot)}
         if view.nz:
-            dae.update(z=c.z, alg=scaled(alg))
+            dae.update(z=c.z, alg=ca.substitute(alg, c.t, local))
         if g is not None:
-            dae["quad"] = h * scaled(g(c.t, c.x, c.z, c.u, c.p))
+            dae["quad"] = scaled(g(c.t, c.x, c.z, c.u, c.p))
+        span = float(ca.evalf(nodes.h)) if fixed else 1.0
         try:
-            F = ca.integrator("interval", self.plugin, dae, 0.0, 1.0, self.options)
+            F = ca.integrator("interval", self.plugin, dae, 0.0, span, self.options)
             if self.plugin == "rk" and F.is_a("MXFunction"):
                 F = F.expand()          # explicit steps as one SX Function: fast derivatives
         except RuntimeError as e:
             raise OCPError(f"cannot make a '{self.plugin}' integrator for model "
                            f"'{c.name}': {str(e).strip().splitlines()[-1]}") from None
         p = ca.vertcat(ca.repmat(nodes.P, 1, N), nodes.U, nodes.t[:, :N],
-                       ca.repmat(nodes.h, 1, N))
+                       *([] if fixed else [ca.repmat(nodes.h, 1, N)]))
         out = F.map(N)(x0=nodes.X[:, :N], z0=ca.DM(view.z_start), p=p)
         return out["xf"], (out["qf"] if g is not None else None)
