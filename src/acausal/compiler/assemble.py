@@ -157,10 +157,10 @@ def _declare_parameters(ws: Workspace, components):
     second list returned (by name)."""
     params, fixed = [], []
     for c in components:
-        syms = {}
+        syms, path = {}, c.path
         for pname, par in c.parameters().items():
             value = c._values[pname]
-            name = f"{c.path}.{pname}" if c.path else pname
+            name = f"{path}.{pname}" if path else pname
             declaration = par.compiled(value)
             if declaration is None:                       # fixed at 0: a massless part
                 syms[pname] = ca.SX(0.0)
@@ -168,9 +168,10 @@ def _declare_parameters(ws: Workspace, components):
                 continue
             elements = []
             for k, ename in enumerate(par.element_names()):
-                s = ca.SX.sym(f"{c.path}.{ename}" if c.path else ename)
+                full = f"{path}.{ename}" if path else ename
+                s = ca.SX.sym(full)
                 elements.append(s)
-                params.append((s, _parameter_record(s.name(), declaration,
+                params.append((s, _parameter_record(full, declaration,
                                                     value if par.size is None else value[k])))
             syms[pname] = elements[0] if par.size is None else _vc(*elements)
         ws.param_symbols[c] = syms

@@ -299,11 +299,13 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
 
     def relax(dim: int):
         k = len(fired)
+        if dim == 1:                    # (names known: no SX name lookups, costly in bulk)
+            e, ed, edd = ca.SX.sym(f"eps{k}"), ca.SX.sym(f"epsd{k}"), ca.SX.sym(f"epsdd{k}")
+            der_table[f"eps{k}"], der_table[f"epsd{k}"], der_table[f"epsdd{k}"] = ed, edd, None
+            return e, ed, edd
         e, ed, edd = (ca.SX.sym(f"eps{k}", dim), ca.SX.sym(f"epsd{k}", dim),
-                      ca.SX.sym(f"epsdd{k}", dim)) if dim > 1 else (
-            ca.SX.sym(f"eps{k}"), ca.SX.sym(f"epsd{k}"), ca.SX.sym(f"epsdd{k}"))
-        trios = zip(*(ca.vertsplit(x) for x in (e, ed, edd))) if dim > 1 else [(e, ed, edd)]
-        for a, b, c in trios:
+                      ca.SX.sym(f"epsdd{k}", dim))
+        for a, b, c in zip(*(ca.vertsplit(x) for x in (e, ed, edd))):
             der_table[a.name()], der_table[b.name()], der_table[c.name()] = b, c, None
         return e, ed, edd
 
@@ -377,7 +379,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
         for pot in n.domain.potentials:
             qname, vname = _state_names(n, len(syms), pot, state_names)
             s, v, a = ca.SX.sym(qname), ca.SX.sym(vname), ca.SX.sym(f"der({vname})")
-            der_table[s.name()], der_table[v.name()], der_table[a.name()] = v, a, None
+            der_table[qname], der_table[vname], der_table[f"der({vname})"] = v, a, None
             q.append(s); qd.append(v); qdd.append(a)
             q_names.append(qname); qd_names.append(vname)
             syms.append((s, v, a))
