@@ -54,6 +54,18 @@ def _stack(items) -> ca.SX:
     return _vc(*items) if items else ca.SX(0, 1)
 
 
+def _column(values: list) -> ca.SX:
+    """A column of numbers and scalar SX, the numbers converted in one piece (one SX per
+    number costs ~10 µs each in bulk)."""
+    expr = [i for i, x in enumerate(values) if isinstance(x, ca.SX)]
+    if not expr:
+        return ca.SX(ca.DM([float(x) for x in values])) if values else ca.SX(0, 1)
+    num = [i for i, x in enumerate(values) if not isinstance(x, ca.SX)]
+    joined = _vc(ca.DM([float(values[i]) for i in num]), *[values[i] for i in expr])
+    order = np.argsort(num + expr)
+    return joined[[int(k) for k in order]]
+
+
 def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -> CompiledModel:
     """Compile ``model`` into a CompiledModel; ``smooth``: every component with events in its
     smooth form (see ``PhysicsBuilder.smooth``); ``index_reduction``: reduce the loops of
@@ -523,7 +535,7 @@ def _events(events: list, p: ca.SX) -> ca.Function:
 
 def _parameter_function(name: str, values: list, p: ca.SX, what: str) -> ca.Function:
     """Function p -> values (numbers, or expressions of parameters)."""
-    v = _stack([ca.SX(x) for x in values])
+    v = _column(values)
     f = ca.Function(name, [p], [v], ["p"], [name], {"allow_free": True})
     if f.has_free():
         raise StructureError(f"{what} may depend on parameters only; these depend on "
