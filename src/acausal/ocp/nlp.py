@@ -96,21 +96,22 @@ class NLP:
         (the MX cost and constraints then expanded to SX of the twins), else in MX."""
         g = list(self.g)
         sx = [i for i, e in enumerate(g) if isinstance(e, ca.SX)]
-        mx = [i for i, e in enumerate(g) if i not in set(sx)]
-        x = self.w
-        try:
-            if not sx:
-                raise RuntimeError
-            f, *exprs = self.as_sx([f] + [g[i] for i in mx])
-            x = ca.veccat(*self.twins)
-        except RuntimeError:            # MX (an MX-only Function in it, or no SX part)
-            exprs, mx = self.lift([g[i] for i in sx]), sx
+        if sx:
+            mx = [i for i in range(len(g)) if i not in set(sx)]
+            try:
+                f_sx, *rest = self.as_sx([f] + [g[i] for i in mx])
+            except RuntimeError:        # an MX-only Function among the user's: solve in MX
+                pass
+            else:
+                for i, e in zip(mx, rest):
+                    g[i] = e
+                return ca.nlpsol("ocp", "ipopt", {"x": ca.veccat(*self.twins), "f": f_sx,
+                                                  "g": ca.vertcat(*g)}, options)
+            for i, e in zip(sx, self.lift([g[i] for i in sx])):
+                g[i] = e
             if self.defined:
-                values = self.lift(self.definitions)
-                f, *g = ca.substitute([f] + g, self.defined, values)
-        for i, e in zip(mx, exprs):
-            g[i] = e
-        return ca.nlpsol("ocp", "ipopt", {"x": x, "f": f, "g": ca.vertcat(*g)}, options)
+                f, *g = ca.substitute([f] + g, self.defined, self.lift(self.definitions))
+        return ca.nlpsol("ocp", "ipopt", {"x": self.w, "f": f, "g": ca.vertcat(*g)}, options)
 
     def bounds_and_guess(self):
         """(lbw, ubw, w0, lbg, ubg) as flat arrays (column-major, as ``w``)."""
