@@ -17,15 +17,22 @@ import casadi as ca
 
 MAX_TERMS = 48
 MAX_NODES = 4000       # larger expressions are left as they are (the walk is in Python)
+MAX_WORK = 20_000     # term operations; beyond, the expressions are left as they are
 _ZERO = 1e-14          # a collected coefficient below this fraction of its parts is zero
+
+
+class _TooLarge(Exception):
+    pass
 
 
 class _Lean:
     def __init__(self):
+        self.work = 0                           # term operations so far (MAX_WORK)
         self.memo: dict[int, dict] = {}         # node hash -> polynomial
         self.atoms: dict[tuple, int] = {}       # atom key -> id
         self.exprs: list[ca.SX] = []            # id -> SX
         self.trig: dict[int, tuple] = {}        # id -> ('sin' | 'cos', argument key)
+        self.monomials: dict[tuple, ca.SX] = {}  # built products of atoms
 
     # ---- polynomials: {monomial: coefficient}, monomial = ((atom id, power), ...) ------------
     def atom(self, key: tuple, make) -> dict:
@@ -44,7 +51,13 @@ class _Lean:
     def scale(p: dict, c: float) -> dict:
         return {m: c * v for m, v in p.items()} if c else {}
 
+    def spend(self, n: int) -> None:
+        self.work += n
+        if self.work > MAX_WORK:
+            raise _TooLarge
+
     def add(self, a: dict, b: dict) -> dict:
+        self.spend(len(a) + len(b))
         out = dict(a)
         for m, v in b.items():
             if m in out:
@@ -57,8 +70,8 @@ class _Lean:
                 out[m] = v
         return self.pythagoras(out)
 
-    @staticmethod
-    def mul(a: dict, b: dict) -> dict:
+    def mul(self, a: dict, b: dict) -> dict:
+        self.spend(len(a) * len(b))
         out: dict = {}
         for ma, va in a.items():
             for mb, vb in b.items():
@@ -73,31 +86,33 @@ class _Lean:
         """m·sin²a + m·cos²a → m, for every such pair with equal coefficients."""
         if not self.trig:
             return p
-        partner = {}
-        for i, (kind, arg) in self.trig.items():
-            partner.setdefault(arg, {})[kind] = i
+        cos_of = {arg: i for i, (kind, arg) in self.trig.items() if kind == "cos"}
         changed = True
         while changed:
             changed = False
-            for m, v in list(p.items()):
-                powers = dict(m)
-                for i, n in powers.items():
+            for m in list(p):
+                if m not in p:
+                    continue
+                v = p[m]
+                for i, n in m:
                     kind, arg = self.trig.get(i, (None, None))
-                    j = partner.get(arg, {}).get("cos")
+                    j = cos_of.get(arg)
                     if kind != "sin" or n < 2 or j is None:
                         continue
-                    rest = dict(powers)
+                    rest = dict(m)
                     rest[i] -= 2
                     other = dict(rest)
                     other[j] = other.get(j, 0) + 2
                     mo = tuple(sorted((k, e) for k, e in other.items() if e))
+                    self.spend(1)
                     if mo in p and abs(p[mo] - v) <= _ZERO * abs(v):
                         del p[m], p[mo]
-                        p = self.add(p, {tuple(sorted((k, e) for k, e in rest.items() if e)): v})
+                        merged = tuple(sorted((k, e) for k, e in rest.items() if e))
+                        p[merged] = p.get(merged, 0.0) + v
+                        if p[merged] == 0.0:
+                            del p[merged]
                         changed = True
                         break
-                if changed:
-                    break
         return p
 
     # ---- from and to SX ---------------------------------------------------------------------
@@ -137,37 +152,57 @@ class _Lean:
                              lambda: ca.SX.binary(op, self.build(deps[0]), self.build(deps[1])))
         return self.atom(("node", h), lambda: e)
 
+    def monomial(self, m: tuple) -> ca.SX:
+        """The product of the atoms' powers ``m`` (products shared by their prefixes)."""
+        if m not in self.monomials:
+            self.spend(1)
+            i, n = m[-1]
+            prefix = m[:-1] + (((i, n - 1),) if n > 1 else ())
+            f = self.exprs[i]
+            self.monomials[m] = _binary(ca.OP_MUL, self.monomial(prefix), f) if prefix else f
+        return self.monomials[m]
+
     def build(self, p: dict) -> ca.SX:
-        out = ca.SX(0)
+        out = None
         for m, v in sorted(p.items()):
-            term = None
-            for i, n in m:
-                f = self.exprs[i]
-                for _ in range(n):
-                    term = f if term is None else term * f
-            if term is None:
+            if not m:
                 term = ca.SX(v)
+            elif v == 1.0:
+                term = self.monomial(m)
             elif v == -1.0:
-                term = -term
-            elif v != 1.0:
-                term = v * term
-            out = term if out.is_zero() else out + term
-        return out
+                term = ca.SX.unary(ca.OP_NEG, self.monomial(m))
+            else:
+                term = _binary(ca.OP_MUL, ca.SX(v), self.monomial(m))
+            out = term if out is None else _binary(ca.OP_ADD, out, term)
+        return ca.SX(0) if out is None else out
+
+
+#: SX operations by opcode (several times cheaper from Python than the operators)
+_binary = ca.SX.binary
 
 
 def lean(exprs: list[ca.SX]) -> list[ca.SX]:
     """``exprs`` (SX matrices) simplified exactly, each element replaced by its polynomial
-    form where that has fewer nodes, then their repeated subexpressions shared
-    (``ca.cse``); returned as they are if they have more than ``MAX_NODES`` nodes."""
+    form where that has fewer nodes, their repeated subexpressions shared (``ca.cse``);
+    the simplified set is returned only if it takes fewer operations than the given one
+    (shared alike), and the given one as it is if it is larger than ``MAX_NODES`` nodes or
+    its expansion than ``MAX_WORK`` term operations."""
+    exprs = list(exprs)
     if sum(ca.n_nodes(e) for e in exprs) > MAX_NODES:
-        return list(exprs)
+        return exprs
     simplifier = _Lean()
     out = []
-    for e in exprs:
-        y = ca.SX(e.sparsity())
-        for k in range(e.nnz()):
-            x = e.nz[k]
-            s = simplifier.build(simplifier.poly(x))
-            y.nz[k] = s if ca.n_nodes(s) < ca.n_nodes(x) else x
-        out.append(y)
-    return ca.cse(out)
+    try:
+        for e in exprs:
+            y = ca.SX(e.sparsity())
+            for k in range(e.nnz()):
+                x = e.nz[k]
+                s = simplifier.build(simplifier.poly(x))
+                y.nz[k] = s if ca.n_nodes(s) < ca.n_nodes(x) else x
+            out.append(y)
+    except _TooLarge:
+        return exprs
+    given, short = ca.cse(exprs), ca.cse(out)
+    count = lambda es: ca.Function("count", ca.symvar(ca.veccat(*[ca.vec(e) for e in es])),
+                                   es).n_instructions()
+    return short if count(short) < count(given) else given
