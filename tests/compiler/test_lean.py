@@ -75,3 +75,15 @@ def test_cancelling_products_and_pythagoras():
             assert abs(float(f(*v))) <= 1e-13
     assert ca.n_nodes(out[1]) <= ca.n_nodes(0.3 * b)
     assert not ca.depends_on(out[1], th) and not ca.depends_on(out[0], ca.vertcat(b, th))
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_small_solve_is_numpys_solve(n):
+    from acausal.compiler.symbolic import small_solve
+    A, b = ca.SX.sym("A", n, n), ca.SX.sym("b", n)
+    f = ca.Function("f", [A, b], [small_solve(A, b)])
+    rng = np.random.default_rng(n)
+    for _ in range(20):
+        An, bn = rng.normal(size=(n, n)) + n * np.eye(n), rng.normal(size=n)
+        np.testing.assert_allclose(np.array(f(An, bn)).ravel(), np.linalg.solve(An, bn),
+                                   rtol=1e-12, atol=1e-12)
