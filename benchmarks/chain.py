@@ -30,7 +30,8 @@ memory of an N-mass chain in a fresh process (target at 100 000: < 15 s, < 1 GB)
 """
 from __future__ import annotations
 
-from timing import Phases, interleaved, maxrss_mb, median, print_table, spread  # first
+from timing import (Phases, fit_exponent, interleaved, maxrss_mb, median,  # first: pins
+                    print_table, spread)                                 # BLAS threads
 
 import argparse
 import subprocess
@@ -213,7 +214,7 @@ def main(argv=None):
     if args.scale_child:
         return scale_child(args.scale_child)
 
-    rows, errors, e2e = [], [], {}
+    rows, errors, e2e, compile_time = [], [], {}, {}
     for n in args.ns:
         keep = {}
         runs = interleaved({"acausal": lambda: acausal_run(n, keep), "CasADi": lambda: casadi_run(n),
@@ -224,6 +225,7 @@ def main(argv=None):
                                         args.repeat)["eq"]
         ac, hand = runs["acausal"], runs["CasADi"]
         e2e[n] = median(ac, "total") / median(hand, "total")
+        compile_time[n] = median(ac, "compile")
         rows.append([n, spread(ac, "build"), spread(ac, "compile"), spread(ac, "simulate"),
                      spread(ac, "read"), spread(ac, "total"), spread(hand, "build"),
                      spread(hand, "create"), spread(hand, "run"), spread(hand, "total"), e2e[n],
@@ -253,6 +255,10 @@ def main(argv=None):
               "atol 1e-14)")
         print_table(["N", "max|x_ref|", "acausal", "ac eq", "CasADi", "CasADi(p)", "scipy DOP"],
                     errors, "{:10.3e}")
+        if len(rows) > 1:
+            ns = list(e2e)
+            print(f"fitted exponent of the median compile time (t ~ N^k): k = "
+                  f"{fit_exponent(ns, [compile_time[n] for n in ns]):.2f}")
         for n, r in e2e.items():
             verdict = "met" if r <= TARGET_E2E else "NOT met"
             print(f"end to end N = {n}: {r:.2f}x hand-written CasADi (target <= "
