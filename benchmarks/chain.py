@@ -3,43 +3,52 @@
     wall | spring1 | mass1 | spring2 | mass2 | ... | massN <- F(t) = sin(2t)
 
 m = 1 kg, c = 100 N/m (s_rel0 = 0, L = 0), everything at rest at t = 0; the force on the
-last mass is a model Input given as a function of time. For each N:
+last mass is a model Input given as a function of time. 10 s, rtol 1e-8, atol 1e-10, a
+101-point grid. The chain is not stiff (its highest frequency is 2·sqrt(c/m) = 20 rad/s):
+the CasADi contenders use CVODES (BDF, as simulate() picks it here), scipy uses DOP853, the
+right method for a non-stiff problem at tight tolerances. Contenders, run interleaved
+(``--repeat`` rounds), each timed in the phases a user waits for:
 
-- acausal: time to build the Model in Python, to compile it, and of ``simulate()`` (10 s,
-  rtol 1e-8, atol 1e-10, cvodes BDF as the hand model, 101-point grid; integrator creation, initial values and
-  reading every mass's trajectory from the Result included), plus the integrator run alone
-  on acausal's equations (parameters folded in, as simulate() does);
-- CasADi by hand: the same ODE as SX (build: expressions + integrator creation) and the
-  integrator run (cvodes, same tolerances and grid); also its run with every parameter kept
-  symbolic (m, L, c, s_rel0 per element), the form acausal compiles to;
-- numpy + scipy: solve_ivp BDF with the (constant, sparse) Jacobian, and DOP853 / RK45;
-- a tight-tolerance reference (scipy DOP853, rtol 1e-12, atol 1e-14): max error of every
-  method's final state.
+- acausal end to end: build the Model in Python, compile it, the first ``simulate()`` after
+  compile (integrator creation, initial values, the run) and reading every mass's position and
+  velocity from the Result;
+- acausal's equations alone: a CVODES integrator on the compiled ODE with the parameters
+  and the input substituted (as simulate() does): creation, run;
+- CasADi by hand: the ODE as SX with numbers (build: expressions), integrator creation, the
+  run and its trajectories as numpy arrays; and the same with every parameter symbolic (m, L,
+  c, s_rel0 per element), the form acausal compiles to (run only);
+- scipy: solve_ivp DOP853 with a vectorized numpy right-hand side (run).
 
-Prints two tables (times and ratios; errors) and the fitted exponent of compile time vs N.
-Timings are wall-clock, best of ``--repeat`` runs for the simulations (compile: one run).
+Printed per N: median (min–max) of each phase, the end-to-end ratio acausal / CasADi by
+hand (target ≤ 2), and every contender's max error of the final state against a tight
+reference (scipy DOP853, rtol 1e-12, atol 1e-14). ``--scale N``: compile time and peak
+memory of an N-mass chain in a fresh process (target at 100 000: < 15 s, < 1 GB).
 
-    python benchmarks/chain.py                 # N = 10, 100, 1000, 10000
-    python benchmarks/chain.py --max-n 1000
+    python benchmarks/chain.py                      # N = 1000, 10000 (~ 2 min)
+    python benchmarks/chain.py --ns 100 1000 --repeat 5
+    python benchmarks/chain.py --ns --scale 100000
 """
 from __future__ import annotations
 
+from timing import (Phases, fit_exponent, interleaved, maxrss_mb, median,  # first: pins
+                    print_table, spread)                                 # BLAS threads
+
 import argparse
-import gc
+import subprocess
+import sys
 import time
 
 import casadi as ca
 import numpy as np
-import scipy.sparse as sps
 from scipy.integrate import solve_ivp
 
 import acausal
-from timing import best_of, fit_exponent, print_table
 from acausal.components.translational import Fixed, Force, Mass, Spring
 
 MASS, STIFF, T_FINAL, RTOL, ATOL = 1.0, 100.0, 10.0, 1e-8, 1e-10
 GRID = np.linspace(0.0, T_FINAL, 101)
-TARGETS = {"compile_1000": 0.5, "compile_10000": 5.0, "sim_ratio": 1.3}
+CVODES = {"abstol": ATOL, "reltol": RTOL, "max_num_steps": 100000}
+TARGET_E2E, TARGET_SCALE = 2.0, (15.0, 1024.0)       # ratio; s, MB at 100 000 masses
 
 
 def force(t):
@@ -65,31 +74,52 @@ def build_acausal(n: int) -> acausal.Model:
     return m
 
 
-def acausal_final_state(res, n):
-    return np.array([res[f"mass{i}.s"][-1] for i in range(1, n + 1)]
-                    + [res[f"mass{i}.v"][-1] for i in range(1, n + 1)])
+def acausal_run(n: int, keep: dict) -> dict:
+    """End to end: build, compile, first simulate() and reading every state; the compiled
+    model is kept in ``keep``."""
+    ph = Phases()
+    model = build_acausal(n)
+    ph.lap("build")
+    compiled = acausal.compile(model)
+    ph.lap("compile")
+    res = compiled.simulate(T_FINAL, t=GRID, inputs={"F": force}, rtol=RTOL, atol=ATOL,
+                            solver="cvodes")
+    ph.lap("simulate")
+    s = np.array([res[f"mass{i}.s"] for i in range(1, n + 1)])
+    v = np.array([res[f"mass{i}.v"] for i in range(1, n + 1)])
+    ph.lap("read")
+    ph["total"] = sum(ph[k] for k in ("build", "compile", "simulate", "read"))
+    ph["xf"] = np.concatenate([s[:, -1], v[:, -1]])
+    keep["compiled"] = compiled
+    return ph
 
 
-def acausal_integrator_only(compiled):
-    """What simulate() does minus initialization and recorded variables: the integrator on
-    the compiled DAE with the input and the parameter values substituted (creation, run)."""
+def acausal_equations_run(compiled) -> dict:
+    """A CVODES integrator on acausal's ODE, parameters and input substituted."""
+    ph = Phases()
     ode = ca.substitute([compiled.ode], [compiled.u, compiled.p],
                         [force(compiled.t), ca.SX(compiled.param_vector())])[0]
-    dae = {"x": compiled.x, "t": compiled.t, "ode": ode}
-    t0 = time.perf_counter()
-    F = ca.integrator("acausal", "cvodes", dae, GRID[0], GRID[1:],
-                      {"abstol": ATOL, "reltol": RTOL, "max_num_steps": 100000})
-    t1 = time.perf_counter()
-    _run_and_read(F, x0=np.zeros(compiled.x.numel()))
-    t2 = time.perf_counter()
-    return t1 - t0, t2 - t1
+    F = ca.integrator("acausal", "cvodes", {"x": compiled.x, "t": compiled.t, "ode": ode},
+                      GRID[0], GRID[1:], CVODES)
+    ph.lap("create")
+    xf = F(x0=np.zeros(compiled.x.numel()))["xf"].full()
+    ph.lap("run")
+    ph["xf"] = _ordered(compiled, xf[:, -1])
+    return ph
+
+
+def _ordered(compiled, x):
+    """A final state of acausal's x as [s_1..s_N, v_1..v_N]."""
+    n = compiled.x.numel() // 2
+    where = {name: i for i, name in enumerate(compiled.x_names)}
+    return np.array([x[where[f"mass{i}.{k}"]] for k in ("s", "v") for i in range(1, n + 1)])
 
 
 # ---- CasADi by hand -----------------------------------------------------------------------
-def build_casadi(n: int, symbolic: bool = False):
-    """The chain's ODE in x = [s; v] (centre positions, velocities). ``symbolic``: with every
-    component's parameters as symbols (m, L, c, s_rel0 per element, wall s0), as acausal
-    keeps them so that they can change without recompiling; else numbers folded in."""
+def casadi_ode(n: int, symbolic: bool = False):
+    """(x, p, t, ode) of the chain in x = [s; v] (positions, velocities). ``symbolic``: with
+    every component's parameters as symbols (m, L, c, s_rel0 per element, wall s0), as
+    acausal keeps them so that they can change without recompiling; else numbers."""
     s, v, t = ca.SX.sym("s", n), ca.SX.sym("v", n), ca.SX.sym("t")
     if symbolic:
         m, L, c, s_rel0 = (ca.SX.sym(k, n) for k in ("m", "L", "c", "s_rel0"))
@@ -102,16 +132,38 @@ def build_casadi(n: int, symbolic: bool = False):
         f = STIFF * (s - ca.vertcat(0, s[:n - 1]))            # spring i's tension
         acc = (ca.vertcat(f[1:], ca.sin(2 * t)) - f) / MASS
         p = ca.SX(0, 1)
-    dae = {"x": ca.vertcat(s, v), "p": p, "t": t, "ode": ca.vertcat(v, acc)}
-    F = ca.integrator("hand", "cvodes", dae, GRID[0], GRID[1:],
-                      {"abstol": ATOL, "reltol": RTOL, "max_num_steps": 100000})
+    return ca.vertcat(s, v), p, t, ca.vertcat(v, acc)
+
+
+def casadi_run(n: int) -> dict:
+    ph = Phases()
+    x, p, t, ode = casadi_ode(n)
+    ph.lap("build")
+    F = ca.integrator("hand", "cvodes", {"x": x, "t": t, "ode": ode}, GRID[0], GRID[1:],
+                      CVODES)
+    ph.lap("create")
+    X = F(x0=np.zeros(2 * n))["xf"].full()
+    ph.lap("run")
+    ph["total"] = ph["build"] + ph["create"] + ph["run"]
+    ph["xf"] = X[:, -1]
+    return ph
+
+
+def casadi_symbolic_run(n: int) -> dict:
+    x, p, t, ode = casadi_ode(n, symbolic=True)
+    F = ca.integrator("hand_p", "cvodes", {"x": x, "p": p, "t": t, "ode": ode}, GRID[0],
+                      GRID[1:], CVODES)
     p_val = np.concatenate([np.full(n, MASS), np.zeros(n), np.full(n, STIFF), np.zeros(n),
-                            [0.0]]) if symbolic else np.zeros(0)
-    return F, p_val
+                            [0.0]])
+    ph = Phases()
+    X = F(x0=np.zeros(2 * n), p=p_val)["xf"].full()
+    ph.lap("run")
+    ph["xf"] = X[:, -1]
+    return ph
 
 
 # ---- numpy + scipy ------------------------------------------------------------------------
-def scipy_system(n: int):
+def scipy_rhs(n: int):
     def rhs(t, y):
         s, v = y[:n], y[n:]
         f = STIFF * np.diff(s, prepend=0.0)
@@ -119,174 +171,104 @@ def scipy_system(n: int):
         fn[:-1] = f[1:]
         fn[-1] = np.sin(2.0 * t)
         return np.concatenate([v, (fn - f) / MASS])
-    main = np.full(n, -2 * STIFF / MASS)
-    main[-1] = -STIFF / MASS
-    off = np.full(n - 1, STIFF / MASS)
-    K = sps.diags([off, main, off], [-1, 0, 1])
-    jac = sps.bmat([[None, sps.identity(n)], [K, None]], format="csc")
-    return rhs, jac
+    return rhs
 
 
-def run_scipy(n, method, rtol=RTOL, atol=ATOL):
-    rhs, jac = scipy_system(n)
-    kw = {"jac": jac} if method in ("BDF", "Radau", "LSODA") else {}
-    t0 = time.perf_counter()
-    sol = solve_ivp(rhs, (0.0, T_FINAL), np.zeros(2 * n), method=method, t_eval=GRID,
-                    rtol=rtol, atol=atol, **kw)
-    dt = time.perf_counter() - t0
+def scipy_run(n: int, rtol=RTOL, atol=ATOL) -> dict:
+    ph = Phases()
+    sol = solve_ivp(scipy_rhs(n), (0.0, T_FINAL), np.zeros(2 * n), method="DOP853",
+                    t_eval=GRID, rtol=rtol, atol=atol)
+    ph.lap("run")
     if not sol.success:
-        raise RuntimeError(f"scipy {method} failed: {sol.message}")
-    return dt, sol.y[:, -1]
+        raise RuntimeError(f"scipy DOP853 failed: {sol.message}")
+    ph["xf"] = sol.y[:, -1]
+    return ph
 
 
-
-
-def _simulate_and_read(compiled, n):
-    res = compiled.simulate(T_FINAL, t=GRID, inputs={"F": force}, rtol=RTOL, atol=ATOL,
-                            solver="cvodes")     # the hand model's method (small N: not Adams)
-    return res, acausal_final_state(res, n)
-
-
-def _run_and_read(F, **args) -> dict:
-    sol = F(**args)
-    sol["xf"] = sol["xf"].full()
-    return sol
-
-
-def bench(n: int, repeat: int, explicit: bool) -> dict:
-    r = {"N": n}
-    gc.collect()
+# ---- compile scale in a fresh process -----------------------------------------------------
+def scale_child(n: int) -> None:
     t0 = time.perf_counter()
     model = build_acausal(n)
-    r["ac_build"] = time.perf_counter() - t0
-    t0 = time.perf_counter()
-    compiled = acausal.compile(model)
-    r["ac_compile"] = time.perf_counter() - t0
-    # simulate() and reading the trajectories of every mass (states are read directly; other
-    # recorded variables would be built on first access): the first call after compile, what
-    # a user waits for, and the best of the repeats
-    t0 = time.perf_counter()
-    _simulate_and_read(compiled, n)
-    r["ac_first"] = time.perf_counter() - t0
-    r["ac_sim"], (res, x_ac) = best_of(lambda: _simulate_and_read(compiled, n), repeat)
-    create, run = zip(*[acausal_integrator_only(compiled) for _ in range(repeat)])
-    r["ac_int_create"], r["ac_int_run"] = min(create), min(run)
-
-    t0 = time.perf_counter()
-    F, _ = build_casadi(n)
-    r["ca_build"] = time.perf_counter() - t0
-    # the run and its trajectories as numpy arrays (what simulate() hands the user)
-    r["ca_sim"], sol = best_of(lambda: _run_and_read(F, x0=np.zeros(2 * n)), repeat)
-    x_ca = sol["xf"][:, -1]
-    Fp, p_val = build_casadi(n, symbolic=True)
-    r["cap_sim"], sol = best_of(lambda: _run_and_read(Fp, x0=np.zeros(2 * n), p=p_val), repeat)
-    r["ac_vs_cap"] = np.max(np.abs(sol["xf"][:, -1] - x_ca))
-
-    r["bdf"], x_bdf = min((run_scipy(n, "BDF") for _ in range(repeat)), key=lambda a: a[0])
-    if explicit:
-        r["dop853"], x_dop = min((run_scipy(n, "DOP853") for _ in range(repeat)),
-                                 key=lambda a: a[0])
-        r["rk45"], x_rk = run_scipy(n, "RK45")
-    _, x_ref = run_scipy(n, "DOP853", rtol=1e-12, atol=1e-14)
-    scale = np.max(np.abs(x_ref))
-    r["scale"] = scale
-    r["err_ac"] = np.max(np.abs(x_ac - x_ref))
-    r["err_ca"] = np.max(np.abs(x_ca - x_ref))
-    r["err_bdf"] = np.max(np.abs(x_bdf - x_ref))
-    if explicit:
-        r["err_dop853"] = np.max(np.abs(x_dop - x_ref))
-        r["err_rk45"] = np.max(np.abs(x_rk - x_ref))
-    r["ac_vs_ca"] = np.max(np.abs(x_ac - x_ca))
-    return r
+    t1 = time.perf_counter()
+    acausal.compile(model)
+    t2 = time.perf_counter()
+    print(f"{t1 - t0} {t2 - t1} {maxrss_mb()}")
 
 
-
-
+def scale(n: int) -> tuple[float, float, float]:
+    """(build [s], compile [s], peak memory [MB]) of an n-mass chain in a fresh process."""
+    out = subprocess.run([sys.executable, __file__, "--scale-child", str(n)], check=True,
+                         capture_output=True, text=True).stdout.split()
+    return tuple(float(v) for v in out[-3:])
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--max-n", type=int, default=10000, help="largest N to run (default 10000)")
-    ap.add_argument("--ns", type=int, nargs="*", default=[10, 100, 1000, 10000],
-                    help="chain lengths (default 10 100 1000 10000)")
-    ap.add_argument("--repeat", type=int, default=3, help="runs per simulation timing (best)")
-    ap.add_argument("--no-explicit", action="store_true", help="skip scipy RK45 / DOP853")
+    ap.add_argument("--ns", type=int, nargs="*", default=[1000, 10000],
+                    help="chain lengths (default 1000 10000)")
+    ap.add_argument("--repeat", type=int, default=3, help="interleaved rounds (default 3)")
+    ap.add_argument("--scale", type=int, nargs="*", default=[],
+                    help="chain lengths to compile in a fresh process (time, memory)")
+    ap.add_argument("--scale-child", type=int, help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
-    ns = [n for n in args.ns if n <= args.max_n]
+    if args.scale_child:
+        return scale_child(args.scale_child)
 
-    rows = []
-    for n in ns:
-        r = bench(n, args.repeat, not args.no_explicit)
-        rows.append(r)
-        print(f"N={n:6d} done: compile {r['ac_compile']:.3f} s, simulate {r['ac_sim']:.3f} s, "
-              f"CasADi {r['ca_build']:.3f} + {r['ca_sim']:.3f} s", flush=True)
-    explicit = not args.no_explicit
+    rows, errors, e2e, compile_time = [], [], {}, {}
+    for n in args.ns:
+        keep = {}
+        runs = interleaved({"acausal": lambda: acausal_run(n, keep), "CasADi": lambda: casadi_run(n),
+                            "CasADi(p)": lambda: casadi_symbolic_run(n),
+                            "scipy": lambda: scipy_run(n)}, args.repeat)
+        compiled = keep.pop("compiled")
+        runs["equations"] = interleaved({"eq": lambda: acausal_equations_run(compiled)},
+                                        args.repeat)["eq"]
+        ac, hand = runs["acausal"], runs["CasADi"]
+        e2e[n] = median(ac, "total") / median(hand, "total")
+        compile_time[n] = median(ac, "compile")
+        rows.append([n, spread(ac, "build"), spread(ac, "compile"), spread(ac, "simulate"),
+                     spread(ac, "read"), spread(ac, "total"), spread(hand, "build"),
+                     spread(hand, "create"), spread(hand, "run"), spread(hand, "total"), e2e[n],
+                     spread(runs["equations"], "create"), spread(runs["equations"], "run"),
+                     spread(runs["CasADi(p)"], "run"), spread(runs["scipy"], "run")])
+        x_ref = scipy_run(n, rtol=1e-12, atol=1e-14)["xf"]
+        errors.append([n, float(np.max(np.abs(x_ref)))] + [
+            float(np.max(np.abs(runs[k][-1]["xf"] - x_ref)))
+            for k in ("acausal", "equations", "CasADi", "CasADi(p)", "scipy")])
+        print(f"N = {n} done", flush=True)
 
-    print(f"\nchain of N masses and springs, {T_FINAL:g} s, rtol {RTOL:g}, atol {ATOL:g}, "
-          f"{len(GRID)}-point grid; wall-clock times [s] (simulations: best of {args.repeat})")
-    print_table(["N", "build", "compile", "1st sim()", "simulate()", "int.create", "int.run",
-                 "CasADi bld", "CasADi run", "1st ratio", "sim ratio", "run ratio", "CasADi(p)",
-                 "run/(p)"],
-                [[r["N"], r["ac_build"], r["ac_compile"], r["ac_first"], r["ac_sim"],
-                  r["ac_int_create"], r["ac_int_run"], r["ca_build"], r["ca_sim"],
-                  r["ac_first"] / (r["ca_build"] + r["ca_sim"]),
-                  r["ac_sim"] / (r["ca_build"] + r["ca_sim"]), r["ac_int_run"] / r["ca_sim"],
-                  r["cap_sim"], r["ac_int_run"] / r["cap_sim"]]
-                 for r in rows], "{:10.4g}")
-    print("  build, compile, simulate(): acausal (simulate() creates its integrator, computes "
-          "initial values\n  and reads every mass's trajectory); 1st sim(): the first call "
-          "after compile; int.create / int.run:\n  a cvodes integrator on acausal's DAE alone; "
-          "CasADi bld / run: the hand-written SX model\n  (expressions + integrator creation / "
-          "the run). 1st ratio, sim ratio = 1st sim(), simulate() / (CasADi\n  bld + run); run "
-          "ratio = int.run / CasADi run. CasADi(p): run of the hand-written "
-          "model with every parameter symbolic, as acausal keeps them;\n  run/(p) = int.run / "
-          "CasADi(p)")
-    head = ["N", "scipy BDF", "BDF/CasADi"]
-    if explicit:
-        head += ["DOP853", "DOP/CasADi", "RK45", "RK45/CasADi"]
-    print_table(head, [[r["N"], r["bdf"], r["bdf"] / r["ca_sim"]]
-                  + ([r["dop853"], r["dop853"] / r["ca_sim"], r["rk45"], r["rk45"] / r["ca_sim"]]
-                     if explicit else []) for r in rows], "{:10.4g}")
-    print("  numpy + scipy solve_ivp (BDF with the sparse Jacobian); ratios against the CasADi run")
-
-    print("\nmax |final state - reference|  (reference: scipy DOP853, rtol 1e-12, atol 1e-14)")
-    head = ["N", "max|x_ref|", "acausal", "CasADi", "ac-CasADi", "CasADi(p)-", "scipy BDF"]
-    if explicit:
-        head += ["DOP853", "RK45"]
-    print_table(head, [[r["N"], r["scale"], r["err_ac"], r["err_ca"], r["ac_vs_ca"], r["ac_vs_cap"],
-                   r["err_bdf"]]
-                  + ([r["err_dop853"], r["err_rk45"]] if explicit else []) for r in rows],
-           "{:10.3e}")
-    print("  ac-CasADi: |acausal - hand-written CasADi|; CasADi(p)-: |CasADi(p) - CasADi|")
-
-    ns_fit = [r["N"] for r in rows]
-    print()
-    for label, key in (("compile", "ac_compile"), ("build + compile", None)):
-        ts = [r["ac_compile"] + (r["ac_build"] if key is None else 0) for r in rows]
-        big = [(n, t) for n, t in zip(ns_fit, ts) if n >= 100]
-        msg = f"fitted exponent of {label} time (t ~ N^k): k = {fit_exponent(ns_fit, ts):.2f}"
-        if len(big) >= 2:
-            msg += f" (N >= 100: k = {fit_exponent(*zip(*big)):.2f})"
-        print(msg)
-
-    print("\ntargets:")
-    by_n = {r["N"]: r for r in rows}
-    for n, key in ((1000, "compile_1000"), (10000, "compile_10000")):
-        if n in by_n:
-            t = by_n[n]["ac_compile"]
-            ok = "met" if t < TARGETS[key] else "NOT met"
-            print(f"  compile N={n}: {t:.3f} s (target < {TARGETS[key]:g} s) -> {ok}")
-        else:
-            print(f"  compile N={n}: not run (target < {TARGETS[key]:g} s)")
-    for r in rows:
-        if r["N"] not in (1000, 10000):
-            continue
-        first = r["ac_first"] / (r["ca_build"] + r["ca_sim"])
-        ratio = r["ac_sim"] / (r["ca_build"] + r["ca_sim"])
-        ok = "met" if first <= TARGETS["sim_ratio"] else "NOT met"
-        print(f"  simulation N={r['N']}: first simulate()/CasADi = {first:.2f} (best "
-              f"{ratio:.2f}, run alone {r['ac_int_run'] / r['ca_sim']:.2f}; target <= "
-              f"{TARGETS['sim_ratio']}x) -> {ok}")
+    if rows:
+        print(f"\nchain of N masses and springs, {T_FINAL:g} s, rtol {RTOL:g}, atol {ATOL:g}, "
+              f"{len(GRID)}-point grid; times in ms, median (min–max) of {args.repeat} "
+              "interleaved rounds")
+        s = "{:>24s}"
+        print_table(["N", "ac build", "ac compile", "ac 1st sim", "ac read", "ac total",
+                     "CasADi bld", "CasADi crt", "CasADi run", "CasADi tot", "e2e ratio",
+                     "eq create", "eq run", "CasADi(p)", "scipy DOP"], rows,
+                    ["{:>10d}"] + [s] * 9 + ["{:>10.2f}"] + [s] * 4)
+        print("  ac: acausal end to end (build, compile, first simulate(), reading every "
+              "state); CasADi: the hand-written SX\n  model (build expressions, create the "
+              "integrator, run); e2e ratio = ac total / CasADi total (target <= "
+              f"{TARGET_E2E:g});\n  eq: CVODES on acausal's compiled ODE alone; CasADi(p): "
+              "the hand model with every parameter symbolic; scipy DOP853")
+        print("\nmax |final state - reference|  (reference: scipy DOP853, rtol 1e-12, "
+              "atol 1e-14)")
+        print_table(["N", "max|x_ref|", "acausal", "ac eq", "CasADi", "CasADi(p)", "scipy DOP"],
+                    errors, "{:10.3e}")
+        if len(rows) > 1:
+            ns = list(e2e)
+            print(f"fitted exponent of the median compile time (t ~ N^k): k = "
+                  f"{fit_exponent(ns, [compile_time[n] for n in ns]):.2f}")
+        for n, r in e2e.items():
+            verdict = "met" if r <= TARGET_E2E else "NOT met"
+            print(f"end to end N = {n}: {r:.2f}x hand-written CasADi (target <= "
+                  f"{TARGET_E2E:g}x) -> {verdict}")
+    for n in args.scale:
+        build, comp, mem = scale(n)
+        ok = comp < TARGET_SCALE[0] and mem < TARGET_SCALE[1]
+        print(f"compile N = {n} in a fresh process: build {build:.2f} s, compile {comp:.2f} s, "
+              f"peak memory {mem:.0f} MB (target at 100000: < {TARGET_SCALE[0]:g} s, < "
+              f"{TARGET_SCALE[1]:g} MB) -> {'met' if ok else 'NOT met'}")
 
 
 if __name__ == "__main__":

@@ -79,42 +79,51 @@ def collocation_coefficients(d: int, scheme: str):
 
 
 def hand_written(N=30, method="collocation", degree=3, scheme="radau", steps=4):
-    """The swing-up in casadi.Opti from the closed form: collocation of ``degree`` at
-    ``scheme`` points, or multiple shooting with ``steps`` RK4 steps per interval; returns
-    the Opti, the state matrix X and control row U (not yet solved)."""
+    """The swing-up in casadi.Opti from the closed form, written as a competent user would:
+    the dynamics as an SX Function mapped over the mesh (collocation of ``degree`` at
+    ``scheme`` points, or multiple shooting with ``steps`` RK4 steps per interval, one SX
+    Function of the interval), the bounds and boundary values on decision variables, which
+    IPOPT receives as variable bounds (``detect_simple_bounds``), and the NLP expanded to
+    SX (``OPTIONS``). Returns the Opti, the state matrix X and control row U (not solved)."""
     opti = ca.Opti()
     h = T_FINAL / N
     X, U = opti.variable(4, N + 1), opti.variable(1, N)
-    x_s, u_s = ca.MX.sym("x", 4), ca.MX.sym("F")
+    x_s, u_s = ca.SX.sym("x", 4), ca.SX.sym("F")
     f = ca.Function("f", [x_s, u_s], [cartpole_ode(x_s, u_s)])
     x0, x1 = np.array(list(START.values())), np.array(list(TARGET.values()))
     guess = np.linspace(x0, x1, N + 1).T
     opti.set_initial(X, guess)
     if method == "collocation":
         tau, C, D = collocation_coefficients(degree, scheme)
-        for k in range(N):
-            Xc = opti.variable(4, degree)
-            opti.set_initial(Xc, guess[:, [k]] + np.outer(guess[:, k + 1] - guess[:, k], tau[1:]))
-            Z = ca.horzcat(X[:, k], Xc)
-            opti.subject_to(h * f(Xc, U[k]) == Z @ C)
-            opti.subject_to(X[:, k + 1] == Z @ D)
+        Xc = opti.variable(4, N * degree)
+        opti.set_initial(Xc, np.repeat(guess[:, :-1], degree, axis=1)
+                         + np.repeat(np.diff(guess, axis=1), degree, axis=1)
+                         * np.tile(tau[1:], N))
+        E = np.eye(N)
+        Uc = ca.repmat(U, degree, 1).reshape((1, N * degree))        # U_k at its points
+        slope = X[:, :N] @ np.kron(E, C[:1]) + Xc @ np.kron(E, C[1:])
+        opti.subject_to(h * f.map(N * degree)(Xc, Uc) == slope)
+        opti.subject_to(X[:, 1:] == X[:, :N] * D[0] + Xc @ np.kron(E, D[1:, None]))
     else:
-        dt = h / steps
-        for k in range(N):
-            x = X[:, k]
-            for _ in range(steps):
-                k1 = f(x, U[k])
-                k2 = f(x + dt / 2 * k1, U[k])
-                k3 = f(x + dt / 2 * k2, U[k])
-                k4 = f(x + dt * k3, U[k])
-                x = x + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
-            opti.subject_to(X[:, k + 1] == x)
+        dt, x = h / steps, x_s
+        for _ in range(steps):
+            k1 = cartpole_ode(x, u_s)
+            k2 = cartpole_ode(x + dt / 2 * k1, u_s)
+            k3 = cartpole_ode(x + dt / 2 * k2, u_s)
+            k4 = cartpole_ode(x + dt * k3, u_s)
+            x = x + dt / 6 * (k1 + 2 * k2 + 2 * k3 + k4)
+        step = ca.Function("interval", [x_s, u_s], [x])
+        opti.subject_to(X[:, 1:] == step.map(N)(X[:, :N], U))
     opti.minimize(h * ca.sumsqr(U))
     opti.subject_to(opti.bounded(-F_MAX, U, F_MAX))
     opti.subject_to(opti.bounded(-X_MAX, X[0, :], X_MAX))
     opti.subject_to(X[:, 0] == x0)
     opti.subject_to(X[:, N] == x1)
     return opti, X, U
+
+
+#: nlpsol options of the hand-written reference: expanded to SX, bounds as variable bounds
+OPTIONS = {"expand": True, "detect_simple_bounds": True, "print_time": False}
 
 
 def main():
@@ -125,7 +134,7 @@ def main():
     sol = swing_up(compiled).solve(ipopt)
     t1 = time.perf_counter()
     opti, X, U = hand_written()
-    opti.solver("ipopt", {"print_time": False, "ipopt": {"print_level": 0, "sb": "yes", **ipopt}})
+    opti.solver("ipopt", {**OPTIONS, "ipopt": {"print_level": 0, "sb": "yes", **ipopt}})
     ref = opti.solve()
     t2 = time.perf_counter()
     print(f"acausal.ocp:  {sol}, {t1 - t0:.3f} s")

@@ -179,7 +179,9 @@ class StructureBuilder(_Base):
         """Declare Σ coeff·pos(port) = rhs between 1-D ports (or internal nodes).
 
         Coefficients may depend on parameters; ``rhs`` also on time, states and signals
-        (prescribed motion). The flow at each port is coeff·λ, λ the reaction.
+        (prescribed motion); ``rhs`` given as a pair (number a, expression b) is a·b, kept
+        as a product of the relation's linear form (cheaper to compile than the SX a·b).
+        The flow at each port is coeff·λ, λ the reaction.
         """
         for p in coeffs:
             self._mine(p)

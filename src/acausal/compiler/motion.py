@@ -26,7 +26,7 @@ import casadi as ca
 from ..errors import SingularModelError, StructureError
 from .charts import at_origin
 from .recursive import articulated_solve
-from .symbolic import der_with
+from .symbolic import der_with, small_solve
 
 _vc = ca.vertcat
 
@@ -207,7 +207,7 @@ def solve_motion(tree, R_q, phi, ws, bodies, resolve) -> Motion:
             qdd_M = -R0M / ca.diag(A_MM)
         else:
             method = "dense solve"
-            qdd_M = ca.solve(A_MM, -R0M)
+            qdd_M = small_solve(A_MM, -R0M) if len(massive) <= 3 else ca.solve(A_MM, -R0M)
         qdd_sol = ca.SX.zeros(nq)
         qdd_sol[massive] = qdd_M
     # massless coordinates: algebraic velocity (a damper holds them) or position (springs only)

@@ -53,7 +53,9 @@ class LinearRelation:
                                      f"'{p.path}' is {p.kind}")
         self.owner, self.ports = owner, list(ports)
         self.coeffs = [c if isinstance(c, ca.SX) else float(c) for c in coeffs]
-        self.rhs = rhs if isinstance(rhs, ca.SX) else float(rhs)
+        # a (factor, expression) pair stays a product in the linear forms (no SX operation)
+        self.rhs = (float(rhs[0]), rhs[1]) if isinstance(rhs, tuple) else \
+            rhs if isinstance(rhs, ca.SX) else float(rhs)
         self.name = name or f"{owner.path}: relation"
         self.nodes = []
 
@@ -64,7 +66,7 @@ class LinearRelation:
         """Linear form of node j's position from the other nodes', the rhs and the relaxation
         atom ``eps``: pos_j = (b + ε − Σ_{i≠j} a_i pos_i) / a_j."""
         form = {eps: 1.0}
-        _axpy(form, 1.0, atoms.constant(self.rhs))
+        _axpy(form, 1.0, self._rhs(atoms))
         for i, (a, n) in enumerate(zip(self.coeffs, self.nodes)):
             if i != j:
                 _axpy(form, -a, n.form)
@@ -75,8 +77,13 @@ class LinearRelation:
         form = {}
         for a, n in zip(self.coeffs, self.nodes):
             _axpy(form, a, n.form)
-        _axpy(form, -1.0, atoms.constant(self.rhs))
+        _axpy(form, -1.0, self._rhs(atoms))
         return form
+
+    def _rhs(self, atoms) -> dict:
+        if isinstance(self.rhs, tuple):
+            return {k: self.rhs[0] * c for k, c in atoms.constant(self.rhs[1]).items()}
+        return atoms.constant(self.rhs)
 
     def flows(self, lam: ca.SX) -> list[tuple[PhysicalPort, ca.SX]]:
         return [(p, combine(0, [(a, lam)])) for p, a in zip(self.ports, self.coeffs)]

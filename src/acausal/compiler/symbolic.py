@@ -1,4 +1,5 @@
-"""Symbolic helpers on CasADi SX: the total time derivative and repeated substitution."""
+"""Symbolic helpers on CasADi SX: the total time derivative, repeated substitution, and the
+closed-form solve of small linear systems."""
 from __future__ import annotations
 
 import casadi as ca
@@ -87,3 +88,28 @@ def substitute_all(exprs: list, syms: list, values: list, what: str = "signals")
                              f"other without a state in between; break the loop with a state "
                              f"(e.g. a first-order block) or a mass")
     return ca.substitute([ca.SX(e) for e in exprs], [v], [ca.vertcat(*vals)])
+
+
+def small_solve(A: ca.SX, b: ca.SX) -> ca.SX:
+    """A⁻¹ b for a dense square A of size 1 to 3 in closed form: the adjugate's rows times b,
+    scaled by one reciprocal of det A (CasADi's symbolic solve divides every entry of the
+    inverse by the determinant: n² divisions instead of one)."""
+    n = A.shape[0]
+    a = [[A[i, j] for j in range(n)] for i in range(n)]
+    if n == 1:
+        return b / a[0][0]
+    if n == 2:
+        adj = [[a[1][1], -a[0][1]], [-a[1][0], a[0][0]]]
+    elif n == 3:
+        def cof(i, j):          # cofactor of a[j][i]: the adjugate's entry (i, j)
+            r = [k for k in range(3) if k != j]
+            c = [k for k in range(3) if k != i]
+            return (a[r[0]][c[0]] * a[r[1]][c[1]] - a[r[0]][c[1]] * a[r[1]][c[0]]) \
+                * (1 if (i + j) % 2 == 0 else -1)
+        adj = [[cof(i, j) for j in range(n)] for i in range(n)]
+    else:
+        raise ValueError(f"small_solve: size {n} > 3")
+    det = sum((a[0][j] * adj[j][0] for j in range(1, n)), a[0][0] * adj[0][0])
+    inv_det = 1 / det
+    return ca.vertcat(*[sum((adj[i][j] * b[j] for j in range(1, n)), adj[i][0] * b[0])
+                        for i in range(n)]) * inv_det

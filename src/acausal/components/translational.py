@@ -86,8 +86,8 @@ class PartialRigid(PartialTwoFlanges):
 
     def structure(self, s):
         centre = self._centre(s)
-        s.linear({self.flange_a: 1.0, centre: -1.0}, -self.L / 2, f"{self.path}: flange_a")
-        s.linear({self.flange_b: 1.0, centre: -1.0}, self.L / 2, f"{self.path}: flange_b")
+        s.linear({self.flange_a: 1.0, centre: -1.0}, (-0.5, self.L), f"{self.path}: flange_a")
+        s.linear({self.flange_b: 1.0, centre: -1.0}, (0.5, self.L), f"{self.path}: flange_b")
 
 
 class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):

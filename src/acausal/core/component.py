@@ -43,6 +43,15 @@ def _shown(value) -> str:
 
 
 @functools.cache
+def _class_options(cls) -> dict:
+    """``Component._option_specs``, once per class."""
+    out: dict = {}
+    for klass in reversed(cls.__mro__):
+        out.update(vars(klass).get("options", {}))
+    return out
+
+
+@functools.cache
 def _class_declarations(cls, types) -> dict:
     """``Component._declared``, once per class (a model has many instances of a class)."""
     out = {}
@@ -189,10 +198,7 @@ class Component:
     def _option_specs(cls) -> dict:
         """The ``options`` of this class and its bases, as declared (a subclass's replace its
         base's)."""
-        out: dict = {}
-        for klass in reversed(cls.__mro__):
-            out.update(vars(klass).get("options", {}))
-        return out
+        return dict(_class_options(cls))
 
     @classmethod
     def all_options(cls) -> dict[str, bool | Enum]:
@@ -236,7 +242,7 @@ class Component:
         return dict(self._children)
 
     def __setattr__(self, key, value):
-        if key in self.all_options():
+        if key in _class_options(type(self)):
             raise ParameterError(f"{who(self)}: option '{key}' is structural and fixed when "
                                  f"the component is created: "
                                  f"{type(self).__name__}({key}={_shown(value)})")
@@ -423,4 +429,3 @@ def _common_model(a: Port, b: Port) -> Model:
     raise PortConnectionError(
         f"'{a.path}' and '{b.path}' are not in one model: assign both components to "
         f"attributes of the same Model before connecting them")
-

@@ -7,6 +7,7 @@ import casadi as ca
 import numpy as np
 
 from ..compiler import recompile
+from ..compiler.lean import lean
 from ..errors import OCPError, ParameterError, VariableNameError, did_you_mean
 
 #: the OCP's word for each kind of name the compiled model resolves
@@ -107,10 +108,12 @@ class ModelView:
     def function(self, exprs: list, name: str = "g", outputs=("g",)) -> ca.Function:
         """Function (t, x, z, u, p) -> ``exprs`` (stacked into one output unless ``outputs``
         names each), the argument order of every Function of the compiled model; the fixed
-        parameters' values are folded in (only the free entries of p are read)."""
+        parameters' values are folded in (only the free entries of p are read) and the
+        result simplified (``compiler.lean``: like terms collected, cancelling ones dropped,
+        subexpressions shared)."""
         c = self.compiled
         outs = [ca.vertcat(*exprs)] if len(outputs) == 1 else list(exprs)
-        return c.function(name, ca.substitute(outs, [c.p], [self._fold]), outputs)
+        return c.function(name, lean(ca.substitute(outs, [c.p], [self._fold])), outputs)
 
     # ---- algebraic structure ------------------------------------------------------------------
     def _split_algebraic(self):

@@ -1,5 +1,10 @@
 """A nonlinear program in CasADi MX: decision variables with bounds and guesses, constraints
-lb ≤ g ≤ ub, solved by IPOPT through ``casadi.nlpsol``."""
+lb ≤ g ≤ ub, solved by IPOPT through ``casadi.nlpsol``.
+
+Each MX variable has an SX twin of its shape: the transcription writes the dynamics in SX of
+the twins (``as_sx``), where the fixed numbers fold into the arithmetic; the problem is then
+solved in SX (the MX costs and constraints of the user expanded to SX of the twins), so
+that IPOPT's function and derivative evaluations run at SX speed."""
 from __future__ import annotations
 
 import casadi as ca
@@ -16,8 +21,9 @@ class NLP:
     constraints; ``solve`` stacks them into w and g for ``nlpsol``."""
 
     def __init__(self):
-        self.vars, self.lb, self.ub, self.guess = [], [], [], []
+        self.vars, self.twins, self.lb, self.ub, self.guess = [], [], [], [], []
         self.g, self.lbg, self.ubg = [], [], []
+        self.defined, self.definitions = [], []     # MX symbols standing for SX of the twins
 
     def copy(self) -> "NLP":
         """A new NLP with the same variables (the same symbols and arrays) and constraints,
@@ -30,6 +36,7 @@ class NLP:
     def variable(self, name: str, rows: int, cols: int = 1, guess=0.0) -> ca.MX:
         v = ca.MX.sym(name, rows, cols)
         self.vars.append(v)
+        self.twins.append(ca.SX.sym(name, rows, cols))
         self.lb.append(np.full((rows, cols), -np.inf))
         self.ub.append(np.full((rows, cols), np.inf))
         self.guess.append(np.broadcast_to(np.asarray(guess, dtype=float), (rows, cols)).copy())
@@ -47,8 +54,9 @@ class NLP:
         self.bound(g, value, value)
 
     def bound(self, g, lower, upper) -> None:
-        """Constraint lower ≤ g ≤ upper (elementwise; bounds broadcast to g's shape)."""
-        g = ca.vec(ca.MX(g))
+        """Constraint lower ≤ g ≤ upper (elementwise; bounds broadcast to g's shape); g an
+        MX of the variables, or an SX of their twins."""
+        g = ca.vec(g if isinstance(g, ca.SX) else ca.MX(g))
         if g.numel():
             self.g.append(g)
             self.lbg.append(np.broadcast_to(np.asarray(lower, dtype=float).ravel(), g.shape[:1]))
@@ -58,9 +66,52 @@ class NLP:
     def w(self) -> ca.MX:
         return ca.veccat(*self.vars)
 
+    def twin(self, v: ca.MX) -> ca.SX:
+        """The SX twin of variable ``v``."""
+        return self.twins[next(i for i, w in enumerate(self.vars) if w is v)]
+
+    def define(self, symbol: ca.MX, value: ca.SX) -> None:
+        """Let the MX ``symbol`` (a placeholder in costs and constraints) stand for ``value``,
+        an SX expression of the twins."""
+        self.defined.append(symbol)
+        self.definitions.append(value)
+
+    def as_sx(self, exprs: list) -> list:
+        """MX expressions of the variables (and the defined symbols) as SX expressions of
+        their twins."""
+        out = ca.Function("as_sx", self.vars + self.defined, list(exprs)).expand()(
+            *self.twins, *self.definitions)
+        return [out] if isinstance(out, ca.SX) else list(out)
+
+    def lift(self, exprs: list) -> list:
+        """SX expressions of the twins as MX expressions of the variables (one call of one
+        SX Function computing them all)."""
+        if not exprs:
+            return []
+        out = ca.Function("transcription", self.twins, list(exprs))(*self.vars)
+        return [out] if isinstance(out, ca.MX) else list(out)
+
     def solver(self, f: ca.MX, options: dict) -> ca.Function:
-        return ca.nlpsol("ocp", "ipopt", {"x": self.w, "f": f, "g": ca.vertcat(*self.g)},
-                         options)
+        """IPOPT on the problem: in SX when the transcription wrote its constraints in SX
+        (the MX cost and constraints then expanded to SX of the twins), else in MX."""
+        g = list(self.g)
+        sx = [i for i, e in enumerate(g) if isinstance(e, ca.SX)]
+        if sx:
+            mx = [i for i in range(len(g)) if i not in set(sx)]
+            try:
+                f_sx, *rest = self.as_sx([f] + [g[i] for i in mx])
+            except RuntimeError:        # an MX-only Function among the user's: solve in MX
+                pass
+            else:
+                for i, e in zip(mx, rest):
+                    g[i] = e
+                return ca.nlpsol("ocp", "ipopt", {"x": ca.veccat(*self.twins), "f": f_sx,
+                                                  "g": ca.vertcat(*g)}, options)
+            for i, e in zip(sx, self.lift([g[i] for i in sx])):
+                g[i] = e
+            if self.defined:
+                f, *g = ca.substitute([f] + g, self.defined, self.lift(self.definitions))
+        return ca.nlpsol("ocp", "ipopt", {"x": self.w, "f": f, "g": ca.vertcat(*g)}, options)
 
     def bounds_and_guess(self):
         """(lbw, ubw, w0, lbg, ubg) as flat arrays (column-major, as ``w``)."""

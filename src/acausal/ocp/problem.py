@@ -240,14 +240,23 @@ class OCP:
 
     def _build(self, opts, progress: bool = False):
         nlp = self._nlp.copy()
-        Q = self.transcription.transcribe(nlp, self.nodes, self._integrands)
+        nodes = self.nodes
+        if self.transcription.in_sx:        # the dynamics in SX, the fixed numbers folded in
+            nodes = Nodes(*nlp.as_sx([nodes.X, nodes.U, nodes.Z, nodes.P, nodes.t, nodes.h]))
+        Q = self.transcription.transcribe(nlp, nodes, self._integrands)
         syms = ca.vertcat(*self._integrals)
+        in_sx = isinstance(Q, ca.SX)
+        if in_sx:       # the integrals in SX for the solver, in MX for the solution's values
+            if syms.numel():
+                nlp.define(syms, Q)
+            Q = nlp.lift([Q])[0]
 
         def resolve(e):     # the integrals' placeholders -> their quadratures
             return ca.substitute(ca.MX(e), syms, Q) if syms.numel() else ca.MX(e)
 
+        inner = ca.MX if in_sx else resolve     # what the solver is given
         for g, lb, ub in self._constraints:
-            nlp.bound(resolve(g), lb, ub)
+            nlp.bound(inner(g), lb, ub)
         for name, (lo, hi) in self._bounds.items():
             if self.view.kind(name) == "variable":
                 nlp.bound(self[name], lo, hi)
@@ -260,7 +269,7 @@ class OCP:
             iterations = IterationProgress(nlp.w.numel(), sum(g.numel() for g in nlp.g), 0)
             opts = dict(opts, iteration_callback=iterations)
         try:
-            solver = nlp.solver(resolve(self._objective), opts)
+            solver = nlp.solver(inner(self._objective), opts)
         except RuntimeError as e:
             raise OCPError(f"cannot make the IPOPT solver: {str(e).strip().splitlines()[-1]}") \
                 from None

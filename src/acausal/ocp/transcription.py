@@ -36,7 +36,8 @@ SCHEMES = ("radau", "legendre")
 @dataclass
 class Nodes:
     """The NLP's values at the mesh nodes: states X (nx × N+1), controls U (nu × N),
-    algebraic variables Z (nz × N+1), parameters P (np × 1), times t (1 × N+1), step h."""
+    algebraic variables Z (nz × N+1), parameters P (np × 1), times t (1 × N+1), step h; MX
+    of the NLP's variables, or SX of their twins (``NLP.as_sx``)."""
     X: ca.MX
     U: ca.MX
     Z: ca.MX
@@ -51,19 +52,23 @@ class Nodes:
     @property
     def U_nodes(self) -> ca.MX:
         """Controls at the nodes (nu × N+1): the last interval's value held at t_N."""
-        return ca.horzcat(self.U, self.U[:, -1]) if self.U.numel() else ca.MX(0, self.N + 1)
+        return ca.horzcat(self.U, self.U[:, -1]) if self.U.numel() else \
+            type(self.U)(0, self.N + 1)
 
 
 class Transcription:
     """The shared core; subclasses implement ``intervals`` (and ``fill_guess`` if they add
-    variables)."""
+    variables). ``in_sx``: whether the transcription can be written in SX (every Function
+    it calls evaluates on SX), the fixed numbers then folded into its arithmetic."""
+
+    in_sx = True
 
     def __init__(self, view: ModelView):
         self.view = view
 
     def transcribe(self, nlp: NLP, nodes: Nodes, integrands: list) -> ca.MX:
         """Add the dynamics to ``nlp``; return the integrals over [t_0, t_N] of
-        ``integrands`` (SX in the model's symbols), stacked."""
+        ``integrands`` (SX in the model's symbols), stacked (MX or SX as ``nodes``)."""
         view, N, c = self.view, nodes.N, self.view.compiled
         # integrands of the controls and parameters alone are constant on each interval:
         # h·g is their exact integral; the others use the transcription's quadrature
@@ -73,7 +78,7 @@ class Transcription:
         g = view.function([integrands[i] for i in other], "integrands") if other else None
         X_end, Q_other = self.intervals(nlp, nodes, g)
         nlp.equal(nodes.X[:, 1:] - X_end)
-        Q = ca.MX(len(integrands), 1)
+        Q = type(nodes.X)(len(integrands), 1)
         if held:
             gh = view.function([integrands[i] for i in held], "held").map(N)
             Q[held] = nodes.h * ca.sum2(gh(nodes.t[:, :N], nodes.X[:, :N], nodes.Z[:, :N],
@@ -123,6 +128,8 @@ class Collocation(Transcription):
         E = ca.DM.eye(N)
         Xc = self._Xc = nlp.variable("X_colloc", view.nx, N * d)
         Zc = nlp.variable("Z_colloc", view.nz, N * d, view.z_start.reshape(-1, 1))
+        if isinstance(nodes.X, ca.SX):
+            Xc, Zc = nlp.twin(Xc), nlp.twin(Zc)
         spread = ca.kron(E, ca.DM.ones(1, d))                   # interval -> its points
         Tc = nodes.t[:, :N] @ spread + nodes.h * ca.DM(np.tile(self.tau, N)).T
         Uc = nodes.U @ spread
@@ -167,25 +174,35 @@ class MultipleShooting(Transcription):
                            f"'{view.compiled.name}' has algebraic variables "
                            f"{view.compiled.z_names[:4]}; use 'collocation' or 'idas'")
         self.options = {**INTEGRATOR_DEFAULTS.get(self.plugin, {}), **(options or {})}
-
+        self.in_sx = self.plugin == "rk"        # explicit steps: one SX Function
     def intervals(self, nlp, nodes, g):
         view, c, N = self.view, self.view.compiled, nodes.N
-        tau, tk, h = ca.SX.sym("tau"), ca.SX.sym("t_k"), ca.SX.sym("h")
-        scaled = lambda e: ca.substitute(e, c.t, tk + h * tau)
+        s, tk, h = ca.SX.sym("s"), ca.SX.sym("t_k"), ca.SX.sym("h")
+        # a fixed step: the integrator runs in time over [0, h], t = t_k + s; a free final
+        # time: in τ ∈ [0, 1], t = t_k + h·τ, the rates scaled by the step h (a parameter)
+        fixed = nodes.h.is_constant()
+        local = tk + s if fixed else tk + h * s
+
+        def scaled(rates):
+            rates = ca.substitute(rates, c.t, local)
+            return rates if fixed else h * rates
+
         xdot, alg = view.f(c.t, c.x, c.z, c.u, c.p)
-        dae = {"x": c.x, "p": ca.vertcat(c.p, c.u, tk, h), "t": tau, "ode": h * scaled(xdot)}
+        dae = {"x": c.x, "p": ca.vertcat(c.p, c.u, tk, *([] if fixed else [h])), "t": s,
+               "ode": scaled(xdot)}
         if view.nz:
-            dae.update(z=c.z, alg=scaled(alg))
+            dae.update(z=c.z, alg=ca.substitute(alg, c.t, local))
         if g is not None:
-            dae["quad"] = h * scaled(g(c.t, c.x, c.z, c.u, c.p))
+            dae["quad"] = scaled(g(c.t, c.x, c.z, c.u, c.p))
+        span = float(ca.evalf(nodes.h)) if fixed else 1.0
         try:
-            F = ca.integrator("interval", self.plugin, dae, 0.0, 1.0, self.options)
+            F = ca.integrator("interval", self.plugin, dae, 0.0, span, self.options)
             if self.plugin == "rk" and F.is_a("MXFunction"):
                 F = F.expand()          # explicit steps as one SX Function: fast derivatives
         except RuntimeError as e:
             raise OCPError(f"cannot make a '{self.plugin}' integrator for model "
                            f"'{c.name}': {str(e).strip().splitlines()[-1]}") from None
         p = ca.vertcat(ca.repmat(nodes.P, 1, N), nodes.U, nodes.t[:, :N],
-                       ca.repmat(nodes.h, 1, N))
+                       *([] if fixed else [ca.repmat(nodes.h, 1, N)]))
         out = F.map(N)(x0=nodes.X[:, :N], z0=ca.DM(view.z_start), p=p)
         return out["xf"], (out["qf"] if g is not None else None)
