@@ -186,6 +186,7 @@ def _shaped(kind):
 
 def _translation(c):
     r = _val(c, "r")
+    r = (*r, 0.0) if len(r) == 2 else r          # a planar one, in the plane z = 0
     L = float(np.linalg.norm(r))
     if L == 0:
         return []
@@ -250,15 +251,6 @@ def _planar_body(c):
                   (-_BODY_D / 2, 0.0, 0.0), color=(0, 128, 255), name=c.path)]
 
 
-def _planar_translation(c):
-    r = (*_val(c, "r"), 0.0)
-    L = float(np.linalg.norm(r))
-    if L == 0:
-        return []
-    return [Shape(_path(c, "frame_a"), "cylinder", L, L / _WIDTH_FRACTION, L / _WIDTH_FRACTION,
-                  lengthDirection=r, color=(155, 155, 155), name=c.path)]
-
-
 def _planar_revolute(c):
     return [Shape(_path(c, "frame_a"), "cylinder", _JOINT, _JOINT, _JOINT,
                   (0.0, 0.0, -_JOINT / 2), (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (255, 0, 0),
@@ -292,7 +284,7 @@ def _defaults():
     register(RollingWheel, lambda c: [_wheel(_val(c, "radius"), _val(c, "width"),
                                               _path(c, "frame_a"), c.path)])
     register(planar.Body, _planar_body)
-    register(planar.FixedTranslation, _planar_translation)
+    register(planar.FixedTranslation, _translation)
     register(planar.Revolute, _planar_revolute)
     register(planar.Prismatic, _planar_prismatic)
     register(RollingWheelSet, lambda c: [

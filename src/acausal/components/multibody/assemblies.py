@@ -156,6 +156,16 @@ class _SphericalRod:
                                         "on frame_a, when directed from frame_a to frame_im)")
 
 
+
+def _rod_frame_towards(vals, par):
+    """The rod frame of a universal joint at frame vals[0] whose rod points at the origin of
+    frame vals[1] (``loop_joints.universal_rod_frame``; par: axis 1 in frame_a, the rod's
+    direction in the rod frame), for ``StructureBuilder.relation``'s solve."""
+    n1, rod = par
+    ra, Ta = frames.parts(vals[0])
+    rb, _ = frames.parts(vals[1])
+    return universal_rod_frame(vals[0], ca.mtimes(Ta, rb - ra), n1, rod), None
+
 class _UniversalRod:
     """rod1 of JointUSR / JointRRR: a universal joint at frame_a (axis 1 n1_a [1], resolved in
     frame_a) and a spherical joint at frame_im, the rod rRod1_ia [m] resolved in frame_ia,
@@ -178,11 +188,7 @@ class _UniversalRod:
         return unit_direction(self, "n1_a", "(0, 0, 1)")
 
     def _rod_structure(self, s):
-        def rod_frame(vals, par):
-            n1, r_ia = par
-            ra, Ta = frames.parts(vals[0])
-            rm, _ = frames.parts(vals[1])
-            return universal_rod_frame(vals[0], ca.mtimes(Ta, rm - ra), n1, r_ia), None
+        rod_frame = _rod_frame_towards
 
         def residual(vals, par):
             return s.frame_residual(rod_frame(vals, par)[0], vals[2])
@@ -354,11 +360,7 @@ class JointUPS(Animated):
         return tuple(v / length for v in n)
 
     def structure(self, s):
-        def line_frame(vals, par):
-            n1, axis_ia = par
-            ra, Ta = frames.parts(vals[0])
-            rb, _ = frames.parts(vals[1])
-            return universal_rod_frame(vals[0], ca.mtimes(Ta, rb - ra), n1, axis_ia), None
+        line_frame = _rod_frame_towards
 
         def parallel_frame(vals, par):
             rb, _ = frames.parts(vals[0])
