@@ -8,6 +8,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before
+from . import codegen as generated
 from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
@@ -22,7 +23,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              inputs: dict | None = None, x0: dict | None = None, guess: dict | None = None,
              solver: str | None = None,
              rtol: float = 1e-8, atol: float = 1e-10, max_step: float | None = None,
-             nominal: dict | None = None, options: dict | None = None) -> Result:
+             nominal: dict | None = None, options: dict | None = None,
+             codegen: bool = False) -> Result:
     """Simulate ``model`` from t = 0 (or t[0]) to ``t_final`` [s].
 
     t        output grid (default: 501 points); params: overrides by dotted name;
@@ -49,7 +51,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     nominal  nominal magnitudes by the dotted name of a state or of a variable that
              coincides with one (``springDamper.w_rel``), replacing the model's
              (``CompiledModel.nominals``: 1 unless a component declares one, e.g.
-             MSL's phi_nominal of a SpringDamper, or ``nominal={...}`` on a component).
+             MSL's phi_nominal of a SpringDamper, or ``nominal={...}`` on a component);
+    codegen  True: the integrator runs on the model's equations generated as C and built by
+             the system C compiler once, cached on disk by a hash of the code
+             (``acausal.simulation.codegen``: parameters and inputs stay arguments, so
+             changing them does not rebuild); the same results, faster on large models.
 
     A model with state events or discrete modes (components' ``indicator``, ``mode``,
     ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
@@ -62,6 +68,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     """
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
+    if codegen:
+        generated.check_supported(model)
     p = model.param_vector(params)
     inputs = dict(inputs or {})
     unknown = set(inputs) - set(model.input_names)
@@ -110,6 +118,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         """The DAE for the integrator. Adams with functional iteration never evaluates a
         Jacobian, so the ODE goes in as a call whose derivatives would be finite
         differences: CasADi then builds no symbolic Jacobian (O(N²) for the recursion)."""
+        if codegen:
+            return generated.dae_problem(model, solver, u_expr, p, scale)
         if solver == "adams":
             f = ca.Function("ode", [model.x, model.t], [ode], _NO_AD)
             x, t = ca.MX.sym("x", model.x.numel()), ca.MX.sym("t")
