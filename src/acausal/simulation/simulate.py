@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before
-from . import codegen as generated
+from . import buffers, codegen as generated
 from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
@@ -154,7 +154,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                 opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
             try:
                 F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
-                sol = F(x0=x, z0=z)
+                xf, *zf = buffers.call(F, {"x0": x, "z0": z}, ["xf", "zf"][:1 + has_alg])
             except RuntimeError as e:
                 def state_near(t_fail, a=a, x=x, z=z):
                     """(x, z) shortly before the failure, by a second run; None if it fails."""
@@ -169,8 +169,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                     model, e, a, b, rtol, atol, state_near if loops else None, p,
                     lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel())
                 ) from None
-            xf = np.array(sol["xf"])
-            zf = np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
+            zf = zf[0] if has_alg else np.zeros((0, len(tout)))
             X.append(xf[:, :len(pts)])
             Z.append(zf[:, :len(pts)])
             x, z = xf[:, -1], (zf[:, -1] if has_alg else z)
