@@ -43,3 +43,17 @@ def print_table(head: list[str], rows: list, fmts) -> None:
         cells = [f"{'-':>10s}" if isinstance(v, float) and np.isnan(v) else f.format(v)
                  for v, f in zip(row, cols)]
         print(" | ".join(cells))
+
+
+def interleaved(contenders: dict, repeat: int) -> dict:
+    """{name: (median, min, max) wall time [s]} of the callables ``contenders``, run in turn
+    ``repeat`` times (one of each per round, so that the load of a shared machine falls on
+    all alike)."""
+    times = {name: [] for name in contenders}
+    for _ in range(repeat):
+        for name, fn in contenders.items():
+            gc.collect()
+            t0 = time.perf_counter()
+            fn()
+            times[name].append(time.perf_counter() - t0)
+    return {name: (float(np.median(v)), min(v), max(v)) for name, v in times.items()}
