@@ -37,6 +37,11 @@ Measured in the same run, for each N:
    (Every *joint* at 0.1 rad would curl a long chain into a chaotic motion: from N = 32 on,
    both methods' errors at 10 s are O(10) rad/s and the reference itself differs from its
    rtol-1e-13 rerun by ~1e-3.)
+4. ``simulate(codegen=True)`` (unless --no-codegen, or without a C compiler): the first run
+   with an empty cache directory (generating the C, gcc, the run), the first run of a
+   freshly compiled copy of the model (the library from the disk cache), the built
+   library's rhs, and the run at equal accuracy, interleaved with DOP853 + ABA and the
+   in-process simulate() (median and spread). Target: <= 0.5x Pinocchio + DOP853.
 The models agree: max |acausal rhs - ABA| (and sympy - ABA) at a random state is printed.
 
     python benchmarks/pendulum.py                 # N = 2, 4, 8, 16, 32, 64 (~ 2 min)
@@ -572,7 +577,7 @@ def use_codegen_cache() -> bool:
 
 
 def report_codegen(rows) -> None:
-    print("\n(4) simulate(codegen=True): generated C of the right-hand side (gcc -O2), Adams")
+    print("\n(4) simulate(codegen=True): generated C of the right-hand side (gcc -O1), Adams")
     rows_out = []
     for r in rows:
         pin_, inp, cg = (r["cg_times"][k][0] for k in ("pin", "in-process", "codegen"))
