@@ -89,6 +89,20 @@ def test_bdf_equals_hand_written_integrator_with_symbolic_parameters(pendulum):
     assert np.max(np.abs(states(res, pendulum.x_names) - states(ref, pendulum.x_names))) < 1e-5
 
 
+def test_bdf_on_the_forward_derivative_of_a_large_jacobian(monkeypatch):
+    """A Jacobian too large to generate (the dense one of a recursion) is assembled by CasADi
+    from the generated forward derivative, column by column: the same solution as the
+    hand-written integrator to the integrator's tolerance (other rounding, other steps)."""
+    from acausal.simulation import codegen
+    monkeypatch.setattr(codegen, "JACOBIAN_LIMIT", 0)
+    monkeypatch.setattr(codegen, "JACOBIAN_RATIO", 0)
+    compiled = acausal.compile(PendulumChain(4))
+    grid = np.linspace(0, 2.0, 41)
+    res = compiled.simulate(2.0, t=grid, x0={"rev1.phi": 0.8}, solver="cvodes", codegen=True)
+    X = states(res, compiled.x_names)
+    assert np.max(np.abs(X - hand_written(compiled, grid, X[:, 0], False))) < 1e-6
+
+
 def test_four_bar_dae_closes_its_loop_as_accurately_as_in_process():
     """IDAS's Newton iterations on the generated Jacobian (parameters as arguments) round
     otherwise than on the folded one in process: the runs differ at the level of the
