@@ -1,20 +1,27 @@
 """Generated code for simulate(..., codegen=True): the model's equations as C, built once by
 the system C compiler, cached on disk, and run by the CasADi integrators.
 
-The library holds the right-hand side of the model, ``ode(x, t, u, p)`` for an
-ODE or ``dae(x, z, t, u, p) -> (ode, alg)`` for a DAE, with the parameters and inputs as
-arguments: changing a parameter or an input never rebuilds it (the parameter values,
-folded into the expressions, were measured to make no difference to the speed of the
-compiled code). For the solvers that iterate with Newton's method (cvodes' BDF, idas) it
-also holds the forward derivative ``fwd1_<name>``, from which CasADi assembles the
-Jacobian column by column: generated code linear in the size of the model, where the
-symbolic Jacobian of a recursion would be quadratic (and slow to compile). Adams with
-functional iteration evaluates no derivative, so its library has none.
+The library holds the right-hand side of the model, ``ode(x, t, u, p)`` for an ODE or
+``dae(x, z, t, u, p) -> (ode, alg)`` for a DAE, with the parameters and inputs as
+arguments: changing a parameter or an input never rebuilds it. (Folding the parameter
+values into the expressions, as the in-process simulate() does, takes a third of the
+instructions off the N = 32 pendulum but made no measurable difference to the compiled
+code's time, 52-56 us either way, mapped, under load.) For the solvers that iterate with
+Newton's method (cvodes' BDF, idas) it also holds the Jacobian with respect to the states,
+or its forward derivative when that Jacobian is too large to compile (``equations``); the
+other arguments are declared not differentiable (the integrators need no derivative with
+respect to t, u or p). Adams with functional iteration evaluates no derivative, so its
+library has none.
+
+The results equal those of a CasADi integrator on ``compiled.dae`` with the parameters as
+its arguments (the same arithmetic); the in-process simulate() folds them, which rounds
+otherwise in some models: the two then differ at the level of the integrator's error.
 
 The shared library is named by a SHA-256 hash of its C source (and of the compiler and its
 flags) in the cache directory, ``$ACAUSAL_CACHE`` or ``~/.cache/acausal`` (``$XDG_CACHE_HOME``
 when set): a second run of the same model, in this process or another, loads it without
-compiling. Within a process the loaded Functions are also kept on the model.
+compiling. Within a process the loaded Functions are also kept on the model. Models with
+events or modes are refused (their indicator and update functions are not generated).
 """
 from __future__ import annotations
 
