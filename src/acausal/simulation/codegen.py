@@ -5,8 +5,9 @@ The library holds the right-hand side of the model, ``ode(x, t, u, p)`` for an O
 ``dae(x, z, t, u, p) -> (ode, alg)`` for a DAE, with the parameters and inputs as
 arguments: changing a parameter or an input never rebuilds it. (Folding the parameter
 values into the expressions, as the in-process simulate() does, takes a third of the
-instructions off the N = 32 pendulum but made no measurable difference to the compiled
-code's time, 52-56 us either way, mapped, under load.) For the solvers that iterate with
+instructions off the N = 32 pendulum but only 5-7 % off the compiled right-hand side's
+time, 42.0 against 44.4 us median of 21 interleaved mapped runs on a loaded machine: not
+worth a build per parameter change.) For the solvers that iterate with
 Newton's method (cvodes' BDF, idas) it also holds the Jacobian with respect to the states,
 or its forward derivative when that Jacobian is too large to compile (``equations``); the
 other arguments are declared not differentiable (the integrators need no derivative with
