@@ -566,8 +566,8 @@ def use_codegen_cache() -> bool:
     import tempfile
     from acausal import toolchain
     try:
-        toolchain.find_compiler()
-    except acausal.errors.AcausalError as e:
+        toolchain.find_compiler(acausal.errors.SimulationError)
+    except acausal.errors.SimulationError as e:
         print(f"simulate(codegen=True) skipped: {e}")
         return False
     cache = tempfile.mkdtemp(prefix="acausal_bench_cache_")

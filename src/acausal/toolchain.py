@@ -1,8 +1,8 @@
 """The system C compiler: found on the PATH and called to build shared libraries (the native
 FMUs, the generated code of ``simulate(..., codegen=True)``).
 
-A base leaf: it imports nothing of acausal but its errors. The caller passes the error class
-its own layer raises (``FmuExportError``, ``SimulationError``).
+A base leaf: it imports nothing of acausal. The caller passes the error class its own layer
+raises (``FmuExportError``, ``SimulationError``).
 """
 from __future__ import annotations
 
@@ -11,10 +11,8 @@ import shutil
 import subprocess
 from pathlib import Path
 
-from .errors import AcausalError
 
-
-def find_compiler(error: type[AcausalError] = AcausalError) -> str:
+def find_compiler(error: type[Exception]) -> str:
     """The path of the C compiler: $CC, else cc, gcc or clang on the PATH."""
     for cand in [os.environ.get("CC"), "cc", "gcc", "clang"]:
         if cand and shutil.which(cand):
@@ -25,7 +23,7 @@ def find_compiler(error: type[AcausalError] = AcausalError) -> str:
 
 def build_shared_library(cc: str, sources: list[Path], out: Path, *,
                          include: tuple[Path, ...] = (), flags: tuple[str, ...] = ("-O2",),
-                         error: type[AcausalError] = AcausalError,
+                         error: type[Exception],
                          what: str = "the shared library") -> None:
     """Compile and link C ``sources`` into the shared library ``out`` (C99, position
     independent, linked with libm); a failure raises ``error`` with the compiler's last
