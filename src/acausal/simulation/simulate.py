@@ -55,7 +55,9 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     codegen  True: the integrator runs on the model's equations generated as C and built by
              the system C compiler once, cached on disk by a hash of the code
              (``acausal.simulation.codegen``: parameters and inputs stay arguments, so
-             changing them does not rebuild); the same results, faster on large models.
+             changing them does not rebuild); faster on large models, the same results to
+             rounding (which the integrator may carry up to its tolerance); models with
+             events are refused.
 
     A model with state events or discrete modes (components' ``indicator``, ``mode``,
     ``reinit``) is integrated from event to event (``acausal.simulation.events``: CVODES for
