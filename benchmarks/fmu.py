@@ -18,6 +18,16 @@ ctypes calls; outputs are recorded in Python). The accuracy of each run against 
 reference (rtol 1e-12) is printed next to the times, so the ratios compare like with like.
 Target: FMU within 2× of in-process. Run: ``python benchmarks/fmu.py [--repeat 3]``.
 
+In the Reference FMUs' C importer ``fmusim`` (``$FMUSIM``, on the PATH, or the shared
+fmi-tools; skipped when absent), so that the FMU and not fmpy's Python loop is timed: model
+exchange (its CVODE, ``--solver cvode``) and co-simulation (the FMU's solver), tolerance
+1e-8, interleaved with the in-process run (median CPU times of --repeat rounds, at least 5: the
+shared machine's load falls on wall times far more). fmusim unzips and loads the FMU on
+every run: "net" subtracts a run of one output interval (its start-up). At equal accuracy:
+the in-process rtol is the loosest of 1e-5 … 1e-12 (atol = rtol/100) whose error is no
+larger than the FMU's, for ME and CS each. Targets: ME <= 1.5x and
+CS <= 1x in-process.
+
 Where model-exchange time goes: the number of right-hand sides fmpy's CVode asks for is counted,
 and the FMU's own cost of one (fmi2SetTime + fmi2SetContinuousStates + fmi2GetDerivatives) is
 timed in C by ``fmu_rhs.c``, built here with the system compiler; "FMU share" is their product
@@ -26,7 +36,11 @@ over the ME time. The rest is the importer: its Python callbacks, loading and ou
 from __future__ import annotations
 
 import argparse
+import os
+import shutil
+import resource
 import subprocess
+import time
 import tempfile
 import warnings
 from pathlib import Path
@@ -67,6 +81,64 @@ def fmu_rhs_seconds(exe: Path, unzipped: Path, md, start: dict, calls: int = 200
     return float(out.stdout)
 
 
+FMUSIM = Path(os.environ.get("FMUSIM") or shutil.which("fmusim") or
+              Path(__file__).resolve().parents[1].parent / "shared" / "fmi-tools" / "bin" /
+              "fmusim")
+IN_PROCESS_RTOLS = tuple(10.0 ** -k for k in np.arange(5.0, 12.01, 0.5))
+
+
+def fmusim(fmu: Path, kind: str, T: float, dt: float, start: dict, var: str, out: Path):
+    """(values of ``var`` on the output grid, CPU seconds of the fmusim process) for
+    fmusim ("me": CVODE, "cs") at tolerance 1e-8 up to ``T``; of the rows fmusim adds at
+    events, the last one at each output time."""
+    cmd = [str(FMUSIM), "--interface-type", kind, "--tolerance", "1e-8", "--stop-time",
+           repr(T), "--output-interval", repr(dt), "--output-variable", var,
+           "--output-file", str(out)] + (["--solver", "cvode"] if kind == "me" else [])
+    for k, v in start.items():
+        cmd += ["--start-value", k, repr(v)]
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    r = subprocess.run(cmd + [str(fmu)], capture_output=True, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    if r.returncode != 0:
+        raise RuntimeError(f"fmusim {kind} failed on {fmu.name}: {r.stdout}{r.stderr}")
+    rows = np.genfromtxt(out, delimiter=",", names=True, deletechars="")
+    grid = np.linspace(0.0, T, int(round(T / dt)) + 1)
+    last = np.searchsorted(rows["time"], grid * (1 + 1e-12), side="right") - 1
+    cpu = after.ru_utime + after.ru_stime - before.ru_utime - before.ru_stime
+    return rows[var][last], cpu
+
+
+def fmusim_row(name, path, T, start, var, in_process, ref, scale, repeat, tmp) -> list:
+    """[model, FMU error ME, CS, in-process rtol at equal accuracy (ME, CS) and its errors,
+    median CPU times [ms] of in-process (ME, CS rtol), fmusim ME, CS, start-up; ratios ME/in,
+    CS/in (fmusim net of its start-up)]."""
+    dt = T / 200
+    err = lambda v: float(np.max(np.abs(np.asarray(v) - ref)) / scale)  # noqa: E731
+    run = {"me": lambda: fmusim(path, "me", T, dt, start, var, tmp / "me.csv"),
+           "cs": lambda: fmusim(path, "cs", T, dt, start, var, tmp / "cs.csv"),
+           "startup": lambda: fmusim(path, "cs", dt, dt, start, var, tmp / "up.csv")}
+    e = {k: err(run[k]()[0]) for k in ("me", "cs")}
+    rtol = {k: next((rt for rt in IN_PROCESS_RTOLS
+                     if err(in_process(rt, rt / 100)[var]) <= e[k]), IN_PROCESS_RTOLS[-1])
+            for k in ("me", "cs")}
+    e_in = {k: err(in_process(rtol[k], rtol[k] / 100)[var]) for k in ("me", "cs")}
+
+    def in_cpu(k):
+        t0 = time.process_time()
+        in_process(rtol[k], rtol[k] / 100)
+        return None, time.process_time() - t0
+    run.update(in_me=lambda: in_cpu("me"), in_cs=lambda: in_cpu("cs"))
+    cpu = {k: [] for k in run}
+    for _ in range(max(repeat, 5)):
+        for k, fn in run.items():
+            cpu[k].append(fn()[1])
+    c = {k: float(np.median(v)) for k, v in cpu.items()}
+    return [name, e["me"], e["cs"], rtol["me"], rtol["cs"], e_in["me"], e_in["cs"],
+            c["in_me"] * 1e3, c["in_cs"] * 1e3, c["me"] * 1e3, c["cs"] * 1e3,
+            c["startup"] * 1e3, (c["me"] - c["startup"]) / c["in_me"],
+            (c["cs"] - c["startup"]) / c["in_cs"]]
+
+
 def count_me_rhs(unzipped: Path, md, **kw) -> int:
     """Right-hand sides fmpy's CVode asks for in one model-exchange run."""
     fmu = instantiate_fmu(str(unzipped), md, "ModelExchange")
@@ -88,7 +160,7 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--repeat", type=int, default=3)
     args = ap.parse_args()
-    rows, shares = [], []
+    rows, shares, native = [], [], []
     with tempfile.TemporaryDirectory() as tmp:
         rhs_timer = build_rhs_timer(Path(tmp))
         for name, (make, T, start, var) in CASES.items():
@@ -121,6 +193,9 @@ def main():
             err = [np.max(np.abs(np.asarray(r[var]) - ref)) / scale for r in (r_in, r_me, r_cs)]
             rows.append([name, t_in * 1e3, t_me * 1e3, t_cs * 1e3, t_me / t_in, t_cs / t_in,
                          *err])
+            if FMUSIM.is_file():
+                native.append(fmusim_row(name, Path(path), T, start, var, in_process, ref,
+                                         scale, args.repeat, Path(tmp)))
             n_rhs = count_me_rhs(unzipped, md, **settings)
             t_rhs = fmu_rhs_seconds(rhs_timer, unzipped, md, start)
             shares.append([name, n_rhs, t_rhs * 1e6, (t_me - n_rhs * t_rhs) / n_rhs * 1e6,
@@ -134,6 +209,25 @@ def main():
                 ["{:>10s}", "{:>10d}", "{:>10.3f}", "{:>10.2f}", "{:>10.2f}"])
     worst = max(max(r[4], r[5]) for r in rows)
     print(f"worst FMU/in-process ratio: {worst:.2f} (target <= 2)")
+    if not native:
+        print(f"\nfmusim not found ({FMUSIM}): the C importer's timings skipped")
+        return
+    print("\nin fmusim (C importer), tolerance 1e-8, against in-process at equal accuracy: "
+          "medians of CPU times\nof interleaved runs [ms]")
+    print_table(["model", "err ME", "err CS", "rtol ME", "rtol CS", "err in ME", "err in CS",
+                 "in (ME)", "in (CS)", "fmusim ME", "fmusim CS", "start-up", "ME net/in",
+                 "CS net/in"], native,
+                ["{:>10s}"] + ["{:>10.1e}"] * 6 + ["{:>10.2f}"] * 5 + ["{:>10.2f}"] * 2)
+    print("  err: max |signal - in-process at rtol 1e-12| / its peak; rtol ME / CS: the "
+          "in-process rtol whose\n  error is no larger than fmusim's ME / CS (err in); in "
+          "(ME), in (CS): in-process CPU time at those;\n  start-up: fmusim over one output "
+          "interval (unzip, load, instantiate, initialize); net: minus it.\n  CPU times "
+          "(user + system; fmusim's from the child process): the shared machine's load\n  "
+          "falls on wall times far more")
+    for r in native:
+        print(f"  {r[0]:>10s}: ME {r[12]:.2f} (target <= 1.5) -> "
+              f"{'met' if r[12] <= 1.5 else 'NOT met'}; CS {r[13]:.2f} (target <= 1) -> "
+              f"{'met' if r[13] <= 1.0 else 'NOT met'}")
 
 
 if __name__ == "__main__":

@@ -23,6 +23,10 @@ Measured in the same run, for each case:
    (its default solver choice) with rtol tightened in half decades (atol = rtol/100) until
    its final-state error is no larger than DOP853's; the errors are against DOP853 + ABA at
    rtol 1e-12, atol 1e-14.
+4. ``simulate(codegen=True)`` (unless --no-codegen, or without a C compiler): the first run
+   with an empty cache (generating the C and gcc counted), the first run of a freshly
+   compiled copy (library from the disk cache), the built library's rhs against ABA, and
+   the run at equal accuracy interleaved with DOP853 + ABA and the in-process run.
 Accelerations agree: max |q''(acausal) − q''(ABA)| / max(1, |q''|) at a random state.
 
 Targets: compile of the 6-axis arm < 0.2 s, right-hand side <= 2x ABA, simulation <= 2x
@@ -52,7 +56,7 @@ from scipy.integrate import solve_ivp
 import acausal
 from acausal.models import chain
 from acausal.multibody import from_urdf
-from pendulum import mapped_per_eval, per_call
+from pendulum import codegen_runs, mapped_per_eval, per_call, use_codegen_cache
 from timing import best_of, fit_exponent, print_table
 
 G = 9.81
@@ -114,7 +118,7 @@ def case(name: str, n: int | None):
 
 
 # ---- one case -------------------------------------------------------------------------------
-def bench(name: str, n: int | None, repeat: int, jit: bool) -> dict:
+def bench(name: str, n: int | None, repeat: int, jit: bool, codegen: bool = False) -> dict:
     import pinocchio as pin
     build, build_pin, _ = case(name, n)
     r = {"case": name if n is None else f"chain {n}"}
@@ -174,8 +178,8 @@ def bench(name: str, n: int | None, repeat: int, jit: bool) -> dict:
     r["pin_sim"], y_pin = best_of(run_pin, repeat, budget=2.0)
     r["err_pin"] = err(y_pin)
 
-    def run_acausal(rtol):
-        res = compiled.simulate(T_FINAL, t=GRID, x0=x0, rtol=rtol, atol=rtol / 100)
+    def run_acausal(rtol, codegen=False, on=compiled):
+        res = on.simulate(T_FINAL, t=GRID, x0=x0, rtol=rtol, atol=rtol / 100, codegen=codegen)
         r["solver"] = res.solver
         return np.array([res[k][-1] for k in coords])
     for rtol in MATCH_RTOLS:
@@ -184,6 +188,9 @@ def bench(name: str, n: int | None, repeat: int, jit: bool) -> dict:
         if e <= r["err_pin"] or rtol == MATCH_RTOLS[-1]:
             r["sim"], r["err_sim"], r["rtol_sim"], r["ok_sim"] = dt, e, rtol, e <= r["err_pin"]
             break
+    if codegen:
+        codegen_runs(r, compiled, acausal.compile(build()), run_acausal, run_pin, err,
+                     [y[inv], 0.0, np.zeros(0), p], r["rtol_sim"], repeat)
     return r
 
 
@@ -195,7 +202,10 @@ def main(argv=None):
     ap.add_argument("--repeat", type=int, default=3, help="runs per timing (best)")
     ap.add_argument("--jit", action="store_true",
                     help="also time the rhs compiled to C (CasADi JIT; needs a C compiler)")
+    ap.add_argument("--no-codegen", action="store_true",
+                    help="skip simulate(codegen=True) (generated C; needs a C compiler)")
     args = ap.parse_args(argv)
+    codegen = not args.no_codegen and use_codegen_cache()
     import pinocchio as pin
     print(f"acausal {acausal.__version__}, casadi {ca.__version__}, pinocchio {pin.__version__}",
           flush=True)
@@ -203,7 +213,7 @@ def main(argv=None):
     rows = []
     for name, n in cases:
         t0 = time.perf_counter()
-        r = bench(name, n, args.repeat, args.jit)
+        r = bench(name, n, args.repeat, args.jit, codegen)
         rows.append(r)
         print(f"{r['case']:>9s} done in {time.perf_counter() - t0:.1f} s", flush=True)
 
@@ -237,6 +247,26 @@ def main(argv=None):
             f"{label} {fit_exponent(ns, [r[k] for r in chains]):.2f}"
             for label, k in (("compile", "compile"), ("rhs", "rhs"), ("ABA", "aba"),
                              ("simulate", "sim"), ("DOP853+ABA", "pin_sim"))))
+    if codegen:
+        print("\n(4) simulate(codegen=True): generated C of the right-hand side (gcc -O1)")
+        rows_out = []
+        for r in rows:
+            pin_, inp, cg = (r["cg_times"][k][0] for k in ("pin", "in-process", "codegen"))
+            rows_out.append([r["case"], r["cg_first"], r["cg_cached_first"], r["cg_rhs"] * 1e6,
+                             r["cg_rhs"] / r["aba"], r["rtol_cg_eq"], r["err_cg_eq"], pin_,
+                             inp, cg, cg / pin_, cg / inp])
+        print_table(["case", "first run", "cached 1st", "rhs [us]", "rhs/ABA", "rtol eq",
+                     "error", "DOP853+ABA", "in-process", "codegen", "cg/DOP", "cg/in-proc"],
+                    rows_out, ["{:>10s}", "{:10.4g}", "{:10.4g}", "{:10.4g}", "{:10.3g}",
+                               "{:10.1e}", "{:10.2e}", "{:10.4g}", "{:10.4g}", "{:10.4g}",
+                               "{:10.3g}", "{:10.3g}"])
+        print("  first run: generating the C, gcc, loading, and the run (empty cache); cached "
+              "1st: the first run\n  of a freshly compiled copy (library from the disk cache);"
+              " rhs: the built library's, mapped;\n  times at equal accuracy: median of "
+              "interleaved runs; in-process: simulate() without codegen")
+        for r in rows:
+            print(f"  {r['case']:>9s} spread [min, max] s: " + "; ".join(
+                f"{k} [{lo:.4g}, {hi:.4g}]" for k, (_, lo, hi) in r["cg_times"].items()))
     print("\ntargets:")
     ok = lambda v, lim: "met" if v <= lim else "NOT met"     # noqa: E731
     for r in rows:
@@ -252,6 +282,12 @@ def main(argv=None):
         sim = r["sim"] / r["pin_sim"]
         line += f"; sim/DOP853 {sim:.2f} -> " \
                 f"{ok(sim, TARGETS['sim_ratio']) if r['ok_sim'] else 'NOT met (accuracy)'}"
+        if codegen:
+            rhs = r["cg_rhs"] / r["aba"]
+            sim = r["cg_times"]["codegen"][0] / r["cg_times"]["pin"][0]
+            line += f"; codegen: rhs/ABA {rhs:.2f} -> {ok(rhs, TARGETS['rhs_ratio'])}, " \
+                    f"sim/DOP853 {sim:.2f} -> " \
+                    f"{ok(sim, TARGETS['sim_ratio']) if r['ok_cg_eq'] else 'NOT met (accuracy)'}"
         print(line)
 
 

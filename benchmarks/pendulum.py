@@ -37,6 +37,11 @@ Measured in the same run, for each N:
    (Every *joint* at 0.1 rad would curl a long chain into a chaotic motion: from N = 32 on,
    both methods' errors at 10 s are O(10) rad/s and the reference itself differs from its
    rtol-1e-13 rerun by ~1e-3.)
+4. ``simulate(codegen=True)`` (unless --no-codegen, or without a C compiler): the first run
+   with an empty cache directory (generating the C, gcc, the run), the first run of a
+   freshly compiled copy of the model (the library from the disk cache), the built
+   library's rhs, and the run at equal accuracy, interleaved with DOP853 + ABA and the
+   in-process simulate() (median and spread). Target: <= 0.5x Pinocchio + DOP853.
 The models agree: max |acausal rhs - ABA| (and sympy - ABA) at a random state is printed.
 
     python benchmarks/pendulum.py                 # N = 2, 4, 8, 16, 32, 64 (~ 2 min)
@@ -51,6 +56,7 @@ import argparse
 import cProfile
 import gc
 import io
+import os
 import pstats
 import signal
 import time
@@ -61,7 +67,8 @@ from scipy.integrate import solve_ivp
 
 import acausal
 from acausal.models.pendulums import PendulumChain
-from timing import best_of, fit_exponent, print_table
+from acausal.simulation import codegen as generated
+from timing import best_of, fit_exponent, interleaved, print_table, stats, timed
 
 L, MASS, INERTIA, G = 0.5, 1.0, 0.01, 9.81
 Q0, T_FINAL, RTOL, ATOL = 0.1, 10.0, 1e-8, 1e-10
@@ -69,7 +76,7 @@ REF_RTOL, REF_ATOL = 1e-12, 1e-14
 MATCH_RTOLS = tuple(10.0 ** -k for k in np.arange(8.0, 11.01, 0.5))   # 1e-8 ... 1e-11
 ADAMS = {"linear_multistep_method": "adams", "nonlinear_solver_iteration": "functional"}
 GRID = np.linspace(0.0, T_FINAL, 101)
-TARGETS = {"compile_32": 0.1, "rhs_ratio": 2.0, "sim_ratio": 2.0}
+TARGETS = {"compile_32": 0.1, "rhs_ratio": 2.0, "sim_ratio": 2.0, "codegen_ratio": 0.5}
 
 
 # ---- models ---------------------------------------------------------------------------------
@@ -184,7 +191,7 @@ def mapped_per_eval(f: ca.Function, args: list, target=0.05) -> float:
 
 # ---- one N ----------------------------------------------------------------------------------
 def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
-          jit: bool = False) -> dict:
+          jit: bool = False, codegen: bool = False) -> dict:
     import pinocchio as pin
     r = {"N": n}
     rng = np.random.default_rng(n)
@@ -266,8 +273,9 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     y0 = np.concatenate([q0, np.zeros(n)])
     x0 = {f"rev{i}.phi": q0[i - 1] for i in range(1, n + 1)}
 
-    def run_acausal(solver=None, rtol=RTOL, atol=ATOL):
-        res = compiled.simulate(T_FINAL, t=GRID, x0=x0, rtol=rtol, atol=atol, solver=solver)
+    def run_acausal(solver=None, rtol=RTOL, atol=ATOL, codegen=False, on=compiled):
+        res = on.simulate(T_FINAL, t=GRID, x0=x0, rtol=rtol, atol=atol, solver=solver,
+                          codegen=codegen)
         r["auto_solver"] = res.solver if solver is None else r.get("auto_solver")
         return np.array([res[f"rev{i}.phi"][-1] for i in range(1, n + 1)]
                         + [res[f"rev{i}.w"][-1] for i in range(1, n + 1)])
@@ -302,6 +310,11 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
                 r[f"ok_{key}_eq"] = e <= r["err_pin"]
                 break
 
+    if codegen:
+        codegen_runs(r, compiled, acausal.compile(build_acausal(n)),
+                     lambda rtol, cg, on: run_acausal(None, rtol, rtol / 100, cg, on), run_pin,
+                     err, [x, t, u, p], r["rtol_adams_eq"], repeat)
+
     dae = dict(compiled.dae)
     pu = np.concatenate([np.zeros(compiled.u.numel()), p])      # dae p = [u; p]
     creates, runs = [], []
@@ -332,6 +345,39 @@ def bench(n: int, repeat: int, sympy_state: dict, sympy_cap: float,
     r["adams_nfev"] = stats.get("nfevals", -1)
     r["adams_t_rhs"] = stats.get("t_wall_daeF", float("nan"))
     return r
+
+
+def codegen_runs(r, compiled, again, run, run_pin, err, rhs_args, rtol_in_process,
+                 repeat) -> None:
+    """simulate(codegen=True) (the default solver): the first run, which generates and
+    builds the C (gcc; the cache directory is empty), the first run of ``again`` (a freshly
+    compiled copy of the model: the library loaded from the disk cache, what a new process
+    pays, compile aside), the right-hand side of the built library at ``rhs_args`` = (x, t,
+    u, p) (mapped over x), and the run at
+    equal accuracy against DOP853 and the in-process run at ``rtol_in_process``,
+    interleaved. ``run(rtol, codegen, on)`` simulates ``on`` and returns the final state."""
+    t0 = time.perf_counter()
+    run(RTOL, True, compiled)
+    r["cg_first"] = time.perf_counter() - t0
+    t0 = time.perf_counter()
+    run(RTOL, True, again)
+    r["cg_cached_first"] = time.perf_counter() - t0
+    # the built library's right-hand side at the state x (t, u, p fixed: as the folded rhs
+    # above, so that no conversion of mapped parameter copies is timed)
+    x, t, u, p = rhs_args
+    xs = ca.MX.sym("x", len(x))
+    f = generated.equations(compiled, derivatives=False)
+    r["cg_rhs"] = mapped_per_eval(ca.Function("cg_rhs", [xs], [f(xs, t, u, p)]), [x])
+    for rtol in MATCH_RTOLS:
+        e = err(run(rtol, True, compiled))
+        if e <= r["err_pin"] or rtol == MATCH_RTOLS[-1]:
+            r["err_cg_eq"], r["rtol_cg_eq"], r["ok_cg_eq"] = e, rtol, e <= r["err_pin"]
+            break
+    runs = interleaved({
+        "pin": timed(run_pin),
+        "in-process": timed(lambda: run(rtol_in_process, False, compiled)),
+        "codegen": timed(lambda: run(r["rtol_cg_eq"], True, compiled))}, max(repeat, 5))
+    r["cg_times"] = {k: stats(v, "run") for k, v in runs.items()}
 
 
 # ---- report ---------------------------------------------------------------------------------
@@ -369,10 +415,13 @@ def main(argv=None):
                     help="longest sympy derivation allowed [s] (default 60)")
     ap.add_argument("--jit", action="store_true",
                     help="also time the folded rhs compiled to C (CasADi JIT; needs a C compiler)")
+    ap.add_argument("--no-codegen", action="store_true",
+                    help="skip simulate(codegen=True) (generated C; needs a C compiler)")
     ap.add_argument("--profile", type=int, default=0, metavar="N",
                     help="also cProfile acausal.compile at this N")
     args = ap.parse_args(argv)
     ns = [n for n in args.ns if n <= args.max_n]
+    codegen = not args.no_codegen and use_codegen_cache()
     import pinocchio as pin
     import sympy
     print(f"acausal {acausal.__version__}, casadi {ca.__version__}, pinocchio {pin.__version__}, "
@@ -381,7 +430,7 @@ def main(argv=None):
     rows, sympy_state = [], {}
     for n in ns:
         t0 = time.perf_counter()
-        r = bench(n, args.repeat, sympy_state, args.sympy_cap, args.jit)
+        r = bench(n, args.repeat, sympy_state, args.sympy_cap, args.jit, codegen)
         rows.append(r)
         print(f"N={n:3d} done in {time.perf_counter() - t0:.1f} s: compile {r['ac_compile']:.4f} s,"
               f" rhs {r['ac_rhs_native'] * 1e6:.1f} us (ABA {r['pin_aba'] * 1e6:.1f} us), "
@@ -504,8 +553,55 @@ def main(argv=None):
                   f"{r[f'rtol_{key}_eq']:.1e}, error {r[f'err_{key}_eq']:.1e} vs "
                   f"{r['err_pin']:.1e}; target <= {TARGETS['sim_ratio']:g}) -> "
                   f"{ok(sim, TARGETS['sim_ratio']) if r[f'ok_{key}_eq'] else 'NOT met'}")
+    if codegen:
+        report_codegen(rows)
     if args.profile:
         profile_compile(args.profile)
+
+
+def use_codegen_cache() -> bool:
+    """A C compiler is there: generated code goes to an empty temporary cache directory
+    (removed at exit), so that the first run's build is measured."""
+    import atexit
+    import shutil
+    import tempfile
+    from acausal import toolchain
+    try:
+        toolchain.find_compiler(acausal.errors.SimulationError)
+    except acausal.errors.SimulationError as e:
+        print(f"simulate(codegen=True) skipped: {e}")
+        return False
+    cache = tempfile.mkdtemp(prefix="acausal_bench_cache_")
+    atexit.register(shutil.rmtree, cache, ignore_errors=True)
+    os.environ["ACAUSAL_CACHE"] = cache
+    return True
+
+
+def report_codegen(rows) -> None:
+    print("\n(4) simulate(codegen=True): generated C of the right-hand side (gcc -O1), Adams")
+    rows_out = []
+    for r in rows:
+        pin_, inp, cg = (r["cg_times"][k][0] for k in ("pin", "in-process", "codegen"))
+        rows_out.append([r["N"], r["cg_first"], r["cg_cached_first"], r["cg_rhs"] * 1e6,
+                         r["cg_rhs"] / r["pin_aba"], r["rtol_cg_eq"], r["err_cg_eq"], pin_, inp,
+                         cg, cg / pin_, cg / inp])
+    print_table(["N", "first run", "cached 1st", "rhs [us]", "rhs/ABA", "rtol eq", "error",
+                 "DOP853+ABA", "in-process", "codegen", "cg/DOP", "cg/in-proc"], rows_out,
+                ["{:10d}", "{:10.4g}", "{:10.4g}", "{:10.4g}", "{:10.3g}", "{:10.1e}",
+                 "{:10.2e}", "{:10.4g}", "{:10.4g}", "{:10.4g}", "{:10.3g}", "{:10.3g}"])
+    print("  first run: generating the C, gcc, loading, and the run (empty cache); cached 1st: "
+          "the first run\n  of a freshly compiled copy of the model (library from the disk "
+          "cache); times at equal accuracy:\n  median of interleaved runs (spread below); "
+          "in-process: simulate() without codegen (Adams)")
+    for r in rows:
+        print(f"  N={r['N']:3d} spread [min, max] s: " + "; ".join(
+            f"{k} [{lo:.4g}, {hi:.4g}]" for k, (_, lo, hi) in r["cg_times"].items()))
+    for r in rows:
+        ratio = r["cg_times"]["codegen"][0] / r["cg_times"]["pin"][0]
+        ok = r["ok_cg_eq"] and ratio <= TARGETS["codegen_ratio"]
+        print(f"  N={r['N']:3d}: simulate(codegen=True) / DOP853 at equal accuracy = "
+              f"{ratio:5.2f} (target <= {TARGETS['codegen_ratio']:g}) -> "
+              f"{'met' if ok else 'NOT met'}")
 
 
 if __name__ == "__main__":

@@ -75,6 +75,15 @@ def interleaved(contenders: dict[str, Callable[[], dict]], repeat: int) -> dict[
     return runs
 
 
+def timed(fn: Callable[[], object]) -> Callable[[], dict]:
+    """A contender for ``interleaved`` that times one call of ``fn`` (phase 'run')."""
+    def run():
+        t0 = time.perf_counter()
+        fn()
+        return {"run": time.perf_counter() - t0}
+    return run
+
+
 def stats(runs: list[dict], phase: str) -> tuple[float, float, float]:
     """(median, min, max) of ``phase`` [s] over the runs."""
     v = np.array([r[phase] for r in runs], dtype=float)

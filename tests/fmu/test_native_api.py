@@ -262,8 +262,8 @@ def test_sources_rebuild_the_binary(fmus, tmp_path):
 
 
 def test_no_compiler_is_a_clear_error(fmus, tmp_path, monkeypatch):
-    import acausal.fmu.export as ex
-    monkeypatch.setattr(ex.shutil, "which", lambda name: None)
+    import acausal.toolchain as tc
+    monkeypatch.setattr(tc.shutil, "which", lambda name: None)
     with pytest.raises(FmuExportError, match="no C compiler"):
         fmus["crane"].export_fmu(tmp_path / "x.fmu")
     with pytest.raises(FmuExportError, match="fmi_version"):

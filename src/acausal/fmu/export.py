@@ -130,10 +130,7 @@ outputs w.r.t. states and inputs come from CasADi's AD (total derivatives throug
 from __future__ import annotations
 
 import hashlib
-import os
 import platform
-import shutil
-import subprocess
 import tempfile
 import uuid
 import zipfile
@@ -142,6 +139,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import toolchain
 from ..errors import AcausalError, FmuExportError
 from ..simulation.events import CHATTER_EVENTS, CHATTER_SPAN, EVENT_TOL, MAX_ITERATIONS
 from .codegen import ModelFunctions
@@ -182,11 +180,8 @@ def find_fmi_headers(version: str) -> Path:
 
 
 def find_compiler() -> str:
-    for cand in [os.environ.get("CC"), "cc", "gcc", "clang"]:
-        if cand and shutil.which(cand):
-            return shutil.which(cand)
-    raise FmuExportError("no C compiler found (tried $CC, cc, gcc, clang); install one, e.g. "
-                         "apt-get install gcc, or set CC")
+    """The system C compiler (see ``acausal.toolchain``)."""
+    return toolchain.find_compiler(FmuExportError)
 
 
 def platform_dirs() -> tuple[str, str, str]:
@@ -317,15 +312,6 @@ def dependencies(compiled, mf: ModelFunctions, variables: list[FmuVariable]) -> 
 
 
 # ---- build -----------------------------------------------------------------------------------
-def _compile(cc: str, sources: list[Path], include: list[Path], out: Path) -> None:
-    cmd = [cc, "-O2", "-shared", "-fPIC", "-fvisibility=hidden", "-std=c99", "-w"]
-    cmd += [f"-I{d}" for d in include] + [str(s) for s in sources] + ["-o", str(out), "-lm"]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        tail = "\n".join((r.stderr or r.stdout).strip().splitlines()[-25:])
-        raise FmuExportError(f"compiling the FMU failed ({' '.join(cmd[:2])} ...):\n{tail}")
-
-
 def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "both",
                   stop_time: float = 1.0, description: str | None = None,
                   nominals: dict | None = None) -> Path:
@@ -371,7 +357,9 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
         plat = plat2 if fmi_version == "2.0" else plat3
         binary = tmp / "binaries" / plat / f"{ident}{ext}"
         binary.parent.mkdir(parents=True)
-        _compile(cc, [src / f for f in c_files], [src, headers], binary)
+        toolchain.build_shared_library(
+            cc, [src / f for f in c_files], binary, include=(src, headers),
+            flags=("-O2", "-fvisibility=hidden"), error=FmuExportError, what="the FMU")
         info = {"model_name": compiled.name, "identifier": ident, "guid": guid,
                 "description": description or f"{compiled.name} (acausal, native)",
                 "variables": variables, "me": fmu_type in ("me", "both"),

@@ -8,6 +8,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before
+from . import buffers, codegen as generated
 from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
@@ -25,7 +26,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
              solver: str | None = None,
              rtol: float = 1e-8, atol: float = 1e-10, max_step: float | None = None,
              nominal: dict | None = None, options: dict | None = None,
-             progress: bool = False) -> Result:
+             progress: bool = False, codegen: bool = False) -> Result:
     """Simulate ``model`` from t = 0 (or t[0]) to ``t_final`` [s].
 
     t        output grid (default: 501 points); params: overrides by dotted name;
@@ -58,6 +59,12 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     progress a progress bar (tqdm, ``acausal.simulation.progress``) over the simulated time,
              shown once the run takes more than 2 s: the integrator then restarts at 100
              points of the grid to report (results equal to the tolerances).
+    codegen  True: the integrator runs on the model's equations generated as C and built by
+             the system C compiler once, cached on disk by a hash of the code
+             (``acausal.simulation.codegen``: parameters and inputs stay arguments, so
+             changing them does not rebuild); faster on large models, the same results to
+             rounding (which the integrator may carry up to its tolerance); models with
+             events are refused.
 
     Ctrl-C (KeyboardInterrupt) between two calls of the integrator (time events, the
     progress points, sample instants of a sampled controller, the windows between state
@@ -80,7 +87,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         return simulate_feedback(simulate, model, t_final, grid, dict(inputs),
                                  feedback_inputs(inputs), params=params, x0=x0, guess=guess,
                                  solver=solver, rtol=rtol, atol=atol, max_step=max_step,
-                                 nominal=nominal, options=options, progress=progress)
+                                 nominal=nominal, options=options, progress=progress,
+                                 **({"codegen": True} if codegen else {}))
+    if codegen:
+        generated.check_supported(model)
     p = model.param_vector(params)
     inputs = dict(inputs or {})
     unknown = set(inputs) - set(model.input_names)
@@ -126,7 +136,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     opts.update(options or {})
 
     def integrate(plugin, opts):
-        dae = integrator_problem(model, solver, ode, alg)
+        dae = generated.dae_problem(model, solver, u_expr, p, scale) if codegen else \
+            integrator_problem(model, solver, ode, alg)
         X = [np.asarray(xs, dtype=float).reshape(-1, 1) / scale[:nx, None]]
         Z = [np.asarray(zs, dtype=float).reshape(-1, 1) / scale[nx:, None]]
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
@@ -164,7 +175,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
         try:
             F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
-            sol = F(x0=x, z0=z)
+            xf, *zf = buffers.call(F, {"x0": x, "z0": z}, ["xf", "zf"][:1 + has_alg])
         except RuntimeError as e:
             def state_near(t_fail, a=a, x=x, z=z):
                 """(x, z) shortly before the failure, by a second run; None if it fails."""
@@ -179,8 +190,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                 model, e, a, b, rtol, atol, state_near if loops else None, p,
                 lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel())
             ) from None
-        xf = np.array(sol["xf"])
-        zf = np.array(sol["zf"]) if has_alg else np.zeros((0, len(tout)))
+        zf = zf[0] if has_alg else np.zeros((0, len(tout)))
         X.append(xf[:, :len(pts)])
         Z.append(zf[:, :len(pts)])
         return xf[:, -1], (zf[:, -1] if has_alg else z)
