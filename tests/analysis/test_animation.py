@@ -214,3 +214,12 @@ def test_a_prismatic_is_drawn_as_long_as_its_stroke():
         np.testing.assert_allclose([world[:, 0].min(), world[:, 0].max()],
                                    sorted([start, start + s]), atol=1e-12)
     assert res["rail.s"][-1] > 0.5              # pushed along the rail
+
+
+def test_mp4_without_ffmpeg_says_what_to_do(pendulum, tmp_path, monkeypatch):
+    from matplotlib.animation import writers
+    monkeypatch.setattr(writers, "is_available", lambda name: False)
+    m, res = pendulum
+    with pytest.raises(AnalysisError, match="needs ffmpeg on the PATH.*save a .gif or .html"):
+        Animation(m, res).save(tmp_path / "run.mp4")
+    assert not (tmp_path / "run.mp4").exists()
