@@ -219,7 +219,9 @@ class EventSimulation(ModeIteration):
         self.Nx, self.Nz = scale[:self.nx], scale[self.nx:]
         d = model.p[model.mode_params] if model.mode_params else ca.SX(0, 1)
         self.ode, self.alg, self.d = ode, alg, d
-        self.static = self.nx == 0 and not self.has_alg     # only signals: nothing to integrate
+        # no states (signals only, or algebraic variables of time: a diode among resistors):
+        # nothing to integrate, the algebraic variables solved by Newton's method at each time
+        self.static = self.nx == 0
         if self.has_alg:    # IDAS is given consistent derivatives at each start
             self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
             self.alg_jacobian = ca.Function("alg_jacobian", [model.x, model.z, model.t, d],
@@ -303,7 +305,11 @@ class EventSimulation(ModeIteration):
     def integrate(self, t0, times, x, z, d):
         """(x, z) at each of ``times`` (> t0) from (t0, x, z) with modes d, unscaled."""
         if self.static:
-            return np.zeros((0, len(times))), np.zeros((0, len(times)))
+            X = np.zeros((0, len(times)))
+            if not self.has_alg:
+                return X, np.zeros((0, len(times)))
+            return X, self.consistent_along(times, X, np.tile(np.reshape(z, (-1, 1)),
+                                                              (1, len(times))), d)
         try:
             F = ca.integrator("segment", self.plugin, self.dae, float(t0), list(times),
                               self._start_options(t0, x, z, d, times[-1]))
