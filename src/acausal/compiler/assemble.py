@@ -97,6 +97,8 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
     ws.source = flat.signal_source
     ws.components = flat.components
     params, fixed = _declare_parameters(ws, flat.components)
+    ws.p = _stack([s for s, _ in params])
+    ws.p_default = [v.start for _, v in params]
     with symbolic_parameters(ws.param_symbols):
         for c in flat.components:
             c.structure(StructureBuilder(ws, c))
@@ -113,8 +115,6 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
         tree = choose_tree(nodes, ws.relations, ws.der_table, ws.state_names,
                            lambda: _massive_nodes(flat, ws, len(nodes)))
         run_physics(ws, flat.components)
-    ws.p = _stack([s for s, _ in params])
-    ws.p_default = [v.start for _, v in params]
     return _assemble(model, ws, tree, params, fixed)
 
 
@@ -164,13 +164,14 @@ def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
 
 def _declare_parameters(ws: Workspace, components):
     """A symbol and a record for every scalar parameter (vector parameters by element,
-    ``r[1]``, ``r[2]``); the components' symbols go into ``ws.param_symbols``. A
+    ``r[1]``, ``r[2]``); the components' symbols go into ``ws.param_symbols`` (the rows of
+    the scalar ones in the stacked parameters into ``ws.param_rows``). A
     ``structural_zero`` parameter built with 0 is the constant 0 instead, listed in the
     second list returned (by name)."""
     params, fixed = [], []
     layouts, declarations = {}, {}       # by class; by (parameter, built with 0)
     for c in components:
-        syms, path, values = {}, c.path, c._values
+        syms, rows, path, values = {}, {}, c.path, c._values
         prefix = f"{path}." if path else ""
         layout = layouts.get(type(c))
         if layout is None:
@@ -187,6 +188,8 @@ def _declare_parameters(ws: Workspace, components):
                 fixed.append(prefix + pname)
                 continue
             elements = []
+            if par.size is None:
+                rows[pname] = len(params)
             for k, ename in enumerate(enames):
                 full = prefix + ename
                 s = ca.SX.sym(full)
@@ -195,6 +198,7 @@ def _declare_parameters(ws: Workspace, components):
                                                     value if par.size is None else value[k])))
             syms[pname] = elements[0] if par.size is None else _vc(*elements)
         ws.param_symbols[c] = syms
+        ws.param_rows[c] = rows
     return params, fixed
 
 

@@ -131,7 +131,7 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
         nodes = [ws.node_of[ports[name]] for ports in all_ports]
         args += [ca.horzcat(*[n.pos for n in nodes]), ca.horzcat(*[n.vel for n in nodes]),
                  ca.horzcat(*[n.acc for n in nodes])]
-    args += [ca.horzcat(*[ws.param_symbols[c][p] for c in members]) for p in pnames]
+    args += [_parameter_row(ws, members, p) for p in pnames]
     args.append(ws.t)
     Y = F.map(len(members))(*args)
     row = 0
@@ -160,3 +160,12 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
             for c, col in zip(members, cols):
                 ws.variables.append((f"{c.path}.{name}" if c.path else name, col, unit, desc))
     return True
+
+
+def _parameter_row(ws: Workspace, members: list, name: str) -> ca.SX:
+    """The members' parameter ``name`` side by side: one slice of the stacked parameters
+    where each is a row of them, else their symbols joined one by one."""
+    rows = [ws.param_rows.get(c, {}).get(name) for c in members]
+    if ws.p is not None and None not in rows:
+        return ws.p[rows].T
+    return ca.horzcat(*[ws.param_symbols[c][name] for c in members])
