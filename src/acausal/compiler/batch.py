@@ -134,6 +134,7 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
     args += [_parameter_row(ws, members, p) for p in pnames]
     args.append(ws.t)
     Y = F.map(len(members))(*args)
+    prefixes = [f"{c.path}." if c.path else "" for c in members]
     row = 0
     for kind, what, ex in tb.out:
         k = ex.numel()
@@ -149,16 +150,16 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
             for ports, col in zip(all_ports, cols):
                 ws.flows.append((ports[what], col))
         elif kind == "nominal":
-            for c, col in zip(members, cols):
-                ws.nominals[f"{c.path}.{what}" if c.path else what] = col
+            for prefix, col in zip(prefixes, cols):
+                ws.nominals[prefix + what] = col
         elif kind == "kept":
             name, rank = what
-            for c, col in zip(members, cols):
-                ws.state_selects.append((c, f"{c.path}.{name}" if c.path else name, col, rank))
+            for c, prefix, col in zip(members, prefixes, cols):
+                ws.state_selects.append((c, prefix + name, col, rank))
         else:
             name, unit, desc = what
-            for c, col in zip(members, cols):
-                ws.variables.append((f"{c.path}.{name}" if c.path else name, col, unit, desc))
+            for prefix, col in zip(prefixes, cols):
+                ws.variables.append((prefix + name, col, unit, desc))
     return True
 
 
