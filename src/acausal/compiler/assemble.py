@@ -97,6 +97,8 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
     ws.source = flat.signal_source
     ws.components = flat.components
     params, fixed = _declare_parameters(ws, flat.components)
+    ws.p = _stack([s for s, _ in params])
+    ws.p_default = [v.start for _, v in params]
     with symbolic_parameters(ws.param_symbols):
         for c in flat.components:
             c.structure(StructureBuilder(ws, c))
@@ -113,8 +115,6 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
         tree = choose_tree(nodes, ws.relations, ws.der_table, ws.state_names,
                            lambda: _massive_nodes(flat, ws, len(nodes)))
         run_physics(ws, flat.components)
-    ws.p = _stack([s for s, _ in params])
-    ws.p_default = [v.start for _, v in params]
     return _assemble(model, ws, tree, params, fixed)
 
 
@@ -164,29 +164,41 @@ def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
 
 def _declare_parameters(ws: Workspace, components):
     """A symbol and a record for every scalar parameter (vector parameters by element,
-    ``r[1]``, ``r[2]``); the components' symbols go into ``ws.param_symbols``. A
+    ``r[1]``, ``r[2]``); the components' symbols go into ``ws.param_symbols`` (the rows of
+    the scalar ones in the stacked parameters into ``ws.param_rows``). A
     ``structural_zero`` parameter built with 0 is the constant 0 instead, listed in the
     second list returned (by name)."""
     params, fixed = [], []
+    layouts, declarations = {}, {}       # by class; by (parameter, built with 0)
     for c in components:
-        syms, path = {}, c.path
-        for pname, par in c.parameters().items():
-            value = c._values[pname]
-            name = f"{path}.{pname}" if path else pname
-            declaration = par.compiled(value)
+        syms, rows, path, values = {}, {}, c.path, c._values
+        prefix = f"{path}." if path else ""
+        layout = layouts.get(type(c))
+        if layout is None:
+            layout = layouts[type(c)] = [(pname, par, par.element_names())
+                                         for pname, par in c.parameters().items()]
+        for pname, par, enames in layout:
+            value = values[pname]
+            key = (id(par), par.size is None and value == 0.0)
+            if key not in declarations:
+                declarations[key] = par.compiled(value)
+            declaration = declarations[key]
             if declaration is None:                       # fixed at 0: a massless part
                 syms[pname] = ca.SX(0.0)
-                fixed.append(name)
+                fixed.append(prefix + pname)
                 continue
             elements = []
-            for k, ename in enumerate(par.element_names()):
-                full = f"{path}.{ename}" if path else ename
+            if par.size is None:
+                rows[pname] = len(params)
+            for k, ename in enumerate(enames):
+                full = prefix + ename
                 s = ca.SX.sym(full)
                 elements.append(s)
                 params.append((s, _parameter_record(full, declaration,
                                                     value if par.size is None else value[k])))
             syms[pname] = elements[0] if par.size is None else _vc(*elements)
         ws.param_symbols[c] = syms
+        ws.param_rows[c] = rows
     return params, fixed
 
 
@@ -277,15 +289,15 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         return names, final(_vc(exprs, *[e for _, e, _ in fl])), units
 
     # ---- the DAE -------------------------------------------------------------------------
+    n_model_params = len(params)
     params = params + [(s, ScalarVariable(s.name(), _ACTIVE.unit, _ACTIVE.description, 1.0,
                                           min=0.0, declaration=_ACTIVE))
                        for s in ca.vertsplit(motion.active)]
-    n_model_params = len(params) - motion.active.numel()
     n_before_modes = len(params)
     params = params + [(m.sym, _mode_record(m)) for m in ws.modes]
     z_states = _stack([i.sym for i in ws.states])
     u = _stack([s for _, s in ws.inputs])
-    p = _stack([s for s, _ in params])
+    p = _vc(ws.p, motion.active, _stack([m.sym for m in ws.modes]))   # the model's, stacked once
     x = _vc(motion.q_diff, motion.qd_diff, z_states)
     if x.numel() == 0 and not ca.depends_on(recorder()[1], _vc(t, u)):
         raise StructureError(f"model '{model.name or type(model).__name__}' has no dynamics: no "
@@ -310,19 +322,20 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
                              f"(please report)")
     chart_starts = {k: v for c in tree.charts for k, v in c.start.items()}
-    starts = [chart_starts.get(s.name(), 0.0) for s in ca.vertsplit(x)[:motion.n_x]] \
+    x_names = [s.name() for s in ca.vertsplit(x)[:motion.n_x]]     # q_diff, qd_diff
+    starts = [chart_starts.get(name, 0.0) for name in x_names] \
         + [i.start for i in ws.states] \
         + [0.0] * motion.n_z + [a.start for a in algebraics] + [v for _, _, v in network.z]
     nominal = _parameter_function("nominal", _nominals(model, ws, tree, final, _vc(x, z),
                                                        _vc(t, x, z, u)), p, "nominals")
-    n0 = [float(v) for v in ca.vertsplit(nominal([v.start for _, v in params]))]
+    n0 = nominal([v.start for _, v in params]).full().ravel()
     n_x, n_z = iter(n0[:x.numel()]), iter(n0[x.numel():])        # at the defaults
     units = _coordinate_units(tree)
     return CompiledModel(
         name=model.name or type(model).__name__, t=t, x=x, z=z, p=p, u=u,
         ode=ode, alg=alg, y=y_out,
-        states=[ScalarVariable(s.name(), units.get(s.name(), ""), nominal=float(next(n_x)))
-                for s in ca.vertsplit(_vc(motion.q_diff, motion.qd_diff))]
+        states=[ScalarVariable(name, units.get(name, ""), nominal=float(next(n_x)))
+                for name in x_names]
         + [ScalarVariable(i.sym.name(), i.unit, i.description, nominal=float(next(n_x)))
            for i in ws.states],
         algebraics=[ScalarVariable(s.name(), units.get(s.name(), ""), nominal=float(next(n_z)))

@@ -131,9 +131,10 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
         nodes = [ws.node_of[ports[name]] for ports in all_ports]
         args += [ca.horzcat(*[n.pos for n in nodes]), ca.horzcat(*[n.vel for n in nodes]),
                  ca.horzcat(*[n.acc for n in nodes])]
-    args += [ca.horzcat(*[ws.param_symbols[c][p] for c in members]) for p in pnames]
+    args += [_parameter_row(ws, members, p) for p in pnames]
     args.append(ws.t)
     Y = F.map(len(members))(*args)
+    prefixes = [f"{c.path}." if c.path else "" for c in members]
     row = 0
     for kind, what, ex in tb.out:
         k = ex.numel()
@@ -149,14 +150,23 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
             for ports, col in zip(all_ports, cols):
                 ws.flows.append((ports[what], col))
         elif kind == "nominal":
-            for c, col in zip(members, cols):
-                ws.nominals[f"{c.path}.{what}" if c.path else what] = col
+            for prefix, col in zip(prefixes, cols):
+                ws.nominals[prefix + what] = col
         elif kind == "kept":
             name, rank = what
-            for c, col in zip(members, cols):
-                ws.state_selects.append((c, f"{c.path}.{name}" if c.path else name, col, rank))
+            for c, prefix, col in zip(members, prefixes, cols):
+                ws.state_selects.append((c, prefix + name, col, rank))
         else:
             name, unit, desc = what
-            for c, col in zip(members, cols):
-                ws.variables.append((f"{c.path}.{name}" if c.path else name, col, unit, desc))
+            for prefix, col in zip(prefixes, cols):
+                ws.variables.append((prefix + name, col, unit, desc))
     return True
+
+
+def _parameter_row(ws: Workspace, members: list, name: str) -> ca.SX:
+    """The members' parameter ``name`` side by side: one slice of the stacked parameters
+    where each is a row of them, else their symbols joined one by one."""
+    rows = [ws.param_rows.get(c, {}).get(name) for c in members]
+    if ws.p is not None and None not in rows:
+        return ws.p[rows].T
+    return ca.horzcat(*[ws.param_symbols[c][name] for c in members])

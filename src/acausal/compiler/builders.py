@@ -100,6 +100,7 @@ class Workspace:
     state_selects: list = field(default_factory=list)       # (owner, name, expr, rank) kept
     components: list = field(default_factory=list)          # all of them, flattened
     param_symbols: dict = field(default_factory=dict)       # component -> {name: SX}
+    param_rows: dict = field(default_factory=dict)          # component -> {name: row of p}
     net_nodes: list = field(default_factory=list)           # networks.NetNode
     net_node_of: dict = field(default_factory=dict)         # network port -> NetNode
     net_flows: list = field(default_factory=list)           # (network port, explicit flow)

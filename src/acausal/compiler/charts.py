@@ -244,5 +244,7 @@ def quaternion_states(charts: list[Chart], q_diff: ca.SX, q_diff_dot: ca.SX):
 
 def state_positions(charts: list[Chart], q: ca.SX) -> ca.SX:
     """The coordinates q with each chart's θ replaced by its Q (the states' layout)."""
+    if not charts:
+        return q
     pairs = _layout(charts, q, q)
     return _vc(*[a for a, _ in pairs]) if pairs else ca.SX(0, 1)

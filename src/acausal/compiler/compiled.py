@@ -42,7 +42,7 @@ from .loops import Mobility, mobility
 ARGS = ("t", "x", "z", "u", "p")        # the argument order of every Function of the seam
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)          # slots: one per parameter, many of them
 class ScalarVariable:
     """One scalar of a compiled model: a parameter, input, output, state or algebraic
     variable. ``start`` is a parameter's default or an input's start value (None where

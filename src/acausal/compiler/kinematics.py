@@ -298,13 +298,16 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
         return n.pos, n.vel, n.acc
 
     scalar_relaxations = []             # unused (ε, ε̇, ε̈) of 1-D relations, made in blocks
+    # at most one per relation that may determine a 1-D node: the first block's size
+    scalar_bound = sum(1 for r in relations
+                       if r.linear or any(n.domain.dof == 1 for n in r.nodes))
 
     def relax(dim: int):
         k = len(fired)
         if dim == 1:
             if not scalar_relaxations:
-                scalar_relaxations.extend(reversed(_relaxation_block(k, max(8, k),
-                                                                     der_table)))
+                size = max(8, k if k else scalar_bound)
+                scalar_relaxations.extend(reversed(_relaxation_block(k, size, der_table)))
             return scalar_relaxations.pop()
         e, ed, edd = (ca.SX.sym(f"eps{k}", dim), ca.SX.sym(f"epsd{k}", dim),
                       ca.SX.sym(f"epsdd{k}", dim))
@@ -420,7 +423,8 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
 def _relaxation_block(k: int, size: int, der_table: dict) -> list[tuple]:
     """``size`` scalar relaxations (ε, ε̇, ε̈) named eps<k>_<i>, epsd<k>_<i>, epsdd<k>_<i>,
     their rates entered in ``der_table``: symbols made in blocks cost a third of one by one
-    (blocks as large as the relaxations made so far: at most twice as many as needed)."""
+    (the first block as large as the relations that may need one, any further one as large
+    as the relaxations made so far)."""
     trios = list(zip(*(ca.vertsplit(ca.SX.sym(f"{base}{k}", size))
                        for base in ("eps", "epsd", "epsdd"))))
     for i, (e, ed, edd) in enumerate(trios):

@@ -86,7 +86,8 @@ class Lagrange:
         charts = tree.charts
         self._theta = _vc(*[c.theta for c in charts]) if charts else ca.SX(0, 1)
         self.q_state = state_positions(charts, self.q)
-        self.q_state_names = [s.name() for s in ca.vertsplit(self.q_state)]
+        self.q_state_names = [s.name() for s in ca.vertsplit(self.q_state)] if charts \
+            else list(self.q_names)
         #: (names of θ[1..3], names of Q[1..4]) of each free frame's chart
         self.chart_names = [(tuple(s.name() for s in ca.vertsplit(c.theta)),
                              tuple(s.name() for s in ca.vertsplit(c.Q)))

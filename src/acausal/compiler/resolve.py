@@ -26,6 +26,7 @@ class Resolver:
         self.sv = _vc(*syms) if syms else ca.SX(0, 1)
         self.vals = _vc(*vals) if vals else ca.SX(0, 1)
         self.zeros_for = zeros_for
+        self._failed_syms = _vc(*[sym for sym, _ in failed]) if failed else None
 
     def __call__(self, pieces: list) -> list:
         if self.syms:
@@ -37,7 +38,10 @@ class Resolver:
 
     def check(self, pieces):
         """Raise the error of a placeholder whose rate could not be derived, if any piece
-        still needs it."""
+        still needs it (one test for all of them first)."""
+        if self._failed_syms is None or not pieces or \
+                not ca.depends_on(ca.veccat(*pieces), self._failed_syms):
+            return
         for sym, err in self.failed:
             if any(ca.depends_on(x, sym) for x in pieces):
                 raise err

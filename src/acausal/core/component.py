@@ -21,7 +21,6 @@ a model names it; ``connect(a, b)`` joins two ports acausally.
 """
 from __future__ import annotations
 
-import copy
 import functools
 from enum import Enum
 
@@ -182,10 +181,10 @@ class Component:
         ports = self._declared((Port, ConditionalPort, VectorPort))
         for pname, template in ports.items():          # plain ports first, as declared
             if isinstance(template, Port):
-                setattr(self, pname, copy.copy(template))
+                setattr(self, pname, _port_copy(template))
         for pname, template in ports.items():
             if isinstance(template, ConditionalPort) and template.exists(self):
-                setattr(self, pname, copy.copy(template.port))
+                setattr(self, pname, _port_copy(template.port))
         for pname, template in ports.items():
             if isinstance(template, VectorPort):
                 items = []
@@ -299,6 +298,14 @@ def port_rows(cls) -> list[tuple[str, str, str, str]]:
 def _attribute(owner: Component, key: str) -> str:
     """The dotted name an attribute ``key`` of ``owner`` would have."""
     return f"{owner.path}.{key}" if owner.path else key
+
+
+def _port_copy(template: Port) -> Port:
+    """A component's own port from its class's template: what ``copy.copy`` gives (ports are
+    plain objects), without its generic machinery (a third of building a large model)."""
+    port = object.__new__(type(template))
+    port.__dict__.update(template.__dict__)
+    return port
 
 
 def _default(spec):
