@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before
-from . import buffers, codegen as generated
+from . import buffers, codegen as generated, explicit
 from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
@@ -91,6 +91,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                                  **({"codegen": True} if codegen else {}))
     if codegen:
         generated.check_supported(model)
+    if solver == explicit.NAME:
+        explicit.check_supported(model)
     p = model.param_vector(params)
     inputs = dict(inputs or {})
     unknown = set(inputs) - set(model.input_names)
@@ -128,7 +130,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         solver = "idas" if has_alg else (
             "cvodes" if rho is not None and (model.has_events or is_stiff(rho, grid[0], grid[-1]))
             else "adams")
-    plugin, opts, loops = integrator_settings(model, solver, rtol, atol, max_step)
+    plugin, opts, loops = (solver, {}, False) if solver == explicit.NAME else \
+        integrator_settings(model, solver, rtol, atol, max_step)
     if auto and solver == "adams" and rho is not None:   # too much work: BDF takes over
         opts["max_num_steps"] = adams_step_budget(rho, float(np.max(np.diff(grid))))
     if loops:
@@ -138,6 +141,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     def integrate(plugin, opts):
         dae = generated.dae_problem(model, solver, u_expr, p, scale) if codegen else \
             integrator_problem(model, solver, ode, alg)
+        bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+        reached = time_reporter(bar, grid[0])
+        advance = step if solver != explicit.NAME else explicit_step(
+            explicit.Dop853(model, dae, rtol, atol, max_step, opts, reached))
         X = [np.asarray(xs, dtype=float).reshape(-1, 1) / scale[:nx, None]]
         Z = [np.asarray(zs, dtype=float).reshape(-1, 1) / scale[nx:, None]]
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
@@ -146,30 +153,43 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if not model.x.numel():     # algebraic only (a resistive circuit on a source):
             return np.zeros((0, grid.size)), _algebraic_only(model, alg, grid, z) * scale[
                 nx:, None]
+        restarts = progress and solver != explicit.NAME    # (DOP853 reports each step)
         events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
             e for s in signals for e in s.events if grid[0] < e < grid[-1]).union(
-            grid[1:-1:max(1, grid.size // PROGRESS_POINTS)] if progress else ()))
-        bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+            grid[1:-1:max(1, grid.size // PROGRESS_POINTS)] if restarts else ()))
         try:
             for a, b, pts in _segments(grid, events):
-                x, z = step(dae, a, b, pts, x, z, X, Z)
-                bar.update(b - a)
+                x, z = advance(dae, a, b, pts, x, z, X, Z)
+                reached(b)
         except KeyboardInterrupt:
             interrupted.append(x)
         finally:
             bar.close()
-        return np.hstack(X) * scale[:nx, None], np.hstack(Z) * scale[nx:, None]
+        X = np.hstack(X) * scale[:nx, None]
+        return X, np.hstack(Z) * scale[nx:, None] if has_alg else np.zeros((0, X.shape[1]))
+
+    def segment(a, b, pts, x, z, X, Z):
+        """Where the integration from a towards b stops, (b, or just before an event at b:
+        it restarts there, never steps over a jump) and the output times pts clipped to
+        it; an output time exactly at the event a gets the state there."""
+        if a != grid[0] and a in grid:
+            X.append(x.reshape(-1, 1))
+            Z.append(z.reshape(-1, 1))
+        end = b if b == grid[-1] else just_before(b)
+        return end, [min(tt, end) for tt in pts]
+
+    def explicit_step(solver):
+        """``step`` by the explicit ODE ``solver`` (``explicit.Dop853``)."""
+        def advance(dae, a, b, pts, x, z, X, Z):
+            end, tout = segment(a, b, pts, x, z, X, Z)
+            return solver.run(a, end, x, tout, X), z
+        return advance
 
     def step(dae, a, b, pts, x, z, X, Z):
         """Integrate ``dae`` from (x, z) at a to b, the output times pts appended to X, Z:
         (x, z) at b."""
-        # integrate up to just before an event, restart at it (never step over a jump)
-        if a != grid[0] and a in grid:           # an output time exactly at the event
-            X.append(x.reshape(-1, 1))
-            Z.append(z.reshape(-1, 1))
-        end = b if b == grid[-1] else just_before(b)
-        tout = list(pts) + ([] if pts and pts[-1] == b else [end])
-        tout = [min(tt, end) for tt in tout]
+        end, tout = segment(a, b, pts, x, z, X, Z)
+        tout = tout + ([] if pts and pts[-1] == b else [end])
         if loops:
             opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
             opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
@@ -322,8 +342,12 @@ def integrator_settings(model, solver: str, rtol: float, atol: float,
     the tolerances, max_num_steps and max_step; ``loops`` is True for IDAS on closed loops,
     whose options keep the index-2 multipliers out of the error test and skip IDAS's own
     initial-value computation (the caller gives consistent values, step0 and init_xdot)."""
+    if solver == explicit.NAME:
+        raise SimulationError(f"solver '{solver}' (scipy's) runs in simulate() only, not with "
+                              f"a CasADi integrator; choose one of {SOLVERS} here")
     if solver not in SOLVERS:
-        raise SimulationError(f"unknown solver '{solver}'; choose one of {SOLVERS}")
+        raise SimulationError(f"unknown solver '{solver}'; choose one of "
+                              f"{SOLVERS + (explicit.NAME,)}")
     plugin = "cvodes" if solver == "adams" else solver
     if plugin == "cvodes" and model.z.numel():
         raise SimulationError(f"model '{model.name}' has algebraic variables "
