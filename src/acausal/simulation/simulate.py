@@ -44,11 +44,16 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     solver   'cvodes' (BDF with Newton iterations, for stiff mechanics), 'adams' (cvodes'
              Adams method with functional iteration: no Jacobians, faster for non-stiff models
              such as pendulums and linkages without stiff springs), 'idas' (DAEs: closed loops,
-             massless nodes), or CasADi's fixed-step 'rk' / 'collocation'
-             (``options={'number_of_finite_elements': n}``). Default: 'idas' for DAEs; for
-             ODEs 'adams' when the spectral radius at the initial state is small against the
-             time span (``acausal.simulation.stiffness``), else 'cvodes' — and 'cvodes' again
-             should Adams fail or work too hard. ``Result.solver`` says which ran;
+             massless nodes), CasADi's fixed-step 'rk' / 'collocation'
+             (``options={'number_of_finite_elements': n}``), or 'dop853': scipy's explicit
+             Runge–Kutta method of order 8 (``acausal.simulation.explicit``; ODEs without
+             state events only; ``options`` 'first_step', 'max_num_steps'), fewest steps at
+             equal accuracy on smooth non-stiff motion (robot arms, chains; with
+             ``codegen=True``: about Pinocchio + DOP853's time). Default (never 'dop853'):
+             'idas' for DAEs; for ODEs 'adams' when the spectral radius at the initial state
+             is small against the time span (``acausal.simulation.stiffness``), else
+             'cvodes' — and 'cvodes' again should Adams fail or work too hard.
+             ``Result.solver`` says which ran;
     rtol, atol, max_step: integrator tolerances and step limit; the absolute tolerance
              of a state (or algebraic variable) is atol·nominal (Modelica's nominal: the
              error control of a state of size 1e-4 needs atol 1e-4 times smaller);
