@@ -60,6 +60,8 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
                               (t0, u0, p), "x0 and guess")
     if not eqs + more:
         return start[:nx], start[nx:]
+    if not soft and not more and all(n in names[:nx] for n in x0):
+        return wk[:nx], wk[nx:]                  # states given: nothing to solve
     wk = _project(model, eqs + more, labels + more_labels, targets, start, wk, nx, (t0, u0, p),
                   "x0")
     note = moved_note(names[:nx], start, wk, held=x0) if model.has_loops else None
