@@ -150,10 +150,6 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     def integrate(plugin, opts):
         dae = generated.dae_problem(model, solver, u_expr, p, scale) if codegen else \
             integrator_problem(model, solver, ode, alg)
-        bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
-        reached = time_reporter(bar, grid[0])
-        advance = step if solver != explicit.NAME else explicit_step(
-            explicit.Dop853(model, dae, rtol, atol, max_step, opts, reached))
         X = [np.asarray(xs, dtype=float).reshape(-1, 1) / scale[:nx, None]]
         Z = [np.asarray(zs, dtype=float).reshape(-1, 1) / scale[nx:, None]]
         if not model.x.numel() and not has_alg:   # every motion prescribed: nothing to solve
@@ -162,6 +158,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if not model.x.numel():     # algebraic only (a resistive circuit on a source):
             return np.zeros((0, grid.size)), _algebraic_only(model, alg, grid, z) * scale[
                 nx:, None]
+        bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+        reached = time_reporter(bar, grid[0])
+        advance = step if solver != explicit.NAME else explicit_step(
+            explicit.Dop853(model, dae, rtol, atol, max_step, opts, reached))
         restarts = progress and solver != explicit.NAME    # (DOP853 reports each step)
         events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
             e for s in signals for e in s.events if grid[0] < e < grid[-1]).union(
@@ -187,11 +187,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         end = b if b == grid[-1] else just_before(b)
         return end, [min(tt, end) for tt in pts]
 
-    def explicit_step(solver):
-        """``step`` by the explicit ODE ``solver`` (``explicit.Dop853``)."""
+    def explicit_step(method):
+        """``step`` by the explicit ODE solver ``method`` (``explicit.Dop853``)."""
         def advance(dae, a, b, pts, x, z, X, Z):
             end, tout = segment(a, b, pts, x, z, X, Z)
-            return solver.run(a, end, x, tout, X), z
+            return method.run(a, end, x, tout, X), z
         return advance
 
     def step(dae, a, b, pts, x, z, X, Z):
