@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import importlib
 import os
+import sys
 
 import numpy as np
 import pytest
@@ -205,3 +206,9 @@ def test_unknown_options_are_refused(pendulum):
     with pytest.raises(SimulationError, match="options.*max_num_steps.*abstol"):
         pendulum.simulate(1.0, solver="dop853", options={"abstol": 1e-6})
 
+
+
+def test_without_scipy_the_message_says_how_to_get_it(pendulum, monkeypatch):
+    monkeypatch.setitem(sys.modules, "scipy.integrate", None)      # import fails
+    with pytest.raises(SimulationError, match=r"needs scipy.*acausal\[analysis\]"):
+        pendulum.simulate(1.0, solver="dop853")
