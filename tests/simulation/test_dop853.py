@@ -212,3 +212,21 @@ def test_without_scipy_the_message_says_how_to_get_it(pendulum, monkeypatch):
     monkeypatch.setitem(sys.modules, "scipy.integrate", None)      # import fails
     with pytest.raises(SimulationError, match=r"needs scipy.*acausal\[analysis\]"):
         pendulum.simulate(1.0, solver="dop853")
+
+
+@pytest.mark.parametrize("options, match", [({"max_num_steps": 0}, "max_num_steps.*integer"),
+                                            ({"first_step": -1.0}, "first_step.*> 0")])
+def test_bad_options_are_refused(pendulum, options, match):
+    with pytest.raises(SimulationError, match=match):
+        pendulum.simulate(1.0, solver="dop853", options=options)
+
+
+def test_a_force_that_blows_up_fails_in_the_models_terms():
+    """F = 1 / (1 − t) N on a free mass: the equations are not finite at t = 1 s."""
+    m = acausal.Model("pushed")
+    m.mass, m.force, m.F = Mass(m=1.0), Force(), acausal.Input(unit="N")
+    m.connect(m.force.flange, m.mass.flange_a)
+    m.connect(m.F.y, m.force.f)
+    with pytest.raises(SimulationError, match=r"'pushed' with solver='dop853' failed .*at "
+                                              r"t = 1 s.*not finite"):
+        acausal.compile(m).simulate(2.0, solver="dop853", inputs={"F": lambda t: 1 / (1 - t)})

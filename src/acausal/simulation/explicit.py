@@ -73,10 +73,17 @@ class Dop853:
         if unknown:
             raise SimulationError(f"solver='dop853' takes the options {list(OPTIONS)}, not "
                                   f"{unknown}")
+        first, most = options.get("first_step"), options.get("max_num_steps", MAX_STEPS)
+        if first is not None and not (isinstance(first, (int, float)) and 0 < first < np.inf):
+            raise SimulationError(f"options['first_step'] must be a number > 0 [s], got "
+                                  f"{first!r}")
+        if not (isinstance(most, (int, np.integer)) and most >= 1):
+            raise SimulationError(f"options['max_num_steps'] must be an integer >= 1, got "
+                                  f"{most!r}")
         self.model, self.method, self.reached = model, DOP853, reached
         self.settings = dict(rtol=rtol, atol=atol, max_step=np.inf if max_step is None
-                             else max_step, first_step=options.get("first_step"))
-        self.max_steps = int(options.get("max_num_steps", MAX_STEPS))
+                             else max_step, first_step=first)
+        self.max_steps = int(most)
         f = ca.Function("rhs", [dae["x"], dae["t"]], [dae["ode"]])
         n = f.nnz_in(0)
         self._x, self._t, self._out = np.zeros(n), np.zeros(1), np.zeros(n)
