@@ -6,11 +6,16 @@ the right-hand side, builds it with the system C compiler and keeps the shared l
 the cache directory, named by a hash of the code; the second run — here of a copy of the
 model compiled afresh, as a new Python process would — loads it without compiling. Changing
 a parameter does not rebuild it: parameters (and inputs) are arguments of the generated
-code.
+code. The last run takes ``solver="dop853"`` (scipy's explicit Runge–Kutta method of order
+8, on the same generated C). scipy takes its steps in Python, some 20-30 us per stage besides
+the right-hand side: on a light right-hand side like this planar chain's (a few us) Adams,
+stepping in C, is faster; DOP853 pays off where the right-hand side is heavy and the motion
+smooth (3-D chains, robot arms: ``benchmarks/multibody_3d.py``).
 
 Checks printed: the final angles of the generated-code runs equal the in-process
-``simulate()``'s (the same arithmetic, the same steps), and the energy of the undamped chain
-stays constant to the integrator's tolerance.
+``simulate()``'s (the same arithmetic, the same steps), DOP853's agree with them to the
+tolerances, and the energy of the undamped chain stays constant to the integrator's tolerance
+in both methods.
 
 The cache is ``$ACAUSAL_CACHE`` (this example: ``acausal_cache`` in the current directory
 unless set), else ``~/.cache/acausal``. Needs a C compiler (gcc, clang or $CC). Run
@@ -50,6 +55,7 @@ def main():
     third, t_third = timed(lambda: again.simulate(T, x0=X0, codegen=True,
                                                   params={"body3.m": 2.0}))
     changed = compiled.simulate(T, x0=X0, params={"body3.m": 2.0})
+    dop, t_dop = timed(lambda: again.simulate(T, x0=X0, codegen=True, solver="dop853"))
 
     print(f"{N}-link pendulum, {T:g} s (solver: {first.solver}); cache: "
           f"{os.environ['ACAUSAL_CACHE']}")
@@ -57,17 +63,24 @@ def main():
     print(f"  codegen, first run (generate + build)  {t_first:8.3f} s")
     print(f"  codegen, fresh compile, cached library {t_second:8.3f} s")
     print(f"  codegen, body3.m = 2 kg (no rebuild)   {t_third:8.3f} s")
+    print(f"  codegen, solver='dop853'               {t_dop:8.3f} s")
     print(f"  max |final angles, codegen - in-process|: "
           f"{np.max(np.abs(final(first) - final(ref))):.1e} rad (first), "
           f"{np.max(np.abs(final(second) - final(ref))):.1e} rad (cached), "
-          f"{np.max(np.abs(final(third) - final(changed))):.1e} rad (changed mass)")
-    energy = 0.0                      # potential + kinetic energy of the bodies (m = 1 kg)
+          f"{np.max(np.abs(final(third) - final(changed))):.1e} rad (changed mass), "
+          f"{np.max(np.abs(final(dop) - final(ref))):.1e} rad (dop853)")
+    print(f"  energy drift over the run (relative): {drift(first):.1e} (Adams), "
+          f"{drift(dop):.1e} (dop853)")
+
+
+def drift(res) -> float:
+    """The relative change of the potential + kinetic energy of the bodies (m = 1 kg)."""
+    energy = 0.0
     for i in range(1, N + 1):
         b = f"body{i}"
-        energy = energy + 9.81 * first[f"{b}.r[2]"] + 0.5 * (
-            first[f"{b}.v[1]"] ** 2 + first[f"{b}.v[2]"] ** 2) + 0.5 * 0.01 * first[f"{b}.w"] ** 2
-    print(f"  energy drift over the run: {np.ptp(energy) / np.max(np.abs(energy)):.1e} "
-          f"(relative)")
+        energy = energy + 9.81 * res[f"{b}.r[2]"] + 0.5 * (
+            res[f"{b}.v[1]"] ** 2 + res[f"{b}.v[2]"] ** 2) + 0.5 * 0.01 * res[f"{b}.w"] ** 2
+    return float(np.ptp(energy) / np.max(np.abs(energy)))
 
 
 if __name__ == "__main__":

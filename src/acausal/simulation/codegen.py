@@ -11,8 +11,8 @@ worth a build per parameter change.) For the solvers that iterate with
 Newton's method (cvodes' BDF, idas) it also holds the Jacobian with respect to the states,
 or its forward derivative when that Jacobian is too large to compile (``equations``); the
 other arguments are declared not differentiable (the integrators need no derivative with
-respect to t, u or p). Adams with functional iteration evaluates no derivative, so its
-library has none.
+respect to t, u or p). Adams with functional iteration and the explicit DOP853 evaluate no
+derivative, so their library has none.
 
 The results equal those of a CasADi integrator on ``compiled.dae`` with the parameters as
 its arguments (the same arithmetic); the in-process simulate() folds them, which rounds
@@ -43,6 +43,7 @@ FLAGS = ("-O1",)
 JACOBIAN_LIMIT = 20000      # instructions: gcc -O1 takes ~1 s per 3000
 JACOBIAN_RATIO = 5          # a sparse Jacobian (a chain of masses) is kept however large
 BRANCHY = 0.1              # null-pointer branches per instruction worth removing
+WITHOUT_DERIVATIVES = ("adams", "dop853")      # the solvers that evaluate no Jacobian
 NO_AD = {"enable_fd": True, "enable_forward": False, "enable_reverse": False,
          "enable_jacobian": False}
 
@@ -191,7 +192,7 @@ def dae_problem(model, solver: str, u_expr: ca.SX, p, scale) -> dict:
     (as ``simulate.scaled``), inputs the functions of time ``u_expr``, the parameter values
     ``p`` constants of the call (the integrator has no parameters)."""
     nx = model.x.numel()
-    f = equations(model, derivatives=solver != "adams")
+    f = equations(model, derivatives=solver not in WITHOUT_DERIVATIVES)
     x, t = ca.MX.sym("x", nx), ca.MX.sym("t")
     u = ca.Function("u", [model.t], [u_expr])(t) if model.u.numel() else ca.MX(0, 1)
     Nx = ca.DM(scale[:nx])

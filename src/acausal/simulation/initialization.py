@@ -37,9 +37,6 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     nx = model.x.numel()
     names = model.x_names + model.z_names
     x0, guess = by_angles(model, x0, p), by_angles(model, guess, p)
-    given = _rows(model, "x0", x0, w)
-    eqs = [h - v for h, v in zip(given, x0.values())]
-    labels, targets = list(x0), [float(v) for v in x0.values()]
     more, more_labels = model_equations(model)
     if initial_equations and model.initial_equations.numel():
         more, more_labels = more + [model.initial_equations], more_labels + model.initial_labels
@@ -53,6 +50,11 @@ def initial_state(model, x0: dict, p: np.ndarray, u0: np.ndarray, t0: float,
     for name, value in x0.items():          # linearize where the fixed values put the states
         if name in names:
             wk[names.index(name)] = float(value)
+    if not soft and not more and all(n in names[:nx] for n in x0):
+        return wk[:nx], wk[nx:]                  # states given: nothing to solve
+    given = _rows(model, "x0", x0, w)
+    eqs = [h - v for h, v in zip(given, x0.values())]
+    labels, targets = list(x0), [float(v) for v in x0.values()]
     if soft:                                # the start values that give the guessed values
         rows = eqs + [g - v for g, v in zip(_rows(model, "guess", soft, w), soft.values())]
         start = wk = _project(model, rows, labels + list(soft),

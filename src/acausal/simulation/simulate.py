@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before
-from . import buffers, codegen as generated
+from . import buffers, codegen as generated, explicit
 from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
@@ -44,11 +44,16 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     solver   'cvodes' (BDF with Newton iterations, for stiff mechanics), 'adams' (cvodes'
              Adams method with functional iteration: no Jacobians, faster for non-stiff models
              such as pendulums and linkages without stiff springs), 'idas' (DAEs: closed loops,
-             massless nodes), or CasADi's fixed-step 'rk' / 'collocation'
-             (``options={'number_of_finite_elements': n}``). Default: 'idas' for DAEs; for
-             ODEs 'adams' when the spectral radius at the initial state is small against the
-             time span (``acausal.simulation.stiffness``), else 'cvodes' — and 'cvodes' again
-             should Adams fail or work too hard. ``Result.solver`` says which ran;
+             massless nodes), CasADi's fixed-step 'rk' / 'collocation'
+             (``options={'number_of_finite_elements': n}``), or 'dop853': scipy's explicit
+             Runge–Kutta method of order 8 (``acausal.simulation.explicit``; ODEs without
+             state events only; ``options`` 'first_step', 'max_num_steps'), fewest steps at
+             equal accuracy on smooth non-stiff motion (robot arms, chains; with
+             ``codegen=True``: about Pinocchio + DOP853's time). Default (never 'dop853'):
+             'idas' for DAEs; for ODEs 'adams' when the spectral radius at the initial state
+             is small against the time span (``acausal.simulation.stiffness``), else
+             'cvodes' — and 'cvodes' again should Adams fail or work too hard.
+             ``Result.solver`` says which ran;
     rtol, atol, max_step: integrator tolerances and step limit; the absolute tolerance
              of a state (or algebraic variable) is atol·nominal (Modelica's nominal: the
              error control of a state of size 1e-4 needs atol 1e-4 times smaller);
@@ -91,6 +96,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                                  **({"codegen": True} if codegen else {}))
     if codegen:
         generated.check_supported(model)
+    if solver == explicit.NAME:
+        explicit.check_supported(model)
     p = model.param_vector(params)
     inputs = dict(inputs or {})
     unknown = set(inputs) - set(model.input_names)
@@ -113,22 +120,27 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         p[model.loop_switches] = active
 
     has_alg = model.z.numel() > 0
+    auto = solver is None
+    rho = None if has_alg or not model.x.numel() else _check_start(
+        model, p, u0, xs, grid[0], estimate=auto)
     # inputs become expressions of time, parameters their values: the integrator sees the
     # same folded arithmetic as a hand-written model with numbers (changing a parameter
     # rebuilds only the integrator, never the model); modes stay symbols, the integrator's
-    # parameters, changed at events
-    values = ca.SX(p)
-    values[model.mode_params] = model.p[model.mode_params]
-    ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p], [u_expr, values])
-    auto = solver is None
-    rho = None if has_alg or not model.x.numel() else _check_start(
-        model, ca.substitute(ode, model.p, ca.SX(p)), p, u0, xs, grid[0], estimate=auto)
-    ode, alg = scaled(model, ode, alg, scale)
+    # parameters, changed at events. The generated code takes them as arguments: folded
+    # only for a closed loop's initial rates and a model without states (a large model's
+    # folding costs a fair part of a short run: 0.06 s for a 3-D chain of 64 links)
+    ode = alg = None
+    if not codegen or model.has_loops or not model.x.numel():
+        values = ca.SX(p)
+        values[model.mode_params] = model.p[model.mode_params]
+        ode, alg = scaled(model, *ca.substitute([model.ode, model.alg], [model.u, model.p],
+                                                [u_expr, values]), scale)
     if auto:
         solver = "idas" if has_alg else (
             "cvodes" if rho is not None and (model.has_events or is_stiff(rho, grid[0], grid[-1]))
             else "adams")
-    plugin, opts, loops = integrator_settings(model, solver, rtol, atol, max_step)
+    plugin, opts, loops = (solver, {}, False) if solver == explicit.NAME else \
+        integrator_settings(model, solver, rtol, atol, max_step)
     if auto and solver == "adams" and rho is not None:   # too much work: BDF takes over
         opts["max_num_steps"] = adams_step_budget(rho, float(np.max(np.diff(grid))))
     if loops:
@@ -146,30 +158,47 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         if not model.x.numel():     # algebraic only (a resistive circuit on a source):
             return np.zeros((0, grid.size)), _algebraic_only(model, alg, grid, z) * scale[
                 nx:, None]
+        bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+        reached = time_reporter(bar, grid[0])
+        advance = step if solver != explicit.NAME else explicit_step(
+            explicit.Dop853(model, dae, rtol, atol, max_step, opts, reached))
+        restarts = progress and solver != explicit.NAME    # (DOP853 reports each step)
         events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
             e for s in signals for e in s.events if grid[0] < e < grid[-1]).union(
-            grid[1:-1:max(1, grid.size // PROGRESS_POINTS)] if progress else ()))
-        bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
+            grid[1:-1:max(1, grid.size // PROGRESS_POINTS)] if restarts else ()))
         try:
             for a, b, pts in _segments(grid, events):
-                x, z = step(dae, a, b, pts, x, z, X, Z)
-                bar.update(b - a)
+                x, z = advance(dae, a, b, pts, x, z, X, Z)
+                reached(b)
         except KeyboardInterrupt:
             interrupted.append(x)
         finally:
             bar.close()
-        return np.hstack(X) * scale[:nx, None], np.hstack(Z) * scale[nx:, None]
+        X = np.hstack(X) * scale[:nx, None]
+        return X, np.hstack(Z) * scale[nx:, None] if has_alg else np.zeros((0, X.shape[1]))
+
+    def segment(a, b, pts, x, z, X, Z):
+        """Where the integration from a towards b stops, (b, or just before an event at b:
+        it restarts there, never steps over a jump) and the output times pts clipped to
+        it; an output time exactly at the event a gets the state there."""
+        if a != grid[0] and a in grid:
+            X.append(x.reshape(-1, 1))
+            Z.append(z.reshape(-1, 1))
+        end = b if b == grid[-1] else just_before(b)
+        return end, [min(tt, end) for tt in pts]
+
+    def explicit_step(method):
+        """``step`` by the explicit ODE solver ``method`` (``explicit.Dop853``)."""
+        def advance(dae, a, b, pts, x, z, X, Z):
+            end, tout = segment(a, b, pts, x, z, X, Z)
+            return method.run(a, end, x, tout, X), z
+        return advance
 
     def step(dae, a, b, pts, x, z, X, Z):
         """Integrate ``dae`` from (x, z) at a to b, the output times pts appended to X, Z:
         (x, z) at b."""
-        # integrate up to just before an event, restart at it (never step over a jump)
-        if a != grid[0] and a in grid:           # an output time exactly at the event
-            X.append(x.reshape(-1, 1))
-            Z.append(z.reshape(-1, 1))
-        end = b if b == grid[-1] else just_before(b)
-        tout = list(pts) + ([] if pts and pts[-1] == b else [end])
-        tout = [min(tt, end) for tt in tout]
+        end, tout = segment(a, b, pts, x, z, X, Z)
+        tout = tout + ([] if pts and pts[-1] == b else [end])
         if loops:
             opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
             opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
@@ -322,8 +351,12 @@ def integrator_settings(model, solver: str, rtol: float, atol: float,
     the tolerances, max_num_steps and max_step; ``loops`` is True for IDAS on closed loops,
     whose options keep the index-2 multipliers out of the error test and skip IDAS's own
     initial-value computation (the caller gives consistent values, step0 and init_xdot)."""
+    if solver == explicit.NAME:
+        raise SimulationError(f"solver '{solver}' (scipy's) runs in simulate() only, not with "
+                              f"a CasADi integrator; choose one of {SOLVERS} here")
     if solver not in SOLVERS:
-        raise SimulationError(f"unknown solver '{solver}'; choose one of {SOLVERS}")
+        raise SimulationError(f"unknown solver '{solver}'; choose one of "
+                              f"{SOLVERS + (explicit.NAME,)}")
     plugin = "cvodes" if solver == "adams" else solver
     if plugin == "cvodes" and model.z.numel():
         raise SimulationError(f"model '{model.name}' has algebraic variables "
@@ -393,15 +426,17 @@ def _check_finite(what: str, values: dict | None) -> None:
             raise SimulationError(f"{what}['{name}'] must be a finite number, got {v!r}")
 
 
-def _check_start(model, ode, p, u0, xs, t0, estimate: bool) -> float | None:
-    """The ODE's equations at its initial state, checked finite (diagnosed, not integrated,
-    otherwise); with ``estimate``, its spectral radius ρ there (for the solver's choice),
-    once per model and operating point."""
+def _check_start(model, p, u0, xs, t0, estimate: bool) -> float | None:
+    """The ODE's equations at its initial state (parameters p, inputs u0), checked finite
+    (diagnosed, not integrated, otherwise); with ``estimate``, its spectral radius ρ there
+    (for the solver's choice), once per model and operating point."""
     key = ("rho", p.tobytes(), u0.tobytes(), np.asarray(xs, float).tobytes(), float(t0))
     cache = model._cache.setdefault("stiffness", {})
     if key in cache:
         return cache[key]
-    f = ca.Function("ode", [model.x, model.t], [ode])
+
+    def f(x, t):
+        return model.f(t, x, np.zeros(0), u0, p)[0]
     x0 = np.asarray(xs, dtype=float).ravel()
     fx0 = np.asarray(f(x0, t0), dtype=float).ravel()
     if not np.all(np.isfinite(fx0)):
