@@ -32,16 +32,9 @@ pytestmark = pytest.mark.skipif(
 
 
 @pytest.fixture(scope="module", autouse=True)
-def cache(tmp_path_factory):
-    """A cache directory of generated code for this module's tests."""
-    path = tmp_path_factory.mktemp("codegen_cache")
-    old = os.environ.get("ACAUSAL_CACHE")
-    os.environ["ACAUSAL_CACHE"] = str(path)
-    yield path
-    if old is None:
-        del os.environ["ACAUSAL_CACHE"]
-    else:
-        os.environ["ACAUSAL_CACHE"] = old
+def cache(codegen_cache):
+    """This module's cache of generated code."""
+    return codegen_cache
 
 
 @pytest.fixture(scope="module")

@@ -9,7 +9,6 @@ scale the absolute tolerance as a per-state atol does); the full run (for Ctrl-C
 from __future__ import annotations
 
 import importlib
-import os
 import sys
 
 import numpy as np
@@ -34,16 +33,9 @@ L, M, I, G = 0.5, 1.0, 0.01, 9.81                    # PendulumChain's link [m, 
 
 
 @pytest.fixture(scope="module", autouse=True)
-def cache(tmp_path_factory):
-    """A cache directory of generated code for this module's tests."""
-    path = tmp_path_factory.mktemp("dop853_cache")
-    old = os.environ.get("ACAUSAL_CACHE")
-    os.environ["ACAUSAL_CACHE"] = str(path)
-    yield path
-    if old is None:
-        del os.environ["ACAUSAL_CACHE"]
-    else:
-        os.environ["ACAUSAL_CACHE"] = old
+def cache(codegen_cache):
+    """This module's cache of generated code."""
+    return codegen_cache
 
 
 @pytest.fixture(scope="module")
