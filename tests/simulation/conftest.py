@@ -15,3 +15,12 @@ def codegen_cache(tmp_path_factory):
         del os.environ["ACAUSAL_CACHE"]
     else:
         os.environ["ACAUSAL_CACHE"] = old
+
+
+@pytest.fixture
+def dask_scratch(tmp_path):
+    """dask's scratch directory (the workers' files) in this test's temporary directory
+    instead of the system's."""
+    dask = pytest.importorskip("dask")
+    with dask.config.set({"temporary-directory": str(tmp_path)}):
+        yield tmp_path

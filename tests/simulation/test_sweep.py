@@ -189,7 +189,7 @@ def test_bad_arguments_are_named(quarter_car):
         quarter_car.sweep(T_END, t=GRID, inputs={"road": [np.zeros(7), np.ones(7)]})
 
 
-def test_local_cluster_equals_local_bit_for_bit(quarter_car):
+def test_local_cluster_equals_local_bit_for_bit(quarter_car, dask_scratch):
     pytest.importorskip("distributed")
     kw = dict(t=GRID, params={"suspension.c": [10e3, 16e3, 25e3], "body.m": [200.0, 300.0]},
               inputs={"road": road})
@@ -237,7 +237,7 @@ def test_dae_runs_with_idas():
     assert_as_loop(compiled, res)
 
 
-def test_failed_run_on_a_cluster_is_reported_as_here():
+def test_failed_run_on_a_cluster_is_reported_as_here(dask_scratch):
     """A run that fails on a worker (the softening spring's runaway) is reported with the
     same index and message as in this process; the others are equal bit for bit."""
     distributed = pytest.importorskip("distributed")
