@@ -34,13 +34,13 @@ import os
 import time
 from pathlib import Path
 
+from timing import print_table  # first: pins BLAS threads
 import casadi as ca
 import numpy as np
 from scipy.integrate import solve_ivp
 
 import acausal
 from acausal.models.clutches import START, STOP_TIME, CoupledClutches
-from timing import print_table
 
 J, MU, PEAK, FN, TAU_AMP, F_TAU = 1.0, 0.5, 1.1, 20.0, 10.0, 5.0
 F2, T2, T3 = 0.2, 0.4, 0.9

@@ -22,13 +22,13 @@ from __future__ import annotations
 import argparse
 import time
 
+from timing import print_table  # first: pins BLAS threads
 import casadi as ca
 import numpy as np
 
 import acausal
 from acausal.components import rotational as rot
 from acausal.models import DCMotorCircuit
-from timing import print_table
 
 V, J_L, D, T_END = 100.0, 0.5, 0.05, 2.0
 M = rot.DCMotor

@@ -45,13 +45,13 @@ import tempfile
 import warnings
 from pathlib import Path
 
+from timing import best_of, print_table  # first: pins BLAS threads
 import numpy as np
 from fmpy import extract, instantiate_fmu, read_model_description, simulate_fmu
 
 import acausal
 from acausal.fmu.export import find_compiler, find_fmi_headers, platform_dirs
 from acausal.models import Drivetrain, FourBar, GantryCrane
-from timing import best_of, print_table
 
 CASES = {   # name: (model, horizon [s], start values, compared variable)
     "crane": (GantryCrane, 10.0, {"hinge.phi": 0.3, "F": 2.0}, "hinge.phi"),

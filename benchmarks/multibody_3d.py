@@ -51,6 +51,7 @@ import tempfile
 import time
 from importlib.metadata import distribution
 
+from timing import best_of, fit_exponent, print_table  # first: pins BLAS threads
 import casadi as ca
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -59,7 +60,6 @@ import acausal
 from acausal.models import chain
 from acausal.multibody import from_urdf
 from pendulum import codegen_runs, mapped_per_eval, per_call, report_dop853, use_codegen_cache
-from timing import best_of, fit_exponent, print_table
 
 G = 9.81
 Q0, T_FINAL, RTOL, ATOL = 0.3, 1.0, 1e-8, 1e-10

@@ -63,6 +63,7 @@ import pstats
 import signal
 import time
 
+from timing import best_of, fit_exponent, interleaved, print_table, stats, timed
 import casadi as ca
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -70,7 +71,6 @@ from scipy.integrate import solve_ivp
 import acausal
 from acausal.models.pendulums import PendulumChain
 from acausal.simulation import codegen as generated
-from timing import best_of, fit_exponent, interleaved, print_table, stats, timed
 
 L, MASS, INERTIA, G = 0.5, 1.0, 0.01, 9.81
 Q0, T_FINAL, RTOL, ATOL = 0.1, 10.0, 1e-8, 1e-10

@@ -31,13 +31,13 @@ from __future__ import annotations
 import argparse
 import time
 
+from timing import print_table  # first: pins BLAS threads
 import casadi as ca
 import numpy as np
 from scipy.integrate import solve_ivp
 
 import acausal
 from acausal.components.translational import ConstantSpeed, Mass, Spring, SupportFriction
-from timing import print_table
 
 MASS, STIFF, SPEED, PEAK, T_FINAL = 1.0, 100.0, 0.1, 1.5, 10.0
 
