@@ -24,6 +24,7 @@ from acausal.models import FourBar
 from acausal.models.bouncing_ball import BouncingBall
 from acausal.models.pendulums import PendulumChain
 from acausal.simulation import Controller, Samples
+from interrupt import InterruptAfter
 
 simulate_module = importlib.import_module("acausal.simulation.simulate")
 HAS_CC = any(toolchain.shutil.which(c) for c in ("cc", "gcc", "clang"))
@@ -135,25 +136,6 @@ def test_continuous_controller_closes_the_loop():
     np.testing.assert_allclose(res["mass.s"], exact[:, 0], rtol=0, atol=1e-10)
 
 
-class _InterruptAfter:
-    """A progress bar whose update raises KeyboardInterrupt once past ``after`` seconds (a
-    Ctrl-C between two steps)."""
-
-    def __init__(self, after):
-        self.done, self.after = 0.0, after
-
-    def __call__(self, *args, **kwargs):
-        return self
-
-    def update(self, dt):
-        self.done += dt
-        if self.done > self.after:
-            raise KeyboardInterrupt
-
-    def close(self):
-        pass
-
-
 def test_ctrl_c_returns_the_run_so_far(monkeypatch):
     """The oscillator under F = 2 N from rest: s = F/c (1 − cos ω t); interrupted past 1 s,
     the Result holds the output times the steps passed, equal to the full run's."""
@@ -162,7 +144,7 @@ def test_ctrl_c_returns_the_run_so_far(monkeypatch):
                           rtol=1e-11, atol=1e-13)
     np.testing.assert_allclose(full["mass.s"], 2.0 / 8.0 * (1 - np.cos(4.0 * grid)), rtol=0,
                                atol=1e-10)
-    monkeypatch.setattr(simulate_module, "progress_bar", _InterruptAfter(1.0))
+    monkeypatch.setattr(simulate_module, "progress_bar", InterruptAfter(1.0))
     with pytest.warns(UserWarning, match="interrupted"):
         part = model.simulate(3.0, t=grid, inputs={"F": 2.0}, solver="dop853", progress=True,
                               rtol=1e-11, atol=1e-13)
@@ -197,7 +179,6 @@ def test_stiff_model_stops_after_the_step_limit():
 def test_unknown_options_are_refused(pendulum):
     with pytest.raises(SimulationError, match="options.*max_num_steps.*abstol"):
         pendulum.simulate(1.0, solver="dop853", options={"abstol": 1e-6})
-
 
 
 def test_without_scipy_the_message_says_how_to_get_it(pendulum, monkeypatch):

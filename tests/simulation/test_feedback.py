@@ -13,6 +13,7 @@ import acausal
 from acausal.components.translational import Force, Mass
 from acausal.errors import SimulationError
 from acausal.simulation import Controller
+from interrupt import InterruptAfter
 
 simulate_module = importlib.import_module("acausal.simulation.simulate")
 
@@ -116,29 +117,10 @@ def test_ctrl_c_in_a_sampled_run_returns_the_run_so_far(compiled):
     np.testing.assert_allclose(part["mass.s"], full["mass.s"][:n], rtol=0, atol=1e-14)
 
 
-class _InterruptAfter:
-    """A progress bar whose update raises KeyboardInterrupt once past ``after`` seconds (a
-    Ctrl-C between two restarts of the integrator)."""
-
-    def __init__(self, after):
-        self.done, self.after = 0.0, after
-
-    def __call__(self, *args, **kwargs):
-        return self
-
-    def update(self, dt):
-        self.done += dt
-        if self.done > self.after:
-            raise KeyboardInterrupt
-
-    def close(self):
-        pass
-
-
 def test_ctrl_c_in_simulate_returns_the_run_so_far(compiled, monkeypatch):
     full = compiled.simulate(3.0, t=GRID, inputs={"F": 1.0}, progress=True, rtol=1e-10,
                              atol=1e-12)
-    monkeypatch.setattr(simulate_module, "progress_bar", _InterruptAfter(1.0))
+    monkeypatch.setattr(simulate_module, "progress_bar", InterruptAfter(1.0))
     with pytest.warns(UserWarning, match="interrupted"):
         part = compiled.simulate(3.0, t=GRID, inputs={"F": 1.0}, progress=True, rtol=1e-10,
                                  atol=1e-12)
@@ -161,7 +143,7 @@ def test_ctrl_c_between_state_events_returns_the_run_so_far(monkeypatch):
     e, g, h = 0.8, 9.81, 1.0
     model = acausal.compile(BouncingBall(e=e, g=g))
     full = model.simulate(2.0, x0={"ball.s": h}, rtol=1e-10, atol=1e-12)
-    monkeypatch.setattr(simulate_module, "progress_bar", _InterruptAfter(1.0))
+    monkeypatch.setattr(simulate_module, "progress_bar", InterruptAfter(1.0))
     with pytest.warns(UserWarning, match="interrupted"):
         part = model.simulate(2.0, x0={"ball.s": h}, rtol=1e-10, atol=1e-12, progress=True)
     n = part.t.size
