@@ -59,7 +59,7 @@ from scipy.integrate import solve_ivp
 import acausal
 from acausal.models import chain
 from acausal.multibody import from_urdf
-from pendulum import codegen_runs, mapped_per_eval, per_call, report_dop853, use_codegen_cache
+from pendulum import codegen_runs, mapped_per_eval, per_call, report_codegen, use_codegen_cache
 
 G = 9.81
 Q0, T_FINAL, RTOL, ATOL = 0.3, 1.0, 1e-8, 1e-10
@@ -251,26 +251,7 @@ def main(argv=None):
             for label, k in (("compile", "compile"), ("rhs", "rhs"), ("ABA", "aba"),
                              ("simulate", "sim"), ("DOP853+ABA", "pin_sim"))))
     if codegen:
-        print("\n(4) simulate(codegen=True): generated C of the right-hand side (gcc -O1)")
-        rows_out = []
-        for r in rows:
-            pin_, inp, cg = (r["cg_times"][k][0] for k in ("pin", "in-process", "codegen"))
-            rows_out.append([r["case"], r["cg_first"], r["cg_cached_first"], r["cg_rhs"] * 1e6,
-                             r["cg_rhs"] / r["aba"], r["rtol_cg_eq"], r["err_cg_eq"], pin_,
-                             inp, cg, cg / pin_, cg / inp])
-        print_table(["case", "first run", "cached 1st", "rhs [us]", "rhs/ABA", "rtol eq",
-                     "error", "DOP853+ABA", "in-process", "codegen", "cg/DOP", "cg/in-proc"],
-                    rows_out, ["{:>10s}", "{:10.4g}", "{:10.4g}", "{:10.4g}", "{:10.3g}",
-                               "{:10.1e}", "{:10.2e}", "{:10.4g}", "{:10.4g}", "{:10.4g}",
-                               "{:10.3g}", "{:10.3g}"])
-        print("  first run: generating the C, gcc, loading, and the run (empty cache); cached "
-              "1st: the first run\n  of a freshly compiled copy (library from the disk cache);"
-              " rhs: the built library's, mapped;\n  times at equal accuracy: median of "
-              "interleaved runs; in-process: simulate() without codegen")
-        report_dop853(rows, "case", "{:>10s}")
-        for r in rows:
-            print(f"  {r['case']:>9s} spread [min, max] s: " + "; ".join(
-                f"{k} [{lo:.4g}, {hi:.4g}]" for k, (_, lo, hi) in r["cg_times"].items()))
+        report_codegen(rows, "case", "{:>10s}", "aba")
     print("\ntargets:")
     ok = lambda v, lim: "met" if v <= lim else "NOT met"     # noqa: E731
     for r in rows:
