@@ -246,11 +246,6 @@ def _fixed_arrow(c):
 _JOINT = 0.1                 # planarWorld.defaultJointLength = defaultJointWidth [m]
 
 
-def _planar_body(c):
-    return [Shape(_path(c, "frame_a"), "sphere", _BODY_D, _BODY_D, _BODY_D,
-                  (-_BODY_D / 2, 0.0, 0.0), color=(0, 128, 255), name=c.path)]
-
-
 def _planar_revolute(c):
     return [Shape(_path(c, "frame_a"), "cylinder", _JOINT, _JOINT, _JOINT,
                   (0.0, 0.0, -_JOINT / 2), (0.0, 0.0, 1.0), (1.0, 0.0, 0.0), (255, 0, 0),
@@ -283,7 +278,7 @@ def _defaults():
     register(PointMass, _point_mass)
     register(RollingWheel, lambda c: [_wheel(_val(c, "radius"), _val(c, "width"),
                                               _path(c, "frame_a"), c.path)])
-    register(planar.Body, _planar_body)
+    register(planar.Body, _point_mass)      # a sphere at frame_a
     register(planar.FixedTranslation, _translation)
     register(planar.Revolute, _planar_revolute)
     register(planar.Prismatic, _planar_prismatic)

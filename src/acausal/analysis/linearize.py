@@ -35,6 +35,7 @@ import numpy as np
 import scipy.linalg
 
 from ..errors import AnalysisError
+from ..frames import Q_rate
 from .linear import LinearModel
 from .point import index_of, operating_point
 
@@ -134,9 +135,7 @@ def _tangent(model, x: np.ndarray):
         if n in charts:
             theta, Q = charts[n]
             iq = [xn.index(m) for m in Q]
-            q1, q2, q3, q4 = x[iq] / np.linalg.norm(x[iq])
-            half_G = 0.5 * np.array([[q4, -q3, q2], [q3, q4, -q1], [-q2, q1, q4],
-                                     [-q1, -q2, -q3]])
+            half_G = np.array(ca.evalf(Q_rate(x[iq] / np.linalg.norm(x[iq]), ca.DM.eye(3))))
             for i in range(3):
                 col = np.zeros(len(xn))
                 col[iq] = half_G[:, i]

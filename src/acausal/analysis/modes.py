@@ -61,7 +61,7 @@ def modes(model, x=None, **kwargs) -> Modes:
     (``linearize(..., tangent=True)``): the mode shapes name θ[1..3], the rotation resolved
     in the frame; a free body has six rigid-body modes at 0 Hz."""
     lin = model if isinstance(model, LinearModel) else linearize(
-        model, x, inputs=[], outputs=[], **dict(dict(tangent=True), **kwargs))
+        model, x, inputs=[], outputs=[], **{"tangent": True, **kwargs})
     if not lin.coordinates:
         raise AnalysisError("modes: the linear model has no mechanical coordinates (with "
                             "mass) among its states (orientations as quaternion states: "

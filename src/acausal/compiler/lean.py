@@ -32,6 +32,7 @@ class _Lean:
         self.atoms: dict[tuple, int] = {}       # atom key -> id
         self.exprs: list[ca.SX] = []            # id -> SX
         self.trig: dict[int, tuple] = {}        # id -> ('sin' | 'cos', argument key)
+        self.cos_of: dict = {}                  # argument key -> id of its cosine
         self.monomials: dict[tuple, ca.SX] = {}  # built products of atoms
 
     # ---- polynomials: {monomial: coefficient}, monomial = ((atom id, power), ...) ------------
@@ -41,6 +42,8 @@ class _Lean:
             self.exprs.append(make())
             if key[0] in (ca.OP_SIN, ca.OP_COS):
                 self.trig[self.atoms[key]] = ("sin" if key[0] == ca.OP_SIN else "cos", key[1])
+                if key[0] == ca.OP_COS:
+                    self.cos_of[key[1]] = self.atoms[key]
         return {((self.atoms[key], 1),): 1.0}
 
     @staticmethod
@@ -84,9 +87,9 @@ class _Lean:
 
     def pythagoras(self, p: dict) -> dict:
         """m·sin²a + m·cos²a → m, for every such pair with equal coefficients."""
-        if not self.trig:
+        if not self.cos_of:
             return p
-        cos_of = {arg: i for i, (kind, arg) in self.trig.items() if kind == "cos"}
+        cos_of = self.cos_of
         changed = True
         while changed:
             changed = False

@@ -288,7 +288,8 @@ def _table_values(tau, times: np.ndarray, values, smoothness: Smoothness,
     at or before tau."""
     n, symbolic = times.size, isinstance(values, ca.SX)
     m = (values.numel() if symbolic else len(values)) // n
-    vals = ca.reshape(values, m, n).T if symbolic else ca.SX(np.reshape(values, (n, m)))
+    rows = None if symbolic else np.reshape(values, (n, m))
+    vals = ca.reshape(values, m, n).T if symbolic else ca.SX(rows)
     if n == 1:
         return [vals[0, j] for j in range(m)]
     t_min, t_max = times[0], times[-1]
@@ -308,7 +309,7 @@ def _table_values(tau, times: np.ndarray, values, smoothness: Smoothness,
                 return vals[a, :].T
             if not symbolic:
                 return ca.interpolant("table", "linear", [times[a:b]],
-                                      np.ravel(np.reshape(values, (n, m))[a:b]))(tau)
+                                      np.ravel(rows[a:b]))(tau)
             f = ca.interpolant("table", "linear", [times[a:b]], m)
             return f(tau, ca.vec(vals[a:b, :].T))
 

@@ -97,7 +97,7 @@ class NLP:
         g = list(self.g)
         sx = [i for i, e in enumerate(g) if isinstance(e, ca.SX)]
         if sx:
-            mx = [i for i in range(len(g)) if i not in set(sx)]
+            mx = [i for i, e in enumerate(g) if not isinstance(e, ca.SX)]
             try:
                 f_sx, *rest = self.as_sx([f] + [g[i] for i in mx])
             except RuntimeError:        # an MX-only Function among the user's: solve in MX
