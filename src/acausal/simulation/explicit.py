@@ -35,6 +35,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
+from .buffers import Buffered
 
 NAME = "dop853"
 MAX_STEPS = 100000          # steps per segment between time events (as cvodes' default here)
@@ -85,19 +86,14 @@ class Dop853:
                              else max_step, first_step=first)
         self.max_steps = int(most)
         f = ca.Function("rhs", [dae["x"], dae["t"]], [dae["ode"]])
-        n = f.nnz_in(0)
-        self._x, self._t, self._out = np.zeros(n), np.zeros(1), np.zeros(n)
-        self._buffer, self._call = f.buffer()       # the buffer reads and writes these
-        self._buffer.set_arg(0, memoryview(self._x))
-        self._buffer.set_arg(1, memoryview(self._t))
-        self._buffer.set_res(0, memoryview(self._out))
+        self._f = Buffered(f, [np.zeros(f.nnz_in(0)), np.zeros(1)])
 
     def rhs(self, t: float, x: np.ndarray) -> np.ndarray:
         """ẋ at (t, x), a new array (the solver keeps it)."""
-        self._x[:] = x
-        self._t[0] = t
-        self._call()
-        return self._out.copy()
+        self._f.args[0][:] = x
+        self._f.args[1][0] = t
+        self._f.call()
+        return self._f.res[0].copy()
 
     def run(self, a: float, end: float, x: np.ndarray, pts: list[float], X: list) -> np.ndarray:
         """Integrate from x at a to end, the states at the output times ``pts`` (in (a,

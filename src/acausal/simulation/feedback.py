@@ -92,8 +92,8 @@ def simulate_feedback(simulate, model, t_final, grid, inputs, feedback, *, param
     if kwargs.get("solver") not in (None, "cvodes", "idas"):
         raise SimulationError(f"a sampled controller runs with the stepper's solvers; "
                               f"solver={kwargs['solver']!r} is not one of them")
-    unused = [k for k in ("max_step", "nominal", "options", "codegen")
-              if kwargs.get(k) is not None]
+    unused = [k for k in ("max_step", "nominal", "options") if kwargs.get(k) is not None] \
+        + (["codegen"] if kwargs.get("codegen") else [])
     if unused:
         raise SimulationError(f"{', '.join(unused)} are not taken by a run with a sampled "
                               f"controller (it steps with acausal.simulation.stepper); leave "

@@ -88,12 +88,12 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     grid = _grid(t_final, t)
     _check_settings(rtol=rtol, atol=atol, max_step=max_step)
     from .feedback import feedback_inputs, simulate_feedback   # (they step with simulate's
-    if feedback_inputs(inputs):                                 # integrator settings)
-        return simulate_feedback(simulate, model, t_final, grid, dict(inputs),
-                                 feedback_inputs(inputs), params=params, x0=x0, guess=guess,
-                                 solver=solver, rtol=rtol, atol=atol, max_step=max_step,
-                                 nominal=nominal, options=options, progress=progress,
-                                 **({"codegen": True} if codegen else {}))
+    controllers = feedback_inputs(inputs)                      # integrator settings)
+    if controllers:
+        return simulate_feedback(simulate, model, t_final, grid, dict(inputs), controllers,
+                                 params=params, x0=x0, guess=guess, solver=solver, rtol=rtol,
+                                 atol=atol, max_step=max_step, nominal=nominal,
+                                 options=options, progress=progress, codegen=codegen)
     if codegen:
         generated.check_supported(model)
     if solver == explicit.NAME:
@@ -148,6 +148,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     opts.update(options or {})
 
     def integrate(plugin, opts):
+        nonlocal interrupted
         dae = generated.dae_problem(model, solver, u_expr, p, scale) if codegen else \
             integrator_problem(model, solver, ode, alg)
         X = [np.asarray(xs, dtype=float).reshape(-1, 1) / scale[:nx, None]]
@@ -171,7 +172,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                 x, z = advance(dae, a, b, pts, x, z, X, Z)
                 reached(b)
         except KeyboardInterrupt:
-            interrupted.append(x)
+            interrupted = True
         finally:
             bar.close()
         X = np.hstack(X) * scale[:nx, None]
@@ -224,7 +225,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         Z.append(zf[:, :len(pts)])
         return xf[:, -1], (zf[:, -1] if has_alg else z)
 
-    interrupted = []
+    interrupted = False          # Ctrl-C: the Result holds the output times reached
     if model.has_events:
         return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
                             signals, solver, mobility, progress)
@@ -251,7 +252,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
     res = Result(model, grid, X, Z, U, p)
-    res.partial = bool(interrupted)
+    res.partial = interrupted
     res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
     res.solver = solver
     return res

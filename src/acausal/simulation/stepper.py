@@ -32,6 +32,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
+from .buffers import Buffered
 from .events import EventSimulation
 from .initialization import initial_state
 from .simulate import integrator_settings, scaled
@@ -73,21 +74,6 @@ def dopri_step(model, p: np.ndarray) -> ca.Function:
     return ca.Function("dopri_step", [x, u, t, h, tol_abs, rtol],
                        [x5, ca.mmax(ca.vertcat(0, ca.fabs(err) / weight))],
                        ["x", "u", "t", "h", "tol_abs", "rtol"], ["xf", "err"])
-
-
-class _Buffered:
-    """A CasADi Function called through its buffer: its arguments and results are numpy
-    arrays (float, contiguous), changed in place and read in place (``args``, ``res``), no
-    conversion per call."""
-
-    def __init__(self, f: ca.Function, args: Sequence[np.ndarray]):
-        self.buffer, self.call = f.buffer()
-        self.args = list(args)
-        self.res = [np.zeros(f.nnz_out(i)) for i in range(f.n_out())]
-        for i, a in enumerate(self.args):
-            self.buffer.set_arg(i, memoryview(a))
-        for i, r in enumerate(self.res):
-            self.buffer.set_res(i, memoryview(r))
 
 
 class Stepper:
@@ -154,7 +140,7 @@ class Stepper:
         self.u, self._t = np.zeros(model.u.numel()), np.zeros(1)
         self._params = dict(params or {})
         self.p = model.param_vector(self._params)
-        self._outputs = _Buffered(model.function(
+        self._outputs = Buffered(model.function(
             "outputs", [ca.vertcat(*[model.expression(n) for n in self.output_names])]),
             [self._t, self._x, self._z, self.u, self.p])
         self._integrator, self._built_for = None, None
@@ -291,7 +277,7 @@ class Stepper:
             return
         if self.solver == "dopri":
             self._over = self._dopri_over
-            self._integrator = _Buffered(dopri_step(model, self.p), [
+            self._integrator = Buffered(dopri_step(model, self.p), [
                 self._x.copy(), self.u, np.zeros(1), np.zeros(1),         # x, u, t, h
                 self.atol * self.scale[:self._x.size], np.array([self.rtol])])
             return

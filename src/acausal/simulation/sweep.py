@@ -261,7 +261,8 @@ class _Engine:
     def _inputs(self, table):
         """The inputs as expressions of time and of the symbols of the varied ones: a
         constant per run is one symbol, an array on the grid per run a linear interpolant
-        with the values as symbols (equal to simulate()'s pw_lin)."""
+        with the values as symbols (the interpolation simulate() gives such an input,
+        ``inputs._linear``)."""
         model, grid = self.model, self.grid
         varied = {name: values for (kind, name), values in _varied(table).items()
                   if kind == "inputs"}
