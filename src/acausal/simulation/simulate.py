@@ -100,10 +100,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         explicit.check_supported(model)
     p = model.param_vector(params)
     inputs = dict(inputs or {})
-    unknown = set(inputs) - set(model.input_names)
-    if unknown:
-        raise SimulationError(f"model '{model.name}' has no input {sorted(unknown)}; its inputs: "
-                              f"{model.input_names or 'none'}")
+    check_inputs(model, inputs)
     signals = [input_signal(v.name, inputs.get(v.name, v.start), model.t, grid)
                for v in model.inputs]
     u_expr = ca.vertcat(*[s.expression for s in signals]) if signals else ca.SX(0, 1)
@@ -385,6 +382,14 @@ def integrator_settings(model, solver: str, rtol: float, atol: float,
 
 _NO_AD = {"enable_fd": True, "enable_forward": False, "enable_reverse": False,
           "enable_jacobian": False}
+
+
+def check_inputs(model, names) -> None:
+    """A SimulationError naming the ``names`` that are not inputs of ``model``."""
+    unknown = set(names) - set(model.input_names)
+    if unknown:
+        raise SimulationError(f"model '{model.name}' has no input {sorted(unknown)}; its inputs: "
+                              f"{model.input_names or 'none'}")
 
 
 def _grid(t_final, t) -> np.ndarray:

@@ -28,8 +28,8 @@ from ..numerics import event_times
 from .diagnosis import failure_message, quiet_stderr
 from .initialization import initial_state
 from .inputs import Samples, input_signal
-from .simulate import (_check_finite, _check_settings, _grid, _not_finite, integrator_problem,
-                       integrator_settings, scaled, simulate)
+from .simulate import (_check_finite, _check_settings, _grid, _not_finite, check_inputs,
+                       integrator_problem, integrator_settings, scaled, simulate)
 from .stiffness import adams_step_budget, is_stiff, spectral_radius
 
 KINDS = ("params", "x0", "inputs")
@@ -266,10 +266,7 @@ class _Engine:
         model, grid = self.model, self.grid
         varied = {name: values for (kind, name), values in _varied(table).items()
                   if kind == "inputs"}
-        unknown = {n for run in table for n in run["inputs"]} - set(model.input_names)
-        if unknown:
-            raise SimulationError(f"model '{model.name}' has no input {sorted(unknown)}; its "
-                                  f"inputs: {model.input_names or 'none'}")
+        check_inputs(model, {n for run in table for n in run["inputs"]})
         exprs, syms, rows = [], [], []
         for v in model.inputs:
             if v.name not in varied:
