@@ -267,6 +267,13 @@ class Stepper:
         self._built_for = self.p.tobytes()
         model = self.model
         if model.has_events:
+            # the parameters folded in once (the modes left symbols, the event engine's
+            # parameters): each step substitutes only the held inputs
+            values = ca.SX(self.p)
+            values[model.mode_params] = model.p[model.mode_params]
+            ode, alg = ca.substitute([model.ode, model.alg], [model.p], [values])
+            self._integrator = (scaled(model, ode, alg, self.scale), integrator_settings(
+                model, "idas" if self.has_alg else "cvodes", self.rtol, self.atol)[:2])
             self._over = self._events_over
             return
         if not self._x.size and self.has_alg:    # algebraic only: Newton at each step's end
@@ -356,13 +363,8 @@ class Stepper:
     def _events_over(self, h: float) -> None:
         """The event engine of simulate() over [t, t + h], the modes carried in p."""
         model = self.model
-        plugin, opts, _ = integrator_settings(model, "idas" if self.has_alg else "cvodes",
-                                              self.rtol, self.atol)
-        values = ca.SX(self.p)
-        values[model.mode_params] = model.p[model.mode_params]
-        ode, alg = ca.substitute([model.ode, model.alg], [model.u, model.p],
-                                 [ca.SX(ca.DM(self.u)), values])
-        ode, alg = scaled(model, ode, alg, self.scale)
+        equations, (plugin, opts) = self._integrator
+        ode, alg = ca.substitute(list(equations), [model.u], [ca.SX(ca.DM(self.u))])
         run = EventSimulation(model, ode, alg, self.p, ca.SX(ca.DM(self.u)), self.scale,
                               plugin, opts)
         run.checks_per_run = EVENT_CHECKS
