@@ -215,7 +215,8 @@ def _sampled(model, held, subs, sampled, grid, *, params, x0, guess, rtol, atol,
             st.hold({name: _call(fb, name, st.t, {n: y[n] for n in names[name]})
                             for name, fb in sampled.items()})
             t_next = min(t_k + period, t_end)
-            for tg in grid[(grid >= t_k - on_grid) & (grid < t_next - on_grid)]:
+            lo, hi = np.searchsorted(grid, [t_k - on_grid, t_next - on_grid])
+            for tg in grid[lo:hi]:             # the output times in [t_k, t_next)
                 if tg > st.t:
                     st.advance(float(tg) - st.t)
                 cols.append((float(tg), st.x, st.z, st.u.copy()))
