@@ -8,6 +8,7 @@ import math
 import warnings
 
 import numpy as np
+import pytest
 
 import acausal
 from acausal.analysis import linearize, modes
@@ -89,3 +90,13 @@ def test_loop_through_a_spherical_joint_has_the_modes_of_its_revolute_tree():
     assert len(a.frequencies) == 2
     assert np.allclose(a.frequencies, b.frequencies, rtol=1e-9, atol=1e-12)
     assert a.frequencies[0] == 0.0 and a.frequencies[1] > 0.3
+    # closed form: a physical pendulum about u = {1, −1, 0}/√2 through the pivot, its free
+    # spin about the bar's axis e = {0, 1, 0} coupled through the inertia. About the pivot
+    # I = I_cm + m·(|r|²·E − r·rᵀ), r = r_CM; stiffness m·g·|n⊥u|·|r⊥u| = m·g/4;
+    # ω² = k / (uᵀIu − (uᵀIe)² / eᵀIe)
+    r, u, e = np.array(BAR["r_CM"]), np.array([1.0, -1.0, 0]) / math.sqrt(2), np.array([0, 1.0, 0])
+    inertia = np.diag([BAR["I_11"], BAR["I_22"], BAR["I_33"]]) \
+        + BAR["m"] * (r @ r * np.eye(3) - np.outer(r, r))
+    k = BAR["m"] * G * np.linalg.norm(r - (r @ u) * u) * np.linalg.norm(-e - (-e @ u) * u)
+    omega2 = k / (u @ inertia @ u - (u @ inertia @ e) ** 2 / (e @ inertia @ e))
+    assert a.frequencies[1] == pytest.approx(math.sqrt(omega2) / (2 * math.pi), rel=1e-9)

@@ -58,6 +58,12 @@ def test_spherical_joint_in_a_loop_closed_by_a_rod_moves_as_the_tree_of_two_revo
     assert np.max(np.abs(tip - vector(b, "bar.frame_b.r_0"))) < 1e-7
     assert np.max(np.abs(orientation(a, "bar.frame_a") - orientation(b, "bar.frame_a"))) < 1e-7
     assert np.ptp(tip[:, 2]) > 0.5
+    # no friction, no drive: the bar's energy from its recorded motion alone is constant
+    kinetic, potential = body_energy(a, "bar", BAR["m"], BAR["r_CM"],
+                                     np.diag([BAR["I_11"], BAR["I_22"], BAR["I_33"]]),
+                                     "bar.body.w_a")
+    energy = kinetic + potential
+    assert np.max(np.abs(energy - energy[0])) < 1e-7 * np.ptp(kinetic)
 
 
 def test_free_body_held_by_a_revolute_is_a_pendulum():

@@ -111,6 +111,9 @@ def test_ctrl_c_in_a_sampled_run_returns_the_run_so_far(compiled):
     with pytest.warns(UserWarning, match="interrupted"):
         part = compiled.simulate(3.0, t=GRID, inputs={"F": Controller(ctrl, period=0.2)})
     assert part.partial and not full.partial
+    # the full run is the exact discretization (default tolerances of simulate())
+    np.testing.assert_allclose(full["mass.s"], sampled_loop(0.2, GRID, [0.0, 0.0])[:, 0],
+                               atol=1e-7)
     n = part.t.size
     assert 1.0 <= part.t[-1] < 1.2 + 1e-9
     np.testing.assert_array_equal(part.t, GRID[:n])
