@@ -11,7 +11,7 @@ from scipy.spatial.transform import Rotation
 
 import acausal
 from acausal.components.multibody import Body, BodyShape, FreeMotion, Spherical, World
-from body_energy import orientation, vector
+from body_energy import G, orientation, vector
 from wiring import model
 
 TOL = dict(rtol=1e-11, atol=1e-13)
@@ -110,6 +110,14 @@ def test_free_motion_by_msl_names_moves_as_from_msl_start_parameters():
     x0.update({f"free.v_rel_a[{k + 1}]": v[k] for k in range(3)})
     b = acausal.compile(free()).simulate(2.0, t=t, x0=x0, **TOL)
     _same_motion(a, b, "body.frame_a")
+    # independent of both routes: the start orientation is MSL's, and the centre of mass
+    # falls freely, r_CM(t) = r_CM(0) + v_CM(0)·t − ½·g·t²·e_y
+    T = orientation(a, "body.frame_a")
+    assert np.max(np.abs(T[0] - _T(SEQUENCE, ANGLES))) < 1e-12
+    cm = vector(a, "body.frame_a.r_0") + np.einsum("kji,j->ki", T, (0.2, 0.1, 0))
+    parabola = np.polyfit(t, cm, 2)
+    np.testing.assert_allclose(parabola[0], (0.0, -G / 2, 0.0), atol=1e-8)
+    assert np.max(np.abs(np.polyval(parabola[:, 1], t) - cm[:, 1])) < 1e-9
     fine = acausal.compile(free()).simulate(0.5, t=np.linspace(0.0, 0.5, 501), x0=x0, **TOL)
     phi = np.unwrap(vector(fine, "free.phi"), axis=0)
     rate = np.gradient(phi, fine.t, axis=0)[1:-1]
