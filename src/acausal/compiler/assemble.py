@@ -114,6 +114,7 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
             r.nodes = [ws.node_of[p] for p in r.ports]
         tree = choose_tree(nodes, ws.relations, ws.der_table, ws.state_names,
                            lambda: _massive_nodes(flat, ws, len(nodes)))
+        ws.one_d = tree.one_d
         run_physics(ws, flat.components)
     return _assemble(model, ws, tree, params, fixed)
 
@@ -210,8 +211,7 @@ def _parameter_record(name: str, par: Parameter, default: float) -> ScalarVariab
 def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledModel:
     t = ws.t
     nq = tree.q.numel()
-    eps, epsd, epsdd = (_stack([getattr(f, k) for f in tree.fired])
-                        for k in ("eps", "epsd", "epsdd"))
+    eps, epsd, epsdd = tree.relaxations()
     _check_declarations(ws)
 
     # ---- Lagrange's residuals for [q; ε]; signals, derivatives, relaxations resolved ----

@@ -13,7 +13,7 @@ from __future__ import annotations
 import casadi as ca
 
 from .builders import KEPT, PhysicsBuilder, Workspace
-from .kinematics import motion_symbols
+from .kinematics import motion_symbols, side_by_side
 
 #: fewer instances than this are not worth a batch
 MIN_BATCH = 8
@@ -129,8 +129,7 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
     all_ports = [_ports_of(c, points) for c in members]
     for name in names:
         nodes = [ws.node_of[ports[name]] for ports in all_ports]
-        args += [ca.horzcat(*[n.pos for n in nodes]), ca.horzcat(*[n.vel for n in nodes]),
-                 ca.horzcat(*[n.acc for n in nodes])]
+        args += [side_by_side(nodes, ws.one_d, k) for k in ("pos", "vel", "acc")]
     args += [_parameter_row(ws, members, p) for p in pnames]
     args.append(ws.t)
     Y = F.map(len(members))(*args)
@@ -145,11 +144,11 @@ def _batched(ws: Workspace, members: list, points: dict) -> bool:
             if kind == "T":
                 ws.kinetic_other.append(ca.sum2(block))
             continue
-        cols = ca.horzsplit(block)
         if kind == "flow":
-            for ports, col in zip(all_ports, cols):
-                ws.flows.append((ports[what], col))
-        elif kind == "nominal":
+            ws.flows.append(([ports[what] for ports in all_ports], ca.vec(block)))
+            continue
+        cols = ca.horzsplit(block)
+        if kind == "nominal":
             for prefix, col in zip(prefixes, cols):
                 ws.nominals[prefix + what] = col
         elif kind == "kept":

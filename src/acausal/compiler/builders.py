@@ -83,10 +83,13 @@ class Workspace:
     bodies: list = field(default_factory=list)              # rigid bodies, packed
     kinetic_other: list = field(default_factory=list)       # kinetic energy not of bodies
     potential: list = field(default_factory=list)
-    flows: list = field(default_factory=list)               # (port, expr) explicit flows
+    # explicit flows: (ports, their flows stacked, port by port); a batch of components
+    # adds one entry for all its members
+    flows: list = field(default_factory=list)
     variables: list = field(default_factory=list)           # (name, expr, unit)
     nominals: dict = field(default_factory=dict)            # name -> nominal (number or SX)
     node_of: dict = field(default_factory=dict)             # port -> Node (after the tree)
+    one_d: tuple = ()              # the tree's stacked 1-D node motion (Tree.one_d)
     state_names: dict = field(default_factory=dict)         # port -> its coordinates' names
     declared: dict = field(default_factory=dict)            # (component, name) -> node / state
     cut_flow_sym: dict = field(default_factory=dict)        # port -> placeholder of its flow
@@ -483,7 +486,10 @@ class PhysicsBuilder(_Base):
         connection with −value. On a network port: its current [A] or heat flow [W],
         given explicitly."""
         self._mine(port)
-        (self._ws.net_flows if port.domain.network else self._ws.flows).append((port, sx(value)))
+        if port.domain.network:
+            self._ws.net_flows.append((port, sx(value)))
+        else:
+            self._ws.flows.append(([port], sx(value)))
 
     def cut_flow(self, port: PhysicalPort) -> ca.SX:
         """The total flow through one of this component's ports (force [N] / torque [N.m],

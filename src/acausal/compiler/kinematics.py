@@ -86,16 +86,46 @@ def motion_symbols(prefix: str, domain: Domain, der_table: dict) -> tuple[ca.SX,
     return pos, vel, acc
 
 
-@dataclass
+def side_by_side(nodes: list, one_d: tuple, kind: str) -> ca.SX:
+    """The ``kind`` ('pos', 'vel' or 'acc') of ``nodes``, one column each: a slice of the
+    tree's stacked 1-D motion ``one_d`` (``Tree.one_d``) where every node is a row of it,
+    else joined node by node."""
+    rows = [n.row for n in nodes]
+    if one_d and None not in rows:
+        return one_d[("pos", "vel", "acc").index(kind)][rows, :].T
+    return ca.horzcat(*[getattr(n, kind) for n in nodes])
+
+
 class Node:
-    """A group of connected ports: one pose (potentials) shared by all of them."""
-    index: int
-    ports: list[PhysicalPort]
-    pos: ca.SX | None = None
-    vel: ca.SX | None = None
-    acc: ca.SX | None = None
-    coordinate: list[int] | None = None          # indices of q if this node is a free root
-    form: dict | None = None                     # linear form of pos over the tree's atoms
+    """A group of connected ports: one pose (potentials) shared by all of them.
+
+    ``pos``, ``vel`` and ``acc`` are its motion; a 1-D node of the tree (``row`` set by
+    ``stack``) takes them from the tree's stacked motion on first use: most nodes are
+    only ever read in slices of it (``side_by_side``)."""
+    __slots__ = ("index", "ports", "coordinate", "form", "row", "_motion", "_stacked")
+
+    def __init__(self, index: int, ports: list[PhysicalPort]):
+        self.index, self.ports = index, ports
+        self.coordinate: list[int] | None = None     # indices of q if this node is a free root
+        self.form: dict | None = None                # linear form of pos over the tree's atoms
+        self.row: int | None = None                  # of a 1-D node: its row in Tree.one_d
+        self._motion, self._stacked = [None, None, None], None
+
+    def _get(self, k: int):
+        if self._motion[k] is None and self.row is not None:
+            self._motion[k] = self._stacked[k][self.row]
+        return self._motion[k]
+
+    def _set(self, k: int, value) -> None:
+        self._motion[k] = value
+
+    pos = property(lambda self: self._get(0), lambda self, v: self._set(0, v))
+    vel = property(lambda self: self._get(1), lambda self, v: self._set(1, v))
+    acc = property(lambda self: self._get(2), lambda self, v: self._set(2, v))
+
+    def stack(self, stacked: tuple, row: int) -> None:
+        """Make this node row ``row`` of the stacked (pos, vel, acc) ``stacked``."""
+        self._motion, self._stacked, self.row = [None, None, None], stacked, row
 
     @property
     def domain(self) -> Domain:
@@ -114,16 +144,27 @@ class Node:
 class Atoms:
     """The independent quantities node positions are linear in: coordinates, relaxations ε,
     and right-hand sides of relations (constants and prescribed motions). Each has a position,
-    velocity and acceleration expression."""
+    velocity and acceleration expression. Relaxations made in blocks (``block``) keep their
+    stacked vectors, so that ``materialize`` joins whole blocks instead of their scalars."""
 
     def __init__(self):
         self.pos, self.vel, self.acc = [], [], []
         self.rhs = []                  # indices of atoms whose rates are derived in bulk
+        self.blocks = []               # (atom indices, (pos, vel, acc) stacked vectors)
         self._const = {}
 
     def add(self, pos, vel, acc) -> int:
         self.pos.append(pos); self.vel.append(vel); self.acc.append(acc)
         return len(self.pos) - 1
+
+    def block(self, pos: ca.SX, vel: ca.SX, acc: ca.SX) -> list[tuple]:
+        """Atoms for the rows of stacked vectors: (pos, vel, acc, atom index) of each row."""
+        first = len(self.pos)
+        self.blocks.append((range(first, first + pos.numel()), (pos, vel, acc)))
+        rows = [ca.vertsplit(x) for x in (pos, vel, acc)]
+        for x, out in zip(rows, (self.pos, self.vel, self.acc)):
+            out.extend(x)
+        return [(e, ed, edd, first + i) for i, (e, ed, edd) in enumerate(zip(*rows))]
 
     def constant(self, b) -> dict:
         """Linear form of a relation's rhs b: nothing for 0, an atom otherwise."""
@@ -145,25 +186,36 @@ class Atoms:
             self.acc[k] = der(self.vel[k])
         return self.pos[k], self.vel[k], self.acc[k]
 
-    def materialize(self, der) -> tuple[ca.SX, ca.SX, ca.SX]:
-        """Stacked position, velocity and acceleration of all atoms (rates of the rhs atoms
-        by one total-derivative call on all of them)."""
+    def materialize(self, der) -> tuple[list[int], tuple[ca.SX, ca.SX, ca.SX]]:
+        """Stacked position, velocity and acceleration of all atoms, the atoms outside
+        blocks first, then the blocks whole; and the row of each atom in them. The rhs atoms
+        whose rates are not known yet become one more block, their rates by one
+        total-derivative call on all of them."""
         pending = [k for k in self.rhs if self.vel[k] is None]
         if pending:
             b = ca.vertcat(*[self.pos[k] for k in pending])
             bd = der(b)
-            bds, bdds = ca.vertsplit(bd), ca.vertsplit(der(bd))
-            for i, k in enumerate(pending):
-                self.vel[k], self.acc[k] = bds[i], bdds[i]
-        return (ca.vertcat(*self.pos), ca.vertcat(*self.vel), ca.vertcat(*self.acc))
+            self.blocks.append((pending, (b, bd, der(bd))))
+        in_blocks = {k for indices, _ in self.blocks for k in indices}
+        loose = [k for k in range(len(self.pos)) if k not in in_blocks]
+        order = loose + [k for indices, _ in self.blocks for k in indices]
+        row = [0] * len(order)
+        for r, k in enumerate(order):
+            row[k] = r
+        stacked = tuple(ca.vertcat(ca.vertcat(*[xs[k] for k in loose]),
+                                   *[vectors[i] for _, vectors in self.blocks])
+                        for i, xs in enumerate((self.pos, self.vel, self.acc)))
+        return row, stacked
 
 
-def _forms_to_matrix(forms: list[dict], n_atoms: int):
-    """Sparse matrix S with S[i, k] = forms[i][k] (DM when every coefficient is a number)."""
+def _forms_to_matrix(forms: list[dict], column: list[int]):
+    """Sparse matrix S with S[i, column[k]] = forms[i][k] (DM when every coefficient is a
+    number)."""
     rows, cols, vals = [], [], []
     for i, f in enumerate(forms):
         for k, c in f.items():
-            rows.append(i); cols.append(k); vals.append(c)
+            rows.append(i); cols.append(column[k]); vals.append(c)
+    n_atoms = len(column)
     if all(isinstance(v, float) for v in vals):
         return ca.DM.triplet(rows, cols, ca.DM(vals), len(forms), n_atoms)
     return ca.SX.triplet(rows, cols, ca.vertcat(*[ca.SX(v) for v in vals]), len(forms), n_atoms)
@@ -177,6 +229,7 @@ class FiredRelation:
     eps: ca.SX
     epsd: ca.SX
     epsdd: ca.SX
+    block: tuple | None = None     # (stacked ε, ε̇, ε̈ of its block, row) if made in a block
 
 
 @dataclass(frozen=True)
@@ -203,6 +256,33 @@ class Tree:
     loop_residual: ca.SX = None                    # Φ of the loops, stacked in that order
     loop_rows: list = field(default_factory=list)  # a name for each row of Φ
     charts: list = field(default_factory=list)     # charts.Chart of the free 3-D frames
+    one_d: tuple = ()            # stacked (pos, vel, acc) of the 1-D nodes, by Node.row
+
+    def relaxations(self) -> tuple[ca.SX, ca.SX, ca.SX]:
+        """ε, ε̇ and ε̈ of the fired relations, stacked in their order (consecutive rows of
+        one block taken as one slice of it)."""
+        pieces = [[], [], []]
+        run = None                                     # [block vectors, first row, end]
+
+        def close():
+            if run is not None:
+                for k in range(3):
+                    pieces[k].append(run[0][k][run[1]:run[2], :])
+
+        for f in self.fired:
+            if f.block is not None and run is not None and f.block[0] is run[0] \
+                    and f.block[1] == run[2]:
+                run[2] += 1
+                continue
+            close()
+            run = None
+            if f.block is not None:
+                run = [f.block[0], f.block[1], f.block[1] + 1]
+            else:
+                for k, x in enumerate((f.eps, f.epsd, f.epsdd)):
+                    pieces[k].append(x)
+        close()
+        return tuple(ca.vertcat(*p) if p else ca.SX(0, 1) for p in pieces)
 
 
 def choose_tree(nodes: list[Node], relations: list, der_table: dict, state_names: dict,
@@ -284,7 +364,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     fired, lin_loops, nl_loops = [], [], []       # nl_loops: (relation, Φ rows, flows)
     charts = []                                   # orientation states of free 3-D frames
     for n in nodes:
-        n.form = n.coordinate = None
+        n.form = n.coordinate = n.row = None
         n.pos = n.vel = n.acc = None
 
     def known(n: Node) -> bool:
@@ -307,13 +387,14 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
         if dim == 1:
             if not scalar_relaxations:
                 size = max(8, k if k else scalar_bound)
-                scalar_relaxations.extend(reversed(_relaxation_block(k, size, der_table)))
+                scalar_relaxations.extend(reversed(_relaxation_block(k, size, der_table,
+                                                                     atoms)))
             return scalar_relaxations.pop()
         e, ed, edd = (ca.SX.sym(f"eps{k}", dim), ca.SX.sym(f"epsd{k}", dim),
                       ca.SX.sym(f"epsdd{k}", dim))
         for a, b, c in zip(*(ca.vertsplit(x) for x in (e, ed, edd))):
             der_table[a.name()], der_table[b.name()], der_table[c.name()] = b, c, None
-        return e, ed, edd
+        return e, ed, edd, None, None
 
     def visit(r):
         unknown = [i for i, n in enumerate(r.nodes) if not known(n)]
@@ -328,9 +409,9 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
             return None
         j = unknown[0]
         node = r.nodes[j]
-        e, ed, edd = relax(node.domain.dof if not r.linear else 1)
+        e, ed, edd, atom, block = relax(node.domain.dof if not r.linear else 1)
         if r.linear:
-            node.form = r.solve(j, atoms, atoms.add(e, ed, edd))
+            node.form = r.solve(j, atoms, atom)
         else:
             (pos, vel, acc), extra = r.fire(j, values)
             if node.domain.dim == 1:
@@ -341,7 +422,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
                 node.pos, node.vel, node.acc = pos + e, vel + ed, acc + edd
             if extra is not None:
                 nl_loops.append((r, extra, None))        # its flows: with the fired ones
-        fired.append(FiredRelation(r, e, ed, edd))
+        fired.append(FiredRelation(r, e, ed, edd, block))
         return node
 
     def propagate(start: list[Node]):
@@ -402,12 +483,12 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     # materialize 1-D nodes: their motion is a sparse linear map of the atoms' motion
     one_d = [n for n in nodes if n.domain.dim == 1]
     forms = [n.form for n in one_d] + [r.residual(atoms) for r in lin_loops]
-    S = _forms_to_matrix(forms, len(atoms.pos))
-    P, Vv, A = atoms.materialize(der)
-    pos, vel, acc = (ca.vertsplit(ca.mtimes(S, X)) for X in (P, Vv, A))
+    column, atom_motion = atoms.materialize(der)
+    S = _forms_to_matrix(forms, column)
+    stacked = tuple(ca.mtimes(S, X) for X in atom_motion)
     for i, n in enumerate(one_d):
-        n.pos, n.vel, n.acc = pos[i], vel[i], acc[i]
-    rows = pos[len(one_d):]
+        n.stack(stacked, i)
+    rows = ca.vertsplit(stacked[0][len(one_d):, :])
     loops = [LoopBlock(r, 1, r.flows) for r in lin_loops]
     names = [r.owner.path for r in lin_loops]
     for r, phi, flows in nl_loops:
@@ -417,17 +498,19 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     residual = ca.vertcat(*rows) if rows else ca.SX(0, 1)
     vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)      # noqa: E731
     return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, residual,
-                names, charts)
+                names, charts, tuple(x[:len(one_d), :] for x in stacked))
 
 
-def _relaxation_block(k: int, size: int, der_table: dict) -> list[tuple]:
-    """``size`` scalar relaxations (ε, ε̇, ε̈) named eps<k>_<i>, epsd<k>_<i>, epsdd<k>_<i>,
-    their rates entered in ``der_table``: symbols made in blocks cost a third of one by one
-    (the first block as large as the relations that may need one, any further one as large
-    as the relaxations made so far)."""
-    trios = list(zip(*(ca.vertsplit(ca.SX.sym(f"{base}{k}", size))
-                       for base in ("eps", "epsd", "epsdd"))))
-    for i, (e, ed, edd) in enumerate(trios):
+def _relaxation_block(k: int, size: int, der_table: dict, atoms: Atoms) -> list[tuple]:
+    """``size`` scalar relaxations (ε, ε̇, ε̈, atom index, (block vectors, row)) named
+    eps<k>_<i>, epsd<k>_<i>, epsdd<k>_<i>, their rates entered in ``der_table``, one block of
+    ``atoms``: symbols made in blocks cost a third of one by one (the first block as large as
+    the relations that may need one, any further one as large as the relaxations made so
+    far)."""
+    vectors = tuple(ca.SX.sym(f"{base}{k}", size) for base in ("eps", "epsd", "epsdd"))
+    trios = [(e, ed, edd, atom, (vectors, i))
+             for i, (e, ed, edd, atom) in enumerate(atoms.block(*vectors))]
+    for i, (e, ed, edd, _, _) in enumerate(trios):
         der_table[f"eps{k}_{i}"], der_table[f"epsd{k}_{i}"], der_table[f"epsdd{k}_{i}"] = \
             ed, edd, None
     return trios

@@ -17,6 +17,7 @@ import casadi as ca
 
 from . import sympy_form
 from .charts import state_positions
+from .kinematics import side_by_side
 from .symbolic import der_with
 
 _vc = ca.vertcat
@@ -45,7 +46,8 @@ def residuals(ws, q: ca.SX, qd: ca.SX) -> Residuals:
     R_V = ca.gradient(V, q)
     R_Q = ca.SX.zeros(q.numel())
     if ws.flows:
-        v = _vc(*[ws.node_of[p].vel for p, _ in ws.flows])
+        v = _vc(*[ca.vec(side_by_side([ws.node_of[p] for p in ports], ws.one_d, "vel"))
+                  for ports, _ in ws.flows])
         f = _vc(*[fl for _, fl in ws.flows])                 # flow into the component
         R_Q = ca.jtimes(v, qd, f, True)                      # node force is −flow
     return Residuals(R_T, R_V, R_Q)

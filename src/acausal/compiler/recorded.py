@@ -24,7 +24,8 @@ def port_flows(ws, tree, explicit, lam_tree, lam_loop):
         else:
             total[p] = total[p] + v
 
-    for (p, _), v in zip(ws.flows, _split(explicit, [p.domain.dof for p, _ in ws.flows])):
+    ports = [p for block, _ in ws.flows for p in block]
+    for p, v in zip(ports, _split(explicit, [p.domain.dof for p in ports])):
         add(p, v)
     extra = {}
     for block, lam in zip(tree.loops, _split(lam_loop, [b.rows for b in tree.loops])):

@@ -22,17 +22,16 @@ class Resolver:
     the relaxations ε (by zero) in any expression, with values resolved once."""
 
     def __init__(self, syms, vals, zeros_for, failed):
-        self.syms, self.failed = syms, failed
-        self.sv = _vc(*syms) if syms else ca.SX(0, 1)
-        self.vals = _vc(*vals) if vals else ca.SX(0, 1)
-        self.zeros_for = zeros_for
+        self.failed = failed
+        zeros = [ca.SX.zeros(v.numel()) for v in zeros_for]
+        # the values with ε = 0 already, so that one substitution does both at once
+        values = ca.substitute([_vc(*vals)], zeros_for, zeros)[0] if vals else ca.SX(0, 1)
+        self.frm = [_vc(*syms) if syms else ca.SX(0, 1)] + list(zeros_for)
+        self.to = [values] + zeros
         self._failed_syms = _vc(*[sym for sym, _ in failed]) if failed else None
 
     def __call__(self, pieces: list) -> list:
-        if self.syms:
-            pieces = ca.substitute(pieces, [self.sv], [self.vals])
-        z = [ca.SX.zeros(v.numel()) for v in self.zeros_for]
-        pieces = ca.substitute(pieces, self.zeros_for, z)
+        pieces = ca.substitute(pieces, self.frm, self.to)
         self.check(pieces)
         return pieces
 
