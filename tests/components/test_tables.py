@@ -260,7 +260,24 @@ def test_new_time_table_values_follow_numpy():
         c.param_vector({"src.table": [1.0, 2.0]})
     fixed = acausal.compile(_probe(sg.TimeTable(table=tab, shiftTime=0.5)))
     assert not any(n.startswith("src.table") for n in fixed.param_names)
-    for src in (sg.TimeTable(table=tab, table_parameter=True, shiftTime=0.5),
+    for src in (sg.TimeTable(table=tab), sg.TimeTable(table=tab, shiftTime=0.5),
+                sg.TimeTable(table=tab, table_parameter=True, shiftTime=0.5),
                 sg.CombiTimeTable(table=ROWS, table_parameter=True)):
         copy = pickle.loads(pickle.dumps(src))
         assert type(copy) is type(src) and copy.table == src.table
+
+
+def test_unpickled_time_table_follows_numpy():
+    """A TimeTable made back from its pickle interpolates its rows as numpy does."""
+    tab = np.array([[0.0, 0.0], [1.0, 2.0], [1.0, -1.0], [2.5, 3.0]])
+    copy = pickle.loads(pickle.dumps(sg.TimeTable(table=tab, startTime=0.5)))
+    res = acausal.compile(_probe(copy)).simulate(3.0, t=T_TAB, **SIM)
+    after = T_TAB >= 1.5                         # past the jump: its later row holds
+    np.testing.assert_allclose(res["src.y"][after],
+                               np.interp(T_TAB[after] - 0.5, tab[2:, 0], tab[2:, 1]),
+                               atol=1e-12)
+    before = (T_TAB >= 0.5) & (T_TAB < 1.5)
+    np.testing.assert_allclose(res["src.y"][before],
+                               np.interp(T_TAB[before] - 0.5, tab[:2, 0], tab[:2, 1]),
+                               atol=1e-12)
+    np.testing.assert_array_equal(res["src.y"][T_TAB < 0.5], 0.0)

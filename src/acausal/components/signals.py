@@ -382,7 +382,92 @@ def _check_table(table, kind: str, first_at_zero: bool) -> np.ndarray:
     return tab
 
 
-class TimeTable(SignalSource):
+class _Table:
+    """What TimeTable and CombiTimeTable share: the table, checked once when the block is
+    made; the block's class, made per layout (the number of outputs, a ``shiftTime``
+    parameter when one is given, a ``table`` parameter with ``table_parameter=True``); the
+    value columns at a time and the time events.
+
+    A table block declares ``startTime`` and ``timeScale`` [s], ``_selected(tab, columns)``
+    (the checked table reduced to its time and output columns), ``_outputs(nout)`` (what
+    its class declares for nout outputs) and ``_modes()`` (its smoothness, extrapolation and
+    timeEvents); the class itself keeps ``_classes``, its classes by layout."""
+    _first_at_zero = False              # whether the first time of a table must be 0
+
+    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None,
+                table_parameter=False, **params):
+        kind = cls.__name__
+        if name is not None and not isinstance(name, str):
+            raise ParameterError(f"{kind}: give the table by keyword, {kind}(table=...)")
+        tab = cls._selected(_check_table(table, kind, cls._first_at_zero), columns)
+        if cls is cls._public():
+            cls = cls._variant(tab.shape[1] - 1, shiftTime is not None,
+                               tab.shape[0] if table_parameter else 0)
+        block = super().__new__(cls)
+        block.__dict__["_checked"] = tab        # for __init__: the table is checked once
+        return block
+
+    @classmethod
+    def _public(cls) -> type:
+        """TimeTable or CombiTimeTable: the class a block's class is made from."""
+        return next(c for c in cls.__mro__ if "_classes" in vars(c))
+
+    @classmethod
+    def _variant(cls, nout: int, shifted: bool, rows: int) -> type:
+        """The class for nout outputs, a shiftTime parameter or not, and a ``table``
+        parameter of ``rows`` rows (0: none); ``cls`` itself when it declares all of it."""
+        key = (nout, shifted, rows)
+        if key not in cls._classes:
+            attrs = cls._outputs(nout)
+            if rows:
+                attrs["table"] = _table_parameter(rows, nout)
+            if shifted:
+                attrs["shiftTime"] = Parameter(0.0, "s", "shift time of first table column")
+            cls._classes[key] = type(cls.__name__, (cls,), {
+                "__doc__": cls.__doc__, "__module__": __name__, "__qualname__": cls.__name__,
+                **attrs}) if attrs else cls
+        return cls._classes[key]
+
+    def __reduce_ex__(self, protocol):          # the class is made per layout: rebuild it so
+        declared = self.parameters()
+        return _new_table, (self._public(), len(self.table) // len(self.times),
+                            "shiftTime" in declared,
+                            len(self.times) if "table" in declared else 0), self.__dict__
+
+    def __init__(self, name: str | None = None, *, table=None, shiftTime=None,
+                 table_parameter: bool = False, **params):
+        tab = self.__dict__.pop("_checked")
+        if shiftTime is not None:
+            params["shiftTime"] = shiftTime
+        values = tuple(tab[:, 1:].ravel())
+        if table_parameter:
+            params["table"] = values
+        super().__init__(name, **params)
+        self.__dict__["times"] = tab[:, 0]
+        if not table_parameter:
+            self.__dict__["table"] = values
+
+    def _shift(self):
+        """shiftTime [s]: the block's own parameter when given, else startTime (MSL's
+        binding)."""
+        return self.shiftTime if "shiftTime" in self.parameters() else self.startTime
+
+    def _table_at(self, t) -> list:
+        """The table's output columns at time t [s], one expression each (without offset
+        and startTime)."""
+        smoothness, extrapolation, _ = self._modes()
+        return _table_values((t - self._shift()) / self.timeScale, self.times, self.table,
+                             smoothness, extrapolation)
+
+    def events(self) -> list:
+        """startTime and the table's events, as (time [s], period [s] or None) pairs."""
+        shift, scale = self._shift(), self.timeScale
+        return [(self.startTime, None)] + [
+            (shift + scale * tk, None if period is None else scale * period)
+            for tk, period in _table_events(self.times, *self._modes())]
+
+
+class TimeTable(_Table, SignalSource):
     """Linear interpolation in a table of [time, value] rows (MSL Sources.TimeTable).
 
     ``table`` (constructor argument, an (n, 2) array-like): times in the first column,
@@ -403,81 +488,30 @@ class TimeTable(SignalSource):
     so its events stay; every evaluation of the equations then passes the n values).
     """
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
+    _first_at_zero = True
     _classes: dict = {}
 
-    def __new__(cls, name=None, *, table=None, shiftTime=None, table_parameter=False,
-                **params):
-        if cls is TimeTable:
-            if name is not None and not isinstance(name, str):
-                raise ParameterError("TimeTable: give the table by keyword, "
-                                     "TimeTable(table=...)")
-            tab = _check_table(table, "TimeTable", first_at_zero=True)
-            if tab.shape[1] != 2:
-                raise ParameterError(f"TimeTable: table must have rows [time, value] (shape "
-                                     f"(n, 2)), got shape {tab.shape}; CombiTimeTable takes "
-                                     f"several columns")
-            shifted = shiftTime is not None
-            cls = TimeTable._variant(tab.shape[0], shifted) if table_parameter else (
-                _ShiftedTimeTable if shifted else TimeTable)
-        return super().__new__(cls)
+    @staticmethod
+    def _selected(tab: np.ndarray, columns) -> np.ndarray:
+        if tab.shape[1] != 2:
+            raise ParameterError(f"TimeTable: table must have rows [time, value] (shape "
+                                 f"(n, 2)), got shape {tab.shape}; CombiTimeTable takes "
+                                 f"several columns")
+        return tab
 
     @staticmethod
-    def _variant(rows: int, shifted: bool) -> type:
-        key = (rows, shifted)
-        if key not in TimeTable._classes:
-            base = _ShiftedTimeTable if shifted else TimeTable
-            TimeTable._classes[key] = type("TimeTable", (base,), {
-                "__doc__": TimeTable.__doc__, "__module__": __name__,
-                "__qualname__": "TimeTable", "table": _table_parameter(rows, 1)})
-        return TimeTable._classes[key]
+    def _outputs(nout: int) -> dict:
+        return {}                               # the one output y is declared by SO
 
-    def __reduce_ex__(self, protocol):
-        if "table" not in self.parameters():
-            return super().__reduce_ex__(protocol)
-        # the class is made per table size: rebuild it so
-        return _new_table, (TimeTable, len(self.times), isinstance(self, _ShiftedTimeTable)), \
-            self.__dict__
-
-    def __init__(self, name: str | None = None, *, table=None, shiftTime=None,
-                 table_parameter: bool = False, **params):
-        if shiftTime is not None:
-            params["shiftTime"] = shiftTime
-        tab = _check_table(table, "TimeTable", first_at_zero=True)
-        if table_parameter:
-            params["table"] = tuple(tab[:, 1])
-        super().__init__(name, **params)
-        self.__dict__["times"] = tab[:, 0]
-        if not table_parameter:
-            self.__dict__["table"] = tuple(tab[:, 1])
-
-    def _shift(self):
-        return self.startTime
+    @staticmethod
+    def _modes() -> tuple:
+        return Smoothness.LinearSegments, Extrapolation.LastTwoPoints, TimeEvents.AtDiscontinuities
 
     def signal(self, t):
-        tau = (t - self._shift()) / self.timeScale
-        return _table_values(tau, self.times, self.table, Smoothness.LinearSegments,
-                             Extrapolation.LastTwoPoints)[0]
-
-    def events(self):
-        shift = self._shift()
-        return [(self.startTime, None)] + [
-            (shift + self.timeScale * tk, None) for tk, _ in _table_events(
-                self.times, Smoothness.LinearSegments, Extrapolation.LastTwoPoints,
-                TimeEvents.AtDiscontinuities)]
+        return self._table_at(t)[0]
 
 
-class _ShiftedTimeTable(TimeTable):
-    """TimeTable with an explicit shiftTime parameter (created by TimeTable(shiftTime=...))."""
-    shiftTime = Parameter(0.0, "s", "shift time of first table column")
-
-    def _shift(self):
-        return self.shiftTime
-
-
-_ShiftedTimeTable.__name__ = "TimeTable"        # what messages and repr call it
-
-
-class CombiTimeTable(Component):
+class CombiTimeTable(_Table, Component):
     """Table look-up in time with several output columns (MSL Sources.CombiTimeTable).
 
     Constructor arguments (fixed when the model is compiled): ``table`` (rows [time, values
@@ -513,92 +547,56 @@ class CombiTimeTable(Component):
     timeScale = Parameter(1.0, "s", "time scale of first table column", positive=True)
     _classes: dict = {}
 
-    def __new__(cls, name=None, *, table=None, columns=None, shiftTime=None,
-                table_parameter=False, **params):
-        if cls is CombiTimeTable:
-            tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
-            cls = CombiTimeTable._variant(len(_columns(tab, columns)), shiftTime is not None,
-                                          tab.shape[0] if table_parameter else 0)
-        return super().__new__(cls)
+    @staticmethod
+    def _selected(tab: np.ndarray, columns) -> np.ndarray:
+        """The time column and the selected ``columns`` (numbered from 1, time being column
+        1), checked."""
+        ncol = tab.shape[1]
+        cols = list(range(2, ncol + 1)) if columns is None else list(np.atleast_1d(columns))
+        if not cols or any(isinstance(c, (bool, np.bool_))
+                           or not isinstance(c, (int, np.integer)) or not 2 <= c <= ncol
+                           for c in cols):
+            raise ParameterError(f"CombiTimeTable: columns must be integers in 2..{ncol} (the "
+                                 f"table's value columns; column 1 is time), got {columns!r}")
+        return tab[:, [0] + [int(c) - 1 for c in cols]]
 
     @staticmethod
-    def _variant(nout: int, shifted: bool, rows: int) -> type:
-        """The class for nout outputs, a shiftTime parameter or not, and a ``table``
-        parameter of ``rows`` rows (0: none)."""
-        key = (nout, shifted, rows)
-        if key not in CombiTimeTable._classes:
-            attrs = {"__doc__": CombiTimeTable.__doc__, "__module__": __name__,
-                     "__qualname__": "CombiTimeTable", "_nout": nout,
-                     "offset": Parameter((0.0,) * nout, "", "offsets of output signals"),
-                     "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
-            if rows:
-                attrs["table"] = _table_parameter(rows, nout)
-            if shifted:
-                attrs["shiftTime"] = Parameter(0.0, "s", "shift time of first table column")
-            CombiTimeTable._classes[key] = type("CombiTimeTable", (CombiTimeTable,), attrs)
-        return CombiTimeTable._classes[key]
+    def _outputs(nout: int) -> dict:
+        return {"_nout": nout,
+                "offset": Parameter((0.0,) * nout, "", "offsets of output signals"),
+                "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+
+    def _modes(self) -> tuple:
+        return self.smoothness, self.extrapolation, self.timeEvents
 
     def __init__(self, name: str | None = None, *, table=None, columns=None, shiftTime=None,
                  offset=0.0, table_parameter: bool = False, **params):
-        if name is not None and not isinstance(name, str):
-            raise ParameterError("CombiTimeTable: give the table by keyword, "
-                                 "CombiTimeTable(table=...)")
-        if shiftTime is not None:
-            params["shiftTime"] = shiftTime
         offsets = np.atleast_1d(np.asarray(offset, dtype=object)).ravel()
         if offsets.size not in (1, self._nout):
             raise ParameterError(f"CombiTimeTable: offset has {offsets.size} elements but "
                                  f"there are {self._nout} outputs (give 1 or {self._nout})")
         params["offset"] = tuple(offsets) * (self._nout // offsets.size)
-        tab = _check_table(table, "CombiTimeTable", first_at_zero=False)
-        tab = tab[:, [0] + [c - 1 for c in _columns(tab, columns)]]
-        if table_parameter:
-            params["table"] = tuple(tab[:, 1:].ravel())
-        super().__init__(name, **params)
+        super().__init__(name, table=table, shiftTime=shiftTime,
+                         table_parameter=table_parameter, **params)
         if self.smoothness not in (Smoothness.LinearSegments, Smoothness.ConstantSegments):
             raise ParameterError(f"{who(self)}: smoothness={self.smoothness.value} (a spline) "
                                  f"is not available; use LinearSegments or ConstantSegments")
-        self.__dict__["times"] = tab[:, 0]
-        if not table_parameter:
-            self.__dict__["table"] = tuple(tab[:, 1:].ravel())
 
     @property
     def nout(self) -> int:
         return self._nout
 
-    def __reduce_ex__(self, protocol):          # the class is made per nout: rebuild it so
-        return _new_table, (CombiTimeTable, self._nout, "shiftTime" in self.parameters(),
-                            len(self.times) if "table" in self.parameters() else 0), \
-            self.__dict__
-
     def physics(self, e):
         t = e.time
-        shift = self.shiftTime if "shiftTime" in self.parameters() else self.startTime
-        tau = (t - shift) / self.timeScale
-        values = _table_values(tau, self.times, self.table, self.smoothness, self.extrapolation)
-        for i, (port, y) in enumerate(zip(self.y, values)):
+        for i, (port, y) in enumerate(zip(self.y, self._table_at(t))):
             e.output(port, self.offset[i] + ca.if_else(t < self.startTime, 0, y))
-        e.time_event(self.startTime)
-        for tk, period in _table_events(self.times, self.smoothness, self.extrapolation,
-                                        self.timeEvents):
-            e.time_event(shift + self.timeScale * tk,
-                         None if period is None else self.timeScale * period)
+        for time, period in self.events():
+            e.time_event(time, period)
 
 
 def _new_table(cls, *key) -> Component:
     """An empty instance of the table class ``cls`` made for ``key`` (unpickling)."""
     return object.__new__(cls._variant(*key))
-
-
-def _columns(tab: np.ndarray, columns) -> list[int]:
-    """The selected table columns (numbered from 1, time being column 1), checked."""
-    ncol = tab.shape[1]
-    cols = list(range(2, ncol + 1)) if columns is None else list(np.atleast_1d(columns))
-    if not cols or any(isinstance(c, (bool, np.bool_)) or not isinstance(c, (int, np.integer))
-                       or not 2 <= c <= ncol for c in cols):
-        raise ParameterError(f"CombiTimeTable: columns must be integers in 2..{ncol} (the "
-                             f"table's value columns; column 1 is time), got {columns!r}")
-    return [int(c) for c in cols]
 
 
 class KinematicPTP2(Component):
