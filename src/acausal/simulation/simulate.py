@@ -161,8 +161,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         advance = step if solver != explicit.NAME else explicit_step(
             explicit.Dop853(model, dae, rtol, atol, max_step, opts, reached))
         restarts = progress and solver != explicit.NAME    # (DOP853 reports each step)
-        events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
-            e for s in signals for e in s.events if grid[0] < e < grid[-1]).union(
+        events = sorted(set(time_events).union(
             grid[1:-1:max(1, grid.size // PROGRESS_POINTS)] if restarts else ()))
         try:
             for a, b, pts in _segments(grid, events):
@@ -222,10 +221,13 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         Z.append(zf[:, :len(pts)])
         return xf[:, -1], (zf[:, -1] if has_alg else z)
 
+    # the declared time events and the inputs' jumps inside the grid: restarts, sorted
+    time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
+        e for s in signals for e in s.events if grid[0] < e < grid[-1]))
     interrupted = False          # Ctrl-C: the Result holds the output times reached
     if model.has_events:
         return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
-                            signals, solver, mobility, progress)
+                            time_events, solver, mobility, progress)
     retry = plugin == "idas" and "suppress_algebraic" not in opts
     try:
         with quiet_stderr() if retry else nullcontext():
@@ -255,11 +257,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     return res
 
 
-def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, signals,
-                 solver, mobility, progress) -> Result:
-    """simulate() of a model with state events or modes (``events``)."""
-    time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
-        e for s in signals for e in s.events if grid[0] < e < grid[-1]))
+def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
+                 time_events, solver, mobility, progress) -> Result:
+    """simulate() of a model with state events or modes (``events``), restarted at the
+    sorted ``time_events``."""
     run = EventSimulation(model, ode, alg, p, u_expr, scale, plugin, opts)
     bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
     run.reached = time_reporter(bar, grid[0])
