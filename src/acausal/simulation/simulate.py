@@ -128,10 +128,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     # folding costs a fair part of a short run: 0.06 s for a 3-D chain of 64 links)
     ode = alg = None
     if not codegen or model.has_loops or not model.x.numel():
-        values = ca.SX(p)
-        values[model.mode_params] = model.p[model.mode_params]
-        ode, alg = scaled(model, *ca.substitute([model.ode, model.alg], [model.u, model.p],
-                                                [u_expr, values]), scale)
+        ode, alg = scaled(model, *folded(model, p, u_expr), scale)
     if auto:
         solver = "idas" if has_alg else (
             "cvodes" if rho is not None and (model.has_events or is_stiff(rho, grid[0], grid[-1]))
@@ -324,6 +321,18 @@ def integrator_problem(model, solver: str, ode, alg, params: ca.SX | None = None
     if model.z.numel():
         dae.update(z=model.z, alg=alg)
     return dae
+
+
+def folded(model, p: np.ndarray, u: ca.SX | None = None) -> tuple[ca.SX, ca.SX]:
+    """The equations (ode, alg) of ``model`` with the parameter values ``p`` folded in as
+    numbers, the discrete modes left symbols (the event engine's parameters, changed at
+    events), and the inputs replaced by the expressions ``u`` (None: they stay symbols):
+    the numeric right-hand side simulate()'s and the stepper's integrators see."""
+    values = ca.SX(p)
+    values[model.mode_params] = model.p[model.mode_params]
+    old, new = ([model.p], [values]) if u is None else ([model.u, model.p], [u, values])
+    ode, alg = ca.substitute([model.ode, model.alg], old, new)
+    return ode, alg
 
 
 def scaled(model, ode, alg, nominal):
