@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy.linalg import expm
 from scipy.optimize import brentq
 
 import acausal
@@ -21,6 +20,8 @@ from acausal.components import discrete as dc
 from acausal.components import logical as lg
 from acausal.components import signals as sg
 from acausal.models.event_blocks import SampledPController, Thermostat
+from forced_oscillator import oscillator_system
+from lti import held_input_flow
 
 SIM = dict(rtol=1e-10, atol=1e-12)
 TIGHT = dict(rtol=1e-12, atol=1e-14)          # integrated plants: event times to 1e-9 s
@@ -315,14 +316,11 @@ def _discrete_loop(n: int) -> tuple[np.ndarray, np.ndarray]:
     """The sampled P loop written by hand: on [t_k, t_k+1) the force F_k = K (R − x_k)
     is constant, so [x, v] steps by the exact discretization of m x'' + d x' + c x = F
     (matrix exponential of the augmented system)."""
-    A = np.array([[0.0, 1.0], [-C / M, -D / M]])
-    B = np.array([[0.0], [1.0 / M]])
-    aug = expm(np.block([[A, B], [np.zeros((1, 3))]]) * TS)
-    Ad, Bd = aug[:2, :2], aug[:2, 2:]
-    s, xs, fs = np.array([[0.2], [0.0]]), [], []
+    Ad, Bd = held_input_flow(*oscillator_system(M, C, D), TS)
+    s, xs, fs = np.array([0.2, 0.0]), [], []
     for _ in range(n):
-        f = K * (R - s[0, 0])
-        xs.append(s[0, 0])
+        f = K * (R - s[0])
+        xs.append(s[0])
         fs.append(f)
         s = Ad @ s + Bd * f
     return np.array(xs), np.array(fs)

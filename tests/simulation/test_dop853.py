@@ -24,6 +24,7 @@ from acausal.models import FourBar
 from acausal.models.bouncing_ball import BouncingBall
 from acausal.models.pendulums import PendulumChain
 from acausal.simulation import Controller, Samples
+from forced_oscillator import forced_oscillator
 from interrupt import InterruptAfter
 
 simulate_module = importlib.import_module("acausal.simulation.simulate")
@@ -94,18 +95,6 @@ def test_double_pendulum_equals_scipy_dop853_by_hand(double, codegen):
     # with the nominals, not the same steps as without them
     plain = double.simulate(3.0, t=grid, x0=start, solver="dop853", codegen=codegen)
     assert np.max(np.abs(np.array([plain[n] for n in names]) - ref.y)) > 1e-9
-
-
-def forced_oscillator():
-    """wall | spring (c = 8) || damper (d) | mass (0.5 kg) pushed by the input F [N]."""
-    m = acausal.Model("forced")
-    m.wall, m.spring, m.mass = Fixed(), Spring(c=8.0, s_rel0=0.0), Mass(m=0.5)
-    m.force, m.F = Force(), acausal.Input(unit="N")
-    m.connect(m.wall.flange, m.spring.flange_a)
-    m.connect(m.spring.flange_b, m.mass.flange_a)
-    m.connect(m.force.flange, m.mass.flange_b)
-    m.connect(m.F.y, m.force.f)
-    return m
 
 
 @pytest.mark.parametrize("codegen", CODEGEN)

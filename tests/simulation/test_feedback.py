@@ -14,6 +14,7 @@ from acausal.components.translational import Force, Mass
 from acausal.errors import SimulationError
 from acausal.simulation import Controller
 from interrupt import InterruptAfter
+from lti import held_input_flow
 
 simulate_module = importlib.import_module("acausal.simulation.simulate")
 
@@ -73,17 +74,12 @@ def test_a_controller_that_rejects_symbols_needs_a_period(compiled):
 def sampled_loop(period, t, x0):
     """The exact discretization: x(t_k + τ) = e^{Aτ} x_k + ∫_0^τ e^{Aσ} dσ B u_k, u_k the PD
     of x_k held over [t_k, t_k + period)."""
-    def flow(tau):
-        M = np.zeros((3, 3))
-        M[:2, :2], M[:2, 2] = A, B
-        E = expm(M * tau)
-        return E[:2, :2], E[:2, 2]
     out, x, tk = [], np.asarray(x0, dtype=float), 0.0
     for ti in t:
         while ti >= tk + period - 1e-12:
-            Phi, Gam = flow(period)
+            Phi, Gam = held_input_flow(A, B, period)
             x, tk = Phi @ x + Gam * pd(*x), tk + period
-        Phi, Gam = flow(ti - tk)
+        Phi, Gam = held_input_flow(A, B, ti - tk)
         out.append(Phi @ x + Gam * pd(*x))
     return np.array(out)
 

@@ -8,7 +8,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import acausal
-from acausal.components.translational import Fixed, Force, Mass, Spring
+from forced_oscillator import forced_oscillator
 
 MASS, STIFF = 0.5, 8.0
 W = np.sqrt(STIFF / MASS)      # 4 rad/s
@@ -18,17 +18,7 @@ GRID = np.linspace(0.0, T_END, 301)
 
 @pytest.fixture(scope="module")
 def compiled():
-    m = acausal.Model("forced")
-    m.wall = Fixed()
-    m.spring = Spring(c=STIFF)
-    m.mass = Mass(m=MASS)
-    m.force = Force()
-    m.F = acausal.Input(start=0.25, unit="N", description="force on the mass")
-    m.connect(m.wall.flange, m.spring.flange_a)
-    m.connect(m.spring.flange_b, m.mass.flange_a)
-    m.connect(m.force.flange, m.mass.flange_b)
-    m.connect(m.F.y, m.force.f)
-    return acausal.compile(m)
+    return acausal.compile(forced_oscillator(MASS, STIFF, F_start=0.25))
 
 
 def step_response(F0, t):

@@ -3,49 +3,29 @@
 and the closed form of a bouncing ball."""
 import numpy as np
 import pytest
-from scipy.linalg import expm
 
 import acausal
-from acausal.components.translational import Damper, Fixed, Force, Mass, Spring
 from acausal.errors import SimulationError
 from acausal.simulation import Samples
+from forced_oscillator import forced_oscillator, oscillator_system
+from lti import held_input_flow
 
 MASS, STIFF, DAMP = 0.5, 8.0, 0.3
 DT = 0.05
 
 
-def forced_oscillator():
-    m = acausal.Model("forced")
-    m.wall = Fixed()
-    m.spring = Spring(c=STIFF)
-    m.damper = Damper(d=DAMP)
-    m.mass = Mass(m=MASS)
-    m.force = Force()
-    m.F = acausal.Input(start=0.0, unit="N")
-    m.connect(m.wall.flange, m.spring.flange_a)
-    m.connect(m.wall.flange, m.damper.flange_a)
-    m.connect(m.spring.flange_b, m.mass.flange_a)
-    m.connect(m.damper.flange_b, m.mass.flange_a)
-    m.connect(m.force.flange, m.mass.flange_b)
-    m.connect(m.F.y, m.force.f)
-    return m
-
-
 @pytest.fixture(scope="module")
 def compiled():
-    return acausal.compile(forced_oscillator())
+    return acausal.compile(forced_oscillator(MASS, STIFF, DAMP))
 
 
 def exact_steps(x0, forces, dt, m=MASS):
     """States [s, v] after each held force: x_{k+1} = e^{A dt} x_k + ∫ e^{A τ} dτ B F_k (the
     augmented matrix exponential), the spring unstretched at s = 0."""
-    A = np.array([[0.0, 1.0], [-STIFF / m, -DAMP / m]])
-    M = np.zeros((3, 3))
-    M[:2, :2], M[:2, 2] = A, [0.0, 1.0 / m]
-    E = expm(M * dt)
+    Phi, Gam = held_input_flow(*oscillator_system(m, STIFF, DAMP), dt)
     x, out = np.asarray(x0, dtype=float), []
     for F in forces:
-        x = E[:2, :2] @ x + E[:2, 2] * F
+        x = Phi @ x + Gam * F
         out.append(x)
     return np.array(out)
 

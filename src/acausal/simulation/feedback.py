@@ -175,16 +175,12 @@ def _on_model(model, closed, res: Result, subs: dict) -> Result:
         else:
             f = closed.function("u", [subs[v.name]]).map(n)
             U[k] = np.array(f(res.t.reshape(1, -1), res._states, res._algebraics,
-                              res._inputs, _columns(res._params, n))).ravel()
+                              res._inputs, res._param_columns())).ravel()
     out = Result(model, res.t, res._states, res._algebraics, U, res._params)
     for attr in ("events", "terminated", "mobility", "solver", "partial"):
         if hasattr(res, attr):
             setattr(out, attr, getattr(res, attr))
     return out
-
-
-def _columns(P, n):
-    return P if P.shape[1] == n else np.tile(P[:, :1], (1, n))
 
 
 def _sampled(model, held, subs, sampled, grid, *, params, x0, guess, rtol, atol, progress,

@@ -88,12 +88,17 @@ class Result:
     def _recorded(self) -> np.ndarray:
         """The recorded expressions that are not states, on the grid (evaluated once)."""
         if self._values is None:
-            n, P = self.t.size, self._params
-            P = P if P.shape[1] == n else np.tile(P[:, :1], (1, n))
+            n = self.t.size
             V = self._model.recorded_function.map(n)(self.t.reshape(1, -1), self._states,
-                                                     self._algebraics, self._inputs, P)
+                                                     self._algebraics, self._inputs,
+                                                     self._param_columns())
             self._values = np.asarray(V.full(), dtype=float)
         return self._values
+
+    def _param_columns(self) -> np.ndarray:
+        """The parameters, a column per output time (a run without modes holds one)."""
+        P, n = self._params, self.t.size
+        return P if P.shape[1] == n else np.tile(P[:, :1], (1, n))
 
     def __getitem__(self, name: str) -> np.ndarray:
         try:

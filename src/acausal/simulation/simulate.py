@@ -128,10 +128,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     # folding costs a fair part of a short run: 0.06 s for a 3-D chain of 64 links)
     ode = alg = None
     if not codegen or model.has_loops or not model.x.numel():
-        values = ca.SX(p)
-        values[model.mode_params] = model.p[model.mode_params]
-        ode, alg = scaled(model, *ca.substitute([model.ode, model.alg], [model.u, model.p],
-                                                [u_expr, values]), scale)
+        ode, alg = scaled(model, *folded(model, p, u_expr), scale)
     if auto:
         solver = "idas" if has_alg else (
             "cvodes" if rho is not None and (model.has_events or is_stiff(rho, grid[0], grid[-1]))
@@ -161,8 +158,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         advance = step if solver != explicit.NAME else explicit_step(
             explicit.Dop853(model, dae, rtol, atol, max_step, opts, reached))
         restarts = progress and solver != explicit.NAME    # (DOP853 reports each step)
-        events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
-            e for s in signals for e in s.events if grid[0] < e < grid[-1]).union(
+        events = sorted(set(time_events).union(
             grid[1:-1:max(1, grid.size // PROGRESS_POINTS)] if restarts else ()))
         try:
             for a, b, pts in _segments(grid, events):
@@ -222,10 +218,13 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         Z.append(zf[:, :len(pts)])
         return xf[:, -1], (zf[:, -1] if has_alg else z)
 
+    # the declared time events and the inputs' jumps inside the grid: restarts, sorted
+    time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
+        e for s in signals for e in s.events if grid[0] < e < grid[-1]))
     interrupted = False          # Ctrl-C: the Result holds the output times reached
     if model.has_events:
         return _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
-                            signals, solver, mobility, progress)
+                            time_events, solver, mobility, progress)
     retry = plugin == "idas" and "suppress_algebraic" not in opts
     try:
         with quiet_stderr() if retry else nullcontext():
@@ -255,11 +254,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     return res
 
 
-def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts, signals,
-                 solver, mobility, progress) -> Result:
-    """simulate() of a model with state events or modes (``events``)."""
-    time_events = sorted(set(model.event_times(p, grid[0], grid[-1])).union(
-        e for s in signals for e in s.events if grid[0] < e < grid[-1]))
+def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
+                 time_events, solver, mobility, progress) -> Result:
+    """simulate() of a model with state events or modes (``events``), restarted at the
+    sorted ``time_events``."""
     run = EventSimulation(model, ode, alg, p, u_expr, scale, plugin, opts)
     bar = progress_bar(grid[-1] - grid[0], f"simulate {model.name}", progress)
     run.reached = time_reporter(bar, grid[0])
@@ -323,6 +321,18 @@ def integrator_problem(model, solver: str, ode, alg, params: ca.SX | None = None
     if model.z.numel():
         dae.update(z=model.z, alg=alg)
     return dae
+
+
+def folded(model, p: np.ndarray, u: ca.SX | None = None) -> tuple[ca.SX, ca.SX]:
+    """The equations (ode, alg) of ``model`` with the parameter values ``p`` folded in as
+    numbers, the discrete modes left symbols (the event engine's parameters, changed at
+    events), and the inputs replaced by the expressions ``u`` (None: they stay symbols):
+    the numeric right-hand side simulate()'s and the stepper's integrators see."""
+    values = ca.SX(p)
+    values[model.mode_params] = model.p[model.mode_params]
+    old, new = ([model.p], [values]) if u is None else ([model.u, model.p], [u, values])
+    ode, alg = ca.substitute([model.ode, model.alg], old, new)
+    return ode, alg
 
 
 def scaled(model, ode, alg, nominal):

@@ -35,7 +35,7 @@ from ..errors import SimulationError
 from .buffers import Buffered
 from .events import EventSimulation
 from .initialization import initial_state
-from .simulate import integrator_settings, scaled
+from .simulate import folded, integrator_settings, scaled
 
 SOLVERS = ("dopri", "collocation", "cvodes", "idas")
 MAX_SUBSTEPS = 2 ** 16      # a sample period split further than this: the model is stiff
@@ -54,12 +54,12 @@ _B4 = (5179 / 57600, 0.0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 
 
 def dopri_step(model, p: np.ndarray) -> ca.Function:
     """One Dormand–Prince 5(4) step of the ODE of ``model`` with the parameter values ``p``
-    folded in, as a CasADi Function (x, u, t, h, tol_abs, rtol) -> (x after the step h [s]
+    folded in (``simulate.folded``), as a CasADi Function (x, u, t, h, tol_abs, rtol) -> (x after the step h [s]
     from t with inputs u held, the estimated error over its tolerance atol_i + rtol·|x_i|,
     max over the states: ≤ 1 to accept)."""
     x, u, t = model.x, model.u, model.t
     h, tol_abs, rtol = ca.SX.sym("h"), ca.SX.sym("tol_abs", x.numel()), ca.SX.sym("rtol")
-    f = ca.Function("ode", [t, x, u], [ca.substitute(model.ode, model.p, ca.SX(ca.DM(p)))])
+    f = ca.Function("ode", [t, x, u], [folded(model, p)[0]])
     k = []
     for c, a in zip(_C, _A):
         xi = x
@@ -269,10 +269,8 @@ class Stepper:
         if model.has_events:
             # the parameters folded in once (the modes left symbols, the event engine's
             # parameters): each step substitutes only the held inputs
-            values = ca.SX(self.p)
-            values[model.mode_params] = model.p[model.mode_params]
-            ode, alg = ca.substitute([model.ode, model.alg], [model.p], [values])
-            self._integrator = (scaled(model, ode, alg, self.scale), integrator_settings(
+            equations = scaled(model, *folded(model, self.p), self.scale)
+            self._integrator = (equations, integrator_settings(
                 model, "idas" if self.has_alg else "cvodes", self.rtol, self.atol)[:2])
             self._over = self._events_over
             return

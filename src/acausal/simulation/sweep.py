@@ -123,12 +123,14 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
         model.locate(name)                   # VariableNameError naming it, before any run
     settings = dict(guess=guess, solver=solver, rtol=rtol, atol=atol, max_step=max_step,
                     nominal=nominal, options=options)
-    if _needs_loop(model, table, grid):
+    P, refused = _parameter_columns(model, table)
+    if _needs_loop(model, table, grid, P):
         values, failed, solvers = _simulate_loop(model, grid, table, variables, settings)
         method = "simulate"
     else:
         with _cluster(client, cluster, workers) as dask_client:
-            engine = _Engine(model, grid, table, settings, threads, chunk, dask_client)
+            engine = _Engine(model, grid, table, P, refused, settings, threads, chunk,
+                             dask_client)
             values, failed, solvers = engine.run(variables)
         method = "map"
     return SweepResult(grid, _dataset(grid, table, variables, values, failed, solvers), table,
@@ -207,36 +209,47 @@ def _same(a, b) -> bool:
         return a is b
 
 
-def _needs_loop(model, table, grid) -> bool:
-    """Whether the runs need simulate() one by one (see ``sweep``)."""
+def _parameter_columns(model, table) -> tuple[np.ndarray, dict[int, str]]:
+    """The parameters of every run of ``table`` (a column each, ``param_names`` order) and
+    the runs whose values a parameter refuses (index → message; the value left at its
+    default: that run fails). Names that are no parameter of the model are left out
+    (the mapped integrator refuses them, a loop of simulate() fails those runs)."""
+    index = {name: i for i, name in enumerate(model.param_names)}
+    P = np.tile(model.param_vector()[:, None], (1, len(table)))
+    refused: dict[int, str] = {}
+    for k, run in enumerate(table):
+        for name, value in run["params"].items():
+            if name in index and name not in model.fixed_params:
+                try:
+                    P[index[name], k] = model.params[index[name]].check(value)
+                except AcausalError as e:
+                    refused.setdefault(k, str(e))
+    return P, refused
+
+
+def _needs_loop(model, table, grid, P) -> bool:
+    """Whether the runs need simulate() one by one (see ``sweep``); P: their parameters."""
     if model.has_events or model.has_loops or not model.x.numel():
         return True
     for (kind, name), values in _varied(table).items():
         if kind == "inputs" and any(callable(v) or isinstance(v, (Samples, tuple))
                                     for v in values):
             return True
-    if _time_events(model, table, grid):
+    if _time_events(model, P, grid):
         return True
     run = table[0]["inputs"]
     return any(input_signal(v.name, run.get(v.name, v.start), model.t, grid).events
                for v in model.inputs)
 
 
-def _time_events(model, table, grid) -> bool:
-    """Whether a run has a declared time event (a Step, a sampled block) inside the grid,
-    at its parameters (values a parameter refuses left at the default: that run fails)."""
+def _time_events(model, P, grid) -> bool:
+    """Whether a run (a column of the parameters P) has a declared time event (a Step, a
+    sampled block) inside the grid."""
     if not model.events.numel_out(0):
         return False
-    index = {name: i for i, name in enumerate(model.param_names)}
-    P = np.tile(model.param_vector()[:, None], (1, len(table)))
-    for k, run in enumerate(table):
-        for name, value in run["params"].items():
-            if name in index and isinstance(value, (int, float, np.number)):
-                P[index[name], k] = value
-    times, periods = (np.array(v, dtype=float).reshape(-1, len(table))
-                      for v in model.events.map(len(table))(P))
-    return any(event_times(times[:, k], periods[:, k], grid[0], grid[-1])
-               for k in range(len(table)))
+    n = P.shape[1]
+    times, periods = (np.array(v, dtype=float).reshape(-1, n) for v in model.events.map(n)(P))
+    return any(event_times(times[:, k], periods[:, k], grid[0], grid[-1]) for k in range(n))
 
 
 # ---- the mapped integrator ----------------------------------------------------------------
@@ -244,11 +257,11 @@ class _Engine:
     """The runs of a sweep through one integrator with symbolic parameters
     q = [model parameters p; nominals; varied inputs], mapped over chunks of runs."""
 
-    def __init__(self, model, grid, table, settings, threads, chunk, client):
+    def __init__(self, model, grid, table, P, refused, settings, threads, chunk, client):
         self.model, self.grid, self.table, self.settings = model, grid, table, settings
         self.threads = threads or os.cpu_count() or 1
         self.chunk, self.client = chunk, client
-        self.failed: dict[int, str] = {}
+        self.P, self.failed = P, dict(refused)     # (``_parameter_columns``)
         self.solvers = np.array([""] * len(table), dtype=object)     # the solver of each run
         self._inputs(table)
         self._starts(table)
@@ -296,21 +309,17 @@ class _Engine:
         self.nominal = ca.SX.sym("nominal", model.x.numel() + model.z.numel())
 
     def _starts(self, table):
-        """Parameters P, nominals N and consistent start values W0 of every run (a column
-        each), or the run's failure: parameters checked value by value; the start values
-        and nominals of runs that need no projection (no x0, guess, initial equations,
-        algebraic variables or loops) by one mapped call each, the others run by run."""
+        """Nominals N and consistent start values W0 of every run (a column each), or the
+        run's failure: a name that is no parameter is an error for all runs; the start
+        values and nominals of runs that need no projection (no x0, guess, initial
+        equations, algebraic variables or loops) by one mapped call each, the others run
+        by run."""
         model, s, t0, n = self.model, self.settings, self.grid[0], len(table)
-        index = {name: i for i, name in enumerate(model.param_names)}
-        self.P = np.tile(model.param_vector()[:, None], (1, n))
-        for k, run in enumerate(table):
-            for name, value in run["params"].items():
-                if name not in index or name in model.fixed_params:
+        known = set(model.param_names) - set(model.fixed_params)
+        for run in table:
+            for name in run["params"]:
+                if name not in known:
                     model.param_vector({name: 0.0})       # the error naming it, for all runs
-                try:
-                    self.P[index[name], k] = model.params[index[name]].check(value)
-                except AcausalError as e:
-                    self.failed.setdefault(k, str(e))
         ok = np.array([k for k in range(n) if k not in self.failed], dtype=int)
         self.N = np.ones((model.x.numel() + model.z.numel(), n))
         self.W0 = np.full(self.N.shape, np.nan)
