@@ -18,6 +18,10 @@ Legendre points they hold at the collocation points only. Multiple shooting need
 integrator that solves DAEs ('collocation', the default for DAEs, or 'idas' for consistent
 index-1 models). Both also impose Φ = Φ̇ = 0 on the initial state: fix only independent
 coordinates in ``ocp.initial`` (e.g. the crank angle), as for ``simulate(x0=...)``.
+
+The model's initial equations (``PhysicsBuilder.initial``: a steady start, an
+InitializeFlange) hold at the first node, next to the values ``ocp.initial`` fixes (which
+must not contradict them), as at the start of a simulation.
 """
 from __future__ import annotations
 
@@ -89,9 +93,11 @@ class Transcription:
         if view.rows_z:             # index-1 algebraic equations at every node
             alg = f.map(N + 1)(nodes.t, nodes.X, nodes.Z, U, nodes.P)[1]
             nlp.equal(alg[view.rows_z, :])
+        start = (nodes.t[0], nodes.X[:, 0], nodes.Z[:, 0], U[:, 0], nodes.P)
         if view.rows_x:             # the loops' Φ = 0, Φ̇ = 0 at the start
-            alg = f(nodes.t[0], nodes.X[:, 0], nodes.Z[:, 0], U[:, 0], nodes.P)[1]
-            nlp.equal(alg[view.rows_x])
+            nlp.equal(f(*start)[1][view.rows_x])
+        if c.initial_equations.numel():     # the model's initial equations at the start
+            nlp.equal(view.function([c.initial_equations], "initial")(*start))
         return Q
 
     def intervals(self, nlp: NLP, nodes: Nodes, g: ca.Function | None):
