@@ -276,6 +276,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     def final(exprs: ca.SX) -> ca.SX:
         """Expressions of the motion as recorded: in (t, x, z, u, p)."""
         exprs = network.substitute(resolve([exprs]))[0]
+        resolve.check([exprs])
         return ca.substitute([ca.substitute(exprs, cut, cut_values)], sub_from, sub_to)[0]
 
     def recorder():

@@ -60,7 +60,7 @@ import casadi as ca
 from ..core.ports import Domain, PhysicalPort
 from .charts import FreeFrame, free_root
 from .relations import pose_rate, relax_spatial
-from .symbolic import combine, der_with
+from .symbolic import Row, combine, der_with, stack, sx
 
 
 class InternalNode(PhysicalPort):
@@ -157,14 +157,13 @@ class Atoms:
         self.pos.append(pos); self.vel.append(vel); self.acc.append(acc)
         return len(self.pos) - 1
 
-    def block(self, pos: ca.SX, vel: ca.SX, acc: ca.SX) -> list[tuple]:
-        """Atoms for the rows of stacked vectors: (pos, vel, acc, atom index) of each row."""
-        first = len(self.pos)
-        self.blocks.append((range(first, first + pos.numel()), (pos, vel, acc)))
-        rows = [ca.vertsplit(x) for x in (pos, vel, acc)]
-        for x, out in zip(rows, (self.pos, self.vel, self.acc)):
-            out.extend(x)
-        return [(e, ed, edd, first + i) for i, (e, ed, edd) in enumerate(zip(*rows))]
+    def block(self, pos: ca.SX, vel: ca.SX, acc: ca.SX) -> range:
+        """Atoms for the rows of stacked vectors (their motion as ``Row``s); their indices."""
+        first, size = len(self.pos), pos.numel()
+        self.blocks.append((range(first, first + size), (pos, vel, acc)))
+        for x, out in zip((pos, vel, acc), (self.pos, self.vel, self.acc)):
+            out.extend(Row(x, i) for i in range(size))
+        return range(first, first + size)
 
     def constant(self, b) -> dict:
         """Linear form of a relation's rhs b: nothing for 0, an atom otherwise."""
@@ -184,7 +183,7 @@ class Atoms:
         if self.vel[k] is None:
             self.vel[k] = der(self.pos[k])
             self.acc[k] = der(self.vel[k])
-        return self.pos[k], self.vel[k], self.acc[k]
+        return sx(self.pos[k]), sx(self.vel[k]), sx(self.acc[k])
 
     def materialize(self, der) -> tuple[list[int], tuple[ca.SX, ca.SX, ca.SX]]:
         """Stacked position, velocity and acceleration of all atoms, the atoms outside
@@ -223,13 +222,16 @@ def _forms_to_matrix(forms: list[dict], column: list[int]):
 
 @dataclass(frozen=True)
 class FiredRelation:
-    """A relation that determined a node: its relaxation ε (and ε̇, ε̈), whose conjugate
-    generalized force is the relation's reaction."""
+    """A relation that determined a node: its relaxation ε (and ε̇, ε̈; SX, or ``Row``s of
+    a block of scalar ones), whose conjugate generalized force is the relation's reaction."""
     relation: object
-    eps: ca.SX
-    epsd: ca.SX
-    epsdd: ca.SX
-    block: tuple | None = None     # (stacked ε, ε̇, ε̈ of its block, row) if made in a block
+    eps: ca.SX | Row
+    epsd: ca.SX | Row
+    epsdd: ca.SX | Row
+
+    @property
+    def dim(self) -> int:
+        return 1 if isinstance(self.eps, Row) else self.eps.numel()
 
 
 @dataclass(frozen=True)
@@ -259,30 +261,9 @@ class Tree:
     one_d: tuple = ()            # stacked (pos, vel, acc) of the 1-D nodes, by Node.row
 
     def relaxations(self) -> tuple[ca.SX, ca.SX, ca.SX]:
-        """ε, ε̇ and ε̈ of the fired relations, stacked in their order (consecutive rows of
-        one block taken as one slice of it)."""
-        pieces = [[], [], []]
-        run = None                                     # [block vectors, first row, end]
-
-        def close():
-            if run is not None:
-                for k in range(3):
-                    pieces[k].append(run[0][k][run[1]:run[2], :])
-
-        for f in self.fired:
-            if f.block is not None and run is not None and f.block[0] is run[0] \
-                    and f.block[1] == run[2]:
-                run[2] += 1
-                continue
-            close()
-            run = None
-            if f.block is not None:
-                run = [f.block[0], f.block[1], f.block[1] + 1]
-            else:
-                for k, x in enumerate((f.eps, f.epsd, f.epsdd)):
-                    pieces[k].append(x)
-        close()
-        return tuple(ca.vertcat(*p) if p else ca.SX(0, 1) for p in pieces)
+        """ε, ε̇ and ε̈ of the fired relations, stacked in their order."""
+        return tuple(stack([getattr(f, k) for f in self.fired])
+                     for k in ("eps", "epsd", "epsdd"))
 
 
 def choose_tree(nodes: list[Node], relations: list, der_table: dict, state_names: dict,
@@ -394,7 +375,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
                       ca.SX.sym(f"epsdd{k}", dim))
         for a, b, c in zip(*(ca.vertsplit(x) for x in (e, ed, edd))):
             der_table[a.name()], der_table[b.name()], der_table[c.name()] = b, c, None
-        return e, ed, edd, None, None
+        return e, ed, edd, None
 
     def visit(r):
         unknown = [i for i, n in enumerate(r.nodes) if not known(n)]
@@ -409,20 +390,20 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
             return None
         j = unknown[0]
         node = r.nodes[j]
-        e, ed, edd, atom, block = relax(node.domain.dof if not r.linear else 1)
+        e, ed, edd, atom = relax(node.domain.dof if not r.linear else 1)
         if r.linear:
             node.form = r.solve(j, atoms, atom)
         else:
             (pos, vel, acc), extra = r.fire(j, values)
             if node.domain.dim == 1:
-                node.form = {atoms.add(pos + e, vel + ed, acc + edd): 1.0}
+                node.form = {atoms.add(pos + sx(e), vel + sx(ed), acc + sx(edd)): 1.0}
             elif node.domain.dof != node.domain.dim:          # a 3-D frame: a virtual twist
                 node.pos, node.vel, node.acc = relax_spatial(pos, vel, acc, e, ed, edd)
             else:
                 node.pos, node.vel, node.acc = pos + e, vel + ed, acc + edd
             if extra is not None:
                 nl_loops.append((r, extra, None))        # its flows: with the fired ones
-        fired.append(FiredRelation(r, e, ed, edd, block))
+        fired.append(FiredRelation(r, e, ed, edd))
         return node
 
     def propagate(start: list[Node]):
@@ -502,18 +483,19 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
 
 
 def _relaxation_block(k: int, size: int, der_table: dict, atoms: Atoms) -> list[tuple]:
-    """``size`` scalar relaxations (ε, ε̇, ε̈, atom index, (block vectors, row)) named
-    eps<k>_<i>, epsd<k>_<i>, epsdd<k>_<i>, their rates entered in ``der_table``, one block of
-    ``atoms``: symbols made in blocks cost a third of one by one (the first block as large as
-    the relations that may need one, any further one as large as the relaxations made so
-    far)."""
-    vectors = tuple(ca.SX.sym(f"{base}{k}", size) for base in ("eps", "epsd", "epsdd"))
-    trios = [(e, ed, edd, atom, (vectors, i))
-             for i, (e, ed, edd, atom) in enumerate(atoms.block(*vectors))]
-    for i, (e, ed, edd, _, _) in enumerate(trios):
+    """``size`` scalar relaxations (ε, ε̇, ε̈ as ``Row``s of three vectors, atom index)
+    named eps<k>_<i>, epsd<k>_<i>, epsdd<k>_<i>, their rates entered in ``der_table``, one
+    block of ``atoms``: symbols made in blocks cost a third of one by one (the first block as
+    large as the relations that may need one, any further one as large as the relaxations
+    made so far)."""
+    e, ed, edd = (ca.SX.sym(f"{base}{k}", size) for base in ("eps", "epsd", "epsdd"))
+    out = []
+    for i, atom in enumerate(atoms.block(e, ed, edd)):
+        rates = Row(ed, i), Row(edd, i)
         der_table[f"eps{k}_{i}"], der_table[f"epsd{k}_{i}"], der_table[f"epsdd{k}_{i}"] = \
-            ed, edd, None
-    return trios
+            rates[0], rates[1], None
+        out.append((Row(e, i), rates[0], rates[1], atom))
+    return out
 
 
 def _free_frame(n: Node, state_names: dict):

@@ -34,7 +34,7 @@ def port_flows(ws, tree, explicit, lam_tree, lam_loop):
             continue
         for p, v in block.flows(lam):
             add(p, v)
-    for f, lam in zip(tree.fired, _split(lam_tree, [f.eps.numel() for f in tree.fired])):
+    for f, lam in zip(tree.fired, _split(lam_tree, [f.dim for f in tree.fired])):
         r = f.relation
         for p, v in (r.flows(lam) if r.linear else r.flows_fired(lam, extra.get(id(r)))):
             add(p, v)

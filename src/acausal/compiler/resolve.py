@@ -31,9 +31,9 @@ class Resolver:
         self._failed_syms = _vc(*[sym for sym, _ in failed]) if failed else None
 
     def __call__(self, pieces: list) -> list:
-        pieces = ca.substitute(pieces, self.frm, self.to)
-        self.check(pieces)
-        return pieces
+        """``pieces`` with the placeholders resolved (``check`` the expressions they end in
+        for the rates that could not be derived)."""
+        return ca.substitute(pieces, self.frm, self.to)
 
     def check(self, pieces):
         """Raise the error of a placeholder whose rate could not be derived, if any piece

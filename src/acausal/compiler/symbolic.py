@@ -2,6 +2,8 @@
 closed-form solve of small linear systems."""
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import casadi as ca
 
 from ..errors import StructureError
@@ -11,9 +13,41 @@ class UnknownDerivative(StructureError):
     """An expression was differentiated in time through a symbol whose rate is unknown."""
 
 
+class Row(NamedTuple):
+    """Row ``row`` of the column ``vector``: a scalar of a block of symbols made at once,
+    taken out of it only where it is used alone (``sx``) and in slices where rows of one
+    block are stacked (``stack``): each scalar SX held in Python costs time and ~300 B."""
+    vector: ca.SX
+    row: int
+
+
 def sx(v) -> ca.SX:
     """``v`` as SX, without the cost of converting what already is one."""
-    return v if isinstance(v, ca.SX) else ca.SX(v)
+    if isinstance(v, ca.SX):
+        return v
+    return v.vector[v.row] if isinstance(v, Row) else ca.SX(v)
+
+
+def stack(items: list) -> ca.SX:
+    """``items`` (SX, numbers or Rows) stacked in a column; consecutive rows of one vector
+    are taken as one slice of it."""
+    pieces, run = [], None                 # run: [vector, first row, end]
+    for x in items:
+        if isinstance(x, Row):
+            if run is not None and run[0] is x.vector and run[2] == x.row:
+                run[2] += 1
+                continue
+            if run is not None:
+                pieces.append(run[0][run[1]:run[2], :])
+            run = [x.vector, x.row, x.row + 1]
+            continue
+        if run is not None:
+            pieces.append(run[0][run[1]:run[2], :])
+            run = None
+        pieces.append(sx(x))
+    if run is not None:
+        pieces.append(run[0][run[1]:run[2], :])
+    return ca.vertcat(*pieces) if pieces else ca.SX(0, 1)
 
 
 def combine(const, terms, div=1.0):
@@ -64,10 +98,10 @@ def der_with(ex, table: dict) -> ca.SX:
         if isinstance(d, (int, float)) and d == 0:
             continue
         args.append(s)
-        rates.append(sx(d))
+        rates.append(d)
     if not args:
         return ca.SX.zeros(ex.shape)
-    return ca.jtimes(ex, ca.vertcat(*args), ca.vertcat(*rates))
+    return ca.jtimes(ex, ca.vertcat(*args), stack(rates))
 
 
 def substitute_all(exprs: list, syms: list, values: list, what: str = "signals") -> list:
