@@ -3,11 +3,11 @@ damper in its bearing, a spring, a load inertia) against its ODE written by hand
 by scipy (always), and against MSL's published reference result (when the collection is at
 hand).
 
-The reference result is not exact: it was computed with DASSL at tolerance 1e-6 (the
-collection's default for models without a tolerance annotation) and carries that solver's
-global error, 2.1e-4 rad/s in inertia3.w (peak 0.51 rad/s). A BDF solver at the same
-tolerance (IDAS) makes the same error, signal by signal, and lands 7 times closer to the
-reference than the exact solution does."""
+The reference result is not exact: the collection computes models without a tolerance
+annotation by DASSL at tolerance 1e-6, and this one carries such a solver's global error,
+2.1e-4 rad/s in inertia3.w (peak 0.51 rad/s). A BDF solver at the same tolerance (IDAS)
+makes the same error, signal by signal, and lands 7 times closer to the reference than the
+exact solution does."""
 import numpy as np
 from scipy.integrate import solve_ivp
 
