@@ -147,11 +147,13 @@ class Atoms:
     velocity and acceleration expression. Relaxations made in blocks (``block``) keep their
     stacked vectors, so that ``materialize`` joins whole blocks instead of their scalars."""
 
-    def __init__(self):
+    def __init__(self, der_table: dict):
         self.pos, self.vel, self.acc = [], [], []
         self.rhs = []                  # indices of atoms whose rates are derived in bulk
+        self.fixed = []                # indices of atoms that are parameters (rates 0)
         self.blocks = []               # (atom indices, (pos, vel, acc) stacked vectors)
         self._const = {}
+        self._der_table = der_table
 
     def add(self, pos, vel, acc) -> int:
         self.pos.append(pos); self.vel.append(vel); self.acc.append(acc)
@@ -174,9 +176,12 @@ class Atoms:
             if key not in self._const:
                 self._const[key] = self.add(ca.SX(b), ca.SX(0), ca.SX(0))
             return {self._const[key]: 1.0}
-        k = self.add(b, None, None)
-        self.rhs.append(k)
-        return {k: 1.0}
+        key = ("expr", id(b))          # one atom for an expression several relations share
+        if key not in self._const:     # (a Mass's length at both flanges)
+            self._const[key] = k = self.add(b, None, None)
+            fixed = b.is_symbolic() and b.name() not in self._der_table
+            (self.fixed if fixed else self.rhs).append(k)
+        return {self._const[key]: 1.0}
 
     def motion(self, k: int, der) -> tuple:
         """(pos, vel, acc) of atom k, deriving the rates of a rhs atom now if needed."""
@@ -189,12 +194,17 @@ class Atoms:
         """Stacked position, velocity and acceleration of all atoms, the atoms outside
         blocks first, then the blocks whole; and the row of each atom in them. The rhs atoms
         whose rates are not known yet become one more block, their rates by one
-        total-derivative call on all of them."""
+        total-derivative call on all of them, and the parameters one more, rates 0."""
         pending = [k for k in self.rhs if self.vel[k] is None]
         if pending:
             b = ca.vertcat(*[self.pos[k] for k in pending])
             bd = der(b)
             self.blocks.append((pending, (b, bd, der(bd))))
+        fixed = [k for k in self.fixed if self.vel[k] is None]
+        if fixed:
+            zeros = ca.SX.zeros(len(fixed))
+            self.blocks.append((fixed, (ca.vertcat(*[self.pos[k] for k in fixed]), zeros,
+                                        zeros)))
         in_blocks = {k for indices, _ in self.blocks for k in indices}
         loose = [k for k in range(len(self.pos)) if k not in in_blocks]
         order = loose + [k for indices, _ in self.blocks for k in indices]
@@ -339,7 +349,7 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
         for n in r.nodes:
             by_node[n.index].append(r)
     used = set()
-    atoms = Atoms()
+    atoms = Atoms(der_table)
     der = lambda ex: der_with(ex, der_table)                       # noqa: E731
     q, qd, qdd, q_names, qd_names = [], [], [], [], []
     fired, lin_loops, nl_loops = [], [], []       # nl_loops: (relation, Φ rows, flows)
