@@ -14,7 +14,8 @@ are located here, over CasADi's integrators, for ODEs (CVODES) and DAEs (IDAS) a
    integrator is seldom restarted between events (a restart costs accuracy);
 2. a sign change between two checks is located by re-integrating from the earlier check
    (one integrator on the normalized time τ ∈ [0, 1], the duration a parameter, built once),
-   secant steps safeguarded by bisection, until the bracket is shorter than
+   secant steps (Illinois: an end kept twice in a row has its value halved, so that both
+   ends close in) safeguarded by bisection, until the bracket is shorter than
    ``EVENT_TOL``·max(1, |t|); every indicator that changed sign over that last bracket crossed
    at the event (simultaneous events), the bracket's end is the event's left limit;
 3. at the event instant: the reinits of the crossed indicators (in their direction, their
@@ -90,9 +91,14 @@ def instants(times) -> list[float]:
 
 def null_space(J: np.ndarray) -> np.ndarray:
     """The rows spanning the null space of J (none at full column rank); singular values
-    below SINGULAR of the largest (at least 1) count as 0."""
+    below SINGULAR of the largest (at least 1) count as 0. The singular values alone tell a
+    full column rank (the common case, at every event), at a fraction of the full SVD."""
+    def rank(sv):
+        return int(np.sum(sv > SINGULAR * max(sv.max(initial=0.0), 1.0)))
+    if rank(np.linalg.svd(J, compute_uv=False)) == J.shape[1]:
+        return np.zeros((0, J.shape[1]))
     sv, vt = np.linalg.svd(J)[1:]
-    return vt[int(np.sum(sv > SINGULAR * max(sv.max(initial=0.0), 1.0))):]
+    return vt[rank(sv):]
 
 
 def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
@@ -406,22 +412,29 @@ class EventSimulation(ModeIteration):
             hi_g = self.indicators(t1, hi_x, hi_z, d)
         tol = EVENT_TOL * max(1.0, abs(t1))
         widths = [hi_t - lo_t]
+        weight = {"lo": 1.0, "hi": 1.0}    # Illinois: the end kept twice counts half as much
+        moved = None
         while hi_t - lo_t > tol:
             crossed = side(hi_g, sides) != sides
-            slow = len(widths) > 2 and widths[-1] > 0.5 * widths[-3]
+            slow = len(widths) > 3 and widths[-1] > 0.5 * widths[-4]
             if slow:
                 t = 0.5 * (lo_t + hi_t)
             else:                          # the earliest secant estimate among the crossed
-                a, b = lo_g[crossed], hi_g[crossed]
+                a, b = weight["lo"] * lo_g[crossed], weight["hi"] * hi_g[crossed]
                 frac = np.min(np.clip(a / np.where(a == b, 1.0, a - b), 0.0, 1.0))
                 t = lo_t + frac * (hi_t - lo_t)
             t = min(max(t, lo_t + 0.25 * tol), hi_t - 0.25 * tol)
             x, z = self.state_at(t0, x0, z0, d, t)
             g = self.indicators(t, x, z, d)
-            if np.any(side(g, sides) != sides):
+            end = "hi" if np.any(side(g, sides) != sides) else "lo"
+            if end == "hi":
                 hi_t, hi_x, hi_z, hi_g = t, x, z, g
             else:
                 lo_t, lo_g = t, g
+            kept = "lo" if end == "hi" else "hi"
+            weight[end] = 1.0
+            weight[kept] *= 0.5 if moved == end else 1.0
+            moved = end
             widths.append(hi_t - lo_t)
         return hi_t, hi_x, hi_z, hi_g
 
