@@ -52,12 +52,15 @@ Result (its time appears twice).
 from __future__ import annotations
 
 from collections import deque
+from contextlib import nullcontext
 
 import casadi as ca
 import numpy as np
 
+from ..compiler.compiled import ARGS
 from ..errors import SimulationError
 from ..numerics import event_times, just_before, short_error
+from . import buffers
 from .diagnosis import quiet_stderr
 from .initialization import model_equations
 from .result import Event, Termination
@@ -291,7 +294,7 @@ class EventSimulation(ModeIteration):
         self.dae, self.step = self._integrators(alg)
 
     def indicators(self, t, x, z, d) -> np.ndarray:
-        return np.array(self.g(*self.point(t, x, z, d)), dtype=float).ravel()
+        return buffers.call(self.g, dict(zip(ARGS, self.point(t, x, z, d))), ["g"])[0].ravel()
 
     def indicators_along(self, times, X, Z, d) -> np.ndarray:
         """The indicators at each of ``times`` (columns of X, Z), in one call."""
@@ -300,7 +303,8 @@ class EventSimulation(ModeIteration):
             self._maps["g", n] = self.g.map(n)
         T = np.asarray(times, dtype=float).reshape(1, -1)
         U = np.array(self.u_map(n)(T), dtype=float)
-        return self._maps["g", n](T, X, Z, U, self.params(d)).full()
+        args = dict(zip(ARGS, (T, X, Z, U, np.tile(self.params(d)[:, None], (1, n)))))
+        return buffers.call(self._maps["g", n], args, ["g"])[0]
 
     def u_map(self, n: int) -> ca.Function:
         if ("u", n) not in self._maps:
@@ -319,18 +323,19 @@ class EventSimulation(ModeIteration):
         try:
             F = ca.integrator("segment", self.plugin, self.dae, float(t0), list(times),
                               self._start_options(t0, x, z, d, times[-1]))
-            sol = F(x0=x / self.Nx, z0=z / self.Nz, p=d)
+            xf, zf = buffers.call(F, {"x0": x / self.Nx, "z0": z / self.Nz, "p": d},
+                                  ["xf", "zf"])
         except RuntimeError as e:
             raise SimulationError(f"integration of '{self.model.name}' failed after "
                                   f"t = {t0:g} s with the modes "
                                   f"{self._modes(d)}: {short_error(e)}"
                                   f"{self._undetermined(t0, x, z, d)}") from None
-        X = np.array(sol["xf"], dtype=float) * self.Nx[:, None]
+        X = xf * self.Nx[:, None]
         if not self.has_alg:
             return X, np.zeros((0, len(times)))
         # out of the error test, z at an output time is IDAS's interpolant, far off where
         # the states stand still (a stuck friction element: long steps); solved at x instead
-        Z = np.array(sol["zf"], dtype=float) * self.Nz[:, None]
+        Z = zf * self.Nz[:, None]
         return X, self.consistent_along(times, X, Z, d)
 
     def consistent_along(self, times, X, Z, d) -> np.ndarray:
@@ -382,19 +387,16 @@ class EventSimulation(ModeIteration):
         if self.loops or self.static:
             X, Z = self.integrate(t0, [t], x, z, d)
             return X[:, 0], Z[:, 0]
-        if not self.has_alg:
-            sol = self.step(x0=x / self.Nx, p=np.concatenate([[t0, t - t0], d]))
-        else:
-            try:
-                with quiet_stderr():         # IDAS prints the failed search's reason
-                    sol = self.step(x0=x / self.Nx, z0=z / self.Nz,
-                                    p=np.concatenate([[t0, t - t0], d]))
-            except RuntimeError:
-                X, Z = self.integrate(t0, [t], x, z, d)
-                return X[:, 0], Z[:, 0]
-        xf = np.array(sol["xf"], dtype=float).ravel() * self.Nx
-        zf = np.array(sol["zf"], dtype=float).ravel() * self.Nz if self.has_alg else z
-        return xf, zf
+        args = {"x0": x / self.Nx, "z0": z / self.Nz, "p": np.concatenate([[t0, t - t0], d])}
+        try:
+            with quiet_stderr() if self.has_alg else nullcontext():
+                xf, zf = buffers.call(self.step, args, ["xf", "zf"])  # (IDAS prints why its
+        except RuntimeError:                                            # initial search failed)
+            if not self.has_alg:
+                raise
+            X, Z = self.integrate(t0, [t], x, z, d)
+            return X[:, 0], Z[:, 0]
+        return xf[:, 0] * self.Nx, zf[:, 0] * self.Nz if self.has_alg else z
 
     # ---- events --------------------------------------------------------------------------
     def locate(self, t0, x0, z0, d, sides, t1, x1, z1):
