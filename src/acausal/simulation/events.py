@@ -132,6 +132,9 @@ class ModeIteration:
         if self.has_alg:
             z, alg_full = model.z, model.alg
             self.newton = model.function("newton", [alg_full, ca.jacobian(alg_full, z)])
+            self.residual = model.function("residual", [alg_full], ["r"])
+            # the rows some algebraic variable may enter (a superset of those it enters)
+            self.z_rows = np.diff(self.newton.sparsity_out(1).T.colind()) > 0
 
     # ---- evaluation at a point -----------------------------------------------------------
     def params(self, d) -> np.ndarray:
@@ -341,17 +344,25 @@ class EventSimulation(ModeIteration):
     def consistent_along(self, times, X, Z, d) -> np.ndarray:
         """``consistent_z`` at each of ``times`` (columns of X, Z), all at once (one mapped
         Newton step per round; a row no algebraic variable enters left out, a singular
-        system by least squares)."""
+        system by least squares). Each round first checks the residuals alone (cheaper than
+        with the Jacobian): small on every row an algebraic variable may enter, converged."""
         n, nz = len(times), Z.shape[0]
         if ("newton", n) not in self._maps:
             F = self.newton.map(n)
             i, j = F.sparsity_out(1).get_triplet()                   # J: nz x (n·nz)
             self._maps["newton", n] = F, (np.array(j) // nz, np.array(i), np.array(j) % nz)
+            self._maps["residual", n] = self.residual.map(n)
         F, at = self._maps["newton", n]
         T = np.asarray(times, dtype=float).reshape(1, -1)
         U, P = np.array(self.u_map(n)(T), dtype=float), self.params(d)
+        Ps = np.tile(P[:, None], (1, n))
         Z = np.array(Z, dtype=float)
         for _ in range(50):
+            r = buffers.call(self._maps["residual", n], dict(zip(ARGS, (T, X, Z, U, Ps))),
+                             ["r"])[0]
+            scale = 1 + np.abs(Z).max(initial=0.0)
+            if np.max(np.abs(r[self.z_rows]), initial=0.0) <= 1e-12 * scale:
+                return Z
             r, Jv = F(T, X, Z, U, P)
             r = r.full()
             J = np.zeros((n, nz, nz))                                 # one per column
