@@ -257,12 +257,14 @@ class EventSimulation(ModeIteration):
         self.reached = lambda t: None         # called with the time integrated to
 
     def _integrators(self, alg):
-        """(the DAE with algebraic equations ``alg``, the integrator over a normalized
-        interval [t0, t0 + h] built on it once: what locating an event re-integrates)."""
-        model, d = self.model, self.d
-        dae = {"x": model.x, "t": model.t, "ode": self.ode, "p": d}
-        if self.has_alg:
-            dae.update(z=model.z, alg=alg)
+        """(the DAE with algebraic equations ``alg``, a Function (t, x, z, p, u) -> (ode,
+        alg, quad, zero) that every integrator between events is built on: its derivatives
+        built once, not per integrator; the integrator over a normalized interval
+        [t0, t0 + h] built on it once: what locating an event re-integrates)."""
+        model, d, none = self.model, self.d, ca.SX(0, 1)
+        dae = ca.Function("dae", [model.t, model.x, model.z, d, none],
+                          [self.ode, alg if self.has_alg else none, none, none],
+                          ca.dyn_in(), ca.dyn_out())
         if self.loops or self.static:
             return dae, None
         t0, h, tau = ca.SX.sym("t0"), ca.SX.sym("h"), ca.SX.sym("tau")
