@@ -417,14 +417,8 @@ class EventSimulation(ModeIteration):
         integration gave x1, z1): (t, x, z, indicators) at the bracket's end after it, the
         event's left limit."""
         lo_t, lo_g = t0, self.indicators(t0, x0, z0, d)
-        hi_t = t1
-        hi_x, hi_z = self.state_at(t0, x0, z0, d, t1)
+        hi_t, hi_x, hi_z = t1, x1, z1      # (the far end as the integration gave it)
         hi_g = self.indicators(t1, hi_x, hi_z, d)
-        if not np.any(side(hi_g, sides) != sides):
-            # the re-integration ends on the near side where the indicator is within the
-            # integrators' error of 0 at t1 (a crossing at an output time): bracket up to t1
-            hi_x, hi_z = x1, z1
-            hi_g = self.indicators(t1, hi_x, hi_z, d)
         tol = EVENT_TOL * max(1.0, abs(t1))
         widths = [hi_t - lo_t]
         weight = {"lo": 1.0, "hi": 1.0}    # Illinois: the end kept twice counts half as much
