@@ -132,7 +132,8 @@ class ModeIteration:
         if self.has_alg:
             z, alg_full = model.z, model.alg
             self.newton = model.function("newton", [alg_full, ca.jacobian(alg_full, z)])
-            self.residual = model.function("residual", [alg_full], ["r"])
+            self.alg_function = model.function("residual", [alg_full], ["r"])
+            self.residual = buffers.Caller(self.alg_function, ARGS, ["r"])
             # the rows some algebraic variable may enter (a superset of those it enters)
             self.z_rows = np.diff(self.newton.sparsity_out(1).T.colind()) > 0
 
@@ -144,7 +145,8 @@ class ModeIteration:
 
     def point(self, t, x, z, d):
         """The arguments (t, x, z, u, p) of the seam's Functions."""
-        return t, x, z, np.array(self.u(t), dtype=float).ravel(), self.params(d)
+        u = np.array(self.u(t), dtype=float).ravel() if self.model.u.numel() else np.zeros(0)
+        return t, x, z, u, self.params(d)
 
     def consistent(self, t, x, z, d, held: dict):
         """(x, z) consistent at t with modes d: in closed loops the speeds moved the least
@@ -164,12 +166,17 @@ class ModeIteration:
     def consistent_z(self, t, x, z, d) -> np.ndarray:
         """The algebraic variables solving alg = 0 at (t, x) with modes d (Newton from z;
         the rows no algebraic variable enters, a closed loop's Φ = 0 and Φ̇ = 0, are the
-        states' business)."""
+        states' business; the residuals checked alone first, as ``consistent_along``)."""
         if not self.has_alg:
             return z
         z = np.array(z, dtype=float)
         for _ in range(50):
-            r, J = self.newton(*self.point(t, x, z, d))
+            point = self.point(t, x, z, d)
+            r = self.residual(*point)[0].ravel()
+            if np.max(np.abs(r[self.z_rows]), initial=0.0) <= 1e-12 * (
+                    1 + np.abs(z).max(initial=0.0)):
+                return z
+            r, J = self.newton(*point)
             r, J = np.array(r, dtype=float).ravel(), np.array(J, dtype=float)
             rows = np.any(J != 0, axis=1)
             if np.max(np.abs(r[rows]), initial=0.0) <= 1e-12 * (1 + np.abs(z).max(initial=0.0)):
@@ -242,6 +249,7 @@ class EventSimulation(ModeIteration):
         self.dae, self.step = self.regular
         self._maps = {}       # Functions mapped over n points, by (kind, n)
         self.g = model.indicator_function
+        self.g_call = buffers.Caller(self.g, ARGS, ["g"])
         self.reinits = model.state_events.reinits
         self.owner = [v.component for v in model.state_events.indicators]
         self.names = [v.name for v in model.state_events.indicators]
@@ -274,7 +282,8 @@ class EventSimulation(ModeIteration):
         if self.has_alg:
             scaled.update(z=model.z, alg=ca.substitute(alg, *at))
         local = {k: v for k, v in self.opts.items() if k not in ("max_step_size", "calc_ic")}
-        return dae, ca.integrator("locate", self.plugin, scaled, 0.0, [1.0], local)
+        step = ca.integrator("locate", self.plugin, scaled, 0.0, [1.0], local)
+        return dae, buffers.Caller(step, ["x0", "z0", "p"], ["xf", "zf"])
 
     def _prepare(self, t, x, z, d):
         """The DAE of the stretch that starts at (t, x, z) with modes d: the model's, or,
@@ -299,22 +308,25 @@ class EventSimulation(ModeIteration):
         self.dae, self.step = self._integrators(alg)
 
     def indicators(self, t, x, z, d) -> np.ndarray:
-        return buffers.call(self.g, dict(zip(ARGS, self.point(t, x, z, d))), ["g"])[0].ravel()
+        return self.g_call(*self.point(t, x, z, d))[0].ravel()
 
     def indicators_along(self, times, X, Z, d) -> np.ndarray:
         """The indicators at each of ``times`` (columns of X, Z), in one call."""
         n = len(times)
         if ("g", n) not in self._maps:
-            self._maps["g", n] = self.g.map(n)
+            self._maps["g", n] = buffers.Caller(self.g.map(n), ARGS, ["g"])
         T = np.asarray(times, dtype=float).reshape(1, -1)
-        U = np.array(self.u_map(n)(T), dtype=float)
-        args = dict(zip(ARGS, (T, X, Z, U, np.tile(self.params(d)[:, None], (1, n)))))
-        return buffers.call(self._maps["g", n], args, ["g"])[0]
+        U = self.inputs_along(T)
+        return self._maps["g", n](T, X, Z, U, np.tile(self.params(d)[:, None], (1, n)))[0]
 
-    def u_map(self, n: int) -> ca.Function:
+    def inputs_along(self, T: np.ndarray) -> np.ndarray:
+        """The inputs at each of the times T (a row), one column each."""
+        n = T.shape[1]
+        if not self.model.u.numel():
+            return np.zeros((0, n))
         if ("u", n) not in self._maps:
             self._maps["u", n] = self.u.map(n)
-        return self._maps["u", n]
+        return np.array(self._maps["u", n](T), dtype=float)
 
     # ---- integration ---------------------------------------------------------------------
     def integrate(self, t0, times, x, z, d):
@@ -353,15 +365,14 @@ class EventSimulation(ModeIteration):
             F = self.newton.map(n)
             i, j = F.sparsity_out(1).get_triplet()                   # J: nz x (n·nz)
             self._maps["newton", n] = F, (np.array(j) // nz, np.array(i), np.array(j) % nz)
-            self._maps["residual", n] = self.residual.map(n)
+            self._maps["residual", n] = buffers.Caller(self.alg_function.map(n), ARGS, ["r"])
         F, at = self._maps["newton", n]
         T = np.asarray(times, dtype=float).reshape(1, -1)
-        U, P = np.array(self.u_map(n)(T), dtype=float), self.params(d)
+        U, P = self.inputs_along(T), self.params(d)
         Ps = np.tile(P[:, None], (1, n))
         Z = np.array(Z, dtype=float)
         for _ in range(50):
-            r = buffers.call(self._maps["residual", n], dict(zip(ARGS, (T, X, Z, U, Ps))),
-                             ["r"])[0]
+            r = self._maps["residual", n](T, X, Z, U, Ps)[0]
             scale = 1 + np.abs(Z).max(initial=0.0)
             if np.max(np.abs(r[self.z_rows]), initial=0.0) <= 1e-12 * scale:
                 return Z
@@ -400,11 +411,11 @@ class EventSimulation(ModeIteration):
         if self.loops or self.static:
             X, Z = self.integrate(t0, [t], x, z, d)
             return X[:, 0], Z[:, 0]
-        args = {"x0": x / self.Nx, "z0": z / self.Nz, "p": np.concatenate([[t0, t - t0], d])}
+        args = (x / self.Nx, z / self.Nz, np.concatenate([[t0, t - t0], d]))
         try:
-            with quiet_stderr() if self.has_alg else nullcontext():
-                xf, zf = buffers.call(self.step, args, ["xf", "zf"])  # (IDAS prints why its
-        except RuntimeError:                                            # initial search failed)
+            with quiet_stderr() if self.has_alg else nullcontext():   # (IDAS prints why its
+                xf, zf = self.step(*args)                             # initial search failed)
+        except RuntimeError:
             if not self.has_alg:
                 raise
             X, Z = self.integrate(t0, [t], x, z, d)
