@@ -23,44 +23,45 @@ class Caller:
     a few microseconds more than the evaluation, not tens)."""
 
     def __init__(self, f: ca.Function, inputs: list[str], outputs: list[str]):
-        self.name, self.buffer_call = f.name(), f.buffer()
-        buffer = self.buffer_call[0]
-        self.args = [np.zeros(f.nnz_in(name)) for name in inputs]
-        self.inputs = inputs
-        for name, a in zip(inputs, self.args):
-            buffer.set_arg(f.index_in(name), memoryview(a))
-        self.res = []
+        self.name, self.inputs = f.name(), inputs
+        self.shapes = []
         for name in outputs:
             sp = f.sparsity_out(name)
             assert sp.is_dense(), f"output '{name}' of {f.name()} is not dense"
-            out = np.zeros((sp.size2(), sp.size1()))      # CasADi's column-major storage
-            self.res.append(out)
-            if out.size:
-                buffer.set_res(f.index_out(name), memoryview(out))
+            self.shapes.append((sp.size2(), sp.size1()))      # CasADi's column-major storage
+        self.buffered = Buffered(f, {name: np.zeros(f.nnz_in(name)) for name in inputs},
+                                 outputs)
 
     def __call__(self, *values) -> list[np.ndarray]:
         """The outputs (new arrays) for the arguments ``values``, in the order of the
         input names."""
-        for name, a, value in zip(self.inputs, self.args, values):
+        for name, a, value in zip(self.inputs, self.buffered.args, values):
             v = np.asarray(value, dtype=float).ravel(order="F")
             if v.size != a.size:
                 raise ValueError(f"argument '{name}' of {self.name}: {v.size} values, "
                                  f"{a.size} expected")
             a[:] = v
-        self.buffer_call[1]()
-        return [out.T.copy() for out in self.res]
+        self.buffered.call()
+        return [out.reshape(shape).T.copy() for out, shape in zip(self.buffered.res,
+                                                                   self.shapes)]
 
 
 class Buffered:
     """A CasADi Function called through its buffer: its arguments and results are numpy
     arrays (float, contiguous), changed in place and read in place (``args``, ``res``), no
-    conversion per call: what a Function called once per step needs."""
+    conversion per call: what a Function called once per step needs. ``args``: every
+    argument in order, or some by name (the others zero); ``outputs``: the names of the
+    results computed (default: all)."""
 
-    def __init__(self, f: ca.Function, args: Sequence[np.ndarray]):
+    def __init__(self, f: ca.Function, args: Sequence[np.ndarray] | dict[str, np.ndarray],
+                 outputs: Sequence[str] | None = None):
         self.buffer, self.call = f.buffer()
-        self.args = list(args)
-        self.res = [np.zeros(f.nnz_out(i)) for i in range(f.n_out())]
-        for i, a in enumerate(self.args):
-            self.buffer.set_arg(i, memoryview(a))
-        for i, r in enumerate(self.res):
-            self.buffer.set_res(i, memoryview(r))
+        named = args if isinstance(args, dict) else dict(zip(f.name_in(), args))
+        self.args = list(named.values())
+        for name, a in named.items():
+            self.buffer.set_arg(f.index_in(name), memoryview(a))
+        names = f.name_out() if outputs is None else list(outputs)
+        self.res = [np.zeros(f.nnz_out(name)) for name in names]
+        for name, r in zip(names, self.res):
+            if r.size:
+                self.buffer.set_res(f.index_out(name), memoryview(r))
