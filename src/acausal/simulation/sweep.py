@@ -94,7 +94,8 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
     error), and:
     variables  the dotted names recorded (default: the states and the outputs);
     threads    threads of the mapped integrator (default: the machine's cores);
-    chunk      runs per call of the mapped integrator (per task on a cluster);
+    chunk      runs per call of the mapped integrator (per task on a cluster; default: the
+               runs split into two calls per thread or worker);
     client     a ``dask.distributed.Client``: the chunks run on its cluster, the integrator
                shipped once to every worker, serialized (no recompilation per task);
     cluster    "local": start a ``LocalCluster`` of ``workers`` processes (one thread
@@ -439,7 +440,7 @@ class _Engine:
         X0, Z0, Q = W0[:nx], W0[nx:], self.Q[:, runs]
         workers = sum(self.client.nthreads().values()) if self.client else self.threads
         count = math.ceil(runs.size / self.chunk) if self.chunk else min(runs.size,
-                                                                           4 * workers)
+                                                                           2 * workers)
         bounds = np.linspace(0, runs.size, count + 1).round().astype(int)   # equal sizes
         pieces = [slice(a, b) for a, b in zip(bounds, bounds[1:])]
         if self.client is None:
