@@ -305,19 +305,21 @@ def _algebraic_only(model, alg, grid, z0) -> np.ndarray:
 def integrator_problem(model, solver: str, ode, alg, params: ca.SX | None = None) -> dict:
     """The DAE ẋ = ode, 0 = alg for ``casadi.integrator`` with ``solver``: in the model's
     x, z, t and ``params`` (symbols, the integrator's parameters ``p``; None: no parameters).
-    Adams with functional iteration never evaluates a Jacobian, so the ODE of more than
-    ``ADAMS_SX_STATES`` states goes in as a call whose derivatives would be finite
-    differences: CasADi then builds no symbolic Jacobian (O(N²) for the recursion: 0.44 s
-    for the 64-link pendulum). A smaller one goes in as it is: its Jacobian costs a few
-    milliseconds once, and each evaluation of the right-hand side is 10–15 % cheaper than
-    through a call (a quarter car's run: 2.6 against 2.9 ms)."""
+    Adams with functional iteration never evaluates a Jacobian, yet CasADi builds one for
+    an SX right-hand side, at a cost that grows as states × instructions (43 ms for the
+    16-link pendulum, 0.44 s for the 64-link one). Beyond ``ADAMS_SX_WORK`` of that product
+    the ODE goes in as a call whose derivatives would be finite differences, so that none
+    is built; below it, as it is: its Jacobian costs about a millisecond once, and each
+    evaluation is 10–15 % cheaper than through a call (a quarter car's run: 2.6 against
+    2.9 ms)."""
     params = ca.SX(0, 1) if params is None else params
-    if solver == "adams" and model.x.numel() > ADAMS_SX_STATES:
+    if solver == "adams":
         f = ca.Function("ode", [model.x, model.t, params], [ode], _NO_AD)
-        x, t = ca.MX.sym("x", model.x.numel()), ca.MX.sym("t")
-        q = ca.MX.sym("p", params.numel())
-        dae = {"x": x, "t": t, "ode": f(x, t, q)}
-        return dict(dae, p=q) if params.numel() else dae
+        if model.x.numel() * f.n_instructions() > ADAMS_SX_WORK:
+            x, t = ca.MX.sym("x", model.x.numel()), ca.MX.sym("t")
+            q = ca.MX.sym("p", params.numel())
+            dae = {"x": x, "t": t, "ode": f(x, t, q)}
+            return dict(dae, p=q) if params.numel() else dae
     dae = {"x": model.x, "t": model.t, "ode": ode}
     if params.numel():
         dae["p"] = params
@@ -393,7 +395,7 @@ def integrator_settings(model, solver: str, rtol: float, atol: float,
     return plugin, opts, loops
 
 
-ADAMS_SX_STATES = 32
+ADAMS_SX_WORK = 4096        # states × instructions of the ODE
 _NO_AD = {"enable_fd": True, "enable_forward": False, "enable_reverse": False,
           "enable_jacobian": False}
 
