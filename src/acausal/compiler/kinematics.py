@@ -479,16 +479,15 @@ def build_tree(nodes: list[Node], relations: list, der_table: dict,
     stacked = tuple(ca.mtimes(S, X) for X in atom_motion)
     for i, n in enumerate(one_d):
         n.stack(stacked, i)
-    rows = ca.vertsplit(stacked[0][len(one_d):, :])
+    rows = [stacked[0][len(one_d):, :]]       # Φ: the linear loops' rows, then the others
     loops = [LoopBlock(r, 1, r.flows) for r in lin_loops]
     names = [r.owner.path for r in lin_loops]
     for r, phi, flows in nl_loops:
-        rows += ca.vertsplit(phi)
+        rows.append(phi)
         loops.append(LoopBlock(r, phi.numel(), flows))
         names += [f"{r.owner.path}.{c}" for c in r.row_names(flows is None)]
-    residual = ca.vertcat(*rows) if rows else ca.SX(0, 1)
     vec = lambda xs: ca.vertcat(*xs) if xs else ca.SX(0, 1)      # noqa: E731
-    return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, residual,
+    return Tree(nodes, vec(q), vec(qd), vec(qdd), q_names, qd_names, fired, loops, vec(rows),
                 names, charts, tuple(x[:len(one_d), :] for x in stacked))
 
 

@@ -31,23 +31,16 @@ def sx(v) -> ca.SX:
 def stack(items: list) -> ca.SX:
     """``items`` (SX, numbers or Rows) stacked in a column; consecutive rows of one vector
     are taken as one slice of it."""
-    pieces, run = [], None                 # run: [vector, first row, end]
+    pieces = []                            # SX, or a run of rows: [vector, first, end]
     for x in items:
-        if isinstance(x, Row):
-            if run is not None and run[0] is x.vector and run[2] == x.row:
-                run[2] += 1
-                continue
-            if run is not None:
-                pieces.append(run[0][run[1]:run[2], :])
-            run = [x.vector, x.row, x.row + 1]
-            continue
-        if run is not None:
-            pieces.append(run[0][run[1]:run[2], :])
-            run = None
-        pieces.append(sx(x))
-    if run is not None:
-        pieces.append(run[0][run[1]:run[2], :])
-    return ca.vertcat(*pieces) if pieces else ca.SX(0, 1)
+        last = pieces[-1] if pieces else None
+        if isinstance(x, Row) and isinstance(last, list) and last[0] is x.vector \
+                and last[2] == x.row:
+            last[2] += 1
+        else:
+            pieces.append([x.vector, x.row, x.row + 1] if isinstance(x, Row) else sx(x))
+    return ca.vertcat(*[p[0][p[1]:p[2], :] if isinstance(p, list) else p
+                        for p in pieces]) if pieces else ca.SX(0, 1)
 
 
 def combine(const, terms, div=1.0):

@@ -104,6 +104,12 @@ def null_space(J: np.ndarray) -> np.ndarray:
     return vt[rank(sv):]
 
 
+def solved(r: np.ndarray, rows: np.ndarray, z: np.ndarray) -> bool:
+    """Whether the residuals ``r`` of the algebraic equations are 0 to round-off on
+    ``rows`` (a mask of r's shape, or of its rows), for the algebraic variables ``z``."""
+    return np.max(np.abs(r[rows]), initial=0.0) <= 1e-12 * (1 + np.abs(z).max(initial=0.0))
+
+
 def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
     """The sign of each indicator; where it is exactly 0, the side it was on ``before``."""
     s = np.sign(g)
@@ -172,14 +178,12 @@ class ModeIteration:
         z = np.array(z, dtype=float)
         for _ in range(50):
             point = self.point(t, x, z, d)
-            r = self.residual(*point)[0].ravel()
-            if np.max(np.abs(r[self.z_rows]), initial=0.0) <= 1e-12 * (
-                    1 + np.abs(z).max(initial=0.0)):
+            if solved(self.residual(*point)[0].ravel(), self.z_rows, z):
                 return z
             r, J = self.newton(*point)
             r, J = np.array(r, dtype=float).ravel(), np.array(J, dtype=float)
             rows = np.any(J != 0, axis=1)
-            if np.max(np.abs(r[rows]), initial=0.0) <= 1e-12 * (1 + np.abs(z).max(initial=0.0)):
+            if solved(r, rows, z):
                 return z
             z = z - np.linalg.lstsq(J[rows], r[rows], rcond=None)[0]
         raise SimulationError(f"the algebraic equations of '{self.model.name}' have no "
@@ -372,17 +376,14 @@ class EventSimulation(ModeIteration):
         Ps = np.tile(P[:, None], (1, n))
         Z = np.array(Z, dtype=float)
         for _ in range(50):
-            r = self._maps["residual", n](T, X, Z, U, Ps)[0]
-            scale = 1 + np.abs(Z).max(initial=0.0)
-            if np.max(np.abs(r[self.z_rows]), initial=0.0) <= 1e-12 * scale:
+            if solved(self._maps["residual", n](T, X, Z, U, Ps)[0], self.z_rows, Z):
                 return Z
             r, Jv = F(T, X, Z, U, P)
             r = r.full()
             J = np.zeros((n, nz, nz))                                 # one per column
             J[at] = np.array(Jv.nonzeros())
             rows = np.any(J != 0, axis=2).T                           # (nz, n)
-            scale = 1 + np.abs(Z).max(initial=0.0)
-            if np.max(np.abs(np.where(rows, r, 0.0)), initial=0.0) <= 1e-12 * scale:
+            if solved(r, rows, Z):
                 return Z
             R = np.where(rows, r, 0.0).T[..., None]                   # (n, nz, 1)
             try:

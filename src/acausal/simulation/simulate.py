@@ -336,8 +336,7 @@ def folded(model, p: np.ndarray, u: ca.SX | None = None) -> tuple[ca.SX, ca.SX]:
     values = ca.SX(p)
     values[model.mode_params] = model.p[model.mode_params]
     old, new = ([model.p], [values]) if u is None else ([model.u, model.p], [u, values])
-    ode, alg = ca.substitute([model.ode, model.alg], old, new)
-    return ode, alg
+    return tuple(ca.substitute([model.ode, model.alg], old, new))
 
 
 def scaled(model, ode, alg, nominal):

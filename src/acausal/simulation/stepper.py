@@ -54,9 +54,9 @@ _B4 = (5179 / 57600, 0.0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 
 
 def dopri_step(model, p: np.ndarray) -> ca.Function:
     """One Dormand–Prince 5(4) step of the ODE of ``model`` with the parameter values ``p``
-    folded in (``simulate.folded``), as a CasADi Function (x, u, t, h, tol_abs, rtol) -> (x after the step h [s]
-    from t with inputs u held, the estimated error over its tolerance atol_i + rtol·|x_i|,
-    max over the states: ≤ 1 to accept)."""
+    folded in (``simulate.folded``), as a CasADi Function (x, u, t, h, tol_abs, rtol) ->
+    (x after the step h [s] from t with inputs u held, the estimated error over its
+    tolerance atol_i + rtol·|x_i|, max over the states: ≤ 1 to accept)."""
     x, u, t = model.x, model.u, model.t
     h, tol_abs, rtol = ca.SX.sym("h"), ca.SX.sym("tol_abs", x.numel()), ca.SX.sym("rtol")
     f = ca.Function("ode", [t, x, u], [folded(model, p)[0]])
