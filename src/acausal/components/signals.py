@@ -13,7 +13,8 @@ Initialization: a block's states start at their start values (``y_start``, ``x_s
 which is MSL's ``initType=Init.InitialState`` (and what MSL tools do with ``Init.NoInit`` when
 nothing else fixes the state). Other initial values are given at simulation time by the
 dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}`` (MSL's
-``Init.InitialOutput``). Steady-state initialization is not provided.
+``Init.InitialOutput``). TransferFunction and StateSpace take MSL's ``initType`` (NoInit,
+SteadyState, InitialState, InitialOutput) as initial equations.
 
 Sources are expressions of time built with CasADi functions (``if_else``, ``floor``,
 ``interpolant``), so they are exact, differentiable where the MSL signal is, and usable
@@ -51,7 +52,7 @@ __all__ = [
     "CombiTimeTable", "Smoothness", "Extrapolation", "TimeEvents", "KinematicPTP2",
     "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
     "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID", "LimPID",
-    "SimpleController", "Init",
+    "SimpleController", "Init", "TransferFunction", "StateSpace",
     "Limiter", "VariableLimiter", "DeadZone", "LimiterHomotopy", "VariableLimiterHomotopy",
     "RealPassThrough",
 ]
@@ -1074,14 +1075,33 @@ def _approx_derivative(u, x, k, T):
 
 
 class _StartValues:
-    """Start values of a block's states, given as constructor keyword arguments."""
+    """Start values of a block's states, given as constructor keyword arguments (default 0):
+    a number each, or for the names ``_start_size`` gives a length n, n numbers (a tuple;
+    a single number is repeated)."""
     _starts: tuple = ()
 
+    def _start_size(self, name: str) -> int | None:
+        """The number of values of the start value ``name`` (None: a scalar)."""
+        return None
+
     def __init__(self, name: str | None = None, **kwargs):
-        starts = {s: _start(kwargs.pop(s, 0.0), f"{type(self).__name__}: {s}")
-                  for s in self._starts}
+        starts = {s: _start_vector(kwargs.pop(s, 0.0), self._start_size(s),
+                                   f"{type(self).__name__}: {s}") for s in self._starts}
         super().__init__(name, **kwargs)
         self.__dict__.update(starts)
+
+
+def _start_vector(value, n: int | None, what: str):
+    """A start value as float (n None) or as a tuple of n floats (a ParameterError
+    otherwise)."""
+    if n is None:
+        return _start(value, what)
+    items = np.ravel(np.asarray(value, dtype=object))
+    if items.size == 1:
+        items = np.repeat(items, n)
+    if items.size != n:
+        raise ParameterError(f"{what} must have {n} values, got {items.size}")
+    return tuple(_start(v, f"{what}[{i}]") for i, v in enumerate(items, start=1))
 
 
 class Integrator(_StartValues, SISO):
@@ -1333,3 +1353,254 @@ class _LimPIDyMin(LimPID):
 
 
 _LimPIDyMin.__name__ = "LimPID"
+
+
+def _matrix(values, name: str, rows: int | None = None, cols: int | None = None) -> np.ndarray:
+    """A block's matrix parameter given at construction, as a 2-D float array (one row or
+    column may be given flat where the other size is known), checked against ``rows`` and
+    ``cols`` when given (a ParameterError naming it otherwise)."""
+    try:
+        m = np.array(values, dtype=float)
+    except (TypeError, ValueError):
+        raise ParameterError(f"{name} must be a matrix of numbers, got {values!r}") from None
+    if m.ndim == 1:
+        m = m.reshape(-1, 1) if cols == 1 or (rows is not None and rows == m.size != 1) \
+            else m.reshape(1, -1)
+    if m.ndim != 2 or (rows is not None and m.shape[0] != rows) \
+            or (cols is not None and m.shape[1] != cols):
+        want = f"({'n' if rows is None else rows}, {'m' if cols is None else cols})"
+        raise ParameterError(f"{name} must have shape {want}, got shape {m.shape}")
+    if not np.all(np.isfinite(m)):
+        raise ParameterError(f"{name} contains non-finite values")
+    return m
+
+
+class _Sized:
+    """A block whose sizes (numbers of coefficients, states, inputs, outputs) come from the
+    values given at construction: its class is made once per layout (``_declare(*key)``
+    gives what that class declares: vector parameters and ports), and rebuilt by layout
+    when unpickled."""
+    _classes: dict
+    _key: tuple = ()
+
+    @classmethod
+    def _variant(cls, *key) -> type:
+        base = cls if "_classes" in vars(cls) else cls.__bases__[0]
+        if key not in base._classes:
+            base._classes[key] = type(base.__name__, (base,), {
+                "__doc__": base.__doc__, "__module__": __name__,
+                "__qualname__": base.__name__, "_key": key, **base._declare(*key)})
+        return base._classes[key]
+
+    def __reduce_ex__(self, protocol):
+        return _new_sized, (type(self).__bases__[0], self._key), self.__dict__
+
+
+def _new_sized(base: type, key: tuple) -> Component:
+    """An empty instance of the sized block class ``base`` made for ``key`` (unpickling)."""
+    return object.__new__(base._variant(*key))
+
+
+class TransferFunction(_Sized, _StartValues, SISO):
+    """Linear transfer function (MSL Continuous.TransferFunction)::
+
+                b[1]·s^(nb−1) + b[2]·s^(nb−2) + ... + b[nb]
+        y(s) = --------------------------------------------- · u(s)
+                a[1]·s^(na−1) + a[2]·s^(na−2) + ... + a[na]
+
+    ``b`` and ``a`` (given at construction; their sizes nb ≤ na fix the block, their
+    values are the parameters ``b[1]`` .. ``b[nb]``, ``a[1]`` .. ``a[na]``, changeable at
+    simulation time). The states are MSL's: the controller canonical form scaled by
+    a_end = a[na] (1 when |a[na]| ≤ 100·eps·|a|), ``x_scaled[1]`` .. ``x_scaled[nx]``
+    (nx = na − 1)::
+
+        der(x_scaled[1])    = (−a[2:na]·x_scaled + a_end·u)/a[1]
+        der(x_scaled[2:nx]) = x_scaled[1:nx−1]
+        y = ((bb[2:na] − d·a[2:na])·x_scaled)/a_end + d·u,  x = x_scaled/a_end
+
+    with bb = b padded with leading zeros to na, d = bb[1]/a[1]; ``x[i]`` are recorded
+    (nx = 0: y = d·u). Initialization (``initType``, MSL's default NoInit): NoInit and
+    InitialState start at x = x_start; SteadyState: der(x_scaled) = 0; InitialOutput:
+    y = y_start and der(x_scaled[2:nx]) = 0. Start values (constructor arguments):
+    ``x_start`` (nx values), ``y_start``.
+    """
+    _starts = ("x_start", "y_start")
+    options = {"initType": Init.NoInit}
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, b=(1.0,), a=(1.0,), **params):
+        nb, na = (_matrix(v, f"TransferFunction: {n}", 1).size for v, n in ((b, "b"), (a, "a")))
+        if nb > na:
+            raise ParameterError(f"TransferFunction: transfer function is not proper: b has "
+                                 f"{nb} coefficients, a {na} (nb <= na required)")
+        return super().__new__(cls._variant(nb, na))
+
+    @staticmethod
+    def _declare(nb: int, na: int) -> dict:
+        return {"b": Parameter((1.0,) * nb, "", "numerator coefficients of transfer "
+                                                "function (e.g., 2*s+3 is specified as {2,3})"),
+                "a": Parameter((1.0,) * na, "", "denominator coefficients of transfer "
+                                                "function (e.g., 5*s+6 is specified as {5,6})")}
+
+    def __init__(self, name: str | None = None, *, b=(1.0,), a=(1.0,), **params):
+        coeffs = {n: tuple(_matrix(v, n, 1).ravel()) for n, v in (("b", b), ("a", a))}
+        super().__init__(name, **coeffs, **params)
+        if coeffs["a"][0] == 0:
+            raise ParameterError(f"{who(self)}: a[1] must be non-zero (the leading "
+                                 f"denominator coefficient), got a = {list(coeffs['a'])}")
+        if self.initType is Init.InitialOutput and self.nx == 0:
+            raise ParameterError(f"{who(self)}: initType=InitialOutput needs a state (a has "
+                                 f"one coefficient: y = d*u, with no initial value to give)")
+
+    @property
+    def nx(self) -> int:
+        """Number of states, na − 1."""
+        return self._key[1] - 1
+
+    def _start_size(self, name: str) -> int | None:
+        return self.nx if name == "x_start" else None
+
+    def _a_end(self):
+        """a[na], or 1 when it is ≈ 0 (MSL's scaling of the states)."""
+        a = self.a
+        return ca.if_else(a[-1] > 100 * EPS * ca.norm_2(a), a[-1], 1.0)
+
+    def structure(self, s):
+        a_end = self._a_end()
+        for i in range(self.nx):
+            s.state(f"x_scaled[{i + 1}]", self.x_start[i] * a_end,
+                    description="scaled state of the controller canonical form")
+
+    def physics(self, e):
+        u, a, nb, na = e.input(self.u), self.a, *self._key
+        bb = [0] * (na - nb) + [self.b[i] for i in range(nb)]
+        d = bb[0] / a[0]
+        if self.nx == 0:
+            e.output(self.y, d * u)
+            return
+        a_end = self._a_end()
+        xs = [e.state(f"x_scaled[{i + 1}]") for i in range(self.nx)]
+        der = [(-sum(a[i + 1] * x for i, x in enumerate(xs)) + a_end * u) / a[0]] + xs[:-1]
+        for x, dx in zip(xs, der):
+            e.derivative(x, dx)
+        y = sum((bb[i + 1] - d * a[i + 1]) * x for i, x in enumerate(xs)) / a_end + d * u
+        e.output(self.y, y)
+        for i, x in enumerate(xs, start=1):
+            e.variable(f"x[{i}]", x / a_end,
+                       description="state of transfer function from controller canonical form")
+        if self.initType is Init.SteadyState:
+            for i, dx in enumerate(der, start=1):
+                e.initial(dx, f"der(x_scaled[{i}]) = 0 (initType=SteadyState)")
+        elif self.initType is Init.InitialOutput:
+            e.initial(y - self.y_start, "y = y_start (initType=InitialOutput)")
+            for i, dx in enumerate(der[1:], start=2):
+                e.initial(dx, f"der(x_scaled[{i}]) = 0 (initType=InitialOutput)")
+
+
+class StateSpace(_Sized, _StartValues, Component):
+    """Linear state space system (MSL Continuous.StateSpace), MIMO::
+
+        der(x) = A·x + B·u
+            y  = C·x + D·u
+
+    ``A`` (nx × nx), ``B`` (nx × nin), ``C`` (nout × nx), ``D`` (nout × nin, default
+    zeros), given at construction (MSL's defaults: A = [1, 0; 0, 1], B = [1; 1],
+    C = [1, 1]); their shapes fix the block, their values are the parameters ``A[1]`` ..
+    ``A[nx·nx]`` (row by row, as a table's values; ``params={"<name>.A": matrix}`` changes
+    them at simulation time), likewise B, C, D. Inputs ``u[1]`` .. ``u[nin]``, outputs
+    ``y[1]`` .. ``y[nout]``, states ``x[1]`` .. ``x[nx]``.
+
+    Initialization (``initType``, MSL's default NoInit): NoInit and InitialState start at
+    x = x_start; SteadyState: der(x) = 0; InitialOutput: y = y_start with the remaining
+    states in steady state as far as possible, MSL's
+    x = equalityLeastSquares(A, −B·u, C, y_start − D·u), written as its optimality
+    conditions C·x = y_start − D·u, P·Aᵀ·(A·x + B·u) = 0 with P = I − Cᵀ(C·Cᵀ)⁻¹C (C of
+    full row rank). Start values (constructor arguments): ``x_start`` (nx values),
+    ``y_start`` (nout values).
+    """
+    _starts = ("x_start", "y_start")
+    options = {"initType": Init.NoInit}
+    _classes: dict = {}
+    _defaults = {"A": [[1.0, 0.0], [0.0, 1.0]], "B": [[1.0], [1.0]], "C": [[1.0, 1.0]]}
+
+    def __new__(cls, name=None, *, A=None, B=None, C=None, D=None, **params):
+        A, _, _, D = StateSpace._matrices(A, B, C, D)
+        return super().__new__(cls._variant(A.shape[0], *D.shape))
+
+    @staticmethod
+    def _matrices(A, B, C, D) -> tuple:
+        """A, B, C, D as arrays of consistent shapes (MSL's defaults for those not given)."""
+        d = StateSpace._defaults
+        A = _matrix(d["A"] if A is None else A, "StateSpace: A")
+        nx = A.shape[0]
+        if A.shape != (nx, nx) or nx == 0:
+            raise ParameterError(f"StateSpace: A must be square with at least one row, got "
+                                 f"shape {A.shape}")
+        B = _matrix(d["B"] if B is None else B, "StateSpace: B", nx)
+        C = _matrix(d["C"] if C is None else C, "StateSpace: C", None, nx)
+        D = _matrix(np.zeros((C.shape[0], B.shape[1])) if D is None else D, "StateSpace: D",
+                    C.shape[0], B.shape[1])
+        return A, B, C, D
+
+    @staticmethod
+    def _declare(nx: int, nout: int, nin: int) -> dict:
+        def matrix(rows, cols, what):
+            return Parameter((0.0,) * (rows * cols), "", f"matrix {what} of state space model "
+                                                         f"({rows} x {cols}, row by row)")
+        return {"A": matrix(nx, nx, "A"), "B": matrix(nx, nin, "B"),
+                "C": matrix(nout, nx, "C"), "D": matrix(nout, nin, "D"),
+                "u": VectorPort(RealInput, nin, "connector of Real input signals"),
+                "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+
+    def __init__(self, name: str | None = None, *, A=None, B=None, C=None, D=None, **params):
+        mats = dict(zip("ABCD", (tuple(m.ravel()) for m in self._matrices(A, B, C, D))))
+        super().__init__(name, **mats, **params)
+
+    @property
+    def nx(self) -> int:
+        """Number of states."""
+        return self._key[0]
+
+    @property
+    def nin(self) -> int:
+        """Number of inputs."""
+        return self._key[2]
+
+    @property
+    def nout(self) -> int:
+        """Number of outputs."""
+        return self._key[1]
+
+    def _start_size(self, name: str) -> int | None:
+        return {"x_start": self.nx, "y_start": self.nout}[name]
+
+    def _symbolic(self, name: str, rows: int, cols: int) -> ca.SX:
+        return ca.reshape(getattr(self, name), cols, rows).T
+
+    def structure(self, s):
+        for i in range(self.nx):
+            s.state(f"x[{i + 1}]", self.x_start[i], description="state vector")
+
+    def physics(self, e):
+        nx, nin, nout = self.nx, self.nin, self.nout
+        A, B = self._symbolic("A", nx, nx), self._symbolic("B", nx, nin)
+        C, D = self._symbolic("C", nout, nx), self._symbolic("D", nout, nin)
+        states = [e.state(f"x[{i + 1}]") for i in range(nx)]
+        x, u = ca.vertcat(*states), ca.vertcat(*(e.input(p) for p in self.u))
+        xdot, y = A @ x + B @ u, C @ x + D @ u
+        for i, state in enumerate(states):
+            e.derivative(state, xdot[i])
+        for i, port in enumerate(self.y):
+            e.output(port, y[i])
+        if self.initType is Init.SteadyState:
+            for i in range(nx):
+                e.initial(xdot[i], f"der(x[{i + 1}]) = 0 (initType=SteadyState)")
+        elif self.initType is Init.InitialOutput:
+            for i in range(nout):
+                e.initial(y[i] - self.y_start[i],
+                          f"y[{i + 1}] = y_start[{i + 1}] (initType=InitialOutput)")
+            P = ca.SX.eye(nx) - C.T @ ca.solve(C @ C.T, C)
+            rest = P @ A.T @ xdot
+            for i in range(nx):
+                e.initial(rest[i], f"der(x) least squares, row {i + 1} (initType="
+                                   f"InitialOutput)")
