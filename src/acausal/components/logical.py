@@ -26,8 +26,12 @@ blocks and the Boolean sources (expressions of their inputs and of time) compile
 ``TerminateSimulation`` ends a simulation at the event where its condition becomes true
 (``PhysicsBuilder.terminate``; ``Result.terminated``).
 
-Not here yet: Edge, FallingEdge, Change, ZeroCrossing (true only at event instants),
-Timer, RSFlipFlop, TriggeredTrapezoid, LogicalDelay, SampleTrigger;
+Edge detectors (``Edge``, ``FallingEdge``, ``Change``, MathBoolean's ``RisingEdge``,
+``ChangingEdge``) and ``SampleTrigger`` are true only within the event iteration at their
+instants, as Modelica's edge(), change() and sample(): blocks they feed (``RSFlipFlop``,
+``Timer``) act there; the Result, recorded after each event, shows them false.
+
+Not here yet: ZeroCrossing, TriggeredTrapezoid, LogicalDelay;
 Integer signals; model-level Boolean inputs and outputs (``Input`` / ``Output`` are Real: put
 a BooleanToReal in between).
 """
@@ -51,6 +55,8 @@ __all__ = [
     "Switch", "LogicalSwitch",
     "BooleanConstant", "BooleanStep", "BooleanPulse", "BooleanTable",
     "BooleanToReal", "RealToBoolean", "BooleanPassThrough", "TerminateSimulation",
+    "Edge", "FallingEdge", "Change", "RisingEdge", "ChangingEdge", "Timer", "RSFlipFlop",
+    "SampleTrigger",
 ]
 
 
@@ -307,6 +313,109 @@ class Pre(partialBooleanSISO):
         e.output(self.y, y)
 
 
+class _EdgeDetector(partialBooleanSISO):
+    """A Boolean output that is true only within the event iteration at an instant where
+    the input changes: y = ``detected(u, pre(u))``, pre(u) the mode ``pre_u`` (start
+    ``pre_u_start``, option) that takes u at every event, so the iteration's next round
+    gives y = false again. Blocks fed by y act at that instant (an RSFlipFlop is set); the
+    Result shows y false, as MSL's results after the event."""
+    options = {"pre_u_start": False}
+
+    def detected(self, u, pre_u):
+        raise NotImplementedError
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("pre_u", int(self.pre_u_start), values=(0, 1),
+               description="pre(u): the input before the event; start pre_u_start")
+
+    def physics(self, e):
+        u, pre_u = e.input(self.u), e.mode("pre_u")
+        e.mode_update(pre_u, u)
+        e.output(self.y, self.detected(u, pre_u))
+
+
+class Edge(_EdgeDetector):
+    """Rising edge: y = edge(u) = u and not pre(u) (MSL Logical.Edge), true at the instant
+    u becomes true. Option ``pre_u_start`` (False): pre(u) at the start."""
+
+    def detected(self, u, pre_u):
+        return ca.logic_and(u, ca.logic_not(pre_u))
+
+
+class FallingEdge(_EdgeDetector):
+    """Falling edge: y = edge(not u) = pre(u) and not u (MSL Logical.FallingEdge), true at
+    the instant u becomes false. Option ``pre_u_start`` (False): pre(u) at the start."""
+
+    def detected(self, u, pre_u):
+        return ca.logic_and(pre_u, ca.logic_not(u))
+
+
+class Change(_EdgeDetector):
+    """Rising or falling edge: y = change(u) = (u <> pre(u)) (MSL Logical.Change). Option
+    ``pre_u_start`` (False): pre(u) at the start."""
+
+    def detected(self, u, pre_u):
+        return u != pre_u
+
+
+class RisingEdge(Edge):
+    """MSL MathBoolean.RisingEdge: the equations of Logical.Edge, y = edge(u)."""
+
+
+class ChangingEdge(Change):
+    """MSL MathBoolean.ChangingEdge: the equations of Logical.Change, y = change(u)."""
+
+
+class Timer(Component):
+    """Timer (MSL Logical.Timer): y = time − entryTime [s] while the Boolean input u is
+    true, 0 while it is false; ``entryTime`` (a discrete variable, 0 at the start) is the
+    instant u last became true (``when u then entryTime = time``, pre(u) the mode
+    ``pre_u``, false at the start). At that instant y is already 0 in the event iteration.
+
+    MSL difference: a u true from a start t0 ≠ 0 gives y = time − t0 (MSL: time, its
+    when-clause being inactive at initialization)."""
+    u = BooleanInput("connector of Boolean input signal")
+    y = RealOutput("connector of Real output signal")
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("pre_u", 0, values=(0, 1), description="pre(u): the input before the event")
+        s.discrete("entryTime", 0.0, "s", "time instant when u became true")
+
+    def physics(self, e):
+        u, pre_u, entry = e.input(self.u), e.mode("pre_u"), e.mode("entryTime")
+        entry_now = ca.if_else(ca.logic_and(u, ca.logic_not(pre_u)), e.time, entry)
+        e.mode_update(entry, entry_now)
+        e.mode_update(pre_u, u)
+        e.output(self.y, ca.if_else(u, e.time - entry_now, 0))
+
+
+class RSFlipFlop(Component):
+    """A basic RS flip flop (MSL Logical.RSFlipFlop): Q is set by the input S, reset by R,
+    and keeps its value in between; QI is its inverse. MSL's network of two Nor blocks and a
+    Pre: Q = not (pre.y or R), pre.y = pre(not (S or Q)), QI = pre.y; the mode ``pre.y``
+    starts at not Qini (option ``Qini``, False: the start value of Q). S and R both true
+    give Q = QI = false."""
+    options = {"Qini": False}
+    S = BooleanInput("set input")
+    R = BooleanInput("reset input")
+    Q = BooleanOutput("output Q")
+    QI = BooleanOutput("inverse output QI")
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("pre.y", int(not self.Qini), values=(0, 1),
+               description="pre(nor.y): the flip flop's memory (= QI); start not Qini")
+
+    def physics(self, e):
+        qi = e.mode("pre.y")
+        q = ca.logic_not(ca.logic_or(qi, e.input(self.R)))
+        e.mode_update(qi, ca.logic_not(ca.logic_or(e.input(self.S), q)))
+        e.output(self.Q, q)
+        e.output(self.QI, qi)
+
+
 class Switch(Component):
     """y = if u2 then u1 else u3: switch between two Real signals by a Boolean one (MSL
     Logical.Switch). Inputs ``u1``, ``u3`` (Real), ``u2`` (Boolean); output ``y`` (Real)."""
@@ -343,6 +452,14 @@ class BooleanToReal(Component):
 
 
 # ---- sources (Modelica.Blocks.Sources) ----------------------------------------------------------
+def _event_tolerance(t):
+    """How far [s] a time event at t may lie from where a signal's own arithmetic puts its
+    jump (rounding, ~1e-16·|t|): a signal evaluated at its time event gives its value after
+    the jump, which the event iteration needs; below the 1e-12·|t| where integration
+    towards the event stops (``numerics.just_before``), which still sees the value before."""
+    return 1e-13 * ca.fmax(1, ca.fabs(t))
+
+
 class BooleanConstant(partialBooleanSO):
     """y = k (option ``k``, True as in MSL)."""
     options = {"k": True}
@@ -372,11 +489,33 @@ class BooleanPulse(partialBooleanSO):
     startTime = Parameter(0.0, "s", "time instant of first pulse")
 
     def physics(self, e):
-        tau = e.time - self.startTime
-        tp = tau - ca.floor(tau / self.period) * self.period
-        e.output(self.y, ca.logic_and(tau >= 0, tp < self.period * self.width / 100))
+        tau, tol = e.time - self.startTime, _event_tolerance(e.time)
+        tp = tau - ca.floor((tau + tol) / self.period) * self.period
+        e.output(self.y, ca.logic_and(tau >= -tol, tp < self.period * self.width / 100 - tol))
         e.time_event(self.startTime, self.period)
         e.time_event(self.startTime + self.period * self.width / 100, self.period)
+
+
+class SampleTrigger(partialBooleanSO):
+    """y = sample(startTime, period) (MSL Sources.SampleTrigger): true within the event
+    iteration at the instants startTime + k·period [s], also at a start that is one of them
+    (as MSL's sample() at initialization), false everywhere else (the Result shows it
+    false). Time events at the instants."""
+    period = Parameter(0.01, "s", "sample period", positive=True)
+    startTime = Parameter(0.0, "s", "time instant of first sample trigger")
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.sample("trigger", self.startTime, self.period, initial=True,
+                 description="true at the sample instants and at the start")
+
+    def physics(self, e):
+        tau = e.time - self.startTime
+        on_grid = ca.fabs(tau - ca.floor(tau / self.period + 0.5) * self.period) \
+            <= 1e-9 * (1 + ca.fabs(e.time))
+        e.output(self.y, ca.logic_and(e.mode("trigger"),
+                                      ca.logic_and(tau > -1e-9 * (1 + ca.fabs(e.time)),
+                                                   on_grid)))
 
 
 class BooleanTable(partialBooleanSO):
@@ -407,6 +546,7 @@ class BooleanTable(partialBooleanSO):
 
     def physics(self, e):
         tau = e.time - self.shiftTime
+        tau = tau + _event_tolerance(e.time)
         flips = sum((ca.if_else(tau >= tk, 1, 0) for tk in self.table), ca.SX(0))
         e.output(self.y, ca.fmod(flips + int(self.startValue), 2))
         for tk in self.table:
