@@ -389,3 +389,24 @@ def test_smooth_limiter_and_dead_zone_are_within_half_the_smoothing_width(kind, 
     assert error[np.isin(t, [kink])][0] == pytest.approx(0.025, rel=1e-2)
     exact = acausal.compile(m)
     assert exact.has_events and [v.name for v in exact.modes] == ["blk.region"]
+
+
+def test_zero_order_hold_breaks_an_algebraic_loop():
+    """u = r − 0.5·y through the hold, no state in between: MSL's y = pre(ySample) makes it
+    the difference equation y_k+1 = r − 0.5·y_k (y = r after the start, where ySample
+    takes u with y = pre(ySample) = 0): y_k = r·(1 − (−0.5)^(k+1))/1.5; its integral is
+    0.1·Σ y_k."""
+    m = Model("zoh_loop")
+    m.r, m.fb, m.g = sg.Constant(k=2.0), sg.Feedback(), sg.Gain(k=0.5)
+    m.zoh, m.integ = dc.ZeroOrderHold(samplePeriod=0.1), sg.Integrator()
+    _wire(m, [(m.r.y, m.fb.u1), (m.g.y, m.fb.u2), (m.fb.y, m.zoh.u), (m.zoh.y, m.g.u),
+              (m.zoh.y, m.integ.u)])
+    t = np.round(np.linspace(0.0, 1.05, 22), 12)
+    res = acausal.compile(m).simulate(1.05, t=t, **SIM)
+    k = np.floor(t / 0.1 + 1e-9)
+    y_ref = 2.0 * (1 - (-0.5) ** (k + 1)) / 1.5
+    at = _right_limits(res, t)
+    np.testing.assert_allclose(res["zoh.y"][at], y_ref, atol=1e-12)
+    steps = 2.0 * (1 - (-0.5) ** (np.arange(11) + 1)) / 1.5
+    assert res["integ.y"][-1] == pytest.approx(0.1 * steps[:10].sum() + 0.05 * steps[10],
+                                               abs=1e-9)

@@ -13,9 +13,8 @@ The simulation's start is initialization: the blocks whose MSL equations sample 
 startTime); UnitDelay, whose when-clause is not active at initialization, keeps y_start.
 A sample instant at the final time is not taken.
 
-MSL differences: ZeroOrderHold's y is ySample itself, not pre(ySample): a loop closed
-algebraically through the hold (no state in between) is not broken by an infinitesimal
-delay here, and the event iteration reports it as not settling. Smooth compilation
+ZeroOrderHold's y is MSL's pre(ySample): a loop closed algebraically through the hold (no
+state in between) is broken by that infinitesimal delay. Smooth compilation
 (``compile(model, smooth=True)``) is refused with a StructureError naming the block.
 Not here yet: FirstOrderHold, TransferFunction, StateSpace, TriggeredSampler, TriggeredMax.
 """
@@ -59,10 +58,14 @@ class _SampleAndHold(DiscreteSISO):
         s.discrete(self._held, 0.0, description="value of u at the last sample instant")
 
     def physics(self, e):
+        e.output(self.y, self.sampled(e))
+
+    def sampled(self, e):
+        """The held value (its update at the sample instants written)."""
         trigger, held = e.mode("sampleTrigger"), e.mode(self._held)
         now = ca.if_else(e.time >= self.startTime, e.input(self.u), held)
         e.mode_update(held, ca.if_else(trigger, now, held))
-        e.output(self.y, held)
+        return held
 
 
 class Sampler(_SampleAndHold):
@@ -72,9 +75,23 @@ class Sampler(_SampleAndHold):
 
 class ZeroOrderHold(_SampleAndHold):
     """Zero order hold: y = the input sampled at the last sample instant (MSL
-    Discrete.ZeroOrderHold; its discrete variable ``ySample``, 0 until startTime). See the
-    module docstring for y = ySample (MSL: pre(ySample))."""
+    Discrete.ZeroOrderHold): its discrete variable ``ySample`` (0 until startTime) takes u
+    at the sample instants, and y = pre(ySample), MSL's infinitesimal delay: y (a discrete
+    variable of its own) keeps its value while the sample trigger is true and takes
+    ySample in the event iteration's round after it. So ySample is u with y at its value
+    before the instant (and every other sampled value at the instant's), and a loop closed
+    algebraically through the hold (u depending on y without a state in between) is a
+    difference equation, y_k+1 = f(y_k), as in MSL."""
     _held = "ySample"
+
+    def structure(self, s):
+        super().structure(s)
+        s.discrete("y", 0.0, description="pre(ySample): ySample after the sample instant")
+
+    def physics(self, e):
+        y, held = e.mode("y"), self.sampled(e)
+        e.mode_update(y, ca.if_else(e.mode("sampleTrigger"), y, held))
+        e.output(self.y, y)
 
 
 class UnitDelay(DiscreteSISO):
