@@ -12,7 +12,8 @@ Sampler into a UnitDelay (every 0.2 s) — the hold is also checked against the 
 staircase and the delay against the ramp one instant late; the sampled P controller on a
 mass (models/event_blocks.py; its exact discretization is checked in
 tests/components/test_event_blocks.py); the thermostat with a Hysteresis and with an
-OnOffController (a relation's state events; its switching times are logarithms); MSL's
+OnOffController (a relation's state events; its switching times are logarithms); edges of
+a Boolean pulse latched by an RSFlipFlop into a TransferFunction, and a Timer; MSL's
 CoupledClutches (models/clutches.py; three clutches sticking and slipping, 1.5 s).
 """
 from __future__ import annotations
@@ -27,6 +28,7 @@ from fmpy.fmi1 import FMICallException                                   # noqa:
 
 import acausal                                                            # noqa: E402
 from acausal.components import discrete as dc                            # noqa: E402
+from acausal.components import logical as lg                             # noqa: E402
 from acausal.components import signals as sg                             # noqa: E402
 from acausal.errors import FmuExportError                                # noqa: E402
 from acausal.models import CoupledClutches, SampledPController, Thermostat  # noqa: E402
@@ -50,6 +52,21 @@ def hold() -> acausal.Model:
     return m
 
 
+def edges() -> acausal.Model:
+    """Edges of a pulse set and reset a flip flop whose output drives a TransferFunction;
+    a Timer measures the pulse."""
+    m = acausal.Model("edges")
+    m.pulse = lg.BooleanPulse(width=30.0, period=0.7, startTime=0.15)
+    m.rise, m.fall, m.ff = lg.Edge(), lg.FallingEdge(), lg.RSFlipFlop()
+    m.to_real, m.timer = lg.BooleanToReal(), lg.Timer()
+    m.tf = sg.TransferFunction(b=[1.0, 2.0], a=[0.5, 1.0, 3.0], x_start=[0.2, -0.1])
+    for a, b in [(m.pulse.y, m.rise.u), (m.pulse.y, m.fall.u), (m.fall.y, m.ff.S),
+                 (m.rise.y, m.ff.R), (m.ff.Q, m.to_real.u), (m.to_real.y, m.tf.u),
+                 (m.pulse.y, m.timer.u)]:
+        m.connect(a, b)
+    return m
+
+
 CLUTCHES = ["J1.w", "J2.w", "J3.w", "J4.w", "J1.phi", "J4.phi", "clutch1.tau", "clutch2.tau",
             "clutch3.tau"]
 # name: (model, stop time [s] (no sample instant there), output interval [s], start values,
@@ -61,6 +78,7 @@ CASES = {
     "thermostat": (lambda: Thermostat(kind="Hysteresis"), 12.0, 0.01, {},
                    ["plant.y", "heater.y"], ["ctrl.y"]),
     "on_off": (Thermostat, 12.0, 0.01, {}, ["plant.y", "heater.y"], ["ctrl.y"]),
+    "edges": (edges, 2.9, 0.01, {}, ["tf.y", "tf.x[1]", "timer.y"], ["ff.pre.y"]),
     "clutches": (CoupledClutches, 1.5, 0.001, CLUTCHES_START, CLUTCHES,
                  ["clutch1.mode", "clutch2.mode", "clutch3.mode"]),
 }
