@@ -201,6 +201,9 @@ def test_state_space_shapes_are_checked():
         sg.StateSpace(A=np.eye(2), B=[[1.0], [1.0], [1.0]], C=[[1.0, 1.0]])
     with pytest.raises(ParameterError, match=r"D must have shape \(1, 1\)"):
         sg.StateSpace(A=np.eye(2), B=[[1.0], [1.0]], C=[[1.0, 1.0]], D=[[1.0, 2.0]])
+    with pytest.raises(ParameterError, match="InitialOutput needs C of full row rank"):
+        sg.StateSpace(A=np.eye(2), B=[[1.0], [1.0]], C=[[1.0, 1.0], [2.0, 2.0]],
+                      initType="InitialOutput")
     ss = sg.StateSpace("s", A=A, B=B, C=C, D=D, x_start=[1.0, 2.0, 3.0])
     back = pickle.loads(pickle.dumps(ss))
     assert type(back) is type(ss) and back.D == tuple(D.ravel()) and back.nin == 2

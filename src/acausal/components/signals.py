@@ -1553,8 +1553,14 @@ class StateSpace(_Sized, _StartValues, Component):
                 "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
 
     def __init__(self, name: str | None = None, *, A=None, B=None, C=None, D=None, **params):
-        mats = dict(zip("ABCD", (tuple(m.ravel()) for m in self._matrices(A, B, C, D))))
-        super().__init__(name, **mats, **params)
+        matrices = self._matrices(A, B, C, D)
+        super().__init__(name, **dict(zip("ABCD", (tuple(m.ravel()) for m in matrices))),
+                         **params)
+        C = matrices[2]
+        if self.initType is Init.InitialOutput and np.linalg.matrix_rank(C) < C.shape[0]:
+            raise ParameterError(f"{who(self)}: initType=InitialOutput needs C of full row "
+                                 f"rank ({C.shape[0]} independent outputs to start at "
+                                 f"y_start), got rank {np.linalg.matrix_rank(C)}")
 
     @property
     def nx(self) -> int:
