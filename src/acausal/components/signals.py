@@ -1360,7 +1360,7 @@ def _matrix(values, name: str, rows: int | None = None, cols: int | None = None)
     column may be given flat where the other size is known), checked against ``rows`` and
     ``cols`` when given (a ParameterError naming it otherwise)."""
     try:
-        m = np.array(values, dtype=float)
+        m = np.atleast_1d(np.array(values, dtype=float))
     except (TypeError, ValueError):
         raise ParameterError(f"{name} must be a matrix of numbers, got {values!r}") from None
     if m.ndim == 1:
@@ -1383,12 +1383,16 @@ class _Sized:
     _classes: dict
     _key: tuple = ()
 
+    def __init_subclass__(cls, **kwargs):
+        cls._written = vars(cls).get("_written", cls.__doc__)   # before the generated reference
+        super().__init_subclass__(**kwargs)
+
     @classmethod
     def _variant(cls, *key) -> type:
         base = cls if "_classes" in vars(cls) else cls.__bases__[0]
         if key not in base._classes:
             base._classes[key] = type(base.__name__, (base,), {
-                "__doc__": base.__doc__, "__module__": __name__,
+                "__doc__": base._written, "_written": base._written, "__module__": __name__,
                 "__qualname__": base.__name__, "_key": key, **base._declare(*key)})
         return base._classes[key]
 
@@ -1411,7 +1415,8 @@ class TransferFunction(_Sized, _StartValues, SISO):
     ``b`` and ``a`` (given at construction; their sizes nb ≤ na fix the block, their
     values are the parameters ``b[1]`` .. ``b[nb]``, ``a[1]`` .. ``a[na]``, changeable at
     simulation time). The states are MSL's: the controller canonical form scaled by
-    a_end = a[na] (1 when |a[na]| ≤ 100·eps·|a|), ``x_scaled[1]`` .. ``x_scaled[nx]``
+    a_end = a[na] if a[na] > 100·eps·|a|, else 1 (MSL's test, without abs),
+    ``x_scaled[1]`` .. ``x_scaled[nx]``
     (nx = na − 1)::
 
         der(x_scaled[1])    = (−a[2:na]·x_scaled + a_end·u)/a[1]
