@@ -16,7 +16,8 @@ A sample instant at the final time is not taken.
 ZeroOrderHold's y is MSL's pre(ySample): a loop closed algebraically through the hold (no
 state in between) is broken by that infinitesimal delay. Smooth compilation
 (``compile(model, smooth=True)``) is refused with a StructureError naming the block.
-Not here yet: FirstOrderHold, TransferFunction, StateSpace, TriggeredSampler, TriggeredMax.
+Not here yet: FirstOrderHold, the discrete TransferFunction and StateSpace (the continuous
+ones are in ``signals``), TriggeredSampler, TriggeredMax.
 """
 from __future__ import annotations
 

@@ -19,7 +19,7 @@ the position, the force K·(reference − x_k) [N] is held until the next instan
 
     ref ─→ fb.u1, probe.s ─→ smp ─→ fb.u2, fb ─→ gain (K) ─→ zoh ─→ force ─→ mass
 
-Coordinates mass.s, mass.v; discrete variables smp.y, zoh.ySample.
+Coordinates mass.s, mass.v; discrete variables smp.y, zoh.ySample, zoh.y.
 """
 from __future__ import annotations
 
