@@ -167,3 +167,32 @@ def test_heating_rectifier_matches_the_msl_reference(reference_result):
     # the temperature rise alone (1.04 K) against the reference's
     rise = ref["HeatCapacitor1.T"] - 293.15
     assert np.max(np.abs(res["HeatCapacitor1.T"] - 293.15 - rise)) < 2e-3 * np.max(rise)
+
+
+@pytest.mark.parametrize("kind", ["Resistor", "Conductor"])
+def test_temperature_outside_scope_stops_the_simulation(kind):
+    """MSL's assert(1 + alpha·(T_heatPort − T_ref) >= eps, "Temperature outside scope of
+    model!"): a current of 0.5 A through the part and a capacitor, its heat port at
+    T_ref + 100 K·t, alpha = −0.02 1/K: 1 + alpha·(T − T_ref) = 1 − 2·t reaches 0 at 0.5 s.
+    Up to 0.4 s the run holds the closed form; to 0.6 s it stops with the package's error
+    naming the part, at the first output time from 0.5 s on."""
+    from acausal.components import signals as sg
+    from acausal.errors import SimulationError
+
+    T_ref, alpha = 300.15, -0.02
+    m = acausal.Model("hot")
+    m.src, m.c, m.ground = el.ConstantCurrent(I=0.5), el.Capacitor(C=1.0), el.Ground()
+    m.part = getattr(el, kind)(alpha=alpha, T_ref=T_ref, useHeatPort=True)
+    m.ramp = sg.Ramp(height=100.0, duration=1.0, offset=T_ref)
+    m.heat = th.PrescribedTemperature()
+    for a, b in [(m.src.n, m.part.p), (m.part.n, m.c.p), (m.c.n, m.ground.p),
+                 (m.src.p, m.ground.p), (m.ramp.y, m.heat.T), (m.heat.port, m.part.heatPort)]:
+        m.connect(a, b)
+    compiled = acausal.compile(m)
+    t = np.linspace(0.0, 0.4, 41)
+    res = compiled.simulate(0.4, t=t, **TIGHT)
+    scale = 1 + alpha * 100.0 * t
+    np.testing.assert_allclose(res["part.v"], 0.5 * scale, rtol=1e-10)   # R = 1/G = 1 Ohm
+    with pytest.raises(SimulationError, match=r"'part': Temperature outside scope of model! "
+                                              r"\(assertion failed at t = 0\.5\d* s\)"):
+        compiled.simulate(0.6, t=np.linspace(0.0, 0.6, 61), **TIGHT)

@@ -313,11 +313,12 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     events = _state_events(ws, final, x, _vc(t, x, z, u), p,
                            range(motion.q_diff.numel(), motion.n_x), [v.start for _, v in params])
     initial = final(_stack([ex for _, ex, _ in ws.initials]))
+    asserted = final(_stack([c for _, c, _ in ws.assertions]))
     resolve.check([ode, alg, y_out, events.indicator, events.mode_update,
-                   events.reinit_values, events.terminate, initial])
+                   events.reinit_values, events.terminate, initial, asserted])
     check = ca.Function("check", [t, x, z, u, p], [ode, alg, y_out, events.indicator,
                                                     events.mode_update, events.reinit_values,
-                                                    events.terminate, initial],
+                                                    events.terminate, initial, asserted],
                         {"allow_free": True})
     if check.has_free():
         raise StructureError(f"internal: unresolved symbols {check.get_free()[:5]} "
@@ -365,6 +366,8 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         initial_equations=initial,
         initial_labels=[f"{o.path or model.name or type(model).__name__}: {n}"
                         for o, _, n in ws.initials],
+        assertions=asserted,
+        assertion_texts=[(o.path, text) for o, _, text in ws.assertions],
         smooth=ws.smooth,
         index_reduction=ws.index_reduction,
         angle_starts=angle_starts(tree.charts, p),

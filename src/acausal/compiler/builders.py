@@ -99,6 +99,7 @@ class Workspace:
     reinits: list = field(default_factory=list)             # (owner, variable, expr, when, dir.)
     initials: list = field(default_factory=list)            # (owner, expr, name) at the start
     terminations: list = field(default_factory=list)        # (owner, condition, text)
+    assertions: list = field(default_factory=list)          # (owner, condition, message)
     velocity_constraints: list = field(default_factory=list)  # (owner, name, expr, force)
     state_selects: list = field(default_factory=list)       # (owner, name, expr, rank) kept
     components: list = field(default_factory=list)          # all of them, flattened
@@ -652,6 +653,19 @@ class PhysicsBuilder(_Base):
         it is built from modes and time-evented signals (a relation block's output, a
         time event of this component at the instant it becomes true)."""
         self._ws.terminations.append((self._owner, sx(condition), str(text)))
+
+    def assertion(self, condition, message: str) -> None:
+        """Modelica's ``assert(condition, message)``: the Boolean ``condition`` (of time,
+        motion, states, algebraic variables, inputs, parameters and modes) must hold;
+        simulate() raises a SimulationError naming this component, ``message`` and the
+        first time where it fails, checked at every point of the Result (output times and
+        both sides of events), so a violation that begins and ends between two of them
+        passes unseen. It adds no event (the model keeps its solvers and code generation);
+        sweeps' mapped runs, the Stepper and FMUs do not check it. A condition that is
+        true by construction (constant) is not kept."""
+        condition = sx(condition)
+        if not (condition.is_constant() and float(condition) != 0):
+            self._ws.assertions.append((self._owner, condition, str(message)))
 
     def part(self, component: Component) -> "PhysicsBuilder":
         """A builder for reading the variables of ``component``, a part of this one (a

@@ -135,6 +135,8 @@ class CompiledModel:
     ``state_events``: indicators, mode updates and reinits (see ``StateEvents``).
     ``initial_equations``: the components' initial equations (= 0 at the start, in (t, x,
     z, u, p); ``PhysicsBuilder.initial``), ``initial_labels`` one label each.
+    ``assertions``: the components' conditions that must hold (1 = true, in (t, x, z, u,
+    p); ``PhysicsBuilder.assertion``), ``assertion_texts`` their (component, message).
     ``smooth``: compiled in smooth form (``compile(model, smooth=True)``);
     ``index_reduction``: networks' loops and cut sets reduced (``compile(model,
     index_reduction=True)``, kept by ``recompile``). ``angle_starts``: the free rotations
@@ -173,6 +175,8 @@ class CompiledModel:
     state_events: StateEvents = field(default_factory=StateEvents)
     initial_equations: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
     initial_labels: list[str] = field(default_factory=list)
+    assertions: ca.SX = field(default_factory=lambda: ca.SX(0, 1))
+    assertion_texts: list = field(default_factory=list)
     smooth: bool = False    # compiled in smooth form (no events; see PhysicsBuilder.smooth)
     index_reduction: bool = False   # networks' loops and cut sets reduced (compiler.networks)
     angle_starts: list = field(default_factory=list)    # charts.AngleStart of free rotations

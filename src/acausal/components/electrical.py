@@ -26,7 +26,7 @@ from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, Negati
 from ..errors import ParameterError
 from . import rotational, translational
 from .logical import refuse_smooth
-from .signals import _start
+from .signals import EPS, _start
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "Capacitor", "Inductor", "RotationalEMF", "EMF", "TranslationalEMF",
@@ -105,6 +105,13 @@ class _TemperatureDependent(_ConditionalHeatPort, OnePort):
         """Fixed device temperature if useHeatPort = false [K]: T_ref (MSL's binding)."""
         return self.T_ref
 
+    def _scale(self, e, T_heatPort):
+        """1 + alpha·(T_heatPort − T_ref), which MSL asserts ≥ eps: simulate() stops with an
+        error naming the component where it is not (``PhysicsBuilder.assertion``)."""
+        scale = 1 + self.alpha * (T_heatPort - self.T_ref)
+        e.assertion(scale >= EPS, "Temperature outside scope of model!")
+        return scale
+
 
 def _with_parameter_T(cls):
     """Register on ``cls`` its twin with the parameter T [K] (named like ``cls`` in
@@ -127,7 +134,7 @@ class _PartialResistor(_TemperatureDependent):
 
     def physics(self, e):
         v, i, T = self._v(e), self._current(e), self._T_heatPort(e)
-        R_actual = self._R * (1 + self.alpha * (T - self.T_ref))
+        R_actual = self._R * self._scale(e, T)
         e.residual(v - R_actual * i)
         self._record(e, v, i)
         e.variable("R_actual", R_actual, "Ohm", "actual resistance = R*(1 + alpha*(T_heatPort "
@@ -157,7 +164,7 @@ class Conductor(_TemperatureDependent):
 
     def physics(self, e):
         v, T = self._v(e), self._T_heatPort(e)
-        G_actual = self.G / (1 + self.alpha * (T - self.T_ref))
+        G_actual = self.G / self._scale(e, T)
         i = self._current(e, G_actual * v)
         self._record(e, v, i)
         e.variable("G_actual", G_actual, "S", "actual conductance = G/(1 + alpha*(T_heatPort "

@@ -150,8 +150,8 @@ def _closed(model, exprs: dict):
     drop = [model.input_names.index(n) for n in exprs]
     old = [model.u[k] for k in drop]
     new = list(exprs.values())
-    ode, alg, y, init = ca.substitute([model.ode, model.alg, model.y, model.initial_equations],
-                                      old, new)
+    ode, alg, y, init, asserted = ca.substitute(
+        [model.ode, model.alg, model.y, model.initial_equations, model.assertions], old, new)
     ev = model.state_events
     g, update, values, end = ca.substitute(
         [ev.indicator, ev.mode_update, ev.reinit_values, ev.terminate], old, new)
@@ -160,7 +160,8 @@ def _closed(model, exprs: dict):
                               for r in ev.reinits])
     return replace(model, u=ca.vertcat(*[model.u[k] for k in keep]) if keep else ca.SX(0, 1),
                    inputs=[model.inputs[k] for k in keep], ode=ode, alg=alg, y=y,
-                   initial_equations=init, state_events=events, _cache={})
+                   initial_equations=init, assertions=asserted, state_events=events,
+                   _cache={})
 
 
 def _on_model(model, closed, res: Result, subs: dict) -> Result:
