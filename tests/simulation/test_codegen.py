@@ -85,9 +85,9 @@ def test_bdf_on_the_forward_derivative_of_a_large_jacobian(monkeypatch):
     """A Jacobian too large to generate (the dense one of a recursion) is assembled by CasADi
     from the generated forward derivative, column by column: the same solution as the
     hand-written integrator to the integrator's tolerance (other rounding, other steps)."""
-    from acausal.simulation import codegen
-    monkeypatch.setattr(codegen, "JACOBIAN_LIMIT", 0)
-    monkeypatch.setattr(codegen, "JACOBIAN_RATIO", 0)
+    from acausal import toolchain
+    monkeypatch.setattr(toolchain, "JACOBIAN_LIMIT", 0)
+    monkeypatch.setattr(toolchain, "JACOBIAN_RATIO", 0)
     compiled = acausal.compile(PendulumChain(4))
     grid = np.linspace(0, 2.0, 41)
     res = compiled.simulate(2.0, t=grid, x0={"rev1.phi": 0.8}, solver="cvodes", codegen=True)
@@ -101,7 +101,7 @@ def test_chain_of_masses_with_branch_free_code_equals_in_process(monkeypatch):
     sparse Jacobian); equal to the in-process simulate() and to the closed form of the
     static deflection under a constant force (each spring carries F: s_i = i·F/c)."""
     from acausal.components.translational import Fixed, Force, Mass, Spring
-    from acausal.simulation import codegen
+    from acausal import toolchain
     n, c, F = 30, 100.0, 2.0
     m = Model("masses")
     m.wall = Fixed()
@@ -117,13 +117,13 @@ def test_chain_of_masses_with_branch_free_code_equals_in_process(monkeypatch):
     m.connect(m.push.flange, prev)
     compiled = acausal.compile(m)
     stripped = []
-    plain = codegen._without_null_checks
+    plain = toolchain.plain_access
 
-    def spy(code, functions):
-        out = plain(code, functions)
+    def spy(code, functions, error):
+        out = plain(code, functions, error)
         stripped.append(out != code)
         return out
-    monkeypatch.setattr(codegen, "_without_null_checks", spy)
+    monkeypatch.setattr(toolchain, "plain_access", spy)
     x0 = {f"mass{i}.s": i * F / c for i in range(1, n + 1)}       # the static deflection
     kw = dict(x0=x0, inputs={"F": F}, solver="cvodes")
     res = compiled.simulate(5.0, codegen=True, **kw)

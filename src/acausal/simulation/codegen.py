@@ -28,7 +28,6 @@ from __future__ import annotations
 
 import hashlib
 import os
-import re
 import tempfile
 from pathlib import Path
 
@@ -37,12 +36,6 @@ import casadi as ca
 from .. import toolchain
 from ..errors import SimulationError
 
-# CasADi's straight-line code runs as fast at -O1 as at -O2 (a 3-D chain of 16 links:
-# 16.6 vs 16.4 us per right-hand side; -O0 43 us) and compiles 1.5x faster (8 s vs 13 s)
-FLAGS = ("-O1",)
-JACOBIAN_LIMIT = 20000      # instructions: gcc -O1 takes ~1 s per 3000
-JACOBIAN_RATIO = 5          # a sparse Jacobian (a chain of masses) is kept however large
-BRANCHY = 0.1              # null-pointer branches per instruction worth removing
 WITHOUT_DERIVATIVES = ("adams", "dop853")      # the solvers that evaluate no Jacobian
 NO_AD = {"enable_fd": True, "enable_forward": False, "enable_reverse": False,
          "enable_jacobian": False}
@@ -62,10 +55,9 @@ def equations(model, derivatives: bool) -> ca.Function:
     the first call, cached on disk and on the model): ``ode(x, t, u, p)`` for an ODE,
     ``dae(x, z, t, u, p) -> (ode, alg)`` for a DAE; ``derivatives``: with its Jacobian with
     respect to the states (x, z), for Newton's method — symbolic, with its sparsity, as the
-    in-process integrator has it while it is at most JACOBIAN_LIMIT instructions or
-    JACOBIAN_RATIO times the right-hand side's; else (the dense Jacobian of a recursion,
-    O(N²) code) CasADi's from the forward derivative, one column per call (code linear in
-    the model's size)."""
+    in-process integrator has it while its code is cheap to compile
+    (``toolchain.jacobian_fits``); else CasADi's from the forward derivative, one column
+    per call."""
     key = ("codegen", derivatives)
     if key not in model._cache:
         check_supported(model)
@@ -73,8 +65,7 @@ def equations(model, derivatives: bool) -> ca.Function:
         functions = [f]
         if derivatives:
             jac = f.jacobian()
-            limit = max(JACOBIAN_LIMIT, JACOBIAN_RATIO * f.n_instructions())
-            functions.append(jac if jac.n_instructions() <= limit else f.forward(1))
+            functions.append(jac if toolchain.jacobian_fits(jac, f) else f.forward(1))
         library = _library(functions, f.name())
         model._cache[key] = ca.external(f.name(), str(library),
                                         {"is_diff_in": _states(model)} if derivatives else NO_AD)
@@ -113,9 +104,9 @@ def _library(functions: list[ca.Function], name: str) -> Path:
         for f in functions:
             gen.add(f)
         source = Path(tmp) / f"{name}.c"
-        source.write_text(_without_null_checks(gen.dump(), functions))
+        source.write_text(toolchain.plain_access(gen.dump(), functions, SimulationError))
         digest = hashlib.sha256(source.read_bytes())
-        digest.update(" ".join((cc, ca.__version__) + FLAGS).encode())
+        digest.update(" ".join((cc, ca.__version__) + toolchain.FLAGS).encode())
         target = cache_dir() / f"{name}_{digest.hexdigest()[:24]}.so"
         if target.is_file():
             return target
@@ -127,64 +118,11 @@ def _library(functions: list[ca.Function], name: str) -> Path:
                                   f"directory") from None
         # built beside its final name and renamed: a concurrent run never loads half a file
         partial = target.with_suffix(f".{os.getpid()}.tmp")
-        toolchain.build_shared_library(cc, [source], partial, flags=FLAGS,
+        toolchain.build_shared_library(cc, [source], partial, flags=toolchain.FLAGS,
                                        error=SimulationError,
                                        what=f"the generated code of '{name}'")
         os.replace(partial, target)
     return target
-
-
-def _without_null_checks(code: str, functions: list[ca.Function]) -> str:
-    """CasADi's C reads every argument element as ``arg[i]? arg[i][k] : 0`` and writes every
-    result element under ``if (res[i]!=0)`` (a null pointer: zeros in, not wanted out): a
-    branch per element, which makes gcc's time grow steeply with the size of the function
-    (the 1000-mass chain's ODE and Jacobian: 7 s and 17 s at -O1, 2.7 s and 1.6 s without).
-    Reads and writes become plain; each exported function passes a block of zeros for a
-    null argument (derivative seeds CasADi leaves out) and, for a null result, space it
-    adds to the work vector (per call: thread-safe). Only where the branches are dense (a
-    tenth of the instructions or more, ``BRANCHY``): in long stretches of arithmetic
-    between few reads (a 3-D recursion) they cut the block that gcc's register allocation
-    works on, and it takes longer without them (a 16-link 3-D chain: 4.8 s, 7 s without)."""
-    reads = re.compile(r"arg\[(\d+)\]\? (arg\[\1\]\[\d+\]) : 0")
-    writes = re.compile(r"if \(res\[\d+\]!=0\) (res\[\d+\]\[\d+\]=)")
-    branches = len(reads.findall(code)) + len(writes.findall(code))
-    if branches < BRANCHY * sum(f.n_instructions() for f in functions):
-        return code
-    largest = max(f.nnz_in(i) for f in functions for i in range(f.n_in()))
-    code = re.sub(r"arg\[(\d+)\]\? (arg\[\1\]\[\d+\]) : 0", r"\2", code)
-    code = re.sub(r"if \(res\[\d+\]!=0\) (res\[\d+\]\[\d+\]=)", r"\1", code)
-    for f in functions:
-        name = re.escape(f.name())
-        sink = max([f.nnz_out(i) for i in range(f.n_out())] + [1])
-        work = re.compile(rf"(CASADI_SYMBOL_EXPORT int {name}_work\({_SIZES}\) \{{\n(?:.*\n)"
-                          rf"{{3}}  if \(sz_w\) \*sz_w = )(\d+);")
-        entry = re.compile(rf"(CASADI_SYMBOL_EXPORT int {name}{_ENTRY}\{{\n)"
-                           rf"  return (casadi_f\d+)\(arg, res, iw, w, mem\);")
-        found = []
-
-        def more_work(m):
-            found.append(int(m.group(2)))
-            return f"{m.group(1)}{found[0] + sink};"
-        code, n_work = work.subn(more_work, code)
-        guard = (f"  const casadi_real* a[{max(f.n_in(), 1)}];\n"
-                 f"  casadi_real* r[{max(f.n_out(), 1)}];\n  int i;\n"
-                 f"  for (i = 0; i < {f.n_in()}; ++i) a[i] = arg[i] ? arg[i] : acausal_zeros;\n"
-                 f"  for (i = 0; i < {f.n_out()}; ++i) r[i] = res[i] ? res[i] : "
-                 f"w + {found[0] if found else 0};\n")
-        code, n_entry = entry.subn(lambda m: f"{m.group(1)}{guard}  return {m.group(2)}"
-                                             f"(a, r, iw, w, mem);", code)
-        if n_work != 1 or n_entry != 1:
-            raise SimulationError(f"the generated code of '{f.name()}' has not the entry points "
-                                  f"expected (CasADi {ca.__version__}); simulate without codegen")
-    zeros = f"static const casadi_real acausal_zeros[{max(largest, 1)}] = {{0}};\n"
-    head = code.index("static int casadi_f")             # before the first function
-    return code[:head] + zeros + code[head:]
-
-
-_ENTRY = (r"\(const casadi_real\*\* arg, casadi_real\*\* res, casadi_int\* iw, "
-          r"casadi_real\* w, int mem\)")
-_SIZES = (r"casadi_int \*sz_arg, casadi_int\* sz_res, casadi_int \*sz_iw, "
-          r"casadi_int \*sz_w")
 
 
 def dae_problem(model, solver: str, u_expr: ca.SX, p, scale) -> dict:
