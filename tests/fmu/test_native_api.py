@@ -19,6 +19,7 @@ from fmpy.fmi1 import FMICallException                            # noqa: E402
 from fmpy.validation import validate_fmu                          # noqa: E402
 
 import acausal                                                    # noqa: E402
+from acausal import toolchain                                     # noqa: E402
 from acausal.components import translational as tr               # noqa: E402
 from acausal.core import RealOutput                               # noqa: E402
 from acausal.fmu import FmuExportError                            # noqa: E402
@@ -60,12 +61,20 @@ class Isolator(acausal.Model):
 
 @pytest.fixture(scope="module")
 def fmus(fmu_dir):
+    """The crane and the isolator, compiled and exported (FMI 2 and 3); "<model> by columns":
+    exported with the Jacobian assembled from the forward derivative (``ac_jac`` as for a
+    model whose symbolic Jacobian is too large to compile)."""
     crane, iso = acausal.compile(GantryCrane()), acausal.compile(Isolator())
-    return {"crane": crane, "iso": iso,
-            ("crane", "2.0"): crane.export_fmu(fmu_dir / "crane2.fmu"),
-            ("crane", "3.0"): crane.export_fmu(fmu_dir / "crane3.fmu", fmi_version="3.0"),
-            ("iso", "2.0"): iso.export_fmu(fmu_dir / "iso2.fmu"),
-            ("iso", "3.0"): iso.export_fmu(fmu_dir / "iso3.fmu", fmi_version="3.0")}
+    out = {"crane": crane, "iso": iso}
+    for name, compiled in (("crane", crane), ("iso", iso)):
+        for v in ("2.0", "3.0"):
+            out[(name, v)] = compiled.export_fmu(fmu_dir / f"{name}{v[0]}.fmu", fmi_version=v)
+            with pytest.MonkeyPatch.context() as mp:
+                mp.setattr(toolchain, "JACOBIAN_LIMIT", 0)
+                mp.setattr(toolchain, "JACOBIAN_RATIO", 0)
+                out[(f"{name} by columns", v)] = compiled.export_fmu(
+                    fmu_dir / f"{name}{v[0]}_columns.fmu", fmi_version=v)
+    return out
 
 
 @pytest.mark.parametrize("version", ["2.0", "3.0"])
@@ -153,12 +162,13 @@ def test_fmu_state_round_trip(fmus, version):
     fmu.freeInstance()
 
 
-@pytest.mark.parametrize("model", ["crane", "iso"])
+@pytest.mark.parametrize("model", ["crane", "iso", "crane by columns", "iso by columns"])
 @pytest.mark.parametrize("version", ["2.0", "3.0"])
 def test_directional_derivatives(fmus, model, version):
-    """∂ẋ/∂x·v and ∂ẋ/∂u·w from the FMU (CasADi AD; through the algebraic node for iso)
-    against central finite differences of the FMU's derivatives."""
-    compiled = fmus[model]
+    """∂ẋ/∂x·v and ∂ẋ/∂u·w from the FMU (CasADi AD, symbolic or by columns of the forward
+    derivative; through the algebraic node for iso) against central finite differences of
+    the FMU's derivatives."""
+    compiled = fmus[model.split()[0]]
     fmu, vr, md = instance(fmus[(model, version)])
     init(fmu, md, {}, vr)
     fmu.enterContinuousTimeMode()

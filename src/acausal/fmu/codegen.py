@@ -33,9 +33,13 @@ are ``event_tables``.
 """
 from __future__ import annotations
 
+from pathlib import Path
+
 import casadi as ca
 import numpy as np
 
+from .. import toolchain
+from ..errors import FmuExportError
 from ..simulation.initialization import model_equations
 
 FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
@@ -90,10 +94,7 @@ class ModelFunctions:
             "ac_ode": ca.Function("ac_ode", args, [d(ode)], names, ["xdot"]),
             "ac_out": ca.Function("ac_out", args, [d(y)], names, ["y"]),
             "ac_rec": ca.Function("ac_rec", args, [d(rec)], names, ["rec"]),
-            "ac_jac": ca.Function("ac_jac", args,
-                                  [d(ca.jacobian(F, w)), d(ca.jacobian(F, z)),
-                                   d(ca.jacobian(g, w)), d(ca.jacobian(g, z))],
-                                  names, ["F_w", "F_z", "g_w", "g_z"]),
+            "ac_jac": _jacobian(args, names, F, g, w, z),
             "ac_alg": ca.Function("ac_alg", args, [d(g), d(ca.jacobian(g, z))], names,
                                   ["g", "g_z"]),
             "ac_con": ca.Function("ac_con", args, [d(H), d(ca.jacobian(H, x))], names,
@@ -154,12 +155,49 @@ class ModelFunctions:
         """Work array sizes over all functions."""
         fs = self.functions.values()
         return {"arg": max(f.sz_arg() for f in fs), "res": max(f.sz_res() for f in fs),
-                "iw": max(f.sz_iw() for f in fs), "w": max(f.sz_w() for f in fs)}
+                "iw": max(f.sz_iw() for f in fs), "w": max(toolchain.work_size(f) for f in fs)}
 
-    def generate(self, directory, filename: str = "model_functions.c") -> list[str]:
-        """Write the C file (and its header) into ``directory``; returns their names."""
-        gen = ca.CodeGenerator(filename, {"with_header": True})
-        for f in self.functions.values():
+    def generate(self, directory) -> list[str]:
+        """Write the C of each function into a file of its own in ``directory`` (so that the
+        files compile side by side, ``toolchain.build_shared_library``), and the header
+        ``model_functions.h`` the runtime includes; returns the C files' names."""
+        directory = Path(directory)
+        sources = []
+        for name, f in self.functions.items():
+            gen = ca.CodeGenerator(f"{name}.c", {"with_header": True})
             gen.add(f)
-        gen.generate(str(directory) + "/")
-        return [filename, filename[:-2] + ".h"]
+            gen.generate(str(directory) + "/")
+            path = directory / f"{name}.c"
+            path.write_text(toolchain.plain_access(path.read_text(), [f], FmuExportError))
+            sources.append(path.name)
+        (directory / "model_functions.h").write_text(
+            "".join(f'#include "{name}.h"\n' for name in self.functions))
+        return sources
+
+
+def _jacobian(args: list, names: list[str], F: ca.SX, g: ca.SX, w: ca.SX, z: ca.SX):
+    """``ac_jac``: the dense Jacobians (∂F/∂w, ∂F/∂z, ∂g/∂w, ∂g/∂z), symbolic while their
+    code is cheap to compile (``toolchain.jacobian_fits``); else column by column from the
+    forward derivative of (F, g), mapped over the unit seeds (a 6-axis arm's 3-D
+    recursion: 53 000 instructions and 20-30 s of gcc for the symbolic ones)."""
+    outs = ["F_w", "F_z", "g_w", "g_z"]
+    jac = ca.Function("ac_jac", args, [ca.densify(ca.jacobian(e, v))
+                                       for e, v in ((F, w), (F, z), (g, w), (g, z))],
+                      names, outs)
+    h = ca.Function("F_g", args, [F, g], names, ["F", "g"])
+    if toolchain.jacobian_fits(jac, h):
+        return jac
+    forward = h.forward(1)
+    mx = [ca.MX.sym(n, a.sparsity()) for n, a in zip(names, args)]
+    value = h(*mx)
+
+    def columns(v: ca.SX) -> list:
+        """(∂F/∂v, ∂g/∂v): the forward derivative at the unit seeds of v, a vector of the
+        arguments (the seed of each argument: the constant ∂v/∂argᵀ)."""
+        if not v.numel():
+            return [ca.MX(F.numel(), 0), ca.MX(g.numel(), 0)]
+        seeds = [ca.DM(ca.evalf(ca.jacobian(v, a))).T for a in args]
+        return forward.map(v.numel())(*mx, *value, *seeds)
+
+    (F_w, g_w), (F_z, g_z) = columns(w), columns(z)
+    return ca.Function("ac_jac", mx, [F_w, F_z, g_w, g_z], names, outs)

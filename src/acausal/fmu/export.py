@@ -4,7 +4,9 @@ the system C compiler. No Python is needed where the FMU runs.
 What the FMU contains
 ---------------------
 - ``binaries/linux64/<id>.so`` (FMI 2.0) or ``binaries/x86_64-linux/<id>.so`` (FMI 3.0), built
-  from ``sources/``: the generated model functions (``model_functions.c``), the model's sizes
+  from ``sources/``: the generated model functions (``ac_ode.c``, ``ac_jac.c``, …, one file
+  each, declared together by ``model_functions.h``; compiled side by side at -O1, see
+  ``toolchain``), the model's sizes
   and tables (``model.h``, ``model_data.c``), the shared runtime (``c/`` in this package:
   ``instance.c`` the instance, its variables and life cycle; ``equations.c`` evaluation and
   Newton for algebraic variables; ``events.c`` state events and modes; ``loops.c`` loop assembly and projection; ``solver.c`` the
@@ -342,7 +344,7 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
         src = tmp / "sources"
         src.mkdir()
         generated = mf.generate(src)
-        digest = hashlib.sha256((src / generated[0]).read_bytes())
+        digest = hashlib.sha256(b"".join((src / f).read_bytes() for f in generated))
         digest.update(repr([(v.name, v.value_reference, v.start) for v in variables]
                            + nominal).encode())
         guid = "{" + str(uuid.UUID(digest.hexdigest()[:32])) + "}"
@@ -353,13 +355,15 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
         pkg = resources.files("acausal.fmu") / "c"
         for name in RUNTIME_HEADERS + RUNTIME_SOURCES + (wrapper,):
             (src / name).write_text((pkg / name).read_text())
-        c_files = [generated[0], "model_data.c", *RUNTIME_SOURCES, wrapper]
+        c_files = [*generated, "model_data.c", *RUNTIME_SOURCES, wrapper]
         plat = plat2 if fmi_version == "2.0" else plat3
         binary = tmp / "binaries" / plat / f"{ident}{ext}"
         binary.parent.mkdir(parents=True)
+        hidden = ("-fvisibility=hidden",)
         toolchain.build_shared_library(
-            cc, [src / f for f in c_files], binary, include=(src, headers),
-            flags=("-O2", "-fvisibility=hidden"), error=FmuExportError, what="the FMU")
+            cc, [(src / f, (toolchain.FLAGS if f in generated else ("-O2",)) + hidden)
+                 for f in c_files], binary, include=(src, headers),
+            error=FmuExportError, what="the FMU")
         info = {"model_name": compiled.name, "identifier": ident, "guid": guid,
                 "description": description or f"{compiled.name} (acausal, native)",
                 "variables": variables, "me": fmu_type in ("me", "both"),
