@@ -167,6 +167,20 @@ def test_failed_runs_are_reported_by_index():
     assert np.all(np.isnan(res_bad["mass.s"][1]))
 
 
+def test_a_model_with_one_state():
+    """A FirstOrder block (one state) on a unit step: y = k·(1 − exp(−t/T)) for each T (its
+    single nominal once sliced to no algebraic variables at all)."""
+    from acausal.components import signals as sg
+    m = acausal.Model("lag")
+    m.u, m.lag = sg.Constant(k=1.0), sg.FirstOrder(k=2.0)
+    m.connect(m.u.y, m.lag.u)
+    grid = np.linspace(0.0, 2.0, 21)
+    res = acausal.compile(m).sweep(2.0, t=grid, params={"lag.T": [0.5, 1.0]},
+                                   variables=["lag.y"], rtol=1e-10, atol=1e-12)
+    for k, T in enumerate((0.5, 1.0)):
+        np.testing.assert_allclose(res["lag.y"][k], 2.0 * (1 - np.exp(-grid / T)), atol=1e-8)
+
+
 def test_models_with_events_run_as_a_simulate_loop():
     ball = acausal.compile(models.BouncingBall())
     grid = np.linspace(0.0, 2.0, 201)

@@ -366,7 +366,7 @@ def scaled(model, ode, alg, nominal):
     numbers, or symbols (parameters of the integrator, one value per run of a sweep)."""
     nx = model.x.numel()
     if isinstance(nominal, ca.SX):
-        Nx, Nz = nominal[:nx], nominal[nx:]
+        Nx, Nz = nominal[:nx, :], nominal[nx:, :]       # (a 1 x 1 SX sliced [1:] is 1 x 0)
     elif np.all(nominal == 1.0):
         return ode, alg
     else:
