@@ -3,6 +3,8 @@ HeatingResistor, the exponential Diode) against closed forms and MSL's published
 results of Electrical.Analog.Examples.Resistor and HeatingRectifier."""
 from __future__ import annotations
 
+import re
+
 import numpy as np
 import pytest
 
@@ -169,17 +171,12 @@ def test_heating_rectifier_matches_the_msl_reference(reference_result):
     assert np.max(np.abs(res["HeatCapacitor1.T"] - 293.15 - rise)) < 2e-3 * np.max(rise)
 
 
-@pytest.mark.parametrize("kind", ["Resistor", "Conductor"])
-def test_temperature_outside_scope_stops_the_simulation(kind):
-    """MSL's assert(1 + alpha·(T_heatPort − T_ref) >= eps, "Temperature outside scope of
-    model!"): a current of 0.5 A through the part and a capacitor, its heat port at
-    T_ref + 100 K·t, alpha = −0.02 1/K: 1 + alpha·(T − T_ref) = 1 − 2·t reaches 0 at 0.5 s.
-    Up to 0.4 s the run holds the closed form; to 0.6 s it stops with the package's error
-    naming the part, at the first output time from 0.5 s on."""
+def hot_part(kind: str, alpha: float = -0.02) -> acausal.Model:
+    """A current of 0.5 A through a Resistor or Conductor (R = 1/G = 1 Ohm) and a capacitor,
+    its heat port at T_ref + 100 K·t: 1 + alpha·(T − T_ref) = 1 + 100·alpha·t (with the
+    default alpha −0.02 1/K: 1 − 2·t, which reaches 0 at 0.5 s)."""
     from acausal.components import signals as sg
-    from acausal.errors import SimulationError
-
-    T_ref, alpha = 300.15, -0.02
+    T_ref = 300.15
     m = acausal.Model("hot")
     m.src, m.c, m.ground = el.ConstantCurrent(I=0.5), el.Capacitor(C=1.0), el.Ground()
     m.part = getattr(el, kind)(alpha=alpha, T_ref=T_ref, useHeatPort=True)
@@ -188,11 +185,44 @@ def test_temperature_outside_scope_stops_the_simulation(kind):
     for a, b in [(m.src.n, m.part.p), (m.part.n, m.c.p), (m.c.n, m.ground.p),
                  (m.src.p, m.ground.p), (m.ramp.y, m.heat.T), (m.heat.port, m.part.heatPort)]:
         m.connect(a, b)
-    compiled = acausal.compile(m)
+    return m
+
+
+OUTSIDE = r"'part': Temperature outside scope of model! \(assertion failed at t = 0\.5\d* s\)"
+
+
+@pytest.mark.parametrize("kind", ["Resistor", "Conductor"])
+def test_temperature_outside_scope_stops_the_simulation(kind):
+    """MSL's assert(1 + alpha·(T_heatPort − T_ref) >= eps, "Temperature outside scope of
+    model!") with 1 + alpha·(T − T_ref) = 1 − 2·t (``hot_part``): up to 0.4 s the run holds
+    the closed form; to 0.6 s it stops with the package's error naming the part, at the
+    first output time from 0.5 s on."""
+    from acausal.errors import SimulationError
+
+    compiled = acausal.compile(hot_part(kind))
     t = np.linspace(0.0, 0.4, 41)
     res = compiled.simulate(0.4, t=t, **TIGHT)
-    scale = 1 + alpha * 100.0 * t
-    np.testing.assert_allclose(res["part.v"], 0.5 * scale, rtol=1e-10)   # R = 1/G = 1 Ohm
-    with pytest.raises(SimulationError, match=r"'part': Temperature outside scope of model! "
-                                              r"\(assertion failed at t = 0\.5\d* s\)"):
+    np.testing.assert_allclose(res["part.v"], 0.5 * (1 - 2 * t), rtol=1e-10)
+    with pytest.raises(SimulationError, match=OUTSIDE):
         compiled.simulate(0.6, t=np.linspace(0.0, 0.6, 61), **TIGHT)
+
+
+def test_temperature_outside_scope_in_a_sweep_and_a_stepper():
+    """The same assertion in a sweep (alpha −0.005 1/K: holds to 0.6 s, the closed form
+    v = 0.5·(1 + 100·alpha·t); alpha −0.02: the run is reported failed with the message
+    and NaN values) and in a Stepper (the step that ends at 0.5 s raises it)."""
+    from acausal.errors import SimulationError
+
+    compiled = acausal.compile(hot_part("Resistor"))
+    grid = np.linspace(0.0, 0.6, 61)
+    out = compiled.sweep(0.6, t=grid, params={"part.alpha": [-0.005, -0.02]},
+                         variables=["part.v"], **TIGHT)
+    assert list(out.failed) == [1]
+    assert re.fullmatch(OUTSIDE, out.failed[1])
+    np.testing.assert_allclose(out["part.v"][0], 0.5 * (1 - 0.5 * grid), rtol=1e-8)
+    assert np.all(np.isnan(out["part.v"][1]))
+    stepper = compiled.stepper(0.1, **TIGHT)
+    for _ in range(4):
+        stepper.step()
+    with pytest.raises(SimulationError, match=OUTSIDE):
+        stepper.step()

@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import SimulationError
 from ..numerics import just_before
-from . import buffers, codegen as generated, explicit
+from . import assertions, buffers, codegen as generated, explicit
 from .diagnosis import failure_message, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
@@ -248,7 +248,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
     U = np.array(ca.Function("u", [model.t], [u_expr]).map(grid.size)(grid.reshape(1, -1))) \
         if model.u.numel() else np.zeros((0, grid.size))
     res = Result(model, grid, X, Z, U, p)
-    _check_assertions(model, res)
+    assertions.check(model, res.t, res._states, res._algebraics, res._inputs, res._params)
     res.partial = interrupted
     res.mobility = mobility             # degrees of freedom and redundant loop rows, if loops
     res.solver = solver
@@ -277,30 +277,13 @@ def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
     P = np.tile(p.reshape(-1, 1), (1, T.size))
     P[model.mode_params] = D
     res = Result(model, T, X, Z, U, P)
-    _check_assertions(model, res)
+    assertions.check(model, res.t, res._states, res._algebraics, res._inputs, res._params)
     res.partial = partial
     res.events = run.log
     res.terminated = run.terminated
     res.mobility = mobility
     res.solver = solver
     return res
-
-
-def _check_assertions(model, res: Result) -> None:
-    """A SimulationError at the first point of ``res`` where a component's assertion
-    (``PhysicsBuilder.assertion``) fails, naming the component and its message."""
-    if not model.assertions.numel():
-        return
-    n = res.t.size
-    held = np.array(model.function("assertions", [model.assertions]).map(n)(
-        res.t.reshape(1, -1), res._states, res._algebraics, res._inputs, res._params),
-        dtype=float).reshape(-1, n)
-    failed = np.flatnonzero(~np.all(held > 0.5, axis=0))
-    if failed.size:
-        k = failed[0]
-        component, message = model.assertion_texts[int(np.flatnonzero(held[:, k] <= 0.5)[0])]
-        raise SimulationError(f"'{component}': {message} (assertion failed at t = "
-                              f"{res.t[k]:.6g} s)")
 
 
 def _algebraic_only(model, alg, grid, z0) -> np.ndarray:

@@ -32,6 +32,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
+from . import assertions
 from .buffers import Buffered
 from .events import EventSimulation
 from .initialization import initial_state
@@ -233,9 +234,12 @@ class Stepper:
         return self.outputs()
 
     def advance(self, h: float) -> None:
-        """Integrate over [t, t + h] with the held inputs (``step`` without outputs)."""
+        """Integrate over [t, t + h] with the held inputs (``step`` without outputs); a
+        SimulationError if a component's assertion fails at t + h (``assertions``)."""
         self._over(h)
         self._t[0] += h
+        if self.model.assertions.numel():
+            assertions.check(self.model, self._t, self._x, self._z, self.u, self.p)
 
     def outputs(self) -> dict[str, float]:
         """The chosen outputs at the present time, by name."""

@@ -25,6 +25,7 @@ import numpy as np
 
 from ..errors import AcausalError, SimulationError
 from ..numerics import event_times
+from . import assertions
 from .diagnosis import failure_message, quiet_stderr
 from .initialization import initial_state
 from .inputs import Samples, input_signal
@@ -410,12 +411,18 @@ class _Engine:
         for k, text in errors.items():
             self.failed[k] = failure_message(model, RuntimeError(text), grid[0], grid[-1],
                                              s["rtol"], s["atol"])
-        failed = sorted(self.failed)
         X, Z = W[:nx].reshape(nx, n * nt), W[nx:].reshape(nw - nx, n * nt)
         T = np.tile(grid, n)                        # every run side by side
         U = np.array(self.u_of.map(n * nt)(T[None, :], np.repeat(self.U, nt, axis=1)),
                      dtype=float) if model.u.numel() else np.zeros((0, n * nt))
-        values = _values(model, variables, T, X, Z, U, np.repeat(self.P, nt, axis=1))
+        P = np.repeat(self.P, nt, axis=1)
+        asserted = assertions.failures(model, T, X, Z, U, P).reshape(n, nt)
+        for k in ok:
+            at = np.flatnonzero(asserted[k] >= 0)
+            if k not in self.failed and at.size:
+                self.failed[k] = assertions.message(model, int(asserted[k, at[0]]), grid[at[0]])
+        failed = sorted(self.failed)
+        values = _values(model, variables, T, X, Z, U, P)
         values = {name: v.reshape(n, nt).copy() for name, v in values.items()}
         for v in values.values():
             v[failed] = np.nan
