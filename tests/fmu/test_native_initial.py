@@ -12,8 +12,10 @@ Termination (Modelica.Blocks.Logical.TerminateSimulation): an inertia (2 kg·m²
 from rest, to end when its speed exceeds 4.5 rad/s: at t = 4.5·2/3 = 3 s. Model exchange
 ends there (terminateSimulation from the event update), co-simulation's doStep stops at it
 (FMI 2: fmi2Discard, fmi2Terminated, fmi2LastSuccessfulTime; FMI 3: terminateSimulation,
-earlyReturn, lastSuccessfulTime), the component's text logged. The FMU Compliance Checker
-passes the FMUs (FMI 2.0).
+earlyReturn, lastSuccessfulTime), the component's text logged. MSL's RobotR3.OneAxis, whose
+motor starts in steady state, ends at a time event: path end time + swingTime =
+2·0.3 + (2π/3 − 0.9)/3 + 0.5 s (KinematicPTP2 to 120° at 3 rad/s, 10 rad/s²). The FMU
+Compliance Checker passes the FMUs (FMI 2.0).
 
 The models:
 - spin: an inertia J = 2 kg·m² on a damper d = 0.5 N·m·s/rad to the ground, started at
@@ -49,8 +51,8 @@ from acausal.components import rotational as rot                   # noqa: E402
 from acausal.components import signals as sig                      # noqa: E402
 from acausal.errors import FmuExportError                          # noqa: E402
 from acausal.models import FourBar                                 # noqa: E402
-from acausal.models.robot_axis import Motor                        # noqa: E402
-from fmi_calls import init, instance                     # noqa: E402
+from acausal.models.robot_axis import STOP_TIME, Motor, OneAxis    # noqa: E402
+from fmi_calls import init, instance                               # noqa: E402
 from wiring import model                                           # noqa: E402
 
 VERSIONS = ("2.0", "3.0")
@@ -250,6 +252,38 @@ def test_do_step_reports_the_termination(fmus, version):
         fmu.doStep(currentCommunicationPoint=end, communicationStepSize=1.0)
     fmu.terminate()
     fmu.freeInstance()
+
+
+@pytest.fixture(scope="module")
+def one_axis(fmu_dir):
+    compiled = acausal.compile(OneAxis())
+    grid = np.linspace(0.0, STOP_TIME, 1601)
+    ref = compiled.simulate(STOP_TIME, t=grid, rtol=1e-12, atol=1e-14)
+    return compiled, ref, {v: compiled.export_fmu(fmu_dir / f"one_axis{v[0]}.fmu",
+                                                  fmi_version=v, stop_time=STOP_TIME)
+                           for v in VERSIONS}
+
+
+@pytest.mark.parametrize("kind", ["ModelExchange", "CoSimulation"])
+@pytest.mark.parametrize("version", VERSIONS)
+def test_one_axis_ends_at_its_time_event(one_axis, version, kind):
+    """OneAxis in fmpy ends at the closed form's end time, the start state and the states at
+    the output points before it (right limits) as simulate()'s."""
+    compiled, ref, paths = one_axis
+    end = 0.6 + (2 * math.pi / 3 - 0.9) / 3 + 0.5
+    assert abs(ref.terminated.time - end) < END_TOL
+    r = fmpy.simulate_fmu(str(paths[version]), fmi_type=kind, stop_time=STOP_TIME,
+                          output_interval=1e-3, relative_tolerance=1e-10,
+                          output=compiled.x_names, early_return_allowed=True)
+    assert abs(r["time"][-1] - end) < END_TOL, r["time"][-1]
+    grid = np.linspace(0.0, STOP_TIME, 1601)
+    grid = grid[grid < end]
+    idx = np.searchsorted(r["time"], grid + 1e-9, side="right") - 1
+    ridx = np.searchsorted(ref.t, grid + 1e-9, side="right") - 1
+    for n in compiled.x_names:
+        assert abs(r[n][0] - ref[n][0]) <= START_TOL, n
+        peak = max(np.max(np.abs(ref[n])), 1e-300)
+        assert np.max(np.abs(r[n][idx] - ref[n][ridx])) < RTOL * peak, n
 
 
 @pytest.mark.parametrize("kind", ["me", "cs"])
