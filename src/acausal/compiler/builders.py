@@ -641,8 +641,8 @@ class PhysicsBuilder(_Base):
         initial equations over its parts with ``part`` (MSL's RobotR3 motor: der(C.v) = 0,
         der(La.i) = 0). Solved with the modes at their start values, before the event
         iteration at the start; ``name`` labels it in errors (``<component>: <name>``).
-        A simulation's start and an optimal control problem's first node hold them (not the
-        operating points of the analyses, nor the FMUs yet, whose export refuses them)."""
+        A simulation's start, an optimal control problem's first node and a native FMU's
+        initialization hold them (not the operating points of the analyses)."""
         self._ws.initials.append((self._owner, sx(expr), name or "initial equation"))
 
     def terminate(self, condition, text: str) -> None:

@@ -6,8 +6,8 @@ Two backends:
   system C compiler; FMI 2.0 or 3.0, model exchange and/or co-simulation; nothing needed on
   the importer's side. See ``acausal.fmu.export`` for what the FMU does and cannot do.
 - ``pythonfmu``: an FMI 2.0 co-simulation slave running the compiled model in Python
-  (``acausal.fmu.pythonfmu_backend``); models with state events or modes are refused
-  (FmuExportError): use the native backend for them.
+  (``acausal.fmu.pythonfmu_backend``); models with state events, modes, initial equations
+  or termination conditions are refused (FmuExportError): use the native backend for them.
 """
 from __future__ import annotations
 
@@ -27,14 +27,6 @@ def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None
     options      native: ``stop_time`` [s] of the DefaultExperiment (default 1), ``description``.
     Returns the Path of the written .fmu.
     """
-    unsupported = compiled.initial_labels + [f"{c}: terminate" for c, _ in
-                                             compiled.state_events.terminations]
-    if unsupported:
-        raise FmuExportError(
-            f"model '{compiled.name}' has initial equations or termination conditions "
-            f"({', '.join(unsupported[:3])}), which the FMUs do not carry yet (their "
-            f"initialization and event update would ignore them): export a model without "
-            f"them, its start values given as parameters")
     if backend == "native":
         from .export import export_native
         try:
@@ -45,6 +37,15 @@ def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None
                 raise FmuExportError(f"export_fmu(backend='native'): {e}") from None
             raise
     if backend == "pythonfmu":
+        unsupported = compiled.initial_labels + [f"{c}: terminate" for c, _ in
+                                                 compiled.state_events.terminations]
+        if unsupported:
+            raise FmuExportError(
+                f"model '{compiled.name}' has initial equations or termination conditions "
+                f"({', '.join(unsupported[:3])}), which the pythonfmu backend does not carry "
+                f"(its initialization and steps would ignore them): use backend='native', "
+                f"whose FMUs hold the initial equations at initialization and end the run at "
+                f"a termination")
         if compiled.has_events:
             owners = sorted({v.component for v in compiled.state_events.indicators
                              + compiled.modes})

@@ -25,6 +25,11 @@ Functions (outputs dense, column-major):
     ac_ind  -> g                      the state events' indicators (``indicator_function``)
     ac_upd  -> (modes, reinit)        the modes' new values from their present ones in p and
                                       the reinits' values (``event_update_function``)
+    ac_init -> (E, ∂E/∂x, ∂E/∂z)      the components' initial equations E = 0
+                                      (``initial_equations``), held at initialization with
+                                      the loop constraints
+    ac_term -> conditions             the termination conditions (``state_events.terminate``):
+                                      > 0.5 ends the run at an event
 
 The event logic over these two (which indicator crossed, which reinits apply, the event
 iteration) is the C runtime's events.c, after acausal.simulation.events; the tables it
@@ -43,7 +48,7 @@ from ..errors import FmuExportError
 from ..simulation.initialization import model_equations
 
 FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
-             "ac_events", "ac_clocks", "ac_ind", "ac_upd")
+             "ac_events", "ac_clocks", "ac_ind", "ac_upd", "ac_init", "ac_term")
 
 
 class ModelFunctions:
@@ -83,6 +88,9 @@ class ModelFunctions:
         self.ng, self.nmode, self.nreinit = ind.numel(), len(c.mode_params), len(se.reinits)
         self.nclock = len(se.clocks)
         clocks = ca.vertcat(*se.clock_times(p)) if self.nclock else ca.SX(0, 1)
+        init = nol(c.initial_equations) if c.initial_equations.numel() else ca.SX(0, 1)
+        term = nol(se.terminate) if se.terminate.numel() else ca.SX(0, 1)
+        self.nie, self.nterm = init.numel(), term.numel()
 
         s0 = ca.vertsplit(c.start(p))          # start values of [x; z]: x and the free z
         start = ca.vertcat(*(s0[:self.nx] + [s0[self.nx + i] for i in free]))
@@ -107,6 +115,10 @@ class ModelFunctions:
             "ac_ind": ca.Function("ac_ind", args, [d(ind)], names, ["g"]),
             "ac_upd": ca.Function("ac_upd", args, [d(upd[0]), d(upd[1])], names,
                                   ["modes", "reinit"]),
+            "ac_init": ca.Function("ac_init", args, [d(init), d(ca.jacobian(init, x)),
+                                                     d(ca.jacobian(init, z))], names,
+                                   ["E", "E_x", "E_z"]),
+            "ac_term": ca.Function("ac_term", args, [d(term)], names, ["terminate"]),
         }
         self.functions = fs
         # structural dependencies of F = [ẋ; y] on w = [x; u; t] (through z too), and on p
@@ -149,7 +161,10 @@ class ModelFunctions:
                 "AC_G_OWNER": ("char *", [v.component for v in c.state_events.indicators]),
                 "AC_RE_STATE": ("int", [r.state for r in c.state_events.reinits]),
                 "AC_RE_IND": ("int", [r.indicator for r in c.state_events.reinits]),
-                "AC_RE_DIR": ("int", [r.direction for r in c.state_events.reinits])}
+                "AC_RE_DIR": ("int", [r.direction for r in c.state_events.reinits]),
+                "AC_IE_NAMES": ("char *", list(c.initial_labels)),
+                "AC_TERM_OWNER": ("char *", [o for o, _ in c.state_events.terminations]),
+                "AC_TERM_TEXT": ("char *", [t for _, t in c.state_events.terminations])}
 
     def sizes(self) -> dict:
         """Work array sizes over all functions."""

@@ -9,10 +9,10 @@ What the FMU contains
   ``toolchain``), the model's sizes
   and tables (``model.h``, ``model_data.c``), the shared runtime (``c/`` in this package:
   ``instance.c`` the instance, its variables and life cycle; ``equations.c`` evaluation and
-  Newton for algebraic variables; ``events.c`` state events and modes; ``loops.c`` loop assembly and projection; ``solver.c`` the
-  RODAS4 co-simulation solver; ``linalg.c`` dense LU, Householder QR and minimum-norm least
-  squares) and the FMI adapter (``fmi2.c`` or
-  ``fmi3.c``). FMI 2 lists the sources in modelDescription.xml, FMI 3 in
+  Newton for algebraic variables; ``events.c`` state events, modes and terminations;
+  ``loops.c`` the consistent start (loops, initial equations) and the loops' projection;
+  ``solver.c`` the RODAS4 co-simulation solver; ``linalg.c`` dense LU, Householder QR and
+  minimum-norm least squares) and the FMI adapter (``fmi2.c`` or ``fmi3.c``). FMI 2 lists the sources in modelDescription.xml, FMI 3 in
   ``sources/buildDescription.xml``; to rebuild elsewhere compile them with the standard FMI
   headers on the include path and link with ``-lm``.
 - Variables: ``variables.fmu_variables`` (parameters tunable, inputs, outputs, states with
@@ -53,7 +53,12 @@ algebraic variables solved in between, until no mode changes (50 rounds, events.
 ``MAX_ITERATIONS``; otherwise fmiError with a message naming the components whose modes
 keep changing), reporting ``valuesOfContinuousStatesChanged`` when states were reinitialized
 or modes changed (the importer restarts its solver). Initialization ends with the same
-iteration, so that the modes start consistent. A crossing that can change nothing (no
+iteration, so that the modes start consistent. Termination conditions
+(``PhysicsBuilder.terminate``: TerminateSimulation) are checked after every event update
+past the start time, as events.py's ``_ends``: when one holds, its component and text are
+logged (status OK, category ``logEvents``, whatever the logging setting) and the event
+update reports ``terminateSimulation`` (the conditions change at events only, so
+``completedIntegratorStep`` never does). A crossing that can change nothing (no
 modes, no reinit of it in that direction: a ball leaving the floor) updates the sides
 only. Integer and Boolean modes are rounded in the iteration, discrete Real variables
 (sampled values, ``StructureBuilder.discrete``) are not. The instants of sample triggers
@@ -78,7 +83,14 @@ located inside the step as ``simulate()`` locates it (secant steps on the crosse
 indicators, bisection when the bracket shrinks slowly, to 1e-12·max(1, |t|) s), each trial
 point one RODAS4 step from the step's start; the event (reinits, event iteration) runs at
 the bracket's end and the step goes on from there. Time events run the event iteration
-too.
+too. A termination condition that holds after an event inside a step ends the step there,
+the FMU at the event's right limit: FMI 2's fmi2DoStep returns fmi2Discard, then
+``fmi2GetBooleanStatus(fmi2Terminated)`` is true and
+``fmi2GetRealStatus(fmi2LastSuccessfulTime)`` the event's time; FMI 3's fmi3DoStep returns
+fmi3OK with ``terminateSimulation`` true, ``lastSuccessfulTime`` the event's time and
+``earlyReturn`` true if the importer allowed it (``earlyReturnAllowed``;
+``mightReturnEarlyFromDoStep`` is declared for a model with termination conditions). A
+further doStep is refused (fmiError).
 
 Chattering (simulate()'s rule: 100 state events within 1e-6 of the time, here of
 max(1, |t|) s, the FMU not knowing the importer's stop time) is an error naming the
@@ -89,7 +101,9 @@ reinit is followed by the drift projection, which does not hold the reinitialize
 simulate() does; the Jacobian is dense and re-evaluated every step and
 the linear algebra is dense LU, O(n³) per step (fine for tens to a few hundred states, slow
 for thousands); the Newton iteration for z has no globalization beyond the warm start (it
-fails with fmi2Error and a logged message if it does not converge in 50 iterations); the
+fails with fmi2Error and a logged message if it does not converge in 50 iterations; with
+initial equations it runs at every point of the initialization's projection, where
+simulate() has z among the projection's unknowns); the
 solver does not detect the loops' singular positions (a dead point of a linkage stops it
 with an error). A sample instant at the stop time is taken by the co-simulation FMU (its
 last doStep ends at the instant's right limit), not by simulate(), which ends there; a
@@ -99,14 +113,18 @@ gets fmiError naming the block instead of a lost sample.
 Initialization
 --------------
 Start values of the states follow the parameters (``compiled.start(p)``) unless the importer
-set them. Closed loops are assembled in exitInitializationMode by ``simulate()``'s algorithm
-(acausal.numerics.project, in C in loops.c), so both reach the same assembly: the states the
-importer set are held, the others move the least from their start values (projections onto
-Φ = 0, Φ̇ = 0 linearized, rows scaled by their gradients, minimum-norm steps from orthogonal
-factorizations; steps limited to 0.3 on the coordinates only, speeds never held back; a
+set them. Closed loops are assembled and the components' initial equations
+(``PhysicsBuilder.initial``: InitializeFlange, a steady start) satisfied in
+exitInitializationMode by ``simulate()``'s algorithm (acausal.numerics.project on the same
+equations as ``initial_state(..., initial_equations=True)``, in C in loops.c), so both reach
+the same start: the states the importer set are held (as simulate()'s x0), the others move
+the least from their start values (projections onto Φ = 0, Φ̇ = 0 and the initial equations
+linearized, the algebraic variables solved at every point, rows scaled by their gradients,
+minimum-norm steps from orthogonal factorizations; steps limited to 0.3 on the coordinates only, speeds never held back; a
 Levenberg–Marquardt descent when the projection stalls at a singular configuration, such as
 a linkage with every joint at 0; then the same deterministic restarts). A failure names the
-constraints not satisfied and whether the positions or the speeds set are at fault. Then the
+constraints not satisfied and whether the positions or the speeds set are at fault, or the
+initial equations not satisfied (by their labels) and the start values set. Then the
 loop-row switches ``loops.active_i``
 (calculatedParameters) are set at the assembled configuration as ``simulate()`` sets them:
 rows that add nothing to the rank of Φ_q there are off (a redundant link).
@@ -246,7 +264,7 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
              ("NREC", mf.nrec), ("NH", mf.nh), ("NPHI", mf.nphi), ("NQ", mf.nq),
              ("NPOS", len(compiled.position_states)), ("NEV", mf.nev), ("NVR", len(kind)),
              ("NG", mf.ng), ("NMODE", mf.nmode), ("NREINIT", mf.nreinit),
-             ("NCLOCK", mf.nclock),
+             ("NCLOCK", mf.nclock), ("NIE", mf.nie), ("NTERM", mf.nterm),
              ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
              ("SZ_W", sz["w"])]
     # the Parameter's flags, checked by the runtime as Parameter.check_scalar does
@@ -370,6 +388,7 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
                 "cs": fmu_type in ("cs", "both"), "sources": c_files,
                 "deps": dependencies(compiled, mf, variables),
                 "loops": mf.nh > 0, "events": compiled.has_events, "stop_time": stop_time,
+                "terminations": mf.nterm > 0,
                 "nominal": {n: v for n, v in zip(compiled.x_names, nominal) if v != 1.0}}
         if fmi_version == "2.0":
             (tmp / "modelDescription.xml").write_text(fmi2_xml(info))

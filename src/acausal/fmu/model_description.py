@@ -177,8 +177,8 @@ def fmi2_xml(info: dict) -> str:
                     f' maxOutputDerivativeOrder="0">\n{src}  </CoSimulation>\n')
     head.append(unit_definitions(v.unit for v in vs if v.unit))
     head.append('  <LogCategories>\n    <Category name="logStatusError"/>\n'
-                '    <Category name="logStatusWarning"/>\n    <Category name="logAll"/>\n'
-                '  </LogCategories>\n')
+                '    <Category name="logStatusWarning"/>\n    <Category name="logEvents"/>\n'
+                '    <Category name="logAll"/>\n  </LogCategories>\n')
     head.append(f'  <DefaultExperiment startTime="0" stopTime="{_num(info["stop_time"])}"'
                 f' tolerance="1e-06"/>\n')
     body = ["  <ModelVariables>\n"]
@@ -221,11 +221,12 @@ def fmi3_xml(info: dict) -> str:
     if info["cs"]:
         head.append(f'  <CoSimulation modelIdentifier="{info["identifier"]}" {caps}'
                     f' canHandleVariableCommunicationStepSize="true" hasEventMode="false"'
+                    f' mightReturnEarlyFromDoStep="{str(info["terminations"]).lower()}"'
                     f' maxOutputDerivativeOrder="0"/>\n')
     head.append(unit_definitions({"s"} | {v.unit for v in vs if v.unit}))
     head.append('  <LogCategories>\n    <Category name="logStatusError"/>\n'
-                '    <Category name="logStatusWarning"/>\n    <Category name="logAll"/>\n'
-                '  </LogCategories>\n')
+                '    <Category name="logStatusWarning"/>\n    <Category name="logEvents"/>\n'
+                '    <Category name="logAll"/>\n  </LogCategories>\n')
     head.append(f'  <DefaultExperiment startTime="0" stopTime="{_num(info["stop_time"])}"'
                 f' tolerance="1e-06"/>\n')
     body = ['  <ModelVariables>\n    <Float64 name="time" valueReference="0"'

@@ -257,3 +257,25 @@ int ac_state_event(ac_inst *m, int start, int *changed) {
     if (changed) *changed = ch;
     return AC_OK;
 }
+
+int ac_termination(ac_inst *m, int *terminate) {
+#if AC_NTERM > 0
+    double held[AC_NTERM], *out[1] = {held};
+    int i;
+    *terminate = 0;
+    if (ac_ensure_z(m)) return AC_ERROR;
+    if (ac_eval(m, (ac_fn)ac_term, m->d.t, m->d.x, m->d.z, out, 1))
+        return ERR("evaluating the termination conditions failed");
+    for (i = 0; i < AC_NTERM; i++)
+        if (held[i] > 0.5) {
+            m->d.terminated = *terminate = 1;
+            ac_notef(m, "logEvents", "terminated at t = %.12g s by '%s': %s", m->d.t,
+                     AC_TERM_OWNER[i], AC_TERM_TEXT[i]);
+            return AC_OK;
+        }
+#else
+    (void)m;
+    *terminate = 0;
+#endif
+    return AC_OK;
+}

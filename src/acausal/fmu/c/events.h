@@ -66,5 +66,9 @@ int ac_step_crossed(struct ac_inst *m);
  * modes made consistent with the start values and the sides taken (zeros on the positive
  * side), as events.py starts. */
 int ac_state_event(struct ac_inst *m, int start, int *changed);
+/* after an event (not the start): *terminate = 1 when a termination condition
+ * (PhysicsBuilder.terminate, > 0.5) holds at the instance's point, its owner's text logged
+ * and the instance marked terminated (ac_data.terminated), as events.py's _ends; 0 if not */
+int ac_termination(struct ac_inst *m, int *terminate);
 
 #endif

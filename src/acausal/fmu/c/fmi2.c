@@ -174,11 +174,11 @@ fmi2Status fmi2EnterEventMode(fmi2Component c) {
 }
 
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *info) {
-    int changed = 0, st;
+    int changed = 0, ends = 0, st;
     BEGIN(AC_EVENT);
-    st = ac_event_update(M, &changed);
+    st = ac_event_update(M, &changed, &ends);
     info->newDiscreteStatesNeeded = fmi2False;
-    info->terminateSimulation = st ? fmi2True : fmi2False;
+    info->terminateSimulation = st || ends ? fmi2True : fmi2False;
     info->nominalsOfContinuousStatesChanged = fmi2False;
     info->valuesOfContinuousStatesChanged = changed ? fmi2True : fmi2False;
     info->nextEventTimeDefined = isfinite(M->d.next_event) ? fmi2True : fmi2False;
@@ -249,9 +249,12 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
 
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint,
                       fmi2Real communicationStepSize, fmi2Boolean noSetFMUStatePriorToCurrentPoint) {
+    int st;
     (void)noSetFMUStatePriorToCurrentPoint;
     BEGIN(AC_STEP);
-    return ST(ac_do_step(M, currentCommunicationPoint, communicationStepSize));
+    st = ac_do_step(M, currentCommunicationPoint, communicationStepSize);
+    /* a termination: fmi2Discard, fmi2Terminated true, fmi2LastSuccessfulTime its time */
+    return st == AC_OK && M->d.terminated ? fmi2Discard : ST(st);
 }
 
 fmi2Status fmi2CancelStep(fmi2Component c) {
@@ -280,10 +283,9 @@ fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Int
 }
 
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *value) {
-    (void)s;
     BEGIN(STATUS_MODES);
-    *value = fmi2False;
-    return fmi2Discard;
+    *value = s == fmi2Terminated && M->d.terminated ? fmi2True : fmi2False;
+    return s == fmi2Terminated ? fmi2OK : fmi2Discard;
 }
 
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *value) {

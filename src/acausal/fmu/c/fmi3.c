@@ -11,6 +11,7 @@ typedef struct {
     ac_inst m;
     fmi3LogMessageCallback logger;
     fmi3InstanceEnvironment env;
+    int early_return;         /* co-simulation: earlyReturnAllowed */
 } fmu3;
 
 #define M ((ac_inst *)instance)
@@ -70,14 +71,17 @@ fmi3Instance fmi3InstantiateCoSimulation(fmi3String instanceName, fmi3String ins
                                          fmi3InstanceEnvironment instanceEnvironment,
                                          fmi3LogMessageCallback logMessage,
                                          fmi3IntermediateUpdateCallback intermediateUpdate) {
-    (void)resourcePath; (void)visible; (void)earlyReturnAllowed;
+    fmi3Instance f;
+    (void)resourcePath; (void)visible;
     (void)requiredIntermediateVariables; (void)nRequiredIntermediateVariables; (void)intermediateUpdate;
     if (eventModeUsed) {
         if (logMessage) logMessage(instanceEnvironment, fmi3Error, "logStatusError",
                                    "event mode in co-simulation is not supported by this FMU");
         return NULL;
     }
-    return instantiate(instanceName, instantiationToken, loggingOn, instanceEnvironment, logMessage, 1);
+    f = instantiate(instanceName, instantiationToken, loggingOn, instanceEnvironment, logMessage, 1);
+    if (f) ((fmu3 *)f)->early_return = earlyReturnAllowed != fmi3False;
+    return f;
 }
 
 fmi3Instance fmi3InstantiateScheduledExecution(fmi3String instanceName, fmi3String instantiationToken,
@@ -308,11 +312,11 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance instance, fmi3Boolean *discrete
                                     fmi3Boolean *nominalsOfContinuousStatesChanged,
                                     fmi3Boolean *valuesOfContinuousStatesChanged,
                                     fmi3Boolean *nextEventTimeDefined, fmi3Float64 *nextEventTime) {
-    int changed = 0, st;
+    int changed = 0, ends = 0, st;
     BEGIN(AC_EVENT);
-    st = ac_event_update(M, &changed);
+    st = ac_event_update(M, &changed, &ends);
     *discreteStatesNeedUpdate = fmi3False;
-    *terminateSimulation = st ? fmi3True : fmi3False;
+    *terminateSimulation = st || ends ? fmi3True : fmi3False;
     *nominalsOfContinuousStatesChanged = fmi3False;
     *valuesOfContinuousStatesChanged = changed ? fmi3True : fmi3False;
     *nextEventTimeDefined = isfinite(M->d.next_event) ? fmi3True : fmi3False;
@@ -400,8 +404,10 @@ fmi3Status fmi3DoStep(fmi3Instance instance, fmi3Float64 currentCommunicationPoi
     BEGIN(AC_STEP);
     st = ac_do_step(M, currentCommunicationPoint, communicationStepSize);
     *eventHandlingNeeded = fmi3False;
-    *terminateSimulation = fmi3False;
-    *earlyReturn = fmi3False;
+    /* a termination ends the step early at its event (lastSuccessfulTime): returned early
+     * where the importer allows it (earlyReturnAllowed), else reported at the step's end */
+    *terminateSimulation = st == AC_OK && M->d.terminated ? fmi3True : fmi3False;
+    *earlyReturn = *terminateSimulation && ((fmu3 *)M)->early_return ? fmi3True : fmi3False;
     *lastSuccessfulTime = M->d.t;
     return ST(st);
 }

@@ -9,13 +9,25 @@
 #include "model_functions.h"
 
 /* ---- logging ------------------------------------------------------------------------- */
+static void vlogf(ac_inst *m, int status, const char *category, const char *fmt, va_list ap) {
+    vsnprintf(m->msg, sizeof(m->msg), fmt, ap);
+    m->log(m, status, category, m->msg);
+}
+
 void ac_logf(ac_inst *m, int status, const char *category, const char *fmt, ...) {
     va_list ap;
     if (!m->log || (status == AC_OK && !m->logging_on)) return;
     va_start(ap, fmt);
-    vsnprintf(m->msg, sizeof(m->msg), fmt, ap);
+    vlogf(m, status, category, fmt, ap);
     va_end(ap);
-    m->log(m, status, category, m->msg);
+}
+
+void ac_notef(ac_inst *m, const char *category, const char *fmt, ...) {
+    va_list ap;
+    if (!m->log) return;
+    va_start(ap, fmt);
+    vlogf(m, AC_OK, category, fmt, ap);
+    va_end(ap);
 }
 
 /* ---- parameters and start values ------------------------------------------------------ */
@@ -105,12 +117,13 @@ int ac_setup(ac_inst *m, int tolerance_defined, double tolerance, double start_t
 static int initialize(ac_inst *m) {
     if (check_params(m)) return AC_ERROR;
     if (update_starts(m)) return AC_ERROR;
-    if (ac_assemble_loops(m)) return AC_ERROR;
+    if (ac_consistent_start(m)) return AC_ERROR;
     ac_invalidate(m);
     if (ac_ensure_z(m)) return AC_ERROR;
     if (ac_state_event(m, 1, NULL)) return AC_ERROR;     /* the modes consistent at the start */
     if (ac_derivatives(m, NULL)) return AC_ERROR;
     m->d.next_event = ac_next_event(m, m->d.t);
+    m->d.t_start = m->d.t;
     m->d.initialized = 1;
     return AC_OK;
 }
@@ -121,12 +134,17 @@ int ac_exit_initialization(ac_inst *m) {
     return AC_OK;
 }
 
-int ac_event_update(ac_inst *m, int *states_changed) {
+int ac_event_update(ac_inst *m, int *states_changed, int *terminate) {
     int event = 0;
+    *terminate = 0;
     if (ac_keep_loops_closed(m, 1e-3, states_changed)) { m->d.mode = AC_FAILED; return AC_ERROR; }
     ac_invalidate(m);
     if (ac_state_event(m, 0, &event)) { m->d.mode = AC_FAILED; return AC_ERROR; }
     if (event) *states_changed = 1;
+    if (m->d.t > m->d.t_start && ac_termination(m, terminate)) {
+        m->d.mode = AC_FAILED;
+        return AC_ERROR;
+    }
     m->d.next_event = ac_next_event(m, m->d.t);
     return AC_OK;
 }

@@ -52,6 +52,8 @@ typedef struct {
     int recent_g[AC_CHATTER_EVENTS], n_recent;
     int mode;
     int initialized;
+    double t_start;                     /* the time at initialization */
+    int terminated;                     /* a termination condition ended the run (events.h) */
 } ac_data;
 
 struct ac_inst;
@@ -72,6 +74,8 @@ typedef struct ac_inst {
 
 /* logging: through the adapter's logger; AC_OK messages only with logging on */
 void ac_logf(ac_inst *m, int status, const char *category, const char *fmt, ...);
+/* an AC_OK message the importer sees whatever its logging setting (a termination's) */
+void ac_notef(ac_inst *m, const char *category, const char *fmt, ...);
 #define ERR(...) (ac_logf(m, AC_ERROR, "logStatusError", __VA_ARGS__), AC_ERROR)
 
 /* life cycle. ac_allowed: 1 if the instance is in one of `modes`; else 0, logged naming
@@ -83,8 +87,9 @@ void ac_defaults(ac_inst *m);                  /* instantiated: defaults and sta
 int ac_setup(ac_inst *m, int tolerance_defined, double tolerance, double start_time);
 int ac_exit_initialization(ac_inst *m);        /* to event mode (ME) or step mode (CS) */
 /* ME: project the loops, the state event (reinits, event iteration of the modes), next event;
- * *states_changed: states projected or reinitialized, or modes changed */
-int ac_event_update(ac_inst *m, int *states_changed);
+ * *states_changed: states projected or reinitialized, or modes changed; *terminate: a
+ * termination condition holds after the event (not at the start time, as events.py) */
+int ac_event_update(ac_inst *m, int *states_changed, int *terminate);
 /* values by value reference */
 int ac_get_reals(ac_inst *m, const unsigned *vr, size_t n, double *values);
 int ac_set_reals(ac_inst *m, const unsigned *vr, size_t n, const double *values);

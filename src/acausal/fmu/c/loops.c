@@ -1,4 +1,4 @@
-/* Closed kinematic loops (see loops.h). */
+/* Closed kinematic loops and the initial equations (see loops.h). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -16,33 +16,69 @@
 #define AC_ASSEMBLY_RETRIES 4     /* assembly restarts from perturbed start values ... */
 #define AC_ASSEMBLY_JITTER 0.1    /* ... moved by up to ±0.05·(1 + |start|) */
 
-#if AC_NH > 0
-static double drift_tol(ac_inst *m) { return AC_DRIFT_FACTOR * m->d.rtol; }
-
-static double con_norm(ac_inst *m, const double *x) {
-    double *out[2] = {m->loop.H, NULL}, big = 0.0;
-    int i;
-    if (ac_eval(m, (ac_fn)ac_con, m->d.t, x, m->d.z, out, 2)) return HUGE_VAL;
-    for (i = 0; i < AC_NH; i++) {
-        if (!isfinite(m->loop.H[i])) return HUGE_VAL;
-        if (fabs(m->loop.H[i]) > big) big = fabs(m->loop.H[i]);
+#if AC_NC > 0
+/* the initial equations' rows E (l->H and l->Hx from row AC_NH on) at x, with z solved there
+ * (m->d.z, warm-started) and eliminated from their gradients: ∂E/∂x − ∂E/∂z g_z⁻¹ g_x */
+static int initial_rows(ac_inst *m, const double *x) {
+#if AC_NIE > 0
+    ac_loop_work *l = &m->loop;
+    double E[AC_NIE], *Ex = l->work;           /* scratch: no least squares is running */
+    double *out[3] = {E, Ex, l->Ez};
+    int i, j;
+    if (ac_solve_z(m, m->d.t, x, m->d.z)) return AC_ERROR;
+    if (ac_eval(m, (ac_fn)ac_init, m->d.t, x, m->d.z, out, 3))
+        return ERR("evaluating the initial equations failed");
+#if AC_NZ > 0
+    {
+        ac_equations *e = &m->eq;
+        double *jac[4] = {e->Fw, e->Fz, e->gw, e->gz};
+        int k;
+        if (ac_eval(m, (ac_fn)ac_jac, m->d.t, x, m->d.z, jac, 4))
+            return ERR("evaluating the Jacobian failed");
+        if (ac_lu(e->gz, AC_NZ, e->piv))
+            return ERR("the algebraic equations are singular at the start t = %g", m->d.t);
+        for (j = 0; j < AC_NX; j++) {
+            for (k = 0; k < AC_NZ; k++) l->zcol[k] = e->gw[k + j * AC_NZ];
+            ac_lu_solve(e->gz, AC_NZ, e->piv, l->zcol);
+            for (i = 0; i < AC_NIE; i++)
+                for (k = 0; k < AC_NZ; k++) Ex[i + j * AC_NIE] -= l->Ez[i + k * AC_NIE] * l->zcol[k];
+        }
     }
-    return big;
+#endif
+    for (i = 0; i < AC_NIE; i++) {
+        l->H[AC_NH + i] = E[i];
+        for (j = 0; j < AC_NX; j++) l->Hx[AC_NH + i + j * AC_NC] = Ex[i + j * AC_NIE];
+    }
+#else
+    (void)m; (void)x;
+#endif
+    return AC_OK;
 }
 
-/* H, ∂H/∂x at x and the rows' scales s_i = max_k |∂H_i/∂x_k| (1 for a row without any):
- * AC_OK; AC_DISCARD if they are not finite; AC_ERROR, logged, if the evaluation failed */
+/* the rows in use of [H; E], their gradients ∂/∂x at x and the rows' scales
+ * s_i = max_k |∂_i/∂x_k| (1 for a row without any): AC_OK; AC_DISCARD if they are not
+ * finite; AC_ERROR, logged, if the evaluation failed */
 static int constraints(ac_inst *m, const double *x) {
     ac_loop_work *l = &m->loop;
-    double *out[2] = {l->H, l->Hx};
-    int i, k;
-    if (ac_eval(m, (ac_fn)ac_con, m->d.t, x, m->d.z, out, 2))
-        return ERR("evaluating the loop constraints failed");
-    if (!ac_all_finite(l->H, AC_NH) || !ac_all_finite(l->Hx, AC_NH * AC_NX)) return AC_DISCARD;
-    for (i = 0; i < AC_NH; i++) {
-        double big = 0.0;
+    int i, k, st;
+    if (l->nrows > AC_NH && (st = initial_rows(m, x))) return st;
+#if AC_NH > 0
+    {
+        double *Hx = l->work, *out[2] = {l->H, Hx};     /* scratch, as above */
+        if (ac_eval(m, (ac_fn)ac_con, m->d.t, x, m->d.z, out, 2))
+            return ERR("evaluating the loop constraints failed");
         for (k = 0; k < AC_NX; k++)
-            if (fabs(l->Hx[i + k * AC_NH]) > big) big = fabs(l->Hx[i + k * AC_NH]);
+            for (i = 0; i < AC_NH; i++) l->Hx[i + k * AC_NC] = Hx[i + k * AC_NH];
+    }
+#endif
+    for (i = 0; i < l->nrows; i++) {
+        double big = 0.0;
+        if (!isfinite(l->H[i])) return AC_DISCARD;
+        for (k = 0; k < AC_NX; k++) {
+            double v = l->Hx[i + k * AC_NC];
+            if (!isfinite(v)) return AC_DISCARD;
+            if (fabs(v) > big) big = fabs(v);
+        }
         l->s[i] = big > 0 ? big : 1.0;
     }
     return AC_OK;
@@ -65,7 +101,7 @@ static int solved(const ac_loop_work *l, double scale) {
 static void scaled_rows(ac_loop_work *l, const double *s) {
     int i, j, nf = l->nfree, nr = l->nrows;
     for (j = 0; j < nf; j++) {
-        const double *column = l->Hx + l->free[j] * AC_NH;
+        const double *column = l->Hx + l->free[j] * AC_NC;
         for (i = 0; i < nr; i++) l->at[j + i * nf] = column[i] / s[i];
     }
 }
@@ -130,7 +166,7 @@ static double scaled_cost(const ac_loop_work *l, const double *s) {
  * AC_ERROR */
 static int descend(ac_inst *m, double *x, double scale) {
     ac_loop_work *l = &m->loop;
-    double s[AC_NH], cost, mu = 1e-3;
+    double s[AC_NC], cost, mu = 1e-3;
     int it, i, j, k, st, nf = l->nfree, nr = l->nrows;
     if ((st = constraints(m, x))) return st;
     memcpy(s, l->s, sizeof(s));                  /* the scales of the start point throughout */
@@ -175,6 +211,7 @@ static int close_loops(ac_inst *m, double *x, double scale) {
     return solved(&m->loop, scale) ? AC_OK : AC_DISCARD;
 }
 
+#if AC_NH > 0
 /* The loop rows to enforce at the current configuration, as simulate() chooses them
  * (acausal.numerics.independent_rows, the same rule): in row order, a row is on when
  * its Gram–Schmidt residual against the rows on before it exceeds 1e-9·max(1, max |Φ_q|);
@@ -207,16 +244,18 @@ static int select_loop_rows(ac_inst *m) {
     ac_invalidate(m);
     return AC_OK;
 }
+#endif
 
-/* ", "-separated into buf: the names of the rows first..last-1 of H whose scaled residual
- * (as evaluated last) exceeds 1e-10 */
+/* ", "-separated into buf: the names of the rows first..last-1 of [H; E] whose scaled
+ * residual (as evaluated last) exceeds 1e-10 */
 static void unsatisfied(const ac_loop_work *l, int first, int last, char *buf, size_t size) {
     size_t n = 0;
     int i;
     buf[0] = '\0';
     for (i = first; i < last && n < size; i++)
         if (!(fabs(l->H[i]) / l->s[i] <= 1e-10))
-            n += snprintf(buf + n, size - n, "%s%s", n ? ", " : "", AC_H_NAMES[i]);
+            n += snprintf(buf + n, size - n, "%s%s", n ? ", " : "",
+                          i < AC_NH ? AC_H_NAMES[i] : AC_IE_NAMES[i - AC_NH]);
 }
 
 static int is_position(int k) {
@@ -237,6 +276,7 @@ static void held(const ac_inst *m, int positions_only, char *buf, size_t size) {
                           m->d.x[k]);
 }
 
+#if AC_NH > 0
 /* The error of an assembly that failed, naming the part at fault. `velocity_rows`: the
  * velocity constraints the first attempt left unsatisfied. The positions alone
  * (Φ, the first half of H) are assembled from the start values as above: if they close,
@@ -268,17 +308,32 @@ static int failed(ac_inst *m, double scale, const char *velocity_rows) {
                "check the parameters%s%s%s against the model's constraints", rows,
                given[0] ? " and the start values set (" : "", given, given[0] ? ")" : "");
 }
+#endif
 
-int ac_assemble_loops(ac_inst *m) {
+/* The error of a start that failed where the initial equations `rows` (their labels, as the
+ * first attempt left them) are not satisfied, with the loop constraints if any */
+static int failed_initial(ac_inst *m, const char *rows) {
+    char given[400];
+    memcpy(m->d.x, m->loop.target, sizeof(m->loop.target));   /* the start values */
+    ac_invalidate(m);
+    held(m, 0, given, sizeof(given));
+    return ERR("initialization: the initial equations cannot be satisfied (not satisfied: %s)%s; "
+               "check them against the parameters, the inputs%s%s%s", rows,
+               AC_NH > 0 ? " together with the loop constraints" : "",
+               given[0] ? " and the start values set (" : " and the model's start values",
+               given, given[0] ? ")" : "");
+}
+
+int ac_consistent_start(ac_inst *m) {
     /* states set by the importer are held, the others move least from their start values;
        restarts from deterministic perturbations of the free states, numerics.project's */
     ac_loop_work *l = &m->loop;
     double *x = m->d.x, scale = 0.0;
-    char velocity_rows[400];
+    char velocity_rows[400], initial[400];
     unsigned seed = 12345u;
     int k, attempt, st;
     memcpy(l->target, x, sizeof(l->target));
-    l->nrows = AC_NH;
+    l->nrows = AC_NC;
     l->nfree = 0;
     for (k = 0; k < AC_NX; k++) {
         if (!m->d.x_set[k]) l->free[l->nfree++] = k;
@@ -286,7 +341,7 @@ int ac_assemble_loops(ac_inst *m) {
     }
     for (k = 0; k < AC_NZ; k++) if (fabs(m->d.z[k]) > scale) scale = fabs(m->d.z[k]);
     scale += 1.0;
-    velocity_rows[0] = '\0';
+    velocity_rows[0] = initial[0] = '\0';
     for (attempt = 0; attempt <= AC_ASSEMBLY_RETRIES; attempt++) {
         memcpy(x, l->target, sizeof(l->target));
         for (k = 0; k < AC_NX && attempt; k++) {
@@ -299,11 +354,38 @@ int ac_assemble_loops(ac_inst *m) {
         if (st == AC_ERROR) return st;
         if (st == AC_OK) {
             ac_invalidate(m);
+#if AC_NH > 0
             return select_loop_rows(m);
+#else
+            return AC_OK;
+#endif
         }
-        if (attempt == 0) unsatisfied(l, AC_NH / 2, AC_NH, velocity_rows, sizeof(velocity_rows));
+        if (attempt == 0) {
+            unsatisfied(l, AC_NH / 2, AC_NH, velocity_rows, sizeof(velocity_rows));
+            unsatisfied(l, AC_NH, AC_NC, initial, sizeof(initial));
+        }
     }
-    return failed(m, scale, velocity_rows);
+#if AC_NH > 0
+    if (!initial[0]) return failed(m, scale, velocity_rows);
+#endif
+    return failed_initial(m, initial[0] ? initial : "the initial equations, not finite");
+}
+#else
+int ac_consistent_start(ac_inst *m) { (void)m; return AC_OK; }
+#endif
+
+#if AC_NH > 0
+static double drift_tol(ac_inst *m) { return AC_DRIFT_FACTOR * m->d.rtol; }
+
+static double con_norm(ac_inst *m, const double *x) {
+    double *out[2] = {m->loop.H, NULL}, big = 0.0;
+    int i;
+    if (ac_eval(m, (ac_fn)ac_con, m->d.t, x, m->d.z, out, 2)) return HUGE_VAL;
+    for (i = 0; i < AC_NH; i++) {
+        if (!isfinite(m->loop.H[i])) return HUGE_VAL;
+        if (fabs(m->loop.H[i]) > big) big = fabs(m->loop.H[i]);
+    }
+    return big;
 }
 
 int ac_drift_exceeded(ac_inst *m) { return con_norm(m, m->d.x) > drift_tol(m); }
@@ -331,7 +413,6 @@ int ac_keep_loops_closed(ac_inst *m, double factor, int *projected) {
     return AC_OK;
 }
 #else
-int ac_assemble_loops(ac_inst *m) { (void)m; return AC_OK; }
 int ac_drift_exceeded(ac_inst *m) { (void)m; return 0; }
 int ac_keep_loops_closed(ac_inst *m, double factor, int *projected) {
     (void)m; (void)factor;

@@ -136,10 +136,11 @@ static int locate(ac_inst *m, double t, double te) {
     return AC_OK;
 }
 
-/* integrate the states from m->d.t to t1 (no time event inside), running the state events */
+/* integrate the states from m->d.t to t1 (no time event inside), running the state events;
+ * ends at an event after which a termination condition holds (m->d.terminated) */
 static int integrate(ac_inst *m, double t1) {
     double t = m->d.t, h = m->d.h, span = t1 - t;
-    int rejected = 0;
+    int rejected = 0, ends = 0;
     if (span <= 0) return AC_OK;
     if (AC_NX == 0) { m->d.t = t1; return AC_OK; }
     if (!(h > 0)) {   /* initial step from the size of the derivatives */
@@ -180,6 +181,8 @@ static int integrate(ac_inst *m, double t1) {
                 if (locate(m, t, te)) return AC_ERROR;
                 if (ac_state_event(m, 0, NULL)) return AC_ERROR;
                 if (ac_keep_loops_closed(m, 1e-3, NULL)) return AC_ERROR;
+                if (ac_termination(m, &ends)) return AC_ERROR;
+                if (ends) return AC_OK;
                 t = m->d.t;
                 rejected = 0;
                 continue;
@@ -205,9 +208,11 @@ static int integrate(ac_inst *m, double t1) {
     return AC_OK;
 }
 
-/* to t1 from the instance's time, stopping just before every time event and restarting at it */
+/* to t1 from the instance's time, stopping just before every time event and restarting at
+ * it; at a termination (m->d.terminated) the instance stays at its event */
 static int advance(ac_inst *m, double t1) {
     double tol = 1e-10 * (fabs(t1) > 1 ? fabs(t1) : 1);
+    int ends = 0;
     /* a parameter changed between steps may have opened the loops */
     if (ac_keep_loops_closed(m, 1.0, NULL)) return AC_ERROR;
     while (m->d.t < t1 - tol) {
@@ -215,10 +220,16 @@ static int advance(ac_inst *m, double t1) {
         if (te < t1 + tol) {
             double end = te - 1e-12 * (fabs(te) > 1 ? fabs(te) : 1);
             if (end > m->d.t && integrate(m, end)) return AC_ERROR;
+            if (m->d.terminated) return AC_OK;
             m->d.t = te > t1 ? t1 : te;
             ac_invalidate(m);
             if (ac_state_event(m, 0, NULL)) return AC_ERROR;     /* crossings there, modes */
-        } else if (integrate(m, t1)) return AC_ERROR;
+            if (ac_termination(m, &ends)) return AC_ERROR;
+            if (ends) return AC_OK;
+        } else {
+            if (integrate(m, t1)) return AC_ERROR;
+            if (m->d.terminated) return AC_OK;
+        }
     }
     m->d.t = t1;
     ac_invalidate(m);
@@ -236,6 +247,9 @@ int ac_do_step(ac_inst *m, double t0, double H) {
     if (!isfinite(t0) || !isfinite(H) || !(H > 0))
         return ERR("doStep from t = %g over %g: the communication point must be finite and "
                    "the step size finite and > 0", t0, H);
+    if (m->d.terminated)
+        return ERR("doStep from t = %.17g: the simulation has terminated at t = %.17g (a "
+                   "termination condition); call terminate", t0, m->d.t);
     if (!is_close(t0, m->d.t))
         return ERR("doStep from t = %.17g but the FMU is at t = %.17g", t0, m->d.t);
     if (!(t1 > m->d.t))

@@ -24,7 +24,9 @@ typedef struct {
 
 struct ac_inst;
 /* integrate from the instance's time to t0 + H; t0 must be the instance's time (to within
- * the Reference FMUs' tolerance, 1e-5 absolute or relative) and H > 0 */
+ * the Reference FMUs' tolerance, 1e-5 absolute or relative) and H > 0. A termination
+ * condition that holds after an event inside ends the step there: AC_OK with the instance
+ * at the event's time and m->d.terminated set (the adapters report it) */
 int ac_do_step(struct ac_inst *m, double t0, double H);
 
 #endif
