@@ -12,6 +12,7 @@ import acausal
 from acausal.components import electrical as el
 from acausal.components import thermal as th
 from acausal.models import HeatingRectifier, ResistorExample
+from hot_resistor import OUTSIDE, hot_part
 
 TIGHT = {"rtol": 1e-11, "atol": 1e-12}
 K_B, Q_E = 1.380649e-23, 1.602176634e-19        # Modelica.Constants.k, q
@@ -169,26 +170,6 @@ def test_heating_rectifier_matches_the_msl_reference(reference_result):
     # the temperature rise alone (1.04 K) against the reference's
     rise = ref["HeatCapacitor1.T"] - 293.15
     assert np.max(np.abs(res["HeatCapacitor1.T"] - 293.15 - rise)) < 2e-3 * np.max(rise)
-
-
-def hot_part(kind: str, alpha: float = -0.02) -> acausal.Model:
-    """A current of 0.5 A through a Resistor or Conductor (R = 1/G = 1 Ohm) and a capacitor,
-    its heat port at T_ref + 100 K·t: 1 + alpha·(T − T_ref) = 1 + 100·alpha·t (with the
-    default alpha −0.02 1/K: 1 − 2·t, which reaches 0 at 0.5 s)."""
-    from acausal.components import signals as sg
-    T_ref = 300.15
-    m = acausal.Model("hot")
-    m.src, m.c, m.ground = el.ConstantCurrent(I=0.5), el.Capacitor(C=1.0), el.Ground()
-    m.part = getattr(el, kind)(alpha=alpha, T_ref=T_ref, useHeatPort=True)
-    m.ramp = sg.Ramp(height=100.0, duration=1.0, offset=T_ref)
-    m.heat = th.PrescribedTemperature()
-    for a, b in [(m.src.n, m.part.p), (m.part.n, m.c.p), (m.c.n, m.ground.p),
-                 (m.src.p, m.ground.p), (m.ramp.y, m.heat.T), (m.heat.port, m.part.heatPort)]:
-        m.connect(a, b)
-    return m
-
-
-OUTSIDE = r"'part': Temperature outside scope of model! \(assertion failed at t = 0\.5\d* s\)"
 
 
 @pytest.mark.parametrize("kind", ["Resistor", "Conductor"])

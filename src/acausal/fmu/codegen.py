@@ -30,6 +30,9 @@ Functions (outputs dense, column-major):
                                       the loop constraints
     ac_term -> conditions             the termination conditions (``state_events.terminate``):
                                       > 0.5 ends the run at an event
+    ac_assert -> held                 the components' assertions (``assertions``): < 0.5
+                                      fails the run with the component's message, checked
+                                      after initialization, events and every step
 
 The event logic over these two (which indicator crossed, which reinits apply, the event
 iteration) is the C runtime's events.c, after acausal.simulation.events; the tables it
@@ -48,7 +51,7 @@ from ..errors import FmuExportError
 from ..simulation.initialization import model_equations
 
 FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
-             "ac_events", "ac_clocks", "ac_ind", "ac_upd", "ac_init", "ac_term")
+             "ac_events", "ac_clocks", "ac_ind", "ac_upd", "ac_init", "ac_term", "ac_assert")
 
 
 class ModelFunctions:
@@ -90,7 +93,8 @@ class ModelFunctions:
         clocks = ca.vertcat(*se.clock_times(p)) if self.nclock else ca.SX(0, 1)
         init = nol(c.initial_equations) if c.initial_equations.numel() else ca.SX(0, 1)
         term = nol(se.terminate) if se.terminate.numel() else ca.SX(0, 1)
-        self.nie, self.nterm = init.numel(), term.numel()
+        asserted = nol(c.assertions) if c.assertions.numel() else ca.SX(0, 1)
+        self.nie, self.nterm, self.nassert = init.numel(), term.numel(), asserted.numel()
 
         s0 = ca.vertsplit(c.start(p))          # start values of [x; z]: x and the free z
         start = ca.vertcat(*(s0[:self.nx] + [s0[self.nx + i] for i in free]))
@@ -119,6 +123,7 @@ class ModelFunctions:
                                                      d(ca.jacobian(init, z))], names,
                                    ["E", "E_x", "E_z"]),
             "ac_term": ca.Function("ac_term", args, [d(term)], names, ["terminate"]),
+            "ac_assert": ca.Function("ac_assert", args, [d(asserted)], names, ["held"]),
         }
         self.functions = fs
         # structural dependencies of F = [ẋ; y] on w = [x; u; t] (through z too), and on p
@@ -164,7 +169,9 @@ class ModelFunctions:
                 "AC_RE_DIR": ("int", [r.direction for r in c.state_events.reinits]),
                 "AC_IE_NAMES": ("char *", list(c.initial_labels)),
                 "AC_TERM_OWNER": ("char *", [o for o, _ in c.state_events.terminations]),
-                "AC_TERM_TEXT": ("char *", [t for _, t in c.state_events.terminations])}
+                "AC_TERM_TEXT": ("char *", [t for _, t in c.state_events.terminations]),
+                "AC_ASSERT_OWNER": ("char *", [o for o, _ in c.assertion_texts]),
+                "AC_ASSERT_TEXT": ("char *", [t for _, t in c.assertion_texts])}
 
     def sizes(self) -> dict:
         """Work array sizes over all functions."""

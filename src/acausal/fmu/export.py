@@ -265,6 +265,7 @@ def model_sources(compiled, mf: ModelFunctions, variables, guid: str, nominal: l
              ("NPOS", len(compiled.position_states)), ("NEV", mf.nev), ("NVR", len(kind)),
              ("NG", mf.ng), ("NMODE", mf.nmode), ("NREINIT", mf.nreinit),
              ("NCLOCK", mf.nclock), ("NIE", mf.nie), ("NTERM", mf.nterm),
+             ("NASSERT", mf.nassert),
              ("SZ_ARG", sz["arg"]), ("SZ_RES", sz["res"]), ("SZ_IW", sz["iw"]),
              ("SZ_W", sz["w"])]
     # the Parameter's flags, checked by the runtime as Parameter.check_scalar does
@@ -387,7 +388,7 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
                 "variables": variables, "me": fmu_type in ("me", "both"),
                 "cs": fmu_type in ("cs", "both"), "sources": c_files,
                 "deps": dependencies(compiled, mf, variables),
-                "loops": mf.nh > 0, "events": compiled.has_events, "stop_time": stop_time,
+                "loops": mf.nh > 0, "events": compiled.has_events, "assertions": mf.nassert > 0, "stop_time": stop_time,
                 "terminations": mf.nterm > 0,
                 "nominal": {n: v for n, v in zip(compiled.x_names, nominal) if v != 1.0}}
         if fmi_version == "2.0":

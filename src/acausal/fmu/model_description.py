@@ -126,10 +126,11 @@ def _a(name, value) -> str:
 
 
 def needs_step(info: dict) -> bool:
-    """Whether the importer must call completedIntegratorStep: to keep closed loops closed,
-    and with state events, where the FMU keeps the indicators' signs at the accepted steps
-    (a crossing that changes nothing updates them there; any other asks for an event)."""
-    return bool(info["loops"] or info["events"])
+    """Whether the importer must call completedIntegratorStep: to keep closed loops closed;
+    with state events, where the FMU keeps the indicators' signs at the accepted steps
+    (a crossing that changes nothing updates them there; any other asks for an event); and
+    to check the components' assertions."""
+    return bool(info["loops"] or info["events"] or info["assertions"])
 
 
 # ---- FMI 2.0 ------------------------------------------------------------------------------

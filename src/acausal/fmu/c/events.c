@@ -279,3 +279,20 @@ int ac_termination(ac_inst *m, int *terminate) {
 #endif
     return AC_OK;
 }
+
+int ac_check_assertions(ac_inst *m) {
+#if AC_NASSERT > 0
+    double held[AC_NASSERT], *out[1] = {held};
+    int i;
+    if (ac_ensure_z(m)) return AC_ERROR;
+    if (ac_eval(m, (ac_fn)ac_assert, m->d.t, m->d.x, m->d.z, out, 1))
+        return ERR("evaluating the assertions failed");
+    for (i = 0; i < AC_NASSERT; i++)
+        if (!(held[i] > 0.5))
+            return ERR("'%s': %s (assertion failed at t = %.6g s)", AC_ASSERT_OWNER[i],
+                       AC_ASSERT_TEXT[i], m->d.t);
+#else
+    (void)m;
+#endif
+    return AC_OK;
+}

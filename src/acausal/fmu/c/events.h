@@ -70,5 +70,8 @@ int ac_state_event(struct ac_inst *m, int start, int *changed);
  * (PhysicsBuilder.terminate, > 0.5) holds at the instance's point, its owner's text logged
  * and the instance marked terminated (ac_data.terminated), as events.py's _ends; 0 if not */
 int ac_termination(struct ac_inst *m, int *terminate);
+/* AC_ERROR, logging the component and its message, if an assertion fails at the present
+ * point (checked after initialization, events and every integrator step) */
+int ac_check_assertions(struct ac_inst *m);
 
 #endif

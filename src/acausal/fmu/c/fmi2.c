@@ -198,7 +198,7 @@ fmi2Status fmi2CompletedIntegratorStep(fmi2Component c, fmi2Boolean noSetFMUStat
     BEGIN(AC_CONT);
     *enterEventMode = ac_drift_exceeded(M) || ac_step_crossed(M) ? fmi2True : fmi2False;
     *terminateSimulation = fmi2False;
-    return fmi2OK;
+    return ST(ac_completed_step(M));
 }
 
 fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time) {

@@ -337,7 +337,7 @@ fmi3Status fmi3CompletedIntegratorStep(fmi3Instance instance, fmi3Boolean noSetF
     BEGIN(AC_CONT);
     *enterEventMode = ac_drift_exceeded(M) || ac_step_crossed(M) ? fmi3True : fmi3False;
     *terminateSimulation = fmi3False;
-    return fmi3OK;
+    return ST(ac_completed_step(M));
 }
 
 fmi3Status fmi3SetTime(fmi3Instance instance, fmi3Float64 time) {

@@ -122,6 +122,7 @@ static int initialize(ac_inst *m) {
     if (ac_ensure_z(m)) return AC_ERROR;
     if (ac_state_event(m, 1, NULL)) return AC_ERROR;     /* the modes consistent at the start */
     if (ac_derivatives(m, NULL)) return AC_ERROR;
+    if (ac_check_assertions(m)) return AC_ERROR;
     m->d.next_event = ac_next_event(m, m->d.t);
     m->d.t_start = m->d.t;
     m->d.initialized = 1;
@@ -141,11 +142,16 @@ int ac_event_update(ac_inst *m, int *states_changed, int *terminate) {
     ac_invalidate(m);
     if (ac_state_event(m, 0, &event)) { m->d.mode = AC_FAILED; return AC_ERROR; }
     if (event) *states_changed = 1;
-    if (m->d.t > m->d.t_start && ac_termination(m, terminate)) {
+    if (ac_check_assertions(m) || (m->d.t > m->d.t_start && ac_termination(m, terminate))) {
         m->d.mode = AC_FAILED;
         return AC_ERROR;
     }
     m->d.next_event = ac_next_event(m, m->d.t);
+    return AC_OK;
+}
+
+int ac_completed_step(ac_inst *m) {
+    if (ac_check_assertions(m)) { m->d.mode = AC_FAILED; return AC_ERROR; }
     return AC_OK;
 }
 

@@ -90,6 +90,8 @@ int ac_exit_initialization(ac_inst *m);        /* to event mode (ME) or step mod
  * *states_changed: states projected or reinitialized, or modes changed; *terminate: a
  * termination condition holds after the event (not at the start time, as events.py) */
 int ac_event_update(ac_inst *m, int *states_changed, int *terminate);
+/* after an accepted step of the importer's integrator (model exchange): the assertions */
+int ac_completed_step(ac_inst *m);
 /* values by value reference */
 int ac_get_reals(ac_inst *m, const unsigned *vr, size_t n, double *values);
 int ac_set_reals(ac_inst *m, const unsigned *vr, size_t n, const double *values);

@@ -181,6 +181,7 @@ static int integrate(ac_inst *m, double t1) {
                 if (locate(m, t, te)) return AC_ERROR;
                 if (ac_state_event(m, 0, NULL)) return AC_ERROR;
                 if (ac_keep_loops_closed(m, 1e-3, NULL)) return AC_ERROR;
+                if (ac_check_assertions(m)) return AC_ERROR;
                 if (ac_termination(m, &ends)) return AC_ERROR;
                 if (ends) return AC_OK;
                 t = m->d.t;
@@ -195,6 +196,7 @@ static int integrate(ac_inst *m, double t1) {
             m->d.t = t;
             ac_invalidate(m);
             if (ac_keep_loops_closed(m, 1e-3, NULL)) return AC_ERROR;
+            if (ac_check_assertions(m)) return AC_ERROR;
             if (rejected && fac > 1.0) fac = 1.0;
             rejected = 0;
             if (last) { if (hs * fac > h) h = hs * fac; }
@@ -224,6 +226,7 @@ static int advance(ac_inst *m, double t1) {
             m->d.t = te > t1 ? t1 : te;
             ac_invalidate(m);
             if (ac_state_event(m, 0, NULL)) return AC_ERROR;     /* crossings there, modes */
+            if (ac_check_assertions(m)) return AC_ERROR;
             if (ac_termination(m, &ends)) return AC_ERROR;
             if (ends) return AC_OK;
         } else {

@@ -1,0 +1,42 @@
+"""A component's assertion in the native FMU: MSL's Resistor with its heat port driven out
+of the model's scope (1 + alpha·(T − T_ref) = 1 − 2·t, ``hot_resistor``). Over [0, 0.4] s
+the FMU runs and its voltage is the closed form v = 0.5·(1 − 2·t); over [0, 0.6] s the
+run fails with an error status, and the log names the part, MSL's message and a time
+within one step after 0.5 s, in fmpy (model exchange: CVode's completed steps;
+co-simulation: the FMU's own steps), FMI 2.0 and 3.0."""
+from __future__ import annotations
+
+import re
+
+import numpy as np
+import pytest
+
+fmpy = pytest.importorskip("fmpy")
+from fmpy import simulate_fmu                                      # noqa: E402
+from fmpy.fmi1 import FMICallException                             # noqa: E402
+
+import acausal                                                     # noqa: E402
+from hot_resistor import hot_part                                  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def hot_fmus(fmu_dir):
+    compiled = acausal.compile(hot_part("Resistor"))
+    return {v: compiled.export_fmu(fmu_dir / f"hot{v[0]}.fmu", fmi_version=v)
+            for v in ("2.0", "3.0")}
+
+
+@pytest.mark.parametrize("kind", ["ModelExchange", "CoSimulation"])
+@pytest.mark.parametrize("version", ["2.0", "3.0"])
+def test_assertion_fails_the_fmu_run(hot_fmus, kind, version, capfd):
+    settings = dict(fmi_type=kind, output=["part.v"], relative_tolerance=1e-10,
+                    output_interval=0.01)
+    res = simulate_fmu(str(hot_fmus[version]), stop_time=0.4, **settings)
+    np.testing.assert_allclose(res["part.v"], 0.5 * (1 - 2 * res["time"]), rtol=1e-7)
+    capfd.readouterr()
+    with pytest.raises(FMICallException):
+        simulate_fmu(str(hot_fmus[version]), stop_time=0.6, debug_logging=True, **settings)
+    found = re.search(r"'part': Temperature outside scope of model! \(assertion failed at "
+                      r"t = ([0-9.e-]+) s\)", capfd.readouterr().out)
+    assert found, "the FMU's log names the part and MSL's message"
+    assert 0.5 <= float(found.group(1)) <= 0.52
