@@ -16,8 +16,6 @@ SupportFriction whose breakaway force is 1.5 times the sliding force.
 from __future__ import annotations
 
 import re
-import subprocess
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -33,11 +31,11 @@ from acausal.models.bouncing_ball import G, BouncingBall           # noqa: E402
 from acausal.models.friction import START, RotationalFriction      # noqa: E402
 from faulty_components import Relay, Toggle, on_a_mass             # noqa: E402
 from fmi_calls import unzipped                                      # noqa: E402
+from importers import fmu_check, fmusim                             # noqa: E402
 
 VERSIONS = ("2.0", "3.0")
 RTOL = 1e-6           # of each signal's peak
 EVENT_TOL = 1e-6      # [s], event instants
-TOOLS = Path(__file__).resolve().parents[2].parent / "shared" / "fmi-tools" / "bin"
 
 
 def stick_slip() -> acausal.Model:
@@ -158,17 +156,6 @@ def test_the_event_instants_are_those_of_the_closed_form():
 
 
 # ---- the Reference FMUs' fmusim ---------------------------------------------------------------
-def tool(name: str) -> Path:
-    exe = TOOLS / name
-    if not exe.is_file():
-        pytest.skip(f"{name} not found in {TOOLS} (the shared FMI importers)")
-    return exe
-
-
-def csv(path: Path) -> np.ndarray:
-    return np.genfromtxt(path, delimiter=",", names=True, deletechars="")
-
-
 @pytest.mark.parametrize("kind", ["me", "cs"])
 @pytest.mark.parametrize("version", VERSIONS)
 @pytest.mark.parametrize("name", list(CASES))
@@ -196,35 +183,6 @@ def check_importer(name, ref, res, model_exchange: bool):
     check(name, ref, t, lambda n: res[n], grid, events)
 
 
-def fmusim(fmu: Path, kind: str, T: float, dt: float, x0: dict, outputs: list,
-           tmp_path: Path) -> np.ndarray:
-    """The Reference FMUs' fmusim on ``fmu`` ("me" with CVODE, or "cs"), tolerance 1e-10:
-    its result, columns by name."""
-    out = tmp_path / "out.csv"
-    cmd = [str(tool("fmusim")), "--interface-type", kind, "--tolerance", "1e-10",
-           "--stop-time", repr(T), "--output-interval", repr(dt), "--output-file", str(out)]
-    for n, v in x0.items():
-        cmd += ["--start-value", n, repr(v)]
-    for n in outputs:
-        cmd += ["--output-variable", n]
-    if kind == "me":
-        cmd += ["--solver", "cvode"]
-    r = subprocess.run(cmd + [str(fmu)], capture_output=True, text=True, timeout=600)
-    assert r.returncode == 0, r.stdout + r.stderr
-    return csv(out)
-
-
-def fmu_check(fmu: Path, kind: str, T: float, h: float, out: Path) -> np.ndarray:
-    r = subprocess.run([str(tool("fmuCheck")), "-k", kind, "-s", repr(T), "-h", repr(h),
-                        "-n", str(int(round(T / h))), "-f", "-l", "3", "-o", str(out), str(fmu)],
-                       capture_output=True, text=True, timeout=600)
-    report = r.stdout + r.stderr
-    assert r.returncode == 0, report
-    assert re.search(r"FMU reported:\s+0 warning\(s\) and error\(s\)", report), report
-    assert re.search(r"Checker reported:\s+0 Warning\(s\)\s+0 Error\(s\)", report), report
-    return csv(out)
-
-
 @pytest.mark.parametrize("name", list(CASES))
 def test_fmu_compliance_checker(fmus, name, tmp_path):
     """FMI 2.0: the checker finds nothing in model exchange (its forward Euler, events at its
@@ -234,14 +192,14 @@ def test_fmu_compliance_checker(fmus, name, tmp_path):
     FMU's hysteresis lets it bounce ever so slightly): only checked."""
     make, T, dt, _, signals, modes = CASES[name]
     compiled = fmus[name][0]
-    cs = fmu_check(fmus[name, "2.0"], "cs", T, dt, tmp_path / "cs.csv")
+    cs = fmu_check(fmus[name, "2.0"], "cs", T, dt, int(round(T / dt)), tmp_path / "cs.csv")
     if name == "ball":
         signals = []
     ref = compiled.simulate(T, t=cs["time"], rtol=1e-12, atol=1e-14)
     for n in signals:
         e = np.max(np.abs(at(cs["time"], cs[n], cs["time"]) - at(ref.t, ref[n], cs["time"])))
         assert e / max(np.max(np.abs(ref[n])), 1e-300) < RTOL, (name, n, e)
-    fmu_check(fmus[name, "2.0"], "me", T, 1e-4, tmp_path / "me.csv")
+    fmu_check(fmus[name, "2.0"], "me", T, 1e-4, int(round(T / 1e-4)), tmp_path / "me.csv")
 
 
 # ---- errors -------------------------------------------------------------------------------------

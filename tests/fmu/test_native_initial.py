@@ -34,9 +34,7 @@ from __future__ import annotations
 
 import math
 import re
-import subprocess
 import warnings
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -53,6 +51,7 @@ from acausal.errors import FmuExportError                          # noqa: E402
 from acausal.models import FourBar                                 # noqa: E402
 from acausal.models.robot_axis import STOP_TIME, Motor, OneAxis    # noqa: E402
 from fmi_calls import init, instance                               # noqa: E402
+from importers import fmu_check, fmusim                             # noqa: E402
 from wiring import model                                           # noqa: E402
 
 VERSIONS = ("2.0", "3.0")
@@ -60,7 +59,6 @@ START_TOL = 1e-10     # the start state against simulate()'s, relative to max(1,
 RTOL = 1e-6           # trajectories, of each signal's peak, as test_native.py (tolerance 1e-10)
 CLOSED_TOL = 1e-8     # simulate() (tolerance 1e-12) against the closed forms, of the peak
 END_TOL = 1e-9        # [s], the termination's time against its closed form
-TOOLS = Path(__file__).resolve().parents[2].parent / "shared" / "fmi-tools" / "bin"
 OMEGA = math.sqrt(50.0)
 
 
@@ -191,7 +189,8 @@ def test_fmpy_starts_where_simulate_starts(fmus, name, version, kind):
 @pytest.mark.parametrize("name", list(CASES))
 def test_fmusim_starts_where_simulate_starts(fmus, name, version, kind, tmp_path):
     _, T, dt, x0, _ = CASES[name]
-    res = fmusim(fmus[name, version], kind, T, dt, x0, fmus[name][0].x_names, tmp_path)
+    res = fmusim(fmus[name, version], kind, T, dt, x0, fmus[name][0].x_names, tmp_path,
+                 early_return=True)
     check(name, fmus, res["time"], lambda n: res[n])
 
 
@@ -289,7 +288,8 @@ def test_one_axis_ends_at_its_time_event(one_axis, version, kind):
 @pytest.mark.parametrize("kind", ["me", "cs"])
 @pytest.mark.parametrize("version", VERSIONS)
 def test_fmusim_ends_at_the_termination(fmus, version, kind, tmp_path):
-    res = fmusim(fmus["fast_enough", version], kind, 10.0, 0.1, {}, ["inertia.w"], tmp_path)
+    res = fmusim(fmus["fast_enough", version], kind, 10.0, 0.1, {}, ["inertia.w"], tmp_path,
+                 early_return=True)
     assert abs(res["time"][-1] - T_END) < END_TOL, res["time"][-1]
     assert abs(res["inertia.w"][-1] - 4.5) < 1e-8
 
@@ -300,37 +300,6 @@ def test_pythonfmu_refuses_them_and_points_at_the_native_backend(fmus, fmu_dir):
 
 
 # ---- the independent importers ----------------------------------------------------------------
-def tool(name: str) -> Path:
-    exe = TOOLS / name
-    if not exe.is_file():
-        pytest.skip(f"{name} not found in {TOOLS} (the shared FMI importers)")
-    return exe
-
-
-def csv(path: Path) -> np.ndarray:
-    return np.genfromtxt(path, delimiter=",", names=True, deletechars="")
-
-
-def fmusim(fmu: Path, kind: str, T: float, dt: float, x0: dict, outputs: list,
-           tmp_path: Path) -> np.ndarray:
-    """The Reference FMUs' fmusim on ``fmu`` ("me" with CVODE, or "cs"), tolerance 1e-10:
-    its result, columns by name."""
-    out = tmp_path / "out.csv"
-    cmd = [str(tool("fmusim")), "--interface-type", kind, "--tolerance", "1e-10",
-           "--stop-time", repr(T), "--output-interval", repr(dt), "--output-file", str(out)]
-    for n, v in x0.items():
-        cmd += ["--start-value", n, repr(v)]
-    for n in outputs:
-        cmd += ["--output-variable", n]
-    if kind == "me":
-        cmd += ["--solver", "cvode"]
-    else:
-        cmd += ["--early-return-allowed"]
-    r = subprocess.run(cmd + [str(fmu)], capture_output=True, text=True, timeout=600)
-    assert r.returncode == 0, r.stdout + r.stderr
-    return csv(out)
-
-
 @pytest.mark.parametrize("name", ["spin", "held_motor", "fast_enough"])
 @pytest.mark.parametrize("kind", ["me", "cs"])
 def test_fmu_compliance_checker(fmus, name, kind, tmp_path):
@@ -339,15 +308,7 @@ def test_fmu_compliance_checker(fmus, name, kind, tmp_path):
     row at the output point after it, in co-simulation with the values at the termination)."""
     T, dt = (10.0, 0.1) if name == "fast_enough" else CASES[name][1:3]
     h = dt if kind == "cs" else dt / 10
-    r = subprocess.run([str(tool("fmuCheck")), "-k", kind, "-s", repr(T), "-h", repr(h),
-                        "-n", str(int(round(T / dt))), "-f", "-l", "3", "-o",
-                        str(tmp_path / "out.csv"), str(fmus[name, "2.0"])],
-                       capture_output=True, text=True, timeout=600)
-    report = r.stdout + r.stderr
-    assert r.returncode == 0, report
-    assert re.search(r"FMU reported:\s+0 warning\(s\) and error\(s\)", report), report
-    assert re.search(r"Checker reported:\s+0 Warning\(s\)\s+0 Error\(s\)", report), report
-    res = csv(tmp_path / "out.csv")
+    res = fmu_check(fmus[name, "2.0"], kind, T, h, int(round(T / dt)), tmp_path / "out.csv")
     if name == "fast_enough":     # its last row is the output point after the termination
         assert T_END - END_TOL < res["time"][-1] <= T_END + dt + END_TOL, res["time"][-1]
         if kind == "cs":          # the values at the termination

@@ -11,7 +11,6 @@ from __future__ import annotations
 import ctypes
 import math
 import re
-import subprocess
 import warnings
 from pathlib import Path
 
@@ -27,11 +26,11 @@ from acausal.errors import ParameterError                          # noqa: E402
 from acausal.fmu.export import find_fmi_headers, platform_dirs    # noqa: E402
 from acausal.models import Drivetrain, FourBar, GantryCrane       # noqa: E402
 from fmi_calls import derivatives, get_real, init, instance, set_real, unzipped  # noqa: E402
+from importers import fmu_check, fmusim                            # noqa: E402
 
 VERSIONS = ("2.0", "3.0")
 RTOL = 1e-6            # test_native.py's agreement with compiled.simulate
 # the independent importers: ../shared/fmi-tools/bin relative to the repository root
-TOOLS = Path(__file__).resolve().parents[2].parent / "shared" / "fmi-tools" / "bin"
 
 
 @pytest.fixture(scope="module")
@@ -278,17 +277,6 @@ def test_non_finite_inputs_and_tolerances_are_refused(fmus, version, capsys):
 
 
 # ---- independent importers ---------------------------------------------------------------
-def tool(name: str) -> Path:
-    exe = TOOLS / name
-    if not exe.is_file():
-        pytest.skip(f"{name} not found in {TOOLS} (the shared FMI importers)")
-    return exe
-
-
-def csv(path: Path) -> np.ndarray:
-    return np.genfromtxt(path, delimiter=",", names=True, deletechars="")
-
-
 def reference(compiled, T, grid, **kw):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")       # loop assembly moves the guessed joints
@@ -302,17 +290,6 @@ def relerr(a, b):
 NAMES = ["rev1.phi", "rev2.phi", "rev3.phi", "rev3.w"]
 
 
-def fmu_check(fmu: Path, kind: str, h: float, out: Path) -> np.ndarray:
-    r = subprocess.run([str(tool("fmuCheck")), "-k", kind, "-s", "1", "-h", str(h), "-n", "50",
-                        "-f", "-l", "3", "-o", str(out), str(fmu)],
-                       capture_output=True, text=True, timeout=300)
-    report = r.stdout + r.stderr
-    assert r.returncode == 0, report
-    assert re.search(r"FMU reported:\s+0 warning\(s\) and error\(s\)", report), report
-    assert re.search(r"Checker reported:\s+0 Warning\(s\)\s+0 Error\(s\)", report), report
-    return csv(out)
-
-
 def test_fmu_compliance_checker(fmus, tmp_path):
     """FMI 2.0, the four-bar falling from its default start (assembled by the FMU): the
     checker finds no error in model exchange or co-simulation. Co-simulation (the FMU's
@@ -321,12 +298,12 @@ def test_fmu_compliance_checker(fmus, tmp_path):
     extrapolation of the error, 2·e(h/2) − e(h), is below 1e-6 (the checker outputs at the
     Euler step nearest each output point: each run is compared at its own times)."""
     compiled, path = fmus["four_bar"], fmus["four_bar", "2.0"]
-    cs = fmu_check(path, "cs", 0.02, tmp_path / "cs.csv")
+    cs = fmu_check(path, "cs", 1.0, 0.02, 50, tmp_path / "cs.csv")
     ref = reference(compiled, 1.0, cs["time"])
     for n in NAMES:
         assert relerr(cs[n], ref[n]) < RTOL, (n, relerr(cs[n], ref[n]))
-    coarse = fmu_check(path, "me", 2e-5, tmp_path / "me1.csv")
-    fine = fmu_check(path, "me", 1e-5, tmp_path / "me2.csv")
+    coarse = fmu_check(path, "me", 1.0, 2e-5, 50, tmp_path / "me1.csv")
+    fine = fmu_check(path, "me", 1.0, 1e-5, 50, tmp_path / "me2.csv")
     assert np.allclose(coarse["time"], fine["time"], rtol=0, atol=3e-5)
     ref_c = reference(compiled, 1.0, coarse["time"])
     ref_f = reference(compiled, 1.0, fine["time"])
@@ -344,18 +321,7 @@ def test_fmusim_fmi3(fmus, kind, tmp_path):
     to 1e-6."""
     compiled, path = fmus["four_bar"], fmus["four_bar", "3.0"]
     params, x0 = {"coupler.m": 1.5}, {"rev1.phi": 1.0, "rev1.w": 2.0}
-    out = tmp_path / f"{kind}.csv"
-    cmd = [str(tool("fmusim")), "--interface-type", kind, "--tolerance", "1e-10",
-           "--stop-time", "1", "--output-interval", "0.01", "--output-file", str(out)]
-    for n, v in {**params, **x0}.items():
-        cmd += ["--start-value", n, repr(v)]
-    for n in NAMES:
-        cmd += ["--output-variable", n]
-    if kind == "me":
-        cmd += ["--solver", "cvode"]
-    r = subprocess.run(cmd + [str(path)], capture_output=True, text=True, timeout=300)
-    assert r.returncode == 0, r.stdout + r.stderr
-    res = csv(out)
+    res = fmusim(path, kind, 1.0, 0.01, {**params, **x0}, NAMES, tmp_path)
     grid = np.linspace(0.0, 1.0, 101)
     idx = np.searchsorted(res["time"], grid + 1e-9, side="right") - 1   # the last row at each
     assert np.allclose(res["time"][idx], grid, rtol=0, atol=1e-12)     # (and events' rows)
