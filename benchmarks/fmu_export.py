@@ -55,7 +55,7 @@ def by_hand(compiled, tmp: Path) -> dict:
     ode = ca.substitute(compiled.ode, compiled.z, ca.DM.zeros(compiled.z.numel()))
     gen = ca.CodeGenerator("by_hand.c")
     gen.add(ca.Function("ode", args, [ode], names, ["xdot"]))
-    gen.add(ca.Function("jac", args, [ca.jacobian(ode, compiled.x)], names, ["J"]))
+    gen.add(ca.Function("ode_jac", args, [ca.jacobian(ode, compiled.x)], names, ["J"]))
     gen.generate(str(tmp) + "/")
     subprocess.run(["gcc", "-O2", "-shared", "-fPIC", "-std=c99", "-w", str(tmp / "by_hand.c"),
                     "-o", str(tmp / "by_hand.so"), "-lm"], check=True)
