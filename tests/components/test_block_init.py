@@ -113,7 +113,8 @@ def test_derivative():
 
 
 def test_pi_initial_output():
-    """InitialOutput: y = k·(x + u) = y_start, so x(0) = y_start/k − u; y = y_start + k·u·t/T."""
+    """InitialOutput: y = k·(x + u) = y_start, so x(0) = y_start/k − u;
+    y = y_start + k·u·t/T."""
     k, Tc, u, y0 = 2.0, 0.5, 0.6, 1.0
     res = _simulate(sg.Constant(k=u), sg.PI(k=k, T=Tc, x_start=5.0, y_start=y0,
                                             initType="InitialOutput"))
