@@ -132,8 +132,8 @@ def test_limits_are_checked_and_required():
         sg.DeadZone(uMax=0.0, uMin=0.5)
     with pytest.raises(ParameterError, match="yMax"):
         sg.LimPID()
-    with pytest.raises(ParameterError, match="SteadyState"):
-        sg.LimPID(yMax=1.0, initType="SteadyState")
+    with pytest.raises(ParameterError, match="y_start"):
+        sg.LimPID(yMax=1.0, initType="InitialOutput", y_start=1.5)
     with pytest.raises(DisabledPortError, match="withFeedForward"):
         sg.LimPID(yMax=1.0).u_ff
     assert sg.Limiter(uMax=2.0).uMin == -2.0 and type(sg.Limiter(uMax=1, uMin=0)).__name__ \

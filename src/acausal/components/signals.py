@@ -9,12 +9,13 @@ frequencies in [Hz], angles in [rad]. Numeric parameters are acausal Parameters 
 changeable at simulation time without recompiling); structural data (a table, the number of
 inputs of ``Sum``) and initial values of block states are constructor arguments.
 
-Initialization: a block's states start at their start values (``y_start``, ``x_start``, ...),
-which is MSL's ``initType=Init.InitialState`` (and what MSL tools do with ``Init.NoInit`` when
-nothing else fixes the state). Other initial values are given at simulation time by the
-dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}`` (MSL's
-``Init.InitialOutput``). TransferFunction and StateSpace take MSL's ``initType`` (NoInit,
-SteadyState, InitialState, InitialOutput) as initial equations.
+Initialization: the continuous blocks (Integrator, Derivative, FirstOrder, SecondOrder, PI,
+PID, LimPID, TransferFunction, StateSpace) take MSL's ``initType`` (``Init``: NoInit,
+SteadyState, InitialState, InitialOutput) with MSL's default for each block; SteadyState and
+InitialOutput are initial equations (der(states) = 0; y = y_start). With NoInit and
+InitialState a block's states start at their start values (``y_start``, ``x_start``, ...),
+where nothing else fixes them (what MSL tools do with NoInit). Other initial values are given
+at simulation time by the dotted name of a state or of any output, e.g. ``x0={"PI.y": 0.5}``.
 
 Sources are expressions of time built with CasADi functions (``if_else``, ``floor``,
 ``interpolant``), so they are exact, differentiable where the MSL signal is, and usable
@@ -1104,9 +1105,39 @@ def _start_vector(value, n: int | None, what: str):
     return tuple(_start(v, f"{what}[{i}]") for i, v in enumerate(items, start=1))
 
 
+class Init(str, Enum):
+    """Modelica.Blocks.Types.Init: how a block's states are initialized."""
+    NoInit = "NoInit"
+    SteadyState = "SteadyState"
+    InitialState = "InitialState"
+    InitialOutput = "InitialOutput"
+
+
+def _initial_equations(e, block, derivatives: dict, output: dict,
+                       steady_output: tuple = ()) -> None:
+    """MSL's initial equations of a block's ``initType``: SteadyState holds der(s) = 0 for
+    every state s of ``derivatives`` (state names → their derivatives); InitialOutput the
+    equations ``output`` (labels → expressions held = 0) and der(s) = 0 for the states
+    named in ``steady_output``; NoInit and InitialState none (the states start at their
+    start values, where nothing else fixes them)."""
+    init = block.initType
+    if init is Init.SteadyState:
+        held = {f"der({s}) = 0": d for s, d in derivatives.items()}
+    elif init is Init.InitialOutput:
+        held = {**output, **{f"der({s}) = 0": derivatives[s] for s in steady_output}}
+    else:
+        return
+    for label, expr in held.items():
+        e.initial(expr, f"{label} (initType={init.value})")
+
+
 class Integrator(_StartValues, SISO):
-    """y = k·∫u dt: der(y) = k·u, y(0) = y_start (constructor argument)."""
+    """y = k·∫u dt: der(y) = k·u. Initialization (``initType``, MSL's default InitialState):
+    NoInit and InitialState start at y = y_start; SteadyState: der(y) = 0, so k·u = 0 at the
+    start (the input must be zero there, or depend on states that can make it zero);
+    InitialOutput: y = y_start (held)."""
     _starts = ("y_start",)
+    options = {"initType": Init.InitialState}
     k = Parameter(1.0, "1", "integrator gain")
 
     def structure(self, s):
@@ -1114,14 +1145,19 @@ class Integrator(_StartValues, SISO):
 
     def physics(self, e):
         y = e.state("y")
-        e.derivative(y, self.k * e.input(self.u))
+        dy = self.k * e.input(self.u)
+        e.derivative(y, dy)
         e.output(self.y, y)
+        _initial_equations(e, self, {"y": dy}, {"y = y_start": y - self.y_start})
 
 
 class Derivative(_StartValues, SISO):
-    """Approximated derivative y = k·s/(T·s + 1)·u: der(x) = (u − x)/T, y = (k/T)·(u − x);
-    x(0) = x_start. With k = 0 the block gives y = 0."""
-    _starts = ("x_start",)
+    """Approximated derivative y = k·s/(T·s + 1)·u: der(x) = (u − x)/T, y = (k/T)·(u − x).
+    With k = 0 the block gives y = 0. Initialization (``initType``, MSL's default NoInit):
+    NoInit and InitialState start at x = x_start; SteadyState: der(x) = 0 (x = u, y = 0);
+    InitialOutput: y = y_start (x = u when k = 0)."""
+    _starts = ("x_start", "y_start")
+    options = {"initType": Init.NoInit}
     k = Parameter(1.0, "1", "gain")
     T = Parameter(0.01, "s", "time constant (T > 0 required)", positive=True)
 
@@ -1129,15 +1165,20 @@ class Derivative(_StartValues, SISO):
         s.state("x", self.x_start, description="state of block")
 
     def physics(self, e):
-        x = e.state("x")
-        xdot, y = _approx_derivative(e.input(self.u), x, self.k, self.T)
+        x, u = e.state("x"), e.input(self.u)
+        xdot, y = _approx_derivative(u, x, self.k, self.T)
         e.derivative(x, xdot)
         e.output(self.y, y)
+        output = ca.if_else(ca.fabs(self.k) < EPS, x - u, y - self.y_start)
+        _initial_equations(e, self, {"x": xdot}, {"y = y_start (x = u when k = 0)": output})
 
 
 class FirstOrder(_StartValues, SISO):
-    """First order y = k/(T·s + 1)·u: der(y) = (k·u − y)/T, y(0) = y_start."""
+    """First order y = k/(T·s + 1)·u: der(y) = (k·u − y)/T. Initialization (``initType``,
+    MSL's default NoInit): NoInit and InitialState start at y = y_start; SteadyState:
+    der(y) = 0 (y = k·u); InitialOutput: y = y_start (held)."""
     _starts = ("y_start",)
+    options = {"initType": Init.NoInit}
     k = Parameter(1.0, "1", "gain")
     T = Parameter(1.0, "s", "time constant", nonzero=True)
 
@@ -1146,14 +1187,20 @@ class FirstOrder(_StartValues, SISO):
 
     def physics(self, e):
         y = e.state("y")
-        e.derivative(y, (self.k * e.input(self.u) - y) / self.T)
+        dy = (self.k * e.input(self.u) - y) / self.T
+        e.derivative(y, dy)
         e.output(self.y, y)
+        _initial_equations(e, self, {"y": dy}, {"y = y_start": y - self.y_start})
 
 
 class SecondOrder(_StartValues, SISO):
     """Second order y = k/((s/w)² + 2·D·(s/w) + 1)·u: der(y) = yd,
-    der(yd) = w·(w·(k·u − y) − 2·D·yd); y(0) = y_start, yd(0) = yd_start."""
+    der(yd) = w·(w·(k·u − y) − 2·D·yd). Initialization (``initType``, MSL's default
+    NoInit): NoInit and InitialState start at y = y_start, yd = yd_start; SteadyState:
+    der(y) = der(yd) = 0 (y = k·u, yd = 0); InitialOutput: y = y_start and yd = yd_start
+    (held)."""
     _starts = ("y_start", "yd_start")
+    options = {"initType": Init.NoInit}
     k = Parameter(1.0, "1", "gain")
     w = Parameter(1.0, "rad/s", "angular frequency")
     D = Parameter(1.0, "1", "damping")
@@ -1164,14 +1211,21 @@ class SecondOrder(_StartValues, SISO):
 
     def physics(self, e):
         y, yd = e.state("y"), e.state("yd")
+        ydd = self.w * (self.w * (self.k * e.input(self.u) - y) - 2 * self.D * yd)
         e.derivative(y, yd)
-        e.derivative(yd, self.w * (self.w * (self.k * e.input(self.u) - y) - 2 * self.D * yd))
+        e.derivative(yd, ydd)
         e.output(self.y, y)
+        _initial_equations(e, self, {"y": yd, "yd": ydd}, {"y = y_start": y - self.y_start,
+                                                            "yd = yd_start": yd - self.yd_start})
 
 
 class PI(_StartValues, SISO):
-    """PI controller y = k·(1 + 1/(T·s))·u: der(x) = u/T, y = k·(x + u); x(0) = x_start."""
-    _starts = ("x_start",)
+    """PI controller y = k·(1 + 1/(T·s))·u: der(x) = u/T, y = k·(x + u). Initialization
+    (``initType``, MSL's default NoInit): NoInit and InitialState start at x = x_start;
+    SteadyState: der(x) = 0, so u = 0 at the start (the input must be zero there, or
+    depend on states that can make it zero); InitialOutput: y = y_start."""
+    _starts = ("x_start", "y_start")
+    options = {"initType": Init.NoInit}
     k = Parameter(1.0, "1", "gain")
     T = Parameter(1.0, "s", "time constant (T > 0 required)", positive=True)
 
@@ -1181,8 +1235,10 @@ class PI(_StartValues, SISO):
     def physics(self, e):
         x = e.state("x")
         u = e.input(self.u)
-        e.derivative(x, u / self.T)
-        e.output(self.y, self.k * (x + u))
+        xdot, y = u / self.T, self.k * (x + u)
+        e.derivative(x, xdot)
+        e.output(self.y, y)
+        _initial_equations(e, self, {"x": xdot}, {"y = y_start": y - self.y_start})
 
 
 class PID(_StartValues, SISO):
@@ -1192,8 +1248,12 @@ class PID(_StartValues, SISO):
 
     States ``I.y`` (start xi_start) and ``D.x`` (start xd_start), named as the states of the
     MSL block's sub-blocks (``PID.I.y``, ``PID.D.x``); ``P.y``, ``I.y``, ``D.y`` are recorded.
+    Initialization (``initType``, MSL's default InitialState): NoInit and InitialState
+    start at the start values; SteadyState: der(I.y) = der(D.x) = 0 (u = 0 at the start,
+    as for Integrator); InitialOutput: y = y_start and der(D.x) = 0.
     """
-    _starts = ("xi_start", "xd_start")
+    _starts = ("xi_start", "xd_start", "y_start")
+    options = {"initType": Init.InitialState}
     k = Parameter(1.0, "1", "gain")
     Ti = Parameter(0.5, "s", "time constant of integrator", positive=True)
     Td = Parameter(0.1, "s", "time constant of derivative block", nonnegative=True)
@@ -1207,12 +1267,16 @@ class PID(_StartValues, SISO):
     def physics(self, e):
         xi, xd = e.state("I.y"), e.state("D.x")
         u = e.input(self.u)
-        e.derivative(xi, u / self.Ti)
+        xi_dot = u / self.Ti
+        e.derivative(xi, xi_dot)
         xd_dot, d_y = _approx_derivative(u, xd, self.Td, ca.fmax(self.Td / self.Nd, 100 * EPS))
         e.derivative(xd, xd_dot)
         e.variable("P.y", u, description="proportional part")
         e.variable("D.y", d_y, description="derivative part")
-        e.output(self.y, self.k * (u + xi + d_y))
+        y = self.k * (u + xi + d_y)
+        e.output(self.y, y)
+        _initial_equations(e, self, {"I.y": xi_dot, "D.x": xd_dot},
+                           {"y = y_start": y - self.y_start}, steady_output=("D.x",))
 
 
 class SimpleController(str, Enum):
@@ -1221,14 +1285,6 @@ class SimpleController(str, Enum):
     PI = "PI"
     PD = "PD"
     PID = "PID"
-
-
-class Init(str, Enum):
-    """Modelica.Blocks.Types.Init: how a block's states are initialized."""
-    NoInit = "NoInit"
-    SteadyState = "SteadyState"
-    InitialState = "InitialState"
-    InitialOutput = "InitialOutput"
 
 
 class LimPID(_StartValues, Component):
@@ -1252,19 +1308,24 @@ class LimPID(_StartValues, Component):
     yMin (default −yMax, MSL's binding: follows yMax unless given at construction), wp, wd
     [1] (set-point weights), Ni [1] (Ni·Ti is the anti-windup time constant), Nd [1] (the
     higher, the more ideal the derivative), kFF [1], y_smooth (smooth form only). Start
-    values (constructor arguments): xi_start (I.y), xd_start (D.x). Recorded:
+    values (constructor arguments): xi_start (I.y), xd_start (D.x), y_start. Recorded:
     controlError, P.y, D.y, limiter.u.
+
+    Initialization (``initType``, MSL's default InitialState): NoInit and InitialState
+    start the states at xi_start, xd_start; SteadyState: der(I.y) = der(D.x) = 0 (of the
+    parts present); InitialOutput: k·(P.y + I.y + D.y) = y_start (the output before the
+    feed-forward and the limiter, MSL's gainPID.y; y_start within [yMin, yMax]) and
+    der(D.x) = 0.
 
     The output limiter is MSL's Limiter (``limiter``): with strict=False (MSL's default)
     state events where limiter.u reaches yMax or yMin (mode ``limiter.region``, indicators
     ``limiter.upper``, ``limiter.lower``), with strict=True none; in smooth form its
     corners rounded over ``y_smooth`` (error ≤ y_smooth/2; see Limiter).
 
-    MSL differences: initType InitialState and NoInit start the states at xi_start,
-    xd_start; SteadyState and InitialOutput are not available (give x0 at simulation
-    time). homotopyType changes nothing (the initialization solves the actual model).
+    MSL differences: homotopyType changes nothing (the initialization solves the actual
+    model).
     """
-    _starts = ("xi_start", "xd_start")
+    _starts = ("xi_start", "xd_start", "y_start")
     options = {"controllerType": SimpleController.PID, "withFeedForward": False,
                "initType": Init.InitialState, "strict": False,
                "homotopyType": LimiterHomotopy.Linear}
@@ -1295,12 +1356,11 @@ class LimPID(_StartValues, Component):
 
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
-        if self.initType in (Init.SteadyState, Init.InitialOutput):
-            raise ParameterError(
-                f"{who(self)}: initType={self.initType.value} is not available; the states "
-                f"start at xi_start and xd_start (InitialState); other initial values are "
-                f"given at simulation time, x0={{'<name>.I.y': ...}}")
         _check_limits(self, "yMax", "yMin")
+        if self.initType is Init.InitialOutput and not self.yMin <= self.y_start <= self.yMax:
+            raise ParameterError(f"{who(self)}: start value y_start (= {self.y_start}) is "
+                                 f"outside of the limits yMin (= {self.yMin}) and yMax "
+                                 f"(= {self.yMax}) (initType=InitialOutput)")
 
     @property
     def yMin(self):
@@ -1333,12 +1393,18 @@ class LimPID(_StartValues, Component):
             e.derivative(xd, xd_dot)
         i_y = e.state("I.y") if self._with_I else 0
         u_ff = e.input(self.u_ff) if self.withFeedForward else 0
-        lim_u = self.k * (p_y + i_y + d_y) + self.kFF * u_ff
+        gain_y = self.k * (p_y + i_y + d_y)
+        lim_u = gain_y + self.kFF * u_ff
         y = _limited(e, lim_u, self.yMin, self.yMax, self.y_smooth, not self.strict,
                      "limiter.")
+        derivatives = {"D.x": xd_dot} if self._with_D else {}
         if self._with_I:
             track = (y - lim_u) / (self.k * self.Ni)
-            e.derivative(i_y, (u_s - u_m + track) / self.Ti)
+            derivatives["I.y"] = (u_s - u_m + track) / self.Ti
+            e.derivative(i_y, derivatives["I.y"])
+        _initial_equations(e, self, derivatives, {"k*(P.y + I.y + D.y) = y_start":
+                                                  gain_y - self.y_start},
+                           steady_output=("D.x",) if self._with_D else ())
         e.variable("controlError", u_s - u_m, description="control error (set point - "
                                                            "measurement)")
         e.variable("P.y", p_y, description="proportional part")
@@ -1493,13 +1559,9 @@ class TransferFunction(_Sized, _StartValues, SISO):
         for i, x in enumerate(xs, start=1):
             e.variable(f"x[{i}]", x / a_end,
                        description="state of transfer function from controller canonical form")
-        if self.initType is Init.SteadyState:
-            for i, dx in enumerate(der, start=1):
-                e.initial(dx, f"der(x_scaled[{i}]) = 0 (initType=SteadyState)")
-        elif self.initType is Init.InitialOutput:
-            e.initial(y - self.y_start, "y = y_start (initType=InitialOutput)")
-            for i, dx in enumerate(der[1:], start=2):
-                e.initial(dx, f"der(x_scaled[{i}]) = 0 (initType=InitialOutput)")
+        names = [f"x_scaled[{i}]" for i in range(1, self.nx + 1)]
+        _initial_equations(e, self, dict(zip(names, der)), {"y = y_start": y - self.y_start},
+                           steady_output=names[1:])
 
 
 class StateSpace(_Sized, _StartValues, Component):
@@ -1603,15 +1665,9 @@ class StateSpace(_Sized, _StartValues, Component):
             e.derivative(state, xdot[i])
         for i, port in enumerate(self.y):
             e.output(port, y[i])
-        if self.initType is Init.SteadyState:
-            for i in range(nx):
-                e.initial(xdot[i], f"der(x[{i + 1}]) = 0 (initType=SteadyState)")
-        elif self.initType is Init.InitialOutput:
-            for i in range(nout):
-                e.initial(y[i] - self.y_start[i],
-                          f"y[{i + 1}] = y_start[{i + 1}] (initType=InitialOutput)")
-            P = ca.SX.eye(nx) - C.T @ ca.solve(C @ C.T, C)
-            rest = P @ A.T @ xdot
-            for i in range(nx):
-                e.initial(rest[i], f"der(x) least squares, row {i + 1} (initType="
-                                   f"InitialOutput)")
+        output = {f"y[{i + 1}] = y_start[{i + 1}]": y[i] - self.y_start[i]
+                  for i in range(nout)}
+        if self.initType is Init.InitialOutput:
+            rest = (ca.SX.eye(nx) - C.T @ ca.solve(C @ C.T, C)) @ A.T @ xdot
+            output.update({f"der(x) least squares, row {i + 1}": rest[i] for i in range(nx)})
+        _initial_equations(e, self, {f"x[{i + 1}]": xdot[i] for i in range(nx)}, output)
