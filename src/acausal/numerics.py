@@ -162,6 +162,15 @@ def _conflict(J, h, labels, targets, given) -> str:
                 return (f"{given} values conflict: '{labels[i]}' = {targets[i]} and "
                         f"'{labels[j]}' = {targets[j]} cannot both hold (the parts are rigidly "
                         f"joined); give only one of them")
+    fixed = [labels[i] for i in np.flatnonzero(np.abs(h) / row_scales(J) > 1e-10)
+             if i >= len(targets) and not np.any(J[i])]
+    if fixed:                    # no start value moves these: time, inputs, parameters do
+        which = "no start value enters it" if fixed == bad else \
+            f"no start value enters {', '.join(fixed)}"
+        return (f"cannot find initial values satisfying {', '.join(bad)}: {which} (it holds "
+                f"or fails with the time, inputs and parameters at the start alone, e.g. a "
+                f"steady start under an input that keeps the state moving); change those, or "
+                f"the component's initialization (initType)")
     return (f"cannot find initial values satisfying {', '.join(bad)}; check {given} values "
             f"against the model's constraints")
 

@@ -56,7 +56,8 @@ def test_integrator_steady_state():
                     sg.Integrator(k=k, y_start=y0, initType="SteadyState"))
     np.testing.assert_allclose(res["blk.y"], y0 + k * h * np.maximum(T - t0, 0), rtol=0,
                                atol=1e-9)
-    with pytest.raises(InitializationError, match=r"blk: der\(y\) = 0 \(initType=SteadyState"):
+    with pytest.raises(InitializationError, match=r"blk: der\(y\) = 0 \(initType=SteadyState"
+                                                  r"\): no start value enters it"):
         _simulate(sg.Constant(k=h), sg.Integrator(initType="SteadyState"))
     m = Model("integrator_loop")
     m.r, m.fb = sg.Constant(k=0.7), sg.Feedback()
