@@ -34,8 +34,8 @@ from acausal.errors import FmuExportError                                # noqa:
 from acausal.models import CoupledClutches, SampledPController, Thermostat  # noqa: E402
 from acausal.models.clutches import START as CLUTCHES_START              # noqa: E402
 from fmi_calls import init, instance                                     # noqa: E402
-from test_native_events import (EVENT_TOL, RTOL, VERSIONS, at, fmu_check,  # noqa: E402,I001
-                                fmusim, mode_changes)
+from importers import fmu_check, fmusim                                   # noqa: E402
+from test_native_events import EVENT_TOL, RTOL, VERSIONS, at, mode_changes  # noqa: E402
 
 RAMP = (0.5, 0.2)              # offset, slope [1/s]
 HOLD = (0.105, 0.25)           # the ZeroOrderHold's first instant and period [s]
@@ -180,11 +180,11 @@ def test_fmu_compliance_checker(fmus, name, tmp_path):
     stopping at the time events), from the models' default starts (the checker sets
     none)."""
     make, T, dt, *_ = CASES[name]
-    cs = fmu_check(fmus[name, "2.0"], "cs", T, dt, tmp_path / "cs.csv")
+    cs = fmu_check(fmus[name, "2.0"], "cs", T, dt, int(round(T / dt)), tmp_path / "cs.csv")
     grid = np.round(cs["time"], 9)              # the checker's points (it may skip one)
     ref = acausal.compile(make()).simulate(T, t=grid, rtol=1e-12, atol=1e-14)
     check(name, ref, cs["time"], lambda n: cs[n], False, grid)
-    fmu_check(fmus[name, "2.0"], "me", T, 1e-3, tmp_path / "me.csv")
+    fmu_check(fmus[name, "2.0"], "me", T, 1e-3, int(round(T / 1e-3)), tmp_path / "me.csv")
 
 
 # ---- errors -----------------------------------------------------------------------------------

@@ -29,7 +29,8 @@ from acausal.components.multibody import (BodyShape, FixedTranslation, Spherical
                                           SphericalSpherical, World)
 from acausal.models.multibody_forces import FreeBody                # noqa: E402
 from acausal.models.multibody_loops import MultiBodyEngine1a       # noqa: E402
-from test_native_events import RTOL, VERSIONS, fmusim              # noqa: E402
+from importers import fmusim                                       # noqa: E402
+from test_native_events import RTOL, VERSIONS                      # noqa: E402
 
 ENGINE_SIGNALS = ["bearing.phi", "bearing.w", "b1.phi", "cylinder.s", "cylinder.v"]
 

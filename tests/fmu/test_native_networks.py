@@ -19,7 +19,8 @@ import acausal                                                     # noqa: E402
 from acausal.components import electrical as el                    # noqa: E402
 from acausal.components import rotational as rot                   # noqa: E402
 from acausal.components import thermal as th                       # noqa: E402
-from test_native_events import RTOL, VERSIONS, fmusim              # noqa: E402
+from importers import fmusim                                       # noqa: E402
+from test_native_events import RTOL, VERSIONS                      # noqa: E402
 
 T_END, DT = 0.5, 0.005                  # s
 C_WINDING, G_AMBIENT, T_AMBIENT = 2.0, 0.5, 293.15     # J/K, W/K, K
