@@ -4,14 +4,15 @@ A base leaf: it imports only the standard library, numpy and casadi (no acausal,
 imports), so the compiler, the simulator and the analyses may all use it, and the pythonfmu
 backend copies it into every FMU, where the slave runs without acausal. It holds the pieces
 they share: the loop rows' independence rule, the projection onto the initial-value equations, the time
-events' rule, the restart time before an event and the readable line of a CasADi error.
+events' rule, the restart time before an event, the readable line of a CasADi error and
+the message of a failed assertion.
 """
 from __future__ import annotations
 
 import numpy as np
 
 __all__ = ["parameter_problem", "row_scales", "ProjectionError", "project", "independent_rows", "moved_note", "event_times",
-           "just_before", "short_error"]
+           "just_before", "short_error", "first_failed_assertion"]
 
 
 ASSEMBLY_RETRIES = 4     # restarts of a stalled projection from perturbed start values,
@@ -255,3 +256,18 @@ def short_error(e: Exception) -> str:
         if hits:
             return hits[-1].split(": ", 1)[-1][:300]
     return (lines[-1] if lines else str(e))[:300]
+
+
+def first_failed_assertion(held, times, texts) -> tuple[int, str] | None:
+    """Of the components' assertions evaluated at points (``held``: one row per assertion,
+    one column per point, > 0.5 where it holds; ``times`` of the points; ``texts``: the
+    (component, message) of each row): the first point where one fails and what failed
+    (the component, its message and the time), or None."""
+    held = np.asarray(held, dtype=float).reshape(len(texts), -1) > 0.5
+    failed = np.flatnonzero(~held.all(axis=0))
+    if not failed.size:
+        return None
+    k = int(failed[0])
+    component, text = texts[int(np.argmin(held[:, k]))]
+    return k, (f"'{component}': {text} (assertion failed at t = "
+               f"{float(np.ravel(times)[k]):.6g} s)")

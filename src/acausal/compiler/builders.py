@@ -661,9 +661,9 @@ class PhysicsBuilder(_Base):
         first time where it fails, checked at every point of the Result (output times and
         both sides of events), so a violation that begins and ends between two of them
         passes unseen. It adds no event (the model keeps its solvers and code generation);
-        a sweep reports the run failed, the Stepper raises after the step, a native FMU
-        returns an error status with the message (checked after initialization, events and
-        every integrator step). A condition that is true by construction (constant) is not
+        a sweep reports the run failed, the Stepper raises after the step, an FMU returns
+        an error status with the message (native: checked after initialization, events and
+        every integrator step; pythonfmu: after initialization and every doStep). A condition that is true by construction (constant) is not
         kept."""
         condition = sx(condition)
         if not (condition.is_constant() and float(condition) != 0):

@@ -37,16 +37,15 @@ def export_fmu(compiled, path, *, fmi_version: str = "2.0", fmu_type: str | None
                 raise FmuExportError(f"export_fmu(backend='native'): {e}") from None
             raise
     if backend == "pythonfmu":
-        unsupported = compiled.initial_labels \
-            + [f"{c}: terminate" for c, _ in compiled.state_events.terminations] \
-            + [f"{c}: assert" for c, _ in compiled.assertion_texts]
+        unsupported = compiled.initial_labels + [f"{c}: terminate" for c, _ in
+                                                 compiled.state_events.terminations]
         if unsupported:
             raise FmuExportError(
-                f"model '{compiled.name}' has initial equations, termination conditions or "
-                f"assertions ({', '.join(unsupported[:3])}), which the pythonfmu backend "
-                f"does not carry (its initialization and steps would ignore them): use "
-                f"backend='native', whose FMUs hold the initial equations at initialization, "
-                f"end the run at a termination and fail it where an assertion fails")
+                f"model '{compiled.name}' has initial equations or termination conditions "
+                f"({', '.join(unsupported[:3])}), which the pythonfmu backend does not carry "
+                f"(its initialization and steps would ignore them): use backend='native', "
+                f"whose FMUs hold the initial equations at initialization and end the run at "
+                f"a termination")
         if compiled.has_events:
             owners = sorted({v.component for v in compiled.state_events.indicators
                              + compiled.modes})

@@ -162,6 +162,8 @@ def _contents(compiled, ident, rtol, atol, solver, nominals):
         functions["init"], init_labels = _init_function(c)
     if loops:
         functions["phi_q"] = c.phi_q_function
+    if c.assertions.numel():
+        functions["assertions"] = c.function("assertions", [c.assertions])
     checks = []
     for v in c.params:
         checks.append(dict(v.declaration.rule, description=v.description, unit=v.unit))
@@ -188,6 +190,7 @@ def _contents(compiled, ident, rtol, atol, solver, nominals):
         "recorded_layout": [list(layout[i]) for i in range(len(layout))],
         "deviation_form": deviation,
         "init_labels": init_labels,
+        "assertion_texts": [list(a) for a in c.assertion_texts],
         "rtol": rtol, "atol": atol,
         "nominal": [float(v) for v in scale],
     }

@@ -229,6 +229,22 @@ class AcausalSlave(Fmi2Slave):
             self.log(self.error, Fmi2Status.error)
         self.initialized = True
         self._cache = None
+        if self.error is None:
+            self._check_assertions()
+
+    def _check_assertions(self) -> bool:
+        """The components' assertions at the present point: False, with the error logged
+        (the component, its message, the time), where one fails."""
+        if "assertions" not in self.fn:
+            return True
+        held = self.fn["assertions"](self.t, self.x, self.z, self.u, self.p)
+        failure = kernels.first_failed_assertion(held.full(), [self.t],
+                                                 self.meta["assertion_texts"])
+        if failure is None:
+            return True
+        self.error = failure[1]
+        self.log(self.error, Fmi2Status.error)
+        return False
 
     def _initialize(self):
         hard = {i: v for i, v in self.x_given.items() if v != self.x_declared[i]}
@@ -284,7 +300,7 @@ class AcausalSlave(Fmi2Slave):
             return False
         self.x, self.z, self.t = x, z, t1
         self._cache = None
-        return True
+        return self._check_assertions()
 
     def _segments(self, t0, t1):
         """(restart time, end) of the pieces of [t0, t1] between time events: each piece ends

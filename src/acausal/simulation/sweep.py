@@ -24,7 +24,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import AcausalError, SimulationError
-from ..numerics import event_times
+from ..numerics import event_times, first_failed_assertion
 from . import assertions
 from .diagnosis import failure_message, quiet_stderr
 from .initialization import initial_state
@@ -416,11 +416,12 @@ class _Engine:
         U = np.array(self.u_of.map(n * nt)(T[None, :], np.repeat(self.U, nt, axis=1)),
                      dtype=float) if model.u.numel() else np.zeros((0, n * nt))
         P = np.repeat(self.P, nt, axis=1)
-        asserted = assertions.failures(model, T, X, Z, U, P).reshape(n, nt)
-        for k in ok:
-            at = np.flatnonzero(asserted[k] >= 0)
-            if k not in self.failed and at.size:
-                self.failed[k] = assertions.message(model, int(asserted[k, at[0]]), grid[at[0]])
+        H = assertions.held(model, T, X, Z, U, P)
+        for k in ok if H is not None else ():     # a run whose assertion fails: failed too
+            failure = None if k in self.failed else first_failed_assertion(
+                H[:, k * nt:(k + 1) * nt], grid, model.assertion_texts)
+            if failure is not None:
+                self.failed[k] = failure[1]
         failed = sorted(self.failed)
         values = _values(model, variables, T, X, Z, U, P)
         values = {name: v.reshape(n, nt).copy() for name, v in values.items()}
