@@ -50,6 +50,8 @@ from .. import toolchain
 from ..errors import FmuExportError
 from ..simulation.initialization import model_equations
 
+SMALL = 2000       # instructions: a generated function below shares a C file with the others
+
 FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
              "ac_events", "ac_clocks", "ac_ind", "ac_upd", "ac_init", "ac_term", "ac_assert")
 
@@ -180,21 +182,27 @@ class ModelFunctions:
                 "iw": max(f.sz_iw() for f in fs), "w": max(toolchain.work_size(f) for f in fs)}
 
     def generate(self, directory) -> list[str]:
-        """Write the C of each function into a file of its own in ``directory`` (so that the
-        files compile side by side, ``toolchain.build_shared_library``), and the header
-        ``model_functions.h`` the runtime includes; returns the C files' names."""
+        """Write the C of the functions into ``directory``: each large one (``SMALL``
+        instructions or more, or an MX Function) in a file of its own, so that the files
+        compile side by side (``toolchain.build_shared_library``), the small ones together
+        in ``ac_small.c`` (a compiler process costs ~50 ms); and the header
+        ``model_functions.h`` the runtime includes. Returns the C files' names."""
         directory = Path(directory)
-        sources = []
-        for name, f in self.functions.items():
-            gen = ca.CodeGenerator(f"{name}.c", {"with_header": True})
-            gen.add(f)
+        small = [n for n, f in self.functions.items()
+                 if f.is_a("SXFunction") and f.n_instructions() < SMALL]
+        groups = [(n, [n]) for n in self.functions if n not in small]
+        groups += [("ac_small", small)] if small else []
+        for file, names in groups:
+            gen = ca.CodeGenerator(f"{file}.c", {"with_header": True})
+            for n in names:
+                gen.add(self.functions[n])
             gen.generate(str(directory) + "/")
-            path = directory / f"{name}.c"
-            path.write_text(toolchain.plain_access(path.read_text(), [f], FmuExportError))
-            sources.append(path.name)
+            path = directory / f"{file}.c"
+            path.write_text(toolchain.plain_access(
+                path.read_text(), [self.functions[n] for n in names], FmuExportError))
         (directory / "model_functions.h").write_text(
-            "".join(f'#include "{name}.h"\n' for name in self.functions))
-        return sources
+            "".join(f'#include "{file}.h"\n' for file, _ in groups))
+        return [f"{file}.c" for file, _ in groups]
 
 
 def _jacobian(args: list, names: list[str], F: ca.SX, g: ca.SX, w: ca.SX, z: ca.SX):

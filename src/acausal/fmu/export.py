@@ -4,9 +4,10 @@ the system C compiler. No Python is needed where the FMU runs.
 What the FMU contains
 ---------------------
 - ``binaries/linux64/<id>.so`` (FMI 2.0) or ``binaries/x86_64-linux/<id>.so`` (FMI 3.0), built
-  from ``sources/``: the generated model functions (``ac_ode.c``, ``ac_jac.c``, …, one file
-  each, declared together by ``model_functions.h``; compiled side by side at -O1, see
-  ``toolchain``), the model's sizes
+  from ``sources/``: the generated model functions (``ac_ode.c``, ``ac_jac.c``, … a file
+  each for the large ones, ``ac_small.c`` for the others, declared together by
+  ``model_functions.h``; every source compiled at -O1, side by side, ``toolchain``), the
+  model's sizes
   and tables (``model.h``, ``model_data.c``), the shared runtime (``c/`` in this package:
   ``instance.c`` the instance, its variables and life cycle; ``equations.c`` evaluation and
   Newton for algebraic variables; ``events.c`` state events, modes and terminations;
@@ -379,10 +380,9 @@ def export_native(compiled, path, *, fmi_version: str = "2.0", fmu_type: str = "
         binary = tmp / "binaries" / plat / f"{ident}{ext}"
         binary.parent.mkdir(parents=True)
         hidden = ("-fvisibility=hidden",)
-        toolchain.build_shared_library(
-            cc, [(src / f, (toolchain.FLAGS if f in generated else ("-O2",)) + hidden)
-                 for f in c_files], binary, include=(src, headers),
-            error=FmuExportError, what="the FMU")
+        toolchain.build_shared_library(cc, [src / f for f in c_files], binary,
+                                       include=(src, headers), flags=toolchain.FLAGS + hidden,
+                                       error=FmuExportError, what="the FMU")
         info = {"model_name": compiled.name, "identifier": ident, "guid": guid,
                 "description": description or f"{compiled.name} (acausal, native)",
                 "variables": variables, "me": fmu_type in ("me", "both"),
