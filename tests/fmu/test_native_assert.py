@@ -18,6 +18,7 @@ from fmpy import simulate_fmu                                      # noqa: E402
 from fmpy.fmi1 import FMICallException                             # noqa: E402
 
 import acausal                                                     # noqa: E402
+from fmi_calls import unzipped                                     # noqa: E402
 from hot_resistor import hot_part                                  # noqa: E402
 
 
@@ -35,11 +36,12 @@ def hot_fmus(fmu_dir):
 def test_assertion_fails_the_fmu_run(hot_fmus, kind, version, capfd):
     settings = dict(fmi_type=kind, output=["part.v"], relative_tolerance=1e-10,
                     output_interval=0.01)
-    res = simulate_fmu(str(hot_fmus[version]), stop_time=0.4, **settings)
+    path = unzipped(hot_fmus[version])      # (fmpy's own would stay in /tmp after an error)
+    res = simulate_fmu(path, stop_time=0.4, **settings)
     np.testing.assert_allclose(res["part.v"], 0.5 * (1 - 2 * res["time"]), rtol=1e-7)
     capfd.readouterr()
     with pytest.raises(FMICallException):
-        simulate_fmu(str(hot_fmus[version]), stop_time=0.6, debug_logging=True, **settings)
+        simulate_fmu(path, stop_time=0.6, debug_logging=True, **settings)
     found = re.search(r"'part': Temperature outside scope of model! \(assertion failed at "
                       r"t = ([0-9.e-]+) s\)", capfd.readouterr().out)
     assert found, "the FMU's log names the part and MSL's message"
@@ -48,11 +50,11 @@ def test_assertion_fails_the_fmu_run(hot_fmus, kind, version, capfd):
 
 def test_assertion_fails_the_pythonfmu_run(hot_fmus, capfd):
     settings = dict(output=["part.v"], output_interval=0.01)
-    res = simulate_fmu(str(hot_fmus["pythonfmu"]), stop_time=0.4, **settings)
+    path = unzipped(hot_fmus["pythonfmu"])
+    res = simulate_fmu(path, stop_time=0.4, **settings)
     np.testing.assert_allclose(res["part.v"], 0.5 * (1 - 2 * res["time"]), rtol=1e-6)
     capfd.readouterr()                       # the step to 0.5 s ends it with fmi2Discard
-    res = simulate_fmu(str(hot_fmus["pythonfmu"]), stop_time=0.6, debug_logging=True,
-                       **settings)
+    res = simulate_fmu(path, stop_time=0.6, debug_logging=True, **settings)
     assert res["time"][-1] == pytest.approx(0.49)
     found = re.search(r"'part': Temperature outside scope of model! \(assertion failed at "
                       r"t = ([0-9.e-]+) s\)", capfd.readouterr().out)
