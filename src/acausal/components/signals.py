@@ -601,7 +601,37 @@ def _new_table(cls, *key) -> Component:
     return object.__new__(cls._variant(*key))
 
 
-class KinematicPTP2(Component):
+class _Sized:
+    """A block whose sizes (numbers of coefficients, states, inputs, outputs) come from the
+    values given at construction: its class is made once per layout (``_declare(*key)``
+    gives what that class declares: vector parameters and ports), and rebuilt by layout
+    when unpickled."""
+    _classes: dict
+    _key: tuple = ()
+
+    def __init_subclass__(cls, **kwargs):
+        cls._written = vars(cls).get("_written", cls.__doc__)   # before the generated reference
+        super().__init_subclass__(**kwargs)
+
+    @classmethod
+    def _variant(cls, *key) -> type:
+        base = cls if "_classes" in vars(cls) else cls.__bases__[0]
+        if key not in base._classes:
+            base._classes[key] = type(base.__name__, (base,), {
+                "__doc__": base._written, "_written": base._written, "__module__": __name__,
+                "__qualname__": base.__name__, "_key": key, **base._declare(*key)})
+        return base._classes[key]
+
+    def __reduce_ex__(self, protocol):
+        return _new_sized, (type(self).__bases__[0], self._key), self.__dict__
+
+
+def _new_sized(base: type, key: tuple) -> Component:
+    """An empty instance of the sized block class ``base`` made for ``key`` (unpickling)."""
+    return object.__new__(base._variant(*key))
+
+
+class KinematicPTP2(_Sized, Component):
     """Point-to-point motion as fast as the limits allow (MSL Sources.KinematicPTP2): from
     q_begin to q_end, each axis's speed within qd_max and acceleration within qdd_max
     (> 0), all axes on one normalized path s(t) ∈ [0, 1] (only the axis at its limit is at
@@ -626,9 +656,7 @@ class KinematicPTP2(Component):
     startTime = Parameter(0.0, "s", "time instant at which movement starts")
 
     def __new__(cls, name=None, **kwargs):
-        if cls is KinematicPTP2:
-            cls = KinematicPTP2._sized(KinematicPTP2._nout(kwargs))
-        return super().__new__(cls)
+        return super().__new__(cls._variant(KinematicPTP2._nout(kwargs)))
 
     @staticmethod
     def _values(kwargs) -> dict:
@@ -656,24 +684,18 @@ class KinematicPTP2(Component):
         return nout
 
     @staticmethod
-    def _sized(nout: int) -> type:
-        if nout not in KinematicPTP2._classes:
-            attrs = {"__doc__": KinematicPTP2.__doc__, "__module__": KinematicPTP2.__module__,
-                     "__qualname__": "KinematicPTP2", "nout": nout}
-            for key, (unit, text, rule, default) in KinematicPTP2._vectors.items():
-                for i in range(1, nout + 1):
-                    p = Parameter(default, unit, f"{text} [{i}]", **rule)
-                    p.__set_name__(None, f"{key}[{i}]")
-                    attrs[f"{key}[{i}]"] = p
-            for key, cls, text in (("q", RealOutput, "reference position of path planning"),
-                                   ("qd", RealOutput, "reference speed of path planning"),
-                                   ("qdd", RealOutput, "reference acceleration of path "
-                                                       "planning"),
-                                   ("moving", BooleanOutput, "= true, if end position not yet "
-                                                             "reached")):
-                attrs[key] = VectorPort(cls, nout, text)
-            KinematicPTP2._classes[nout] = type("KinematicPTP2", (KinematicPTP2,), attrs)
-        return KinematicPTP2._classes[nout]
+    def _declare(nout: int) -> dict:
+        attrs = {"nout": nout}
+        for key, (unit, text, rule, default) in KinematicPTP2._vectors.items():
+            for i in range(1, nout + 1):
+                attrs[f"{key}[{i}]"] = Parameter(default, unit, f"{text} [{i}]", **rule)
+        for key, cls, text in (("q", RealOutput, "reference position of path planning"),
+                               ("qd", RealOutput, "reference speed of path planning"),
+                               ("qdd", RealOutput, "reference acceleration of path planning"),
+                               ("moving", BooleanOutput, "= true, if end position not yet "
+                                                         "reached")):
+            attrs[key] = VectorPort(cls, nout, text)
+        return attrs
 
     def __init__(self, name: str | None = None, **kwargs):
         values = self._values(kwargs)
@@ -682,9 +704,6 @@ class KinematicPTP2(Component):
             for i in range(1, self.nout + 1):
                 params[f"{key}[{i}]"] = v[0] if v.size == 1 else v[i - 1]
         super().__init__(name, **params)
-
-    def __reduce_ex__(self, protocol):          # the class is made per nout: rebuild it by nout
-        return _new_ptp2, (self.nout,), self.__dict__
 
     def _vector(self, key: str) -> list:
         return [getattr(self, f"{key}[{i}]") for i in range(1, self.nout + 1)]
@@ -756,10 +775,6 @@ def _vmax(values: list):
     return out
 
 
-def _new_ptp2(nout: int) -> KinematicPTP2:
-    return object.__new__(KinematicPTP2._sized(nout))
-
-
 # ---- routing (Modelica.Blocks.Routing) ---------------------------------------------------------
 class RealPassThrough(SISO):
     """y = u (MSL Routing.RealPassThrough): a signal passed on under another name."""
@@ -823,7 +838,7 @@ class Division(SI2SO):
         e.output(self.y, e.input(self.u1) / e.input(self.u2))
 
 
-class Sum(SO):
+class Sum(_Sized, SO):
     """y = Σ k[i]·u[i], i = 1..nin.
 
     ``nin`` (constructor argument) is the number of inputs; the inputs are ``u[1]`` ..
@@ -834,27 +849,18 @@ class Sum(SO):
     _classes: dict = {}
 
     def __new__(cls, name=None, *, nin: int = 1, k=None, **params):
-        if cls is Sum:
-            cls = Sum._with_inputs(nin)
-        return super().__new__(cls)
-
-    @staticmethod
-    def _with_inputs(nin) -> type:
         if isinstance(nin, bool) or not isinstance(nin, (int, np.integer)) or nin < 1:
             raise ParameterError(f"Sum: nin (number of inputs) must be an integer >= 1, "
                                  f"got {nin!r}")
-        nin = int(nin)
-        if nin not in Sum._classes:
-            attrs = {"__doc__": Sum.__doc__, "__module__": Sum.__module__,
-                     "__qualname__": "Sum", "_nin": nin}
-            for i in range(1, nin + 1):
-                p = Parameter(1.0, "", f"gain of input u[{i}]")
-                p.__set_name__(None, f"k[{i}]")
-                attrs[f"k[{i}]"] = p
-            attrs["u"] = VectorPort(RealInput, nin, tuple(
-                f"connector of Real input signal {i}" for i in range(1, nin + 1)))
-            Sum._classes[nin] = type("Sum", (Sum,), attrs)
-        return Sum._classes[nin]
+        return super().__new__(cls._variant(int(nin)))
+
+    @staticmethod
+    def _declare(nin: int) -> dict:
+        attrs = {f"k[{i}]": Parameter(1.0, "", f"gain of input u[{i}]")
+                 for i in range(1, nin + 1)}
+        attrs["u"] = VectorPort(RealInput, nin, tuple(
+            f"connector of Real input signal {i}" for i in range(1, nin + 1)))
+        return {"_nin": nin, **attrs}
 
     def __init__(self, name: str | None = None, *, nin: int = 1, k=None, **params):
         if params:
@@ -873,16 +879,9 @@ class Sum(SO):
     def nin(self) -> int:
         return self._nin
 
-    def __reduce_ex__(self, protocol):          # the class is made per nin: rebuild it by nin
-        return _new_sum, (self._nin,), self.__dict__
-
     def physics(self, e):
         e.output(self.y, sum((getattr(self, f"k[{i}]") * e.input(p)
                               for i, p in enumerate(self.u, start=1)), ca.SX(0)))
-
-
-def _new_sum(nin: int) -> Sum:
-    return object.__new__(Sum._with_inputs(nin))
 
 
 # ---- nonlinear (Modelica.Blocks.Nonlinear) -----------------------------------------------------
@@ -1439,36 +1438,6 @@ def _matrix(values, name: str, rows: int | None = None, cols: int | None = None)
     if not np.all(np.isfinite(m)):
         raise ParameterError(f"{name} contains non-finite values")
     return m
-
-
-class _Sized:
-    """A block whose sizes (numbers of coefficients, states, inputs, outputs) come from the
-    values given at construction: its class is made once per layout (``_declare(*key)``
-    gives what that class declares: vector parameters and ports), and rebuilt by layout
-    when unpickled."""
-    _classes: dict
-    _key: tuple = ()
-
-    def __init_subclass__(cls, **kwargs):
-        cls._written = vars(cls).get("_written", cls.__doc__)   # before the generated reference
-        super().__init_subclass__(**kwargs)
-
-    @classmethod
-    def _variant(cls, *key) -> type:
-        base = cls if "_classes" in vars(cls) else cls.__bases__[0]
-        if key not in base._classes:
-            base._classes[key] = type(base.__name__, (base,), {
-                "__doc__": base._written, "_written": base._written, "__module__": __name__,
-                "__qualname__": base.__name__, "_key": key, **base._declare(*key)})
-        return base._classes[key]
-
-    def __reduce_ex__(self, protocol):
-        return _new_sized, (type(self).__bases__[0], self._key), self.__dict__
-
-
-def _new_sized(base: type, key: tuple) -> Component:
-    """An empty instance of the sized block class ``base`` made for ``key`` (unpickling)."""
-    return object.__new__(base._variant(*key))
 
 
 class TransferFunction(_Sized, _StartValues, SISO):
