@@ -61,28 +61,40 @@ int ac_rhs(ac_inst *m, double t, const double *x, double *z, double *xdot) {
     return AC_OK;
 }
 
-int ac_total_jacobian(ac_inst *m, double t, const double *x, const double *z) {
+int ac_jacobians(ac_inst *m, double t, const double *x, const double *z) {
     ac_equations *e = &m->eq;
     double *out[4] = {e->Fw, e->Fz, e->gw, e->gz};
-    int i, j;
     if (ac_eval(m, (ac_fn)ac_jac, t, x, z, out, 4)) return ERR("evaluating the Jacobian failed");
-    memcpy(e->T, e->Fw, sizeof(double) * AC_NF * AC_NW);
 #if AC_NZ > 0
     if (ac_lu(e->gz, AC_NZ, e->piv)) return ERR("the algebraic equations are singular at t = %g", t);
-    for (j = 0; j < AC_NW; j++) {
-        double *s = e->g;        /* scratch: ac_solve_z is not running here */
-        int k;
-        for (i = 0; i < AC_NZ; i++) s[i] = e->gw[i + j * AC_NZ];
+#endif
+    return AC_OK;
+}
+
+void ac_eliminate_z(ac_inst *m, const double *Az, int nrows, double *Aw, int ncols) {
+#if AC_NZ > 0
+    ac_equations *e = &m->eq;
+    double *s = e->g;            /* scratch: ac_solve_z is not running here */
+    int i, j, k;
+    for (j = 0; j < ncols; j++) {
+        for (k = 0; k < AC_NZ; k++) s[k] = e->gw[k + j * AC_NZ];
         ac_lu_solve(e->gz, AC_NZ, e->piv, s);
-        for (i = 0; i < AC_NF; i++) {
+        for (i = 0; i < nrows; i++) {
             double acc = 0.0;
-            for (k = 0; k < AC_NZ; k++) acc += e->Fz[i + k * AC_NF] * s[k];
-            e->T[i + j * AC_NF] -= acc;
+            for (k = 0; k < AC_NZ; k++) acc += Az[i + k * nrows] * s[k];
+            Aw[i + j * nrows] -= acc;
         }
     }
 #else
-    (void)i; (void)j;
+    (void)m; (void)Az; (void)nrows; (void)Aw; (void)ncols;
 #endif
+}
+
+int ac_total_jacobian(ac_inst *m, double t, const double *x, const double *z) {
+    ac_equations *e = &m->eq;
+    if (ac_jacobians(m, t, x, z)) return AC_ERROR;
+    memcpy(e->T, e->Fw, sizeof(double) * AC_NF * AC_NW);
+    ac_eliminate_z(m, e->Fz, AC_NF, e->T, AC_NW);
     if (!ac_all_finite(e->T, AC_NF * AC_NW)) return ERR("the Jacobian is not finite at t = %g", t);
     return AC_OK;
 }

@@ -38,6 +38,11 @@ int ac_eval_p(struct ac_inst *m, ac_fn f, double *out);
 int ac_solve_z(struct ac_inst *m, double t, const double *x, double *z);
 /* state derivatives at (t, x), z solved by Newton from the warm start z (updated) */
 int ac_rhs(struct ac_inst *m, double t, const double *x, double *z, double *xdot);
+/* ac_jac at (t, x, z) into eq (F_w, F_z, g_w, g_z), g_z factored (eq.piv) */
+int ac_jacobians(struct ac_inst *m, double t, const double *x, const double *z);
+/* A_w −= A_z·g_z⁻¹·g_w over the first ncols columns of w = [x; u; t]: z eliminated from the
+ * derivatives of nrows rows (column-major), g_w and g_z as ac_jacobians left them */
+void ac_eliminate_z(struct ac_inst *m, const double *Az, int nrows, double *Aw, int ncols);
 /* eq.T at (t, x, z): z eliminated, F_w − F_z g_z⁻¹ g_w */
 int ac_total_jacobian(struct ac_inst *m, double t, const double *x, const double *z);
 

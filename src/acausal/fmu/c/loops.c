@@ -29,21 +29,8 @@ static int initial_rows(ac_inst *m, const double *x) {
     if (ac_eval(m, (ac_fn)ac_init, m->d.t, x, m->d.z, out, 3))
         return ERR("evaluating the initial equations failed");
 #if AC_NZ > 0
-    {
-        ac_equations *e = &m->eq;
-        double *jac[4] = {e->Fw, e->Fz, e->gw, e->gz};
-        int k;
-        if (ac_eval(m, (ac_fn)ac_jac, m->d.t, x, m->d.z, jac, 4))
-            return ERR("evaluating the Jacobian failed");
-        if (ac_lu(e->gz, AC_NZ, e->piv))
-            return ERR("the algebraic equations are singular at the start t = %g", m->d.t);
-        for (j = 0; j < AC_NX; j++) {
-            for (k = 0; k < AC_NZ; k++) l->zcol[k] = e->gw[k + j * AC_NZ];
-            ac_lu_solve(e->gz, AC_NZ, e->piv, l->zcol);
-            for (i = 0; i < AC_NIE; i++)
-                for (k = 0; k < AC_NZ; k++) Ex[i + j * AC_NIE] -= l->Ez[i + k * AC_NIE] * l->zcol[k];
-        }
-    }
+    if (ac_jacobians(m, m->d.t, x, m->d.z)) return AC_ERROR;
+    ac_eliminate_z(m, l->Ez, AC_NIE, Ex, AC_NX);
 #endif
     for (i = 0; i < AC_NIE; i++) {
         l->H[AC_NH + i] = E[i];

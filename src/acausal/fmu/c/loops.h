@@ -36,7 +36,7 @@
 typedef struct {
     /* [H; E], ∂/∂x at the last point evaluated (leading dimension AC_NC), their rows' scales */
     double H[AC_D(AC_NC)], Hx[AC_D(AC_NC * AC_NX)], s[AC_D(AC_NC)];
-    double Ez[AC_D(AC_NIE * AC_NZ)], zcol[AC_D(AC_NZ)];   /* ∂E/∂z; a column of g_z⁻¹ g_x */
+    double Ez[AC_D(AC_NIE * AC_NZ)];                     /* ∂E/∂z */
     double target[AC_D(AC_NX)];                        /* the states a projection stays near */
     double d[AC_D(AC_NX)], trial[AC_D(AC_NX)];         /* a step; the point it leads to */
     double at[AC_D(AC_NX * AC_NLS)], b[AC_D(AC_NLS)], e[AC_D(AC_NX)];  /* least squares */
