@@ -16,8 +16,11 @@ def held(model, T, X, Z, U, P) -> np.ndarray | None:
     column for all): one row each, > 0.5 where it holds; None for a model without any."""
     if not model.assertions.numel():
         return None
-    return np.array(model.function("assertions", [model.assertions]).map(np.size(T))(
-        np.reshape(T, (1, -1)), X, Z, U, P), dtype=float)
+    if "assertions" not in model._cache:        # built once: the Stepper checks every step
+        model._cache["assertions"] = model.function("assertions", [model.assertions])
+    f, n = model._cache["assertions"], np.size(T)
+    return np.array((f if n == 1 else f.map(n))(np.reshape(T, (1, -1)), X, Z, U, P),
+                    dtype=float)
 
 
 def first_failure(model, T, X, Z, U, P) -> tuple[int, str] | None:
