@@ -52,9 +52,6 @@ from ..simulation.initialization import model_equations
 
 SMALL = 2000       # instructions: a generated function below shares a C file with the others
 
-FUNCTIONS = ("ac_ode", "ac_out", "ac_rec", "ac_alg", "ac_jac", "ac_con", "ac_phiq", "ac_start",
-             "ac_events", "ac_clocks", "ac_ind", "ac_upd", "ac_init", "ac_term", "ac_assert")
-
 
 class ModelFunctions:
     """The CasADi Functions above for ``compiled``, with their sizes and sparsity."""
