@@ -73,9 +73,10 @@ int ac_step_crossed(ac_inst *m) {
     return ac_crossing(m, g);
 }
 
-/* every mode declared with values has one of them (events.py's _check_values) */
-static int check_values(ac_inst *m) {
 #if AC_NMODE > 0
+/* every mode declared with values has one of them (events.py's _check_values); only the
+   event iteration of a model with modes calls it */
+static int check_values(ac_inst *m) {
     int k, j;
     for (k = 0; k < AC_NMODE; k++) {
         double v = m->d.p[AC_MODE_P[k]];
@@ -84,11 +85,9 @@ static int check_values(ac_inst *m) {
         if (!ok) return ERR("at t = %g s the mode_update of '%s' gives %s = %g, not one of its "
                             "values", m->d.t, AC_MODE_OWNER[k], AC_MODE_NAMES[k], v);
     }
-#else
-    (void)m;
-#endif
     return AC_OK;
 }
+#endif
 
 /* the event iteration at the instance's point (events.py's iterate) */
 static int iterate(ac_inst *m, int *changed) {
