@@ -1469,12 +1469,15 @@ class _Coefficients(_Sized):
         super().__init__(name, **coeffs, **params)
         if coeffs["a"][0] == 0:
             raise ParameterError(f"{who(self)}: a[1] must be non-zero (the leading "
-                                 f"denominator coefficient), got a = {list(coeffs['a'])}")
+                                 f"denominator coefficient), got a = {[float(v) for v in coeffs['a']]}")
 
     @property
     def nx(self) -> int:
         """Number of states, na − 1."""
         return self._key[1] - 1
+
+    def _start_size(self, name: str) -> int | None:
+        return self.nx if name == "x_start" else None
 
 
 class TransferFunction(_Coefficients, _StartValues, SISO):
@@ -1510,9 +1513,6 @@ class TransferFunction(_Coefficients, _StartValues, SISO):
         if self.initType is Init.InitialOutput and self.nx == 0:
             raise ParameterError(f"{who(self)}: initType=InitialOutput needs a state (a has "
                                  f"one coefficient: y = d*u, with no initial value to give)")
-
-    def _start_size(self, name: str) -> int | None:
-        return self.nx if name == "x_start" else None
 
     def _a_end(self):
         """a[na], or 1 when it is ≈ 0 (MSL's scaling of the states)."""
