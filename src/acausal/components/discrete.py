@@ -146,14 +146,15 @@ class FirstOrderHold(_PreValues, DiscreteSISO):
     one over a sample period, and at an instant y = pre_uSample, independent of u: a loop
     closed through the hold has no algebraic loop (MSL's pre(c), equal to c between the
     instants). At initialization (MSL's initial equations) uSample = pre_uSample = u,
-    tSample = time, c = 0: y = u(t0) until the second instant; a Boolean mode ``initial``
-    (true at the start) keeps them following u through the start's event iteration until
-    u has settled."""
+    tSample = time, c = 0: y = u(t0) until the second instant. Modelica's initial() is
+    ``initialTrigger`` (sample(startTime, samplePeriod), also true at the start) and not
+    ``sampleTrigger``: true through the start's event iteration, so u settles there as
+    at an instant."""
 
     def structure(self, s):
         super().structure(s)
-        s.mode("initial", 1, values=(0, 1),
-               description="true until the start values have settled (Modelica's initial())")
+        s.sample("initialTrigger", self.startTime, self.samplePeriod, initial=True,
+                 description="true at the start and at the sample instants")
         s.discrete("tSample", 0.0, "s", "time of the last sample instant")
         s.discrete("uSample", 0.0, description="u at the last sample instant")
         s.discrete("pre_uSample", 0.0, description="u at the sample instant before the last")
@@ -161,14 +162,14 @@ class FirstOrderHold(_PreValues, DiscreteSISO):
 
     def physics(self, e):
         trigger, first = self.instant(e)
-        init, u, t = e.mode("initial"), e.input(self.u), e.time
+        init = ca.logic_and(e.mode("initialTrigger"), ca.logic_not(trigger))
+        u, t = e.input(self.u), e.time
         t_s, u_s, pre_u, c = (e.mode(n) for n in ("tSample", "uSample", "pre_uSample", "c"))
         pre_u_now = ca.if_else(init, u, ca.if_else(first, u_s, pre_u))
         first_trigger = t <= self.startTime + self.samplePeriod / 2
         c_now = ca.if_else(ca.logic_or(init, first_trigger), 0,
                            (u - pre_u_now) / self.samplePeriod)
         _sampled(e, ca.logic_or(init, trigger), [t_s, u_s, pre_u, c], [t, u, pre_u_now, c_now])
-        e.mode_update(init, ca.logic_and(init, u_s != u))
         e.output(self.y, pre_u + c * (t - t_s))
 
 
@@ -288,9 +289,9 @@ class _Triggered(Component):
     """A block that samples at the rising edges of its Boolean input ``trigger`` (MSL's
     ``when trigger``): Real input ``u``, output ``y`` (a discrete variable). ``pre_trigger``
     (pre(trigger)) starts true, so a trigger true at the start is no edge (a when-clause is
-    inactive at initialization); ``taking`` (true from the round of the event iteration
-    where the edge is seen while y changes) makes y follow u until the iteration settles,
-    so a u sampled at the same instant gives its new value."""
+    inactive at initialization); ``taking`` (set where an edge is seen, at ``tTrigger``)
+    makes y follow u through the rest of that event iteration (at time tTrigger), so a u
+    sampled at the same instant gives its new value; it is cleared at the next event."""
     u = RealInput("connector with a Real input signal")
     y = RealOutput("connector with a Real output signal")
     trigger = BooleanInput("trigger input")
@@ -306,17 +307,19 @@ class _Triggered(Component):
         s.mode("pre_trigger", 1, values=(0, 1),
                description="pre(trigger); true at the start (no edge at initialization)")
         s.mode("taking", 0, values=(0, 1),
-               description="true while y takes u at the present trigger instant")
+               description="true from a rising edge of trigger to the next event")
+        s.discrete("tTrigger", 0.0, "s", "time of the last rising edge of trigger")
         s.discrete("y", self._y_start, description="output: taken at the last trigger instant")
 
     def physics(self, e):
-        pre, taking, y = (e.mode(n) for n in ("pre_trigger", "taking", "y"))
+        pre, taking, t_trigger, y = (e.mode(n) for n in ("pre_trigger", "taking",
+                                                         "tTrigger", "y"))
         trigger = e.input(self.trigger)
         edge = ca.logic_and(trigger, ca.logic_not(pre))
-        active = ca.logic_or(edge, taking)
-        new = ca.if_else(active, self.taken(e, e.input(self.u), edge, y), y)
-        e.mode_update(y, new)
-        e.mode_update(taking, ca.logic_and(active, new != y))
+        active = ca.logic_or(edge, ca.logic_and(taking, e.time == t_trigger))
+        e.mode_update(y, ca.if_else(active, self.taken(e, e.input(self.u), edge, y), y))
+        e.mode_update(taking, active)
+        e.mode_update(t_trigger, ca.if_else(edge, e.time, t_trigger))
         e.mode_update(pre, trigger)
         e.output(self.y, y)
 
