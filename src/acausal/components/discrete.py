@@ -204,7 +204,7 @@ class TransferFunction(_Coefficients, _StartValues, _PreValues, DiscreteSISO):
 
     ``b`` and ``a`` (given at construction, default {1}; their sizes nb ≤ na fix the block,
     their values are the parameters ``b[1]`` .. ``b[nb]``, ``a[1]`` .. ``a[na]``). MSL's
-    discrete variables of the controller canonical form: at each sample instant
+    discrete variables of the controller canonical form: at each sample instant::
 
         x1   = (u − a[2:na]·pre(x))/a[1]
         xext = [x1; pre(x)]            (na values)
@@ -246,7 +246,7 @@ class TransferFunction(_Coefficients, _StartValues, _PreValues, DiscreteSISO):
 
 
 class StateSpace(_Matrices, _StartValues, _PreValues, DiscreteMIMO):
-    """Discrete state space system (MSL Discrete.StateSpace): at each sample instant
+    """Discrete state space system (MSL Discrete.StateSpace): at each sample instant::
 
         x = A·pre(x) + B·u
         y = C·pre(x) + D·u

@@ -25,8 +25,8 @@ state events at their kinks (MSL's default strict=false), so the simulator locat
 input reaches a limit; compiled with ``smooth=True`` their corners are rounded over a named
 width ``u_smooth`` (see Limiter); so does LimPID's output limiter (``y_smooth``). Blocks
 with Boolean signals (relations, Switch, Hysteresis, logical blocks) are in
-``acausal.components.logical``, sampled-data blocks (Sampler, ZeroOrderHold, UnitDelay) in
-``acausal.components.discrete``.
+``acausal.components.logical``, sampled-data blocks (Sampler, ZeroOrderHold, the discrete
+TransferFunction and StateSpace, ...) in ``acausal.components.discrete``.
 
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.
