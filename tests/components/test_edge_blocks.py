@@ -126,6 +126,28 @@ def test_timer_measures_the_time_since_u_became_true():
     np.testing.assert_allclose(_after_events(res, "t_pulse.entryTime", [3.0]), 2.7, atol=1e-12)
 
 
+def test_timer_started_late_with_u_true_measures_from_time_zero():
+    """A simulation started at t0 = 0.5 s with u already true: MSL's ``when u`` is inactive
+    at initialization, so entryTime keeps its start 0 and y = time (not time − t0) until u
+    falls at 1.3 s; u true again from 1.6 s gives y = time − 1.6 (BooleanTable: true on
+    [0, 1.3) and from 1.6 s). A u false at the start (a step at 0.9 s) gives time − 0.9."""
+    m = Model("late_timer")
+    m.table = lg.BooleanTable(table=[0.0, 1.3, 1.6])
+    m.step = lg.BooleanStep(startTime=0.9)
+    m.t_table, m.t_step = lg.Timer(), lg.Timer()
+    m.connect(m.table.y, m.t_table.u)
+    m.connect(m.step.y, m.t_step.u)
+    t = np.linspace(0.5, 2.5, 201)
+    res = acausal.compile(m).simulate(2.5, t=t, **SIM)
+    grid = np.round(t, 9)
+    expected = np.where(grid < 1.3, grid, np.where(grid < 1.6, 0.0, grid - 1.6))
+    np.testing.assert_allclose(_after_events(res, "t_table.y", grid), expected, atol=1e-9)
+    np.testing.assert_allclose(_after_events(res, "t_step.y", grid),
+                               np.maximum(grid - 0.9, 0.0), atol=1e-9)
+    assert res["t_table.y"][0] == pytest.approx(0.5, abs=1e-12)
+    assert res["t_table.entryTime"][0] == 0.0
+
+
 def test_flip_flop_of_msl_boolean_network1(reference_result):
     """MSL Blocks.Examples.BooleanNetwork1: rSFlipFlop set by SampleTrigger(period=0.5),
     reset by SampleTrigger(period=0.5, startTime=0.3); its pre.u (= QI after each event)

@@ -14,7 +14,11 @@ mass (models/event_blocks.py; its exact discretization is checked in
 tests/components/test_event_blocks.py); the thermostat with a Hysteresis and with an
 OnOffController (a relation's state events; its switching times are logarithms); edges of
 a Boolean pulse latched by an RSFlipFlop into a TransferFunction, and a Timer; MSL's
-CoupledClutches (models/clutches.py; three clutches sticking and slipping, 1.5 s).
+CoupledClutches (models/clutches.py; three clutches sticking and slipping, 1.5 s); a
+discrete TransferFunction controlling a first-order plant through a ZeroOrderHold, with a
+discrete StateSpace, a FirstOrderHold, a TriggeredSampler and a TriggeredMax on a sine (their
+numbers against numpy recursions, lfilter and dlsim in
+tests/components/test_discrete_blocks.py).
 """
 from __future__ import annotations
 
@@ -67,6 +71,29 @@ def edges() -> acausal.Model:
     return m
 
 
+def discrete_blocks() -> acausal.Model:
+    """A discrete PI, C(z) = (0.6 z − 0.4)/(z − 1) every 0.1 s, holds the input of a plant
+    1/(s + 1) tracking 1; a discrete StateSpace and a FirstOrderHold (every 0.25 s from
+    0.02 s) sample a sine, a TriggeredSampler and a TriggeredMax take it at the rising edges
+    of a pulse."""
+    m = acausal.Model("discrete_blocks")
+    m.ref, m.fb = sg.Constant(k=1.0), sg.Feedback()
+    m.ctrl = dc.TransferFunction(b=[0.6, -0.4], a=[1.0, -1.0], samplePeriod=0.1)
+    m.zoh, m.plant = dc.ZeroOrderHold(samplePeriod=0.1), sg.FirstOrder(k=1.0, T=1.0)
+    m.sine = sg.Sine(amplitude=1.3, f=0.7, offset=0.3)
+    m.ss = dc.StateSpace(A=[[0.5, 0.1], [-0.2, 0.8]], B=[[1.0], [0.5]], C=[[1.0, -1.0]],
+                         D=[[0.3]], samplePeriod=0.1, x_start=[0.2, -0.1])
+    m.foh = dc.FirstOrderHold(samplePeriod=0.25, startTime=0.02)
+    m.pulse = lg.BooleanPulse(width=40.0, period=0.3, startTime=0.1)
+    m.ts, m.tm = dc.TriggeredSampler(y_start=2.0), dc.TriggeredMax()
+    for a, b in [(m.ref.y, m.fb.u1), (m.plant.y, m.fb.u2), (m.fb.y, m.ctrl.u),
+                 (m.ctrl.y, m.zoh.u), (m.zoh.y, m.plant.u), (m.sine.y, m.ss.u[1]),
+                 (m.sine.y, m.foh.u), (m.sine.y, m.ts.u), (m.sine.y, m.tm.u),
+                 (m.pulse.y, m.ts.trigger), (m.pulse.y, m.tm.trigger)]:
+        m.connect(a, b)
+    return m
+
+
 CLUTCHES = ["J1.w", "J2.w", "J3.w", "J4.w", "J1.phi", "J4.phi", "clutch1.tau", "clutch2.tau",
             "clutch3.tau"]
 # name: (model, stop time [s] (no sample instant there), output interval [s], start values,
@@ -81,6 +108,8 @@ CASES = {
     "edges": (edges, 2.9, 0.01, {}, ["tf.y", "tf.x[1]", "timer.y"], ["ff.pre.y"]),
     "clutches": (CoupledClutches, 1.5, 0.001, CLUTCHES_START, CLUTCHES,
                  ["clutch1.mode", "clutch2.mode", "clutch3.mode"]),
+    "discrete_blocks": (discrete_blocks, 2.05, 0.01, {}, ["plant.y", "foh.y"],
+                        ["ctrl.y", "ctrl.x[1]", "ss.y[1]", "ss.x[2]", "ts.y", "tm.y"]),
 }
 
 

@@ -371,16 +371,18 @@ class Timer(Component):
     """Timer (MSL Logical.Timer): y = time − entryTime [s] while the Boolean input u is
     true, 0 while it is false; ``entryTime`` (a discrete variable, 0 at the start) is the
     instant u last became true (``when u then entryTime = time``, pre(u) the mode
-    ``pre_u``, false at the start). At that instant y is already 0 in the event iteration.
-
-    MSL difference: a u true from a start t0 ≠ 0 gives y = time − t0 (MSL: time, its
-    when-clause being inactive at initialization)."""
+    ``pre_u``). At that instant y is already 0 in the event iteration. The when-clause is
+    inactive at initialization, as in MSL: ``pre_u`` starts true, so a u true from the
+    start t0 is no rising edge, entryTime keeps 0 and y = time (not time − t0) until u
+    falls."""
     u = BooleanInput("connector of Boolean input signal")
     y = RealOutput("connector of Real output signal")
 
     def structure(self, s):
         refuse_smooth(self, s)
-        s.mode("pre_u", 0, values=(0, 1), description="pre(u): the input before the event")
+        s.mode("pre_u", 1, values=(0, 1),
+               description="pre(u): the input before the event; true at the start (no "
+                           "edge at initialization)")
         s.discrete("entryTime", 0.0, "s", "time instant when u became true")
 
     def physics(self, e):

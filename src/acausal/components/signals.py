@@ -25,8 +25,8 @@ state events at their kinks (MSL's default strict=false), so the simulator locat
 input reaches a limit; compiled with ``smooth=True`` their corners are rounded over a named
 width ``u_smooth`` (see Limiter); so does LimPID's output limiter (``y_smooth``). Blocks
 with Boolean signals (relations, Switch, Hysteresis, logical blocks) are in
-``acausal.components.logical``, sampled-data blocks (Sampler, ZeroOrderHold, UnitDelay) in
-``acausal.components.discrete``.
+``acausal.components.logical``, sampled-data blocks (Sampler, ZeroOrderHold, the discrete
+TransferFunction and StateSpace, ...) in ``acausal.components.discrete``.
 
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.
@@ -618,7 +618,8 @@ class _Sized:
         base = cls if "_classes" in vars(cls) else cls.__bases__[0]
         if key not in base._classes:
             base._classes[key] = type(base.__name__, (base,), {
-                "__doc__": base._written, "_written": base._written, "__module__": __name__,
+                "__doc__": base._written, "_written": base._written,
+                "__module__": base.__module__,
                 "__qualname__": base.__name__, "_key": key, **base._declare(*key)})
         return base._classes[key]
 
@@ -1440,7 +1441,46 @@ def _matrix(values, name: str, rows: int | None = None, cols: int | None = None)
     return m
 
 
-class TransferFunction(_Sized, _StartValues, SISO):
+class _Coefficients(_Sized):
+    """The coefficients of a transfer function, b (numerator) and a (denominator), highest
+    power first, given at construction: their sizes nb <= na fix the block's class, their
+    values are the parameters ``b[1]`` .. ``b[nb]``, ``a[1]`` .. ``a[na]`` (changeable at
+    simulation time); a[1] != 0."""
+
+    def __new__(cls, name=None, *, b=(1.0,), a=(1.0,), **params):
+        nb, na = (_matrix(v, f"{cls.__name__}: {n}", 1).size for v, n in ((b, "b"), (a, "a")))
+        if nb > na:
+            raise ParameterError(f"{cls.__name__}: transfer function is not proper: b has "
+                                 f"{nb} coefficients, a {na} (nb <= na required: give b "
+                                 f"at most as many coefficients as a)")
+        return super().__new__(cls._variant(nb, na))
+
+    @staticmethod
+    def _declare(nb: int, na: int) -> dict:
+        return {"b": Parameter((1.0,) * nb, "", "numerator coefficients of transfer "
+                                                "function (e.g., 2*s+3 is specified as {2,3})"),
+                "a": Parameter((1.0,) * na, "", "denominator coefficients of transfer "
+                                                "function (e.g., 5*s+6 is specified as {5,6})")}
+
+    def __init__(self, name: str | None = None, *, b=(1.0,), a=(1.0,), **params):
+        what = type(self).__name__
+        coeffs = {n: tuple(_matrix(v, f"{what}: {n}", 1).ravel()) for n, v in (("b", b),
+                                                                             ("a", a))}
+        super().__init__(name, **coeffs, **params)
+        if coeffs["a"][0] == 0:
+            raise ParameterError(f"{who(self)}: a[1] must be non-zero (the leading "
+                                 f"denominator coefficient), got a = {[float(v) for v in coeffs['a']]}")
+
+    @property
+    def nx(self) -> int:
+        """Number of states, na − 1."""
+        return self._key[1] - 1
+
+    def _start_size(self, name: str) -> int | None:
+        return self.nx if name == "x_start" else None
+
+
+class TransferFunction(_Coefficients, _StartValues, SISO):
     """Linear transfer function (MSL Continuous.TransferFunction)::
 
                 b[1]·s^(nb−1) + b[2]·s^(nb−2) + ... + b[nb]
@@ -1468,37 +1508,11 @@ class TransferFunction(_Sized, _StartValues, SISO):
     options = {"initType": Init.NoInit}
     _classes: dict = {}
 
-    def __new__(cls, name=None, *, b=(1.0,), a=(1.0,), **params):
-        nb, na = (_matrix(v, f"TransferFunction: {n}", 1).size for v, n in ((b, "b"), (a, "a")))
-        if nb > na:
-            raise ParameterError(f"TransferFunction: transfer function is not proper: b has "
-                                 f"{nb} coefficients, a {na} (nb <= na required)")
-        return super().__new__(cls._variant(nb, na))
-
-    @staticmethod
-    def _declare(nb: int, na: int) -> dict:
-        return {"b": Parameter((1.0,) * nb, "", "numerator coefficients of transfer "
-                                                "function (e.g., 2*s+3 is specified as {2,3})"),
-                "a": Parameter((1.0,) * na, "", "denominator coefficients of transfer "
-                                                "function (e.g., 5*s+6 is specified as {5,6})")}
-
     def __init__(self, name: str | None = None, *, b=(1.0,), a=(1.0,), **params):
-        coeffs = {n: tuple(_matrix(v, n, 1).ravel()) for n, v in (("b", b), ("a", a))}
-        super().__init__(name, **coeffs, **params)
-        if coeffs["a"][0] == 0:
-            raise ParameterError(f"{who(self)}: a[1] must be non-zero (the leading "
-                                 f"denominator coefficient), got a = {list(coeffs['a'])}")
+        super().__init__(name, b=b, a=a, **params)
         if self.initType is Init.InitialOutput and self.nx == 0:
             raise ParameterError(f"{who(self)}: initType=InitialOutput needs a state (a has "
                                  f"one coefficient: y = d*u, with no initial value to give)")
-
-    @property
-    def nx(self) -> int:
-        """Number of states, na − 1."""
-        return self._key[1] - 1
-
-    def _start_size(self, name: str) -> int | None:
-        return self.nx if name == "x_start" else None
 
     def _a_end(self):
         """a[na], or 1 when it is ≈ 0 (MSL's scaling of the states)."""
@@ -1533,7 +1547,77 @@ class TransferFunction(_Sized, _StartValues, SISO):
                            steady_output=names[1:])
 
 
-class StateSpace(_Sized, _StartValues, Component):
+class _Matrices(_Sized):
+    """The matrices A (nx × nx), B (nx × nin), C (nout × nx), D (nout × nin, default zeros)
+    of a state space system, given at construction (MSL's defaults: A = [1, 0; 0, 1],
+    B = [1; 1], C = [1, 1]): their shapes fix the block's class, their values are the
+    parameters ``A[1]`` .. ``A[nx·nx]`` (row by row, as a table's values), likewise B, C, D;
+    inputs ``u[1]`` .. ``u[nin]``, outputs ``y[1]`` .. ``y[nout]``."""
+    _defaults = {"A": [[1.0, 0.0], [0.0, 1.0]], "B": [[1.0], [1.0]], "C": [[1.0, 1.0]]}
+
+    def __new__(cls, name=None, *, A=None, B=None, C=None, D=None, **params):
+        A, _, _, D = cls._matrices(A, B, C, D)
+        return super().__new__(cls._variant(A.shape[0], *D.shape))
+
+    @classmethod
+    def _matrices(cls, A, B, C, D) -> tuple:
+        """A, B, C, D as arrays of consistent shapes (MSL's defaults for those not given)."""
+        d, what = _Matrices._defaults, cls.__name__
+        A = _matrix(d["A"] if A is None else A, f"{what}: A")
+        nx = A.shape[0]
+        if A.shape != (nx, nx) or nx == 0:
+            raise ParameterError(f"{what}: A must be square with at least one row, got "
+                                 f"shape {A.shape}")
+        B = _matrix(d["B"] if B is None else B, f"{what}: B", nx)
+        C = _matrix(d["C"] if C is None else C, f"{what}: C", None, nx)
+        D = _matrix(np.zeros((C.shape[0], B.shape[1])) if D is None else D, f"{what}: D",
+                    C.shape[0], B.shape[1])
+        return A, B, C, D
+
+    @staticmethod
+    def _declare(nx: int, nout: int, nin: int) -> dict:
+        def matrix(rows, cols, what):
+            return Parameter((0.0,) * (rows * cols), "", f"matrix {what} of state space model "
+                                                         f"({rows} x {cols}, row by row)")
+        return {"A": matrix(nx, nx, "A"), "B": matrix(nx, nin, "B"),
+                "C": matrix(nout, nx, "C"), "D": matrix(nout, nin, "D"),
+                "u": VectorPort(RealInput, nin, "connector of Real input signals"),
+                "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+
+    def __init__(self, name: str | None = None, *, A=None, B=None, C=None, D=None, **params):
+        matrices = self._matrices(A, B, C, D)
+        super().__init__(name, **dict(zip("ABCD", (tuple(m.ravel()) for m in matrices))),
+                         **params)
+
+    @property
+    def nx(self) -> int:
+        """Number of states."""
+        return self._key[0]
+
+    @property
+    def nin(self) -> int:
+        """Number of inputs."""
+        return self._key[2]
+
+    @property
+    def nout(self) -> int:
+        """Number of outputs."""
+        return self._key[1]
+
+    def _start_size(self, name: str) -> int | None:
+        return {"x_start": self.nx, "y_start": self.nout}[name]
+
+    def _symbolic(self, name: str, rows: int, cols: int) -> ca.SX:
+        return ca.reshape(getattr(self, name), cols, rows).T
+
+    def _system(self) -> tuple:
+        """The symbolic A, B, C, D (of the parameters)."""
+        nx, nin, nout = self.nx, self.nin, self.nout
+        return (self._symbolic("A", nx, nx), self._symbolic("B", nx, nin),
+                self._symbolic("C", nout, nx), self._symbolic("D", nout, nin))
+
+
+class StateSpace(_Matrices, _StartValues, Component):
     """Linear state space system (MSL Continuous.StateSpace), MIMO::
 
         der(x) = A·x + B·u
@@ -1557,76 +1641,22 @@ class StateSpace(_Sized, _StartValues, Component):
     _starts = ("x_start", "y_start")
     options = {"initType": Init.NoInit}
     _classes: dict = {}
-    _defaults = {"A": [[1.0, 0.0], [0.0, 1.0]], "B": [[1.0], [1.0]], "C": [[1.0, 1.0]]}
-
-    def __new__(cls, name=None, *, A=None, B=None, C=None, D=None, **params):
-        A, _, _, D = StateSpace._matrices(A, B, C, D)
-        return super().__new__(cls._variant(A.shape[0], *D.shape))
-
-    @staticmethod
-    def _matrices(A, B, C, D) -> tuple:
-        """A, B, C, D as arrays of consistent shapes (MSL's defaults for those not given)."""
-        d = StateSpace._defaults
-        A = _matrix(d["A"] if A is None else A, "StateSpace: A")
-        nx = A.shape[0]
-        if A.shape != (nx, nx) or nx == 0:
-            raise ParameterError(f"StateSpace: A must be square with at least one row, got "
-                                 f"shape {A.shape}")
-        B = _matrix(d["B"] if B is None else B, "StateSpace: B", nx)
-        C = _matrix(d["C"] if C is None else C, "StateSpace: C", None, nx)
-        D = _matrix(np.zeros((C.shape[0], B.shape[1])) if D is None else D, "StateSpace: D",
-                    C.shape[0], B.shape[1])
-        return A, B, C, D
-
-    @staticmethod
-    def _declare(nx: int, nout: int, nin: int) -> dict:
-        def matrix(rows, cols, what):
-            return Parameter((0.0,) * (rows * cols), "", f"matrix {what} of state space model "
-                                                         f"({rows} x {cols}, row by row)")
-        return {"A": matrix(nx, nx, "A"), "B": matrix(nx, nin, "B"),
-                "C": matrix(nout, nx, "C"), "D": matrix(nout, nin, "D"),
-                "u": VectorPort(RealInput, nin, "connector of Real input signals"),
-                "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
 
     def __init__(self, name: str | None = None, *, A=None, B=None, C=None, D=None, **params):
-        matrices = self._matrices(A, B, C, D)
-        super().__init__(name, **dict(zip("ABCD", (tuple(m.ravel()) for m in matrices))),
-                         **params)
-        C = matrices[2]
+        super().__init__(name, A=A, B=B, C=C, D=D, **params)
+        C = self._matrices(A, B, C, D)[2]
         if self.initType is Init.InitialOutput and np.linalg.matrix_rank(C) < C.shape[0]:
             raise ParameterError(f"{who(self)}: initType=InitialOutput needs C of full row "
                                  f"rank ({C.shape[0]} independent outputs to start at "
                                  f"y_start), got rank {np.linalg.matrix_rank(C)}")
-
-    @property
-    def nx(self) -> int:
-        """Number of states."""
-        return self._key[0]
-
-    @property
-    def nin(self) -> int:
-        """Number of inputs."""
-        return self._key[2]
-
-    @property
-    def nout(self) -> int:
-        """Number of outputs."""
-        return self._key[1]
-
-    def _start_size(self, name: str) -> int | None:
-        return {"x_start": self.nx, "y_start": self.nout}[name]
-
-    def _symbolic(self, name: str, rows: int, cols: int) -> ca.SX:
-        return ca.reshape(getattr(self, name), cols, rows).T
 
     def structure(self, s):
         for i in range(self.nx):
             s.state(f"x[{i + 1}]", self.x_start[i], description="state vector")
 
     def physics(self, e):
-        nx, nin, nout = self.nx, self.nin, self.nout
-        A, B = self._symbolic("A", nx, nx), self._symbolic("B", nx, nin)
-        C, D = self._symbolic("C", nout, nx), self._symbolic("D", nout, nin)
+        nx, nout = self.nx, self.nout
+        A, B, C, D = self._system()
         states = [e.state(f"x[{i + 1}]") for i in range(nx)]
         x, u = ca.vertcat(*states), ca.vertcat(*(e.input(p) for p in self.u))
         xdot, y = A @ x + B @ u, C @ x + D @ u
