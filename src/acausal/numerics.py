@@ -9,6 +9,8 @@ the message of a failed assertion.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = ["parameter_problem", "row_scales", "ProjectionError", "project", "independent_rows", "moved_note", "event_times",
@@ -183,7 +185,7 @@ def parameter_problem(name: str, value: float, description: str = "", unit: str 
     (finite; > 0, >= 0, != 0 as declared), as the message to show, or None: the one rule
     for a parameter's value, wherever it is set (construction, simulate, the FMUs)."""
     what = description or name.rsplit(".", 1)[-1]
-    if not np.isfinite(value):
+    if not math.isfinite(value):
         unit = f" [{unit}]" if unit else ""
         return f"parameter '{name}' must be a finite number, got {value}: give it a finite " \
                f"value{unit}"

@@ -61,6 +61,22 @@ def _class_declarations(cls, types) -> dict:
     return out
 
 
+@functools.cache
+def _class_defaults(cls) -> dict:
+    """The default values of a class's parameters, by name (each instance copies them)."""
+    return {name: par.default for name, par in _class_declarations(cls, Parameter).items()}
+
+
+@functools.cache
+def _class_ports(cls) -> tuple[list, list, list]:
+    """A class's declared ports as (name, template) pairs: plain ports, ConditionalPorts,
+    VectorPorts, each in declaration order."""
+    ports = _class_declarations(cls, (Port, ConditionalPort, VectorPort)).items()
+    return ([(n, t) for n, t in ports if isinstance(t, Port)],
+            [(n, t) for n, t in ports if isinstance(t, ConditionalPort)],
+            [(n, t) for n, t in ports if isinstance(t, VectorPort)])
+
+
 class StateSelect(str, Enum):
     """Modelica's StateSelect, the priority of a variable as a state, accepted as the option
     ``stateSelect`` where MSL / PlanarMechanics declare it. The compiler chooses the
@@ -153,45 +169,49 @@ class Component:
 
     def __init__(self, name: str | None = None, **params):
         d = self.__dict__
-        d["_values"] = {}
+        cls = type(self)
         d["_owner"] = None
         d["_name"] = name or ""
         d["_children"] = {}
         d["_ports"] = {}
-        kind = type(self).__name__
+        kind = cls.__name__
         opts = {key: _option(kind, key, spec, params.pop(key, _default(spec)))
-                for key, spec in self._option_specs().items()}
+                for key, spec in _class_options(cls).items()}
         d["_nominal"] = _nominals(kind, params.pop("nominal", None))
-        declared = self.parameters()
-        for pname, par in declared.items():
-            d["_values"][pname] = par.default
+        declared = _class_declarations(cls, Parameter)
+        d["_values"] = values = dict(_class_defaults(cls))
         for pname, value in params.items():
             par = declared.get(pname)
             if par is None:
                 known = ", ".join(list(declared) + list(opts)) or "none"
                 raise ParameterError(
                     f"{kind} has no parameter '{pname}' (its parameters and options: {known})")
-            d["_values"][pname] = par.check(value, kind)
+            values[pname] = par.check(value, kind)
         missing = [p for p in self.required if p not in params]
         if missing:
             given = ", ".join(f"{p}=..." for p in missing)
             raise ParameterError(f"{kind}: parameter(s) {', '.join(repr(p) for p in missing)} "
                                  f"have no default (as in MSL); give them: {kind}({given})")
         d.update(opts)
-        ports = self._declared((Port, ConditionalPort, VectorPort))
-        for pname, template in ports.items():          # plain ports first, as declared
-            if isinstance(template, Port):
-                setattr(self, pname, _port_copy(template))
-        for pname, template in ports.items():
-            if isinstance(template, ConditionalPort) and template.exists(self):
-                setattr(self, pname, _port_copy(template.port))
-        for pname, template in ports.items():
-            if isinstance(template, VectorPort):
-                items = []
-                for i, text in enumerate(template.descriptions, start=1):
-                    setattr(self, f"{pname}[{i}]", template.port_cls(text))
-                    items.append(self._ports[f"{pname}[{i}]"])
-                d[pname] = PortVector(kind, pname, items)
+        plain, conditional, vectors = _class_ports(cls)
+        for pname, template in plain:                  # plain ports first, as declared
+            self._own_port(pname, template)
+        for pname, template in conditional:
+            if template.exists(self):
+                self._own_port(pname, template.port)
+        for pname, template in vectors:
+            items = []
+            for i, text in enumerate(template.descriptions, start=1):
+                setattr(self, f"{pname}[{i}]", template.port_cls(text))
+                items.append(self._ports[f"{pname}[{i}]"])
+            d[pname] = PortVector(kind, pname, items)
+
+    def _own_port(self, name: str, template: Port) -> None:
+        """Give this new component its own copy of a declared port (what assigning the copy
+        does, without the checks a port made elsewhere needs)."""
+        port = _port_copy(template)
+        port.owner, port.name = self, name
+        self._ports[name] = self.__dict__[name] = port
 
     @classmethod
     def _option_specs(cls) -> dict:
