@@ -5,14 +5,14 @@ example has one, a closed form.
 
 Every compared signal is sampled at the reference's times (the value after an event, as the
 reference keeps it) and must lie within ``bound`` times its scale (its range, or its
-magnitude where it is constant) of the reference (absolutely for those that stay at 0). The references were computed without a
-tolerance annotation, i.e. by DASSL at tolerance 1e-6, and carry that solver's error; ours
-run at rtol 1e-10. Largest relative errors found: InitialConditions 1.7e-5 (m1.v),
+magnitude, at least 1, where it is constant) of the reference. The references were computed
+without a tolerance annotation, i.e. by DASSL at tolerance 1e-6, and carry that solver's
+error; ours run at rtol 1e-10. Largest relative errors found: InitialConditions 1.7e-5 (m1.v),
 WhyArrows 3.2e-6, Accelerate 1.4e-11, Sensors 1.9e-5, Oscillator 4.8e-4 (mass1.v, see
 ``oscillator``), ElastoGap 5.8e-6.
 
-Not here: Vehicle needs Translational.Components.Vehicle and RollingResistance, which the
-library does not have yet.
+Not here: Vehicle needs Translational.Components.Vehicle and RollingResistance (and Blocks'
+Math.Atan, Math.Sin inside Vehicle), which the library does not have yet.
 """
 from __future__ import annotations
 
