@@ -423,9 +423,15 @@ def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX, velocit
         v = final(variable)
         hit = coinciding(v, x, free)
         if hit is None:
-            raise StructureError(f"{where}: reinit of '{variable}', which is not a state (nor "
-                                 f"one state scaled and offset by parameters); reinit a state "
-                                 f"or the velocity of a flange that has one")
+            jumps = _combination_jumps(ws, final, owner, v, x, free, p, velocities, p0)
+            if jumps is None:
+                raise StructureError(f"{where}: reinit of '{variable}', which is not a state "
+                                     f"(nor one state scaled and offset by parameters, nor a "
+                                     f"velocity linear in the generalized velocities); reinit "
+                                     f"a state or the velocity of a flange")
+            rows += [Reinit(j, index[(owner, when)], direction, x[j] + dj * (value - v))
+                     for j, dj in jumps]
+            continue
         k, a = hit
         new = (value - ca.substitute(v, x[k], 0)) / a
         rows.append(Reinit(k, index[(owner, when)], direction, new))
@@ -443,6 +449,44 @@ def _state_events(ws: Workspace, final, x: ca.SX, free: ca.SX, p: ca.SX, velocit
                        terminations=[(o.path, text) for o, _, text in ws.terminations])
 
 
+def _kept_rows(ws: Workspace, final, owner, w: ca.SX) -> list:
+    """The velocities other components than ``owner`` declare stateSelect always, then
+    prefer (``ws.state_selects``), that are linear in the generalized velocities w: their
+    rows d(velocity)/dw, in that order (see PhysicsBuilder.reinit)."""
+    rows = []
+    for other, _, expr, rank in sorted(ws.state_selects, key=lambda r: r[3]):
+        if other is owner:
+            continue
+        J = ca.jacobian(final(expr), w)
+        if J.nnz() and not ca.depends_on(J, w):         # a velocity: linear in them
+            rows.append(J)
+    return rows
+
+
+def _jump(first: ca.SX, kept: list, free: ca.SX, p: ca.SX, p0: list):
+    """(d, d0, chosen): the change d of the generalized velocities w per unit change of the
+    reinitialized velocity first·w (a 1×n row), with the ``kept`` velocities (rows) unchanged
+    and then the generalized velocities themselves as far as they are independent of those
+    before (rank at p0 and a generic point); d0 its value there, ``chosen`` the rows of
+    [first; kept; unit rows] it keeps (0: the reinitialized velocity)."""
+    n = first.size2()
+    unit = ca.DM.eye(n)
+    rows = [first] + kept + [ca.SX(unit[j, :]) for j in range(n)]
+    probe = ca.Function("kept", [free, p], [ca.vertcat(*rows)], {"allow_free": True})
+    rng = np.random.default_rng(0)
+    A = np.array(probe(rng.uniform(0.5, 1.5, free.numel()), p0), dtype=float)
+    chosen = []
+    for r in range(A.shape[0]):
+        if np.linalg.matrix_rank(A[chosen + [r]]) > len(chosen):
+            chosen.append(r)
+    rhs = ca.DM.zeros(n, 1)
+    rhs[0] = 1.0
+    d = ca.solve(ca.vertcat(*[rows[r] for r in chosen]), rhs)
+    d0 = np.array(ca.Function("d", [free, p], [d], {"allow_free": True})(
+        rng.uniform(0.5, 1.5, free.numel()), p0), dtype=float).ravel()
+    return d, d0, chosen
+
+
 def _followers(ws: Workspace, final, owner, k: int, x: ca.SX, free: ca.SX, p: ca.SX,
                velocities: range, p0: list) -> list:
     """[(j, d_j)]: the generalized velocities x[j] that a reinit of x[k] by ``owner`` moves,
@@ -455,34 +499,35 @@ def _followers(ws: Workspace, final, owner, k: int, x: ca.SX, free: ca.SX, p: ca
     if k not in velocities or not ws.state_selects:
         return []
     w = x[list(velocities)]
-    rows = []
-    for other, _, expr, rank in sorted(ws.state_selects, key=lambda r: r[3]):
-        if other is owner:
-            continue
-        J = ca.jacobian(final(expr), w)
-        if J.nnz() and not ca.depends_on(J, w):         # a velocity: linear in them
-            rows.append(J)
-    if not rows:
+    kept = _kept_rows(ws, final, owner, w)
+    if not kept:
         return []
     n, at = w.numel(), k - velocities.start
-    unit = ca.DM.eye(n)
-    rows = [ca.SX(unit[at, :])] + rows + [ca.SX(unit[j, :]) for j in range(n) if j != at]
-    probe = ca.Function("kept", [free, p], [ca.vertcat(*rows)], {"allow_free": True})
-    rng = np.random.default_rng(0)
-    A = np.array(probe(rng.uniform(0.5, 1.5, free.numel()), p0), dtype=float)
-    chosen = []
-    for r in range(A.shape[0]):
-        if np.linalg.matrix_rank(A[chosen + [r]]) > len(chosen):
-            chosen.append(r)
-    if all(r == 0 or r > len(rows) - n for r in chosen):      # only coordinates: no change
+    d, d0, chosen = _jump(ca.SX(ca.DM.eye(n)[at, :]), kept, free, p, p0)
+    if all(r == 0 or r > len(kept) for r in chosen):      # only coordinates: no change
         return []
-    rhs = ca.DM.zeros(n, 1)
-    rhs[0] = 1.0
-    d = ca.solve(ca.vertcat(*[rows[r] for r in chosen]), rhs)
-    d0 = np.array(ca.Function("d", [free, p], [d], {"allow_free": True})(
-        rng.uniform(0.5, 1.5, free.numel()), p0), dtype=float).ravel()
     return [(velocities.start + j, d[j]) for j in range(n)
             if j != at and (abs(d0[j]) > 1e-12 or ca.depends_on(d[j], ca.vertcat(free, p)))]
+
+
+def _combination_jumps(ws: Workspace, final, owner, v: ca.SX, x: ca.SX, free: ca.SX,
+                       p: ca.SX, velocities: range, p0: list) -> list | None:
+    """[(j, d_j)] for a reinit of a velocity v that is no state but linear in the
+    generalized velocities w = x[velocities] (coefficients and offset of parameters: a
+    clutch's flange on the ring of a planetary gear whose sun and carrier carry the
+    coordinates): each x[j] jumps by d_j times the jump of v, the states a Modelica tool
+    keeps kept as for a reinit of a state (``_followers``), v being the one that changes.
+    None when v is not such a velocity."""
+    w = x[list(velocities)]
+    if w.numel() == 0:
+        return None
+    J = ca.jacobian(v, w)
+    if not J.nnz() or ca.depends_on(J, free) \
+            or ca.depends_on(ca.substitute(v, w, ca.SX.zeros(w.shape)), free):
+        return None
+    d, d0, _ = _jump(J, _kept_rows(ws, final, owner, w), free, p, p0)
+    return [(velocities.start + j, d[j]) for j in range(w.numel())
+            if abs(d0[j]) > 1e-12 or ca.depends_on(d[j], ca.vertcat(free, p))]
 
 
 def _check_declarations(ws: Workspace) -> None:

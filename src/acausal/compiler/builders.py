@@ -603,8 +603,9 @@ class PhysicsBuilder(_Base):
     def reinit(self, variable, expr, when: str, direction: int = 0) -> None:
         """Modelica's ``when ... then reinit(variable, expr)``: when this component's
         indicator ``when`` crosses zero in ``direction`` (−1: from positive to negative, 1:
-        from negative to positive, 0: either), the state ``variable`` (a state, or a
-        variable that is one state scaled and offset by parameters: ``e.vel(flange)``) jumps
+        from negative to positive, 0: either), the state ``variable`` (a state, a variable
+        that is one state scaled and offset by parameters: ``e.vel(flange)``, or a velocity
+        linear in the generalized velocities, whose jump the states below share) jumps
         to ``expr``, evaluated at the event's left limit (every value in it is its ``pre``),
         in the variable's units.
 

@@ -17,9 +17,9 @@ on in the starting direction, stuck again the other way, see ``start_indicator``
 (the normal force crossing 0, for elements that can be free). At every event the modes are updated
 as MSL does: a stuck element slides forward when the torque that holds it exceeds tau0_max
 (backward below −tau0_max; ``startForward``/``startBackward``, Boolean modes, are set then and
-cleared at the next event), a sliding element that reaches w_relfric = 0 keeps sliding only
-if its acceleration there (with the sliding friction tau0) keeps its direction or it has
-just broken away, and sticks otherwise.
+cleared at the next event), a sliding element that reaches w_relfric = 0 (within the
+round-off band W_NOISE) keeps sliding only if its acceleration there (with the sliding
+friction tau0) keeps its direction or it has just broken away, and sticks otherwise.
 
 Smooth form (``compile(model, smooth=True)``, for gradient-based optimal control): no
 modes, no indicators, no reinits, no algebraic variable; the friction torque is the
@@ -241,10 +241,13 @@ class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
             mode == BACKWARD, still_starting(start_bwd, w)))))
         sign_w = direction(w)
         from_stuck = ca.if_else(breaks_fwd, FORWARD, ca.if_else(breaks_bwd, BACKWARD, STUCK))
-        keeps_forward = ca.logic_and(fwd_ok, ca.logic_or(ca.logic_or(w > 0, start_fwd),
-                                                         ca.logic_and(w == 0, a > 0)))
-        keeps_backward = ca.logic_and(bwd_ok, ca.logic_or(ca.logic_or(w < 0, start_bwd),
-                                                          ca.logic_and(w == 0, a < 0)))
+        # w within the round-off band counts as 0: a reinit of a speed that is a combination
+        # of states (a clutch on a planetary's ring) leaves it at ~1e-16, not 0
+        at_rest = ca.fabs(w) <= W_NOISE
+        keeps_forward = ca.logic_and(fwd_ok, ca.logic_or(ca.logic_or(w > W_NOISE, start_fwd),
+                                                         ca.logic_and(at_rest, a > 0)))
+        keeps_backward = ca.logic_and(bwd_ok, ca.logic_or(ca.logic_or(w < -W_NOISE, start_bwd),
+                                                          ca.logic_and(at_rest, a < 0)))
         from_forward = ca.if_else(keeps_forward, FORWARD, ca.if_else(w < -small, BACKWARD,
                                                                       STUCK))
         from_backward = ca.if_else(keeps_backward, BACKWARD, ca.if_else(w > small, FORWARD,
