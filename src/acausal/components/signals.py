@@ -1919,6 +1919,14 @@ class Filter(_StartValues, SISO):
     Initialization (``init``): SteadyState der(x) = 0; NoInit and InitialState start at
     x = x_start (constructor argument, nx values); InitialOutput: y = y_start and
     der(x[1:nx−1]) = 0.
+
+    Band filters as MSL 4.1 computes them: a band pass's sections have the numerator
+    cn·s, cn = w_band·w_cut, without the base filter's c0 (cr), so its gain in the band is
+    1 only where those are 1 (Butterworth); a band stop's two sections of a complex pair
+    have the zeros s² + c0 of their own c0 (w_cut²/alpha², w_cut²·alpha²), not the double
+    zero at w_cut of the exact transformation (exact for real poles: order 1). A band
+    transformation that gives real poles (a wide band over CriticalDamping's real poles) is
+    refused, as MSL's assert does.
     """
     _starts = ("x_start", "y_start")
     options = {"analogFilter": AnalogFilter.CriticalDamping, "filterType": FilterType.LowPass,
