@@ -9,8 +9,9 @@ frequencies in [Hz], angles in [rad]. Numeric parameters are acausal Parameters 
 changeable at simulation time without recompiling); structural data (a table, the number of
 inputs of ``Sum``) and initial values of block states are constructor arguments.
 
-Initialization: the continuous blocks (Integrator, Derivative, FirstOrder, SecondOrder, PI,
-PID, LimPID, TransferFunction, StateSpace) take MSL's ``initType`` (``Init``: NoInit,
+Initialization: the continuous blocks (Integrator, LimIntegrator, Derivative, FirstOrder,
+SecondOrder, PI, PID, LimPID, TransferFunction, StateSpace, CriticalDamping,
+LowpassButterworth; Filter's option is MSL's ``init``) take MSL's ``initType`` (``Init``: NoInit,
 SteadyState, InitialState, InitialOutput) with MSL's default for each block; SteadyState and
 InitialOutput are initial equations (der(states) = 0; y = y_start). With NoInit and
 InitialState a block's states start at their start values (``y_start``, ``x_start``, ...),
