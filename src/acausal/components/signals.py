@@ -1702,6 +1702,9 @@ class LimIntegrator(_StartValues, SISO):
     smooth form (``compile(model, smooth=True)``) der(y) = k·u − s(1 + (y − outMax)/y_smooth)
     ·max(k·u, 0) − s(1 + (outMin − y)/y_smooth)·min(k·u, 0), s the smoothstep (0 → 1 with
     continuous slope): the integration slows within y_smooth of a limit and never passes it.
+    With strict=True nothing tells the integrator where k·u changes sign while y rests at
+    a limit (der(y) = 0 exactly, its steps grow): give ``simulate(max_step=...)`` shorter
+    than the input's changes, or keep the events.
 
     MSL differences: no reset/set ports (use_reset, use_set); limitsAtInit=False does not
     check that y is within the limits after the initialization.
