@@ -11,16 +11,17 @@ same equation written as a polynomial (numpy.roots), then polish it with Newton 
 """
 from __future__ import annotations
 
+import functools
 import math
 from enum import Enum
 from typing import NamedTuple
 
 import numpy as np
 
-from .bessel_table import BESSEL_BASE
-
 #: The amplitude MSL's normalized filters have at the cut-off frequency: -3 dB.
 MINUS_3_DB = 10 ** (-3 / 20)
+#: The highest order of MSL's Bessel filters (the orders its coefficient table holds).
+BESSEL_MAX_ORDER = 41
 
 
 class AnalogFilter(str, Enum):
@@ -105,6 +106,48 @@ def normalization_factor(den1, den2) -> float:
         poly, 0.0, np.inf, lambda z: math.prod(np.polyval(f, z) for f in factors) - target))
 
 
+@functools.cache
+def bessel_sections(order: int) -> tuple[list, list]:
+    """The Bessel filter of ``order`` not normalized (group delay 1 s at low frequency), in
+    MSL's form: den1 the [p] coefficient a of the real pole's a·p + 1 (odd orders), den2 the
+    [p², p] coefficients of the pairs' b2·p² + b1·p + 1, the most damped first. Its poles
+    are the roots of the reverse Bessel polynomial Σ (2n−k)!/(2^(n−k)·k!·(n−k)!)·p^k
+    (n = order), found by the Aberth–Ehrlich iteration from numpy.roots' estimates with the
+    polynomial evaluated in 256-bit fixed point: its integer coefficients span 60 decades at
+    order 41, where numpy.roots alone is wrong from order ~15 on."""
+    n = order
+    c = [math.factorial(2 * n - k) // (2 ** (n - k) * math.factorial(k) * math.factorial(n - k))
+         for k in range(n + 1)]
+    r = float(c[0]) ** (1.0 / n)                  # p = r·x: the roots of moderate coefficients
+    poles = list(np.roots([float(ck) * r ** k / float(c[0]) for k, ck in enumerate(c)][::-1])
+                 * r)
+    for _ in range(100):
+        largest = 0.0
+        for k, z in enumerate(poles):
+            q = _newton_step(c, z)
+            w = q / (1 - q * sum(1 / (z - zj) for j, zj in enumerate(poles) if j != k))
+            poles[k] = z - w
+            largest = max(largest, abs(w) / abs(z))
+        if largest < 1e-17:
+            break
+    den1 = [-1 / z.real for z in poles if abs(z.imag) <= 1e-9 * abs(z)]
+    den2 = sorted(([1 / abs(z) ** 2, -2 * z.real / abs(z) ** 2] for z in poles
+                   if z.imag > 1e-9 * abs(z)), key=lambda d: -d[1])
+    return den1, den2
+
+
+def _newton_step(coeffs: list[int], z: complex, bits: int = 256) -> complex:
+    """p(z)/p'(z) of the polynomial with integer ``coeffs`` (lowest power first), evaluated
+    by Horner's scheme in fixed point with ``bits`` fraction bits."""
+    one = 1 << bits
+    x, y = int(round(z.real * one)), int(round(z.imag * one))
+    pr, pi, dr, di = coeffs[-1] * one, 0, 0, 0
+    for c in reversed(coeffs[:-1]):
+        dr, di = ((dr * x - di * y) >> bits) + pr, ((dr * y + di * x) >> bits) + pi
+        pr, pi = ((pr * x - pi * y) >> bits) + c * one, (pr * y + pi * x) >> bits
+    return complex(pr / one, pi / one) / complex(dr / one, di / one)
+
+
 def base_filter(kind: AnalogFilter, order: int, normalized: bool = True,
                 A_ripple: float = 0.5) -> Base:
     """MSL's Internal.Filter.base: the base low pass filter of ``kind`` and ``order``
@@ -114,9 +157,9 @@ def base_filter(kind: AnalogFilter, order: int, normalized: bool = True,
         alpha = math.sqrt(10 ** (3 / 10 / order) - 1) if normalized else 1.0
         return _to_highest_power_one([alpha] * order, np.zeros((0, 2)))
     if kind is AnalogFilter.Bessel:
-        alpha, den1, den2 = BESSEL_BASE[order]
-        if not normalized:
-            den1, den2 = _scaled(den1, den2, alpha)
+        den1, den2 = bessel_sections(order)
+        if normalized:
+            den1, den2 = _scaled(den1, den2, normalization_factor(den1, den2))
         return _to_highest_power_one(den1, den2)
     if kind is AnalogFilter.Butterworth:
         den2 = [(1.0, -2 * math.cos(math.pi * (0.5 + (i - 0.5) / order)))

@@ -44,8 +44,7 @@ from ..core import (BooleanOutput, Component, ConditionalPort, Parameter, RealIn
                     Unavailable, VectorPort)
 from ..core.component import who
 from ..errors import ParameterError
-from .bessel_table import BESSEL_BASE
-from .filter_design import AnalogFilter, FilterType, base_filter, filter_roots
+from .filter_design import BESSEL_MAX_ORDER, AnalogFilter, FilterType, base_filter, filter_roots
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
 EPS = 1e-15
@@ -1964,7 +1963,7 @@ class Filter(_StartValues, SISO):
                                  f"band f_min .. f_cut: give 0 < f_min < f_cut [Hz], got "
                                  f"f_min = {f_min}, f_cut = {f_cut}")
         if self.analogFilter is AnalogFilter.Bessel:
-            _order(kind, "order", order, max(BESSEL_BASE))
+            _order(kind, "order", order, BESSEL_MAX_ORDER)
         self.__dict__.update(f_cut=f_cut, A_ripple=A_ripple, f_min=f_min)
         base = base_filter(self.analogFilter, self.order, self.normalized, A_ripple)
         try:
