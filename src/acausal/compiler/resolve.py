@@ -79,6 +79,10 @@ def make_resolver(ws: Workspace, relaxations: list[ca.SX]) -> Resolver:
             syms.append(level)
             vals.append(value)
             level = ws.der_table.get(level.name())
+    # a signal may be the rate of another (a Der block's output): resolve those rates in it
+    rates = _vc(*syms[len(by_name):]) if len(syms) > len(by_name) else None
+    if rates is not None and any(ca.depends_on(v, rates) for v in vals[:len(by_name)]):
+        vals = substitute_all(vals, syms, vals)
     return Resolver(syms, vals, relaxations, failed)
 
 

@@ -9,8 +9,9 @@ frequencies in [Hz], angles in [rad]. Numeric parameters are acausal Parameters 
 changeable at simulation time without recompiling); structural data (a table, the number of
 inputs of ``Sum``) and initial values of block states are constructor arguments.
 
-Initialization: the continuous blocks (Integrator, Derivative, FirstOrder, SecondOrder, PI,
-PID, LimPID, TransferFunction, StateSpace) take MSL's ``initType`` (``Init``: NoInit,
+Initialization: the continuous blocks (Integrator, LimIntegrator, Derivative, FirstOrder,
+SecondOrder, PI, PID, LimPID, TransferFunction, StateSpace, CriticalDamping,
+LowpassButterworth; Filter's option is MSL's ``init``) take MSL's ``initType`` (``Init``: NoInit,
 SteadyState, InitialState, InitialOutput) with MSL's default for each block; SteadyState and
 InitialOutput are initial equations (der(states) = 0; y = y_start). With NoInit and
 InitialState a block's states start at their start values (``y_start``, ``x_start``, ...),
@@ -43,6 +44,7 @@ from ..core import (BooleanOutput, Component, ConditionalPort, Parameter, RealIn
                     Unavailable, VectorPort)
 from ..core.component import who
 from ..errors import ParameterError
+from .filter_design import BESSEL_MAX_ORDER, AnalogFilter, FilterType, base_filter, filter_roots
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
 EPS = 1e-15
@@ -54,6 +56,8 @@ __all__ = [
     "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
     "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID", "LimPID",
     "SimpleController", "Init", "TransferFunction", "StateSpace",
+    "LimIntegrator", "Der", "LowpassButterworth", "CriticalDamping", "Filter", "AnalogFilter",
+    "FilterType",
     "Limiter", "VariableLimiter", "DeadZone", "LimiterHomotopy", "VariableLimiterHomotopy",
     "RealPassThrough",
 ]
@@ -1670,3 +1674,338 @@ class StateSpace(_Matrices, _StartValues, Component):
             rest = (ca.SX.eye(nx) - C.T @ ca.solve(C @ C.T, C)) @ A.T @ xdot
             output.update({f"der(x) least squares, row {i + 1}": rest[i] for i in range(nx)})
         _initial_equations(e, self, {f"x[{i + 1}]": xdot[i] for i in range(nx)}, output)
+
+
+# ---- continuous: limited integrator, exact derivative, filters (Modelica.Blocks.Continuous) --
+def _smoothstep(x):
+    """0 for x ≤ 0, 1 for x ≥ 1, x²·(3 − 2x) between: a step with continuous slope."""
+    return ca.if_else(x <= 0, 0, ca.if_else(x >= 1, 1, x * x * (3 - 2 * x)))
+
+
+class LimIntegrator(_StartValues, SISO):
+    """Integrator with limited output (MSL Continuous.LimIntegrator): der(y) = k·u, halted
+    at the limits: der(y) = 0 if y > outMax and k·u > 0 or y < outMin and k·u < 0.
+
+    Parameters: k, outMax (required, as in MSL), outMin (default −outMax, MSL's binding: it
+    follows outMax, also at simulation time, unless given at construction, which makes it
+    a parameter of its own); y_smooth (smooth form only). Options ``initType`` (MSL's
+    default InitialState: y starts at y_start; InitialOutput: y = y_start held;
+    SteadyState: der(y) = 0), ``limitsAtInit`` (False: the SteadyState equation is
+    k·u = 0, the limits ignored), ``strict`` (False: state events; True: none, MSL's
+    noEvent). Start value (constructor argument): ``y_start``.
+
+    With events (strict=False) the relations y > outMax, y < outMin, k·u > 0 are discrete
+    as in a Modelica tool: the indicators ``upper`` (y − outMax), ``lower`` (y − outMin)
+    and ``input`` (k·u) locate where they change, and the mode ``region`` (1: halted at
+    outMax, −1: halted at outMin, 0: integrating) is set from them at every event. In
+    smooth form (``compile(model, smooth=True)``) der(y) = k·u − s(1 + (y − outMax)/y_smooth)
+    ·max(k·u, 0) − s(1 + (outMin − y)/y_smooth)·min(k·u, 0), s the smoothstep (0 → 1 with
+    continuous slope): the integration slows within y_smooth of a limit and never passes it.
+    With strict=True nothing tells the integrator where k·u changes sign while y rests at
+    a limit (der(y) = 0 exactly, its steps grow): give ``simulate(max_step=...)`` shorter
+    than the input's changes, or keep the events.
+
+    MSL differences: no reset/set ports (use_reset, use_set); limitsAtInit=False does not
+    check that y is within the limits after the initialization.
+    """
+    _starts = ("y_start",)
+    options = {"initType": Init.InitialState, "limitsAtInit": True, "strict": False}
+    required = ("outMax",)
+    k = Parameter(1.0, "1", "integrator gain")
+    outMax = Parameter(1.0, "", "upper limit of output")
+    y_smooth = Parameter(1e-3, "", "smooth form only: width below each limit over which the "
+                                   "integration is halted gradually", positive=True)
+
+    def __new__(cls, name=None, **params):
+        return super().__new__(_LimIntegratorOutMin if cls is LimIntegrator and "outMin" in
+                               params else cls)
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        _check_limits(self, "outMax", "outMin")
+
+    @property
+    def outMin(self):
+        """Lower limit of output: −outMax (MSL's binding)."""
+        return -self.outMax
+
+    def structure(self, s):
+        s.state("y", self.y_start, description="integrator output (state)")
+        if not (self.strict or s.smooth):
+            s.mode("region", 0, values=(-1, 0, 1),
+                   description="1 if halted at outMax, -1 if halted at outMin, 0 integrating")
+
+    def physics(self, e):
+        y, ku = e.state("y"), self.k * e.input(self.u)
+        upper, lower = self.outMax, self.outMin
+        if e.smooth:
+            width = self.y_smooth
+            dy = (ku - _smoothstep(1 + (y - upper) / width) * ca.fmax(ku, 0)
+                  - _smoothstep(1 + (lower - y) / width) * ca.fmin(ku, 0))
+        else:
+            held = ca.if_else(ca.logic_and(y > upper, ku > 0), 1,
+                              ca.if_else(ca.logic_and(y < lower, ku < 0), -1, 0))
+            if self.strict:
+                dy = ca.if_else(held == 0, ku, 0)
+            else:
+                region = e.mode("region")
+                e.mode_update(region, held)
+                e.indicator("upper", y - upper, "", "y - outMax (the relation y > outMax)")
+                e.indicator("lower", y - lower, "", "y - outMin (the relation y < outMin)")
+                e.indicator("input", ku, "", "k*u (the relations k*u > 0, k*u < 0)")
+                dy = ca.if_else(region == 0, ku, 0)
+        e.derivative(y, dy)
+        e.output(self.y, y)
+        _initial_equations(e, self, {"y": dy if self.limitsAtInit else ku},
+                           {"y = y_start": y - self.y_start})
+
+
+class _LimIntegratorOutMin(LimIntegrator):
+    """LimIntegrator with outMin given at construction: a parameter of its own."""
+    outMin = Parameter(-1.0, "", "lower limit of output")
+
+
+_LimIntegratorOutMin.__name__ = "LimIntegrator"
+
+
+class Der(SISO):
+    """Exact derivative of the input, y = der(u) (MSL Continuous.Der): u's expression is
+    differentiated symbolically, as a Modelica tool differentiates the equations that give
+    u. The input must therefore be differentiable: a function of states, time and
+    parameters (a filter's output, a source; a step's jump contributes nothing), up to
+    three Der blocks in a chain of the same signal; a model input or an algebraic variable
+    has no known derivative (a StructureError when compiled; filter it, e.g. with
+    Derivative or Filter, instead)."""
+
+    def physics(self, e):
+        e.output(self.y, e.der(e.input(self.u)))
+
+
+def _order(block: str, name: str, value, largest: int | None = None) -> int:
+    """A filter's order given at construction, as int (a ParameterError otherwise)."""
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 1 \
+            or (largest is not None and value > largest):
+        within = f"between 1 and {largest}" if largest else ">= 1"
+        raise ParameterError(f"{block}: {name} (order of filter) must be an integer {within}, "
+                             f"got {value!r}")
+    return int(value)
+
+
+class _Ordered(_StartValues):
+    """A filter whose order (constructor argument ``n``) fixes its number of states."""
+
+    def __init__(self, name: str | None = None, *, n: int = 2, **params):
+        self.__dict__["n"] = _order(type(self).__name__ + (f" '{name}'" if name else ""),
+                                    "n", n)
+        super().__init__(name, **params)
+
+
+class CriticalDamping(_Ordered, SISO):
+    """Filter of order ``n`` with critical damping (MSL Continuous.CriticalDamping): n first
+    order sections in series, y = 1/(s/w + 1)^n·u with w = 2π·f/alpha, alpha =
+    sqrt(2^(1/n) − 1) if ``normalized`` (the amplitude at f is 1/sqrt(2)), else 1::
+
+        der(x[1]) = (u − x[1])·w,  der(x[i]) = (x[i−1] − x[i])·w,  y = x[n]
+
+    ``n`` (constructor argument, default 2) is the order; f [Hz] (required, as in MSL).
+    Initialization (``initType``, MSL's default NoInit): NoInit and InitialState start at
+    x = x_start; SteadyState: der(x) = 0 (y = u); InitialOutput: y = y_start and
+    der(x[1:n−1]) = 0. Start values (constructor arguments): ``x_start`` (n values),
+    ``y_start``.
+    """
+    _starts = ("x_start", "y_start")
+    options = {"normalized": True, "initType": Init.NoInit}
+    required = ("f",)
+    f = Parameter(1.0, "Hz", "cut-off frequency", positive=True)
+
+    def _start_size(self, name: str) -> int | None:
+        return self.n if name == "x_start" else None
+
+    def structure(self, s):
+        for i in range(self.n):
+            s.state(f"x[{i + 1}]", self.x_start[i], description="filter states")
+
+    def physics(self, e):
+        n = self.n
+        alpha = math.sqrt(2 ** (1 / n) - 1) if self.normalized else 1.0
+        w = 2 * math.pi * self.f / alpha
+        x = [e.state(f"x[{i + 1}]") for i in range(n)]
+        der = [(before - xi) * w for before, xi in zip([e.input(self.u)] + x[:-1], x)]
+        for xi, dx in zip(x, der):
+            e.derivative(xi, dx)
+        e.output(self.y, x[-1])
+        names = [f"x[{i + 1}]" for i in range(n)]
+        _initial_equations(e, self, dict(zip(names, der)), {"y = y_start": x[-1] - self.y_start},
+                           steady_output=names[:-1])
+
+
+class LowpassButterworth(_Ordered, SISO):
+    """Low pass Butterworth filter of order ``n`` (MSL Continuous.LowpassButterworth): the
+    amplitude at the cut-off frequency f is 1/sqrt(2). MSL's realization: m = n div 2
+    second order sections with w = 2π·f, D[i] = −cos(π/2 + π/n·(i − 1/2)),
+    z[1] = u, z[i+1] = x1[i]::
+
+        der(x1[i]) = x2[i],  der(x2[i]) = w²·z[i] − 2·D[i]·w·x2[i] − w²·x1[i]
+
+    and for odd n a real pole der(xr) = (z[m+1] − xr)·w, y = xr (even n: y = z[m+1]).
+
+    ``n`` (constructor argument, default 2) is the order; f [Hz] (required, as in MSL).
+    Initialization (``initType``, MSL's default NoInit): NoInit and InitialState start at
+    x1_start, x2_start (m values each), xr_start; SteadyState: all derivatives 0 (y = u);
+    InitialOutput: y = y_start, der(x1) = 0 and der(x2[1:m−1]) = 0 (even n), der(x2) = 0
+    (odd n: what MSL means by its second der(x1) = 0). For even n there is no state xr
+    (MSL's dummy xr = 0).
+    """
+    _starts = ("x1_start", "x2_start", "xr_start", "y_start")
+    options = {"initType": Init.NoInit}
+    required = ("f",)
+    f = Parameter(1.0, "Hz", "cut-off frequency", positive=True)
+
+    def _start_size(self, name: str) -> int | None:
+        return self.n // 2 if name in ("x1_start", "x2_start") else None
+
+    def structure(self, s):
+        for i in range(self.n // 2):
+            s.state(f"x1[{i + 1}]", self.x1_start[i],
+                    description="states 1 of second order filters (der(x1) = x2)")
+            s.state(f"x2[{i + 1}]", self.x2_start[i],
+                    description="states 2 of second order filters")
+        if self.n % 2:
+            s.state("xr", self.xr_start, description="state of real pole")
+
+    def physics(self, e):
+        n, m = self.n, self.n // 2
+        w = 2 * math.pi * self.f
+        z, der = e.input(self.u), {}
+        for i in range(1, m + 1):
+            D = -math.cos(math.pi / 2 + math.pi / n * (i - 0.5))
+            x1, x2 = e.state(f"x1[{i}]"), e.state(f"x2[{i}]")
+            der[f"x1[{i}]"], der[f"x2[{i}]"] = x2, w * w * (z - x1) - 2 * D * w * x2
+            e.derivative(x1, x2)
+            e.derivative(x2, der[f"x2[{i}]"])
+            z = x1
+        if n % 2:
+            xr = e.state("xr")
+            der["xr"] = (z - xr) * w
+            e.derivative(xr, der["xr"])
+            z = xr
+        e.output(self.y, z)
+        steady = [f"x1[{i}]" for i in range(1, m + 1)] + \
+            [f"x2[{i}]" for i in range(1, (m if n % 2 else m - 1) + 1)]
+        _initial_equations(e, self, der, {"y = y_start": z - self.y_start},
+                           steady_output=tuple(steady))
+
+
+class Filter(_StartValues, SISO):
+    """Continuous low pass, high pass, band pass or band stop filter of type CriticalDamping,
+    Bessel, Butterworth or ChebyshevI (MSL Continuous.Filter).
+
+    Options: ``analogFilter`` (AnalogFilter, default CriticalDamping), ``filterType``
+    (FilterType, default LowPass), ``normalized`` (True: the amplitude at f_cut is -3 dB =
+    10^(-3/20) for CriticalDamping, Bessel, ChebyshevI, and 1/sqrt(2) for Butterworth, as
+    in MSL), ``init`` (Init, MSL's default SteadyState). Design data, given at construction
+    (the coefficients are computed from them then, as MSL computes them at initialization;
+    build a new block to change them): ``order`` (default 2), ``f_cut`` [Hz] (required),
+    ``A_ripple`` [dB] (ChebyshevI's pass band ripple, default 0.5, > 0), ``f_min`` [Hz]
+    (band filters: the band is f_min .. f_cut, both at -3 dB). Parameters: gain (amplitude
+    at zero frequency), u_nominal (scale of the states).
+
+    MSL's realization (acausal.components.filter_design computes its coefficients exactly
+    as MSL's Internal.Filter functions): real poles r, der(x) = r·(x − uu); conjugate
+    complex pairs a ± j·b, der(x1) = a·x1 − b·x2 + ku·uu, der(x2) = b·x1 + a·x2, in
+    series from uu = u/u_nominal; each section's output feeds the next: low pass x (x2),
+    high pass uu − x (k1·x1 + k2·x2 + uu), band pass k1·x1 + k2·x2, band stop
+    k1·x1 + k2·x2 + uu; y = gain·u_nominal·(the last output). States ``x[1]`` ..
+    ``x[nx]`` (nx = order, band filters 2·order); MSL's output connectors x are not
+    declared (read the states by name).
+
+    Initialization (``init``): SteadyState der(x) = 0; NoInit and InitialState start at
+    x = x_start (constructor argument, nx values); InitialOutput: y = y_start and
+    der(x[1:nx−1]) = 0.
+
+    Band filters as MSL 4.1 computes them: a band pass's sections have the numerator
+    cn·s, cn = w_band·w_cut, without the base filter's c0 (cr), so its gain in the band is
+    1 only where those are 1 (Butterworth); a band stop's two sections of a complex pair
+    have the zeros s² + c0 of their own c0 (w_cut²/alpha², w_cut²·alpha²), not the double
+    zero at w_cut of the exact transformation (exact for real poles: order 1). A band
+    transformation that gives real poles (a wide band over CriticalDamping's real poles) is
+    refused, as MSL's assert does.
+    """
+    _starts = ("x_start", "y_start")
+    options = {"analogFilter": AnalogFilter.CriticalDamping, "filterType": FilterType.LowPass,
+               "normalized": True, "init": Init.SteadyState}
+    gain = Parameter(1.0, "1", "gain (= amplitude of frequency response at zero frequency)")
+    u_nominal = Parameter(1.0, "", "nominal value of input (used for scaling the states)",
+                          positive=True)
+
+    def __init__(self, name: str | None = None, *, order: int = 2, f_cut: float | None = None,
+                 A_ripple: float = 0.5, f_min: float = 0.0, **params):
+        kind = "Filter" + (f" '{name}'" if name else "")
+        given = params.get("filterType", FilterType.LowPass)
+        band = given in (FilterType.BandPass, FilterType.BandStop, "BandPass", "BandStop")
+        self.__dict__["order"] = _order(kind, "order", order)
+        self.__dict__["nx"] = 2 * order if band else order
+        super().__init__(name, **params)
+        if f_cut is None:
+            raise ParameterError(f"{kind}: f_cut (cut-off frequency [Hz]) has no default (as "
+                                 f"in MSL); give it: Filter(f_cut=...)")
+        f_cut, A_ripple, f_min = (_start(v, f"{kind}: {n}") for v, n in (
+            (f_cut, "f_cut"), (A_ripple, "A_ripple"), (f_min, "f_min")))
+        if f_cut <= 0:
+            raise ParameterError(f"{kind}: f_cut (cut-off frequency) must be > 0 [Hz], got "
+                                 f"{f_cut}")
+        if A_ripple <= 0:
+            raise ParameterError(f"{kind}: A_ripple (pass band ripple of ChebyshevI) must be "
+                                 f"> 0 [dB] (MSL asserts it for every analogFilter), got "
+                                 f"{A_ripple}")
+        if band and not 0 < f_min < f_cut:
+            raise ParameterError(f"{kind}: a {self.filterType.value} filter passes/stops the "
+                                 f"band f_min .. f_cut: give 0 < f_min < f_cut [Hz], got "
+                                 f"f_min = {f_min}, f_cut = {f_cut}")
+        if self.analogFilter is AnalogFilter.Bessel:
+            _order(kind, "order", order, BESSEL_MAX_ORDER)
+        self.__dict__.update(f_cut=f_cut, A_ripple=A_ripple, f_min=f_min)
+        base = base_filter(self.analogFilter, self.order, self.normalized, A_ripple)
+        try:
+            roots = filter_roots(base, self.filterType, f_cut, f_min)
+        except ValueError as err:
+            raise ParameterError(f"{kind}: {err} for a {self.filterType.value} filter (f_min "
+                                 f"= {f_min}, f_cut = {f_cut})") from None
+        self.__dict__["roots"] = roots
+
+    def _start_size(self, name: str) -> int | None:
+        return self.nx if name == "x_start" else None
+
+    @property
+    def initType(self) -> Init:
+        """The initialization (the option ``init``)."""
+        return self.init
+
+    def structure(self, s):
+        for i in range(self.nx):
+            s.state(f"x[{i + 1}]", self.x_start[i], description="filter states")
+
+    def physics(self, e):
+        r, a, b, ku, k1, k2 = self.roots
+        kind = self.filterType
+        x = [e.state(f"x[{i + 1}]") for i in range(self.nx)]
+        uu, der = e.input(self.u) / self.u_nominal, []
+        for ri, xi in zip(r, x):
+            der.append(ri * (xi - uu))
+            uu = xi if kind is FilterType.LowPass else uu - xi
+        for i in range(len(a)):
+            x1, x2 = x[len(r) + 2 * i], x[len(r) + 2 * i + 1]
+            der += [a[i] * x1 - b[i] * x2 + ku[i] * uu, b[i] * x1 + a[i] * x2]
+            if kind is FilterType.LowPass:
+                uu = x2
+            elif kind is FilterType.BandPass:
+                uu = k1[i] * x1 + k2[i] * x2
+            else:
+                uu = k1[i] * x1 + k2[i] * x2 + uu
+        for xi, dx in zip(x, der):
+            e.derivative(xi, dx)
+        y = self.gain * self.u_nominal * uu
+        e.output(self.y, y)
+        names = [f"x[{i + 1}]" for i in range(self.nx)]
+        _initial_equations(e, self, dict(zip(names, der)), {"y = y_start": y - self.y_start},
+                           steady_output=tuple(names[:-1]))
