@@ -470,3 +470,11 @@ def test_parameters_refused_at_simulation_time():
     c = acausal.compile(_fed({"mean": sg.Mean(f=F)}, sg.Sine()))
     with pytest.raises(ParameterError, match="mean.f"):
         c.simulate(1.0, params={"mean.f": -1.0})
+
+
+def test_pade_delay_in_steady_state_passes_a_constant_input():
+    """balance=True starts in steady state: a constant input passes at the DC gain 1 (a
+    model whose only parameter is delayTime, fed by a model Input)."""
+    res = acausal.compile(_pade_model(delayTime=0.3, n=3, m=2, balance=True)).simulate(
+        1.0, inputs={"u": 2.5}, **SIM)
+    np.testing.assert_allclose(res["delay.y"], 2.5, rtol=1e-12)

@@ -28,6 +28,17 @@ with Boolean signals (relations, Switch, Hysteresis, logical blocks) are in
 ``acausal.components.logical``, sampled-data blocks (Sampler, ZeroOrderHold, the discrete
 TransferFunction and StateSpace, ...) in ``acausal.components.discrete``.
 
+Math blocks (Modelica.Blocks.Math, MSL 4.1): Abs and Sign (MSL's ``generateEvent``: state
+events where u crosses 0, a smooth form as Limiter's), the functions of one input (Sqrt,
+Sin, ..., Log10, Power, Exponentiation; where MSL requires u in a domain, Sqrt, Asin, Acos,
+Log, Log10, the requirement is an assertion: simulate() stops with a SimulationError
+naming the block), Atan2, Max, Min, MinMax, MultiSum, MultiProduct, MatrixGain, and the
+sampled Mean and RootMeanSquare over periods 1/f. Nonlinear: SlewRateLimiter and
+PadeDelay (a delay approximated by a rational transfer function). FixedDelay and
+VariableDelay (y = u(time − delayTime)) are not available: a true delay makes a delay
+differential equation, which the compiled form (an ODE/DAE in the present states) and
+its integrators do not express; PadeDelay approximates one.
+
 A loop of blocks must contain a state (Integrator, FirstOrder, PI, ...) or pass through a
 mechanical part; a purely algebraic loop is reported by the compiler as an error.
 """
