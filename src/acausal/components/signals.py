@@ -1721,14 +1721,17 @@ class _Signed(SISO):
 
 
 class Abs(_Signed):
-    """y = |u| (MSL Math.Abs): ``if u >= 0 then u else -u``, written u·sign(u). Option
-    ``generateEvent`` (MSL's default False: no events, the integrator's step control
-    resolves the kink; True: state events where u crosses 0). Smooth form
-    (``compile(model, smooth=True)``): y = u²/sqrt(u² + u_smooth²), below |u| by at most
-    0.3003·u_smooth (at |u| ≈ 0.786·u_smooth), by u_smooth²/(2|u|) far from 0."""
+    """y = |u| (MSL Math.Abs: ``if u >= 0 then u else -u``). Option ``generateEvent``
+    (MSL's default False: no events, the integrator's step control resolves the kink; True:
+    state events where u crosses 0, so the kink is located; y = |u| all the same, also at
+    an event's left limit, where u may be past 0 by the event tolerance: y is never
+    negative, e.g. under a Sqrt). Smooth form (``compile(model, smooth=True)``):
+    y = u·u/sqrt(u² + u_smooth²), below |u| by at most 0.3003·u_smooth (at |u| ≈
+    0.786·u_smooth), by u_smooth²/(2|u|) far from 0."""
 
     def physics(self, e):
-        e.output(self.y, e.input(self.u) * self.sign(e))
+        u, sign = e.input(self.u), self.sign(e)
+        e.output(self.y, u * sign if e.smooth else ca.fabs(u))
 
 
 class Sign(_Signed):
@@ -2062,22 +2065,9 @@ class MatrixGain(_Sized, Component):
 
 
 class _Sampled(_StartValues, SISO):
-    """What Mean and RootMeanSquare share: MSL Math.Mean's equations for a signal v (u for
-    Mean, u² for RootMeanSquare) under the names ``<prefix>x``, ``<prefix>y_last``::
-
-        der(x) = v
-        when sample(t0 + 1/f, 1/f) then
-          y_last = f·pre(x)     (max(0, f·pre(x)) with yGreaterOrEqualZero)
-          reinit(x, 0)
-        end when
-
-    with t0 = 0 (instants k/f after time 0), x = x0 and y_last = its start value at the
-    start. A sample instant can reinit no state here, so the state is ``<prefix>integral``
-    = ∫v dt (starting at x0), never reset; the discrete variable ``<prefix>integral_last``
-    keeps its value at the last instant (0 before the first) and MSL's x = integral −
-    integral_last is recorded. The mode ``sampled`` tells the event iteration's first round
-    at an instant (where the integral is read) from the next ones (as the discrete blocks'
-    ``sampled``). Refused in smooth form (the output changes at events only)."""
+    """What Mean and RootMeanSquare share: MSL Math.Mean's equations (see Mean) for a
+    signal v under the names ``<prefix>integral``, ``<prefix>integral_last``,
+    ``<prefix>x``, ``<prefix>y_last``."""
     f = Parameter(50.0, "Hz", "base frequency", positive=True)
     _prefix = ""
 
@@ -2120,11 +2110,28 @@ class Mean(_Sampled):
     full period, updated at the instants k/f (time events), held in between; y = y0 before
     the first. Option ``yGreaterOrEqualZero`` (y = max(0, ...), for a mean ≥ 0 in exact
     arithmetic). Start values (constructor arguments): x0 (the integrator's state, so the
-    first mean is f·(x0 + ∫u dt)), y0.
+    first mean is f·(x0 + ∫u dt)), y0. MSL's equations::
 
-    Equations and MSL differences: see ``_Sampled`` (the sample instants are counted from
-    time 0, MSL's t0 being the simulation's start: a simulation started at t > 0 has
-    the same instants k/f, its first period cut short).
+        der(x) = u
+        when sample(t0 + 1/f, 1/f) then
+          y_last = f·pre(x)     (max(0, f·pre(x)) with yGreaterOrEqualZero)
+          reinit(x, 0)
+        end when
+        y = y_last
+
+    with x = x0 and y_last = y0 at the start. A sample instant reinitializes no state
+    here, so the state is ``integral`` = ∫u dt (starting at x0), never reset; the discrete
+    variable ``integral_last`` keeps its value at the last instant (0 before the first),
+    and MSL's x = integral − integral_last is recorded (so is ``y_last``). The mode
+    ``sampled`` tells the event iteration's first round at an instant (where the integral
+    is read) from the next ones, as the discrete blocks' ``sampled`` does. Refused in
+    smooth form (the output changes at events only).
+
+    MSL differences: the instants are counted from time 0 (MSL's t0 is the simulation's
+    start: a simulation started at t > 0 has the same instants k/f, its first period cut
+    short); the integral over the whole run, not over one period, is the state, so its
+    error control is relative to the integral's magnitude (for a long run of an input with
+    a large mean, tighten rtol).
     """
     _starts = ("x0", "y0")
     options = {"yGreaterOrEqualZero": False}
@@ -2138,8 +2145,9 @@ class RootMeanSquare(_Sampled):
     y = sqrt(mean.y), mean.y the Mean (with yGreaterOrEqualZero) of u·u, updated at the
     instants k/f, held in between; y = y0 (≥ 0) before the first. Start values
     (constructor arguments): x0 (the state of the Mean of u², MSL's mean.x0), y0 (≥ 0; the
-    Mean of u² starts at y0²). Recorded under MSL's names: ``mean.x``, ``mean.y_last``
-    (and ``mean.integral``, ``mean.integral_last``, see ``_Sampled``)."""
+    Mean of u² starts at y0²). The equations are Mean's (see Mean), recorded under MSL's
+    names of the inner Mean: ``mean.x``, ``mean.y_last``, ``mean.y`` (and
+    ``mean.integral``, ``mean.integral_last``)."""
     _starts = ("x0", "y0")
     _prefix = "mean."
 
