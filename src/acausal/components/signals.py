@@ -1856,7 +1856,9 @@ class Exp(_Function):
 class Power(_Function):
     """y = base^u (MSL Math.Power): with ``useExp`` (MSL's default True) written
     exp(u·log(base)), base > 0 required (checked at construction); without, base^u, where a
-    base ≤ 0 needs an integer u (asserted)."""
+    base ≤ 0 needs an integer u (asserted; outside, y is NaN, not clipped: the assertion
+    stops a simulation where y is an output only, the integrator fails first where it
+    feeds a state)."""
     options = {"useExp": True}
     base = Parameter(math.e, "", "base of power")
 
@@ -1879,7 +1881,8 @@ class Power(_Function):
 
 class Exponentiation(_Function):
     """y = u^exponent (MSL Math.Exponentiation); a u < 0 needs an integer exponent, u = 0
-    an exponent ≥ 0 (asserted)."""
+    an exponent ≥ 0 (asserted; outside, y is NaN or infinite, not clipped, as for
+    Power)."""
     exponent = Parameter(2.0, "", "exponent of power")
 
     def function(self, u):
