@@ -336,7 +336,8 @@ def folded(model, p: np.ndarray, u: ca.SX | None = None) -> tuple[ca.SX, ca.SX]:
     events), and the inputs replaced by the expressions ``u`` (None: they stay symbols):
     the numeric right-hand side simulate()'s and the stepper's integrators see."""
     values = ca.SX(p)
-    values[model.mode_params] = model.p[model.mode_params]
+    if model.mode_params:               # (an empty index of a 1x1 p has no definite shape)
+        values[model.mode_params] = model.p[model.mode_params]
     old, new = ([model.p], [values]) if u is None else ([model.u, model.p], [u, values])
     return tuple(ca.substitute([model.ode, model.alg], old, new))
 
