@@ -646,7 +646,7 @@ class Vehicle(Component):
     Driven at the rotational ``flangeR`` (the drive-train inertia J [kg.m²] and a wheel of
     radius R [m]: R·flangeR.phi = s), coupled to other vehicles at the translational
     ``flangeT`` (flangeT.s = s); either may be left unconnected. Records s [m] (state,
-    start 0), v [m/s] (state, start 0), a [m/s²]. With α = atan(inclination):
+    start 0), v [m/s] (state, start 0), a [m/s²]. With α = atan(inclination)::
 
         (m + J/R²)·a = flangeR.tau/R + flangeT.f − fDrag.f − fRoll.f + fGrav.f
         fDrag.f = Cd·A·rho/2·(v − vWind)·|v − vWind|     (air drag, recorded)
@@ -668,13 +668,14 @@ class Vehicle(Component):
     windSpeed (Sources.Speed, 50 Hz filter), an input wind passes a first-order filter
     of cut-off 50 Hz, its output the state ``vWindFiltered`` [m/s] starting at vWind(0).
 
-    MSL composes Vehicle of Mass, Inertia, IdealRollingWheel, QuadraticSpeedDependentForce,
-    RollingResistance, Force, Speed and Blocks.Math blocks (Atan, Sin, Gain). Here its
-    equations are written directly, with the laws of those parts (``quadratic_law``,
-    ``rolling_direction``): a composed acausal Model cannot bind its parts' parameters to
-    its own (m enters mass.m, fRoll.fWeight = m·g and gravForceGain.k = −m·g), so m, g, Cd,
-    ... would not be parameters of the compiled model that can be changed at simulation
-    time.
+    Differences from MSL: MSL composes Vehicle of Mass, Inertia, IdealRollingWheel,
+    QuadraticSpeedDependentForce, RollingResistance, Force, Speed and Blocks.Math blocks
+    (Atan, Sin, Gain); here its equations are written directly, with the laws of those
+    parts (``quadratic_law``, ``rolling_direction``): a composed acausal Model cannot bind
+    its parts' parameters to its own (m enters mass.m, fRoll.fWeight = m·g and
+    gravForceGain.k = −m·g), so m, g, Cd, ... would not be parameters of the compiled model
+    that can be changed at simulation time. The parts' variables other than the forces
+    (mass.*, inertia.*, fDrag.v, ...) are not recorded; s, v, a are the mass's.
     """
     options = {"useWindInput": False, "useCrInput": False, "useInclinationInput": False}
     m = Parameter(1.0, "kg", "total mass of vehicle", positive=True)
