@@ -71,6 +71,10 @@ def test_docs_build_without_warnings(tmp_path):
         assert f"<p>{cell}</p>" in mass, f"Mass's table lacks {cell!r}"
     differences = page[page.index('id="translational-differences"'):]
     assert "HardStop" in differences and "Not an MSL class" in differences
+    vehicle = page[page.index('id="translational-vehicle"'):]
+    assert "<p>useInclinationInput = True</p>" in vehicle          # the input's option
+    assert 'id="translational-rollingresistance"' in page
+    assert "Vehicle" in differences and "written directly" in differences
     page = html.unescape((out / "components" / "multibody.html").read_text())
     revolute = page[page.index('id="joints-revolute"'):]
     assert "<p>useAxisFlange = True</p>" in revolute          # axis exists only with the option

@@ -26,21 +26,25 @@ classes here declare MSL's connectors and names on top of them.
 Coulomb friction (SupportFriction, Brake, MassWithStopAndFriction) has MSL's mode machine
 on state events (see ``friction``); MassWithStopAndFriction's stops, ElastoGap's contact and
 HardStop (stops with a coefficient of restitution, not an MSL class) are state events too.
-Not here yet: SignForce,
-InverseSpeedDependentForce, EddyCurrentForce; nor the adaptors, InitializeFlange,
-RelativeStates, Vehicle. Differences from MSL are listed in each
-docstring.
+RollingResistance's regularization switches by state events too, and so does Vehicle's (a
+component written with the equations of MSL's parts, see its docstring).
+Not here yet: SignForce, InverseSpeedDependentForce; nor the adaptors, InitializeFlange,
+RelativeStates. Differences from MSL are listed in each docstring.
 """
 from __future__ import annotations
+
+import math
+from enum import Enum
 
 import casadi as ca
 
 from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
-                    StateSelect, TranslationalFlange, VectorPort)
+                    RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import TRANSLATIONAL
 from ..errors import ParameterError
-from . import friction, interfaces
+from . import friction, interfaces, rotational
 from .interfaces import TRANSLATIONAL_AXIS, linear_law, quadratic_law
+from .signals import _limited, _limiter_region
 
 Flange = TranslationalFlange
 
@@ -52,7 +56,8 @@ __all__ = [
     "PartialAbsoluteSensor", "PartialRelativeSensor",
     # components
     "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "SupportFriction", "Brake",
-    "MassWithStopAndFriction", "ElastoGap", "HardStop", "contact_force",
+    "MassWithStopAndFriction", "ElastoGap", "HardStop", "contact_force", "RollingResistance",
+    "Regularization", "rolling_direction", "rolling_region", "IdealRollingWheel", "Vehicle",
     # sources
     "Force", "Force2", "ConstantForce", "ForceStep", "LinearSpeedDependentForce",
     "QuadraticSpeedDependentForce", "EddyCurrentForce", "Position", "Speed", "Accelerate", "Move",
@@ -552,6 +557,179 @@ def check_stops(component, lower, upper, what: str) -> None:
     if upper < lower:
         raise ParameterError(f"parameter '{type(component).__name__}.smax' = "
                              f"{component.smax} with smin = {component.smin}: {what}")
+
+
+class Regularization(str, Enum):
+    """Modelica.Blocks.Types.Regularization: how RollingResistance crosses v = 0, with x =
+    v/v0: Exp 2/(1 + exp(−x/0.01)) − 1; Sine sin(π/2·x); Linear x; CoSine sign(x)·(1 −
+    cos(π/2·x)), the last three inside |x| < 1 and sign(x) outside."""
+    Exp = "Exp"
+    Sine = "Sine"
+    Linear = "Linear"
+    CoSine = "CoSine"
+
+
+def rolling_direction(e, v, v0, reg: Regularization, prefix: str = ""):
+    """The regularized sign(v) of MSL's RollingResistance (see Regularization), v [m/s], v0
+    [m/s]. Sine, Linear and CoSine switch at |v| = v0 by state events on the mode
+    ``<prefix>region`` (declare it with ``rolling_region``), as Modelica's ``if abs(v) >= v0``;
+    in smooth form their corners at |v| = v0 are rounded over 0.01·v0 (the width of the Exp
+    form)."""
+    x = v / v0
+    if reg is Regularization.Exp:
+        return 2 / (1 + ca.exp(-x / 0.01)) - 1
+    x = _limited(e, x, -1.0, 1.0, 0.01, True, prefix)
+    if reg is Regularization.Sine:
+        return ca.sin(math.pi / 2 * x)
+    if reg is Regularization.Linear:
+        return x
+    return ca.sign(x) * (1 - ca.cos(math.pi / 2 * x))
+
+
+def rolling_region(s, reg: Regularization, prefix: str = "") -> None:
+    """Declare the mode of ``rolling_direction`` (none for Exp, which has no band)."""
+    if reg is not Regularization.Exp:
+        _limiter_region(s, True, prefix)
+
+
+def _signal_or(e, component, port: str, option: str, constant):
+    """The input ``port`` of ``component`` if its option ``option`` is on, else ``constant``."""
+    return e.input(getattr(component, port)) if getattr(component, option) else constant
+
+
+class RollingResistance(PartialForce):
+    """Resistance of a rolling wheel (MSL's Components.RollingResistance): the wheel load
+    fWeight [N] (default 0 = MSL start value) on a road of inclination tan(α) gives the
+    nominal resistance f_nominal = −Cr·fWeight·cos(atan(inclination)) [N] (recorded), and
+    f = flange.f = −f_nominal·sign(v) regularized within [−v0, v0] (``reg``, default Exp,
+    see Regularization; v0 [m/s] default 0.1), v = der(s) [m/s] recorded relative to the
+    support: it brakes the body on the flange in either direction.
+
+    Cr is CrConstant (default 0.01) or, with ``useCrInput``, the input ``cr``; the
+    inclination is inclinationConstant (default 0) or, with ``useInclinationInput``, the
+    input ``inclination`` (positive uphill for positive v)."""
+    options = {"useCrInput": False, "useInclinationInput": False,
+               "reg": Regularization.Exp}
+    fWeight = Parameter(0.0, "N", "wheel load due to gravity")
+    CrConstant = Parameter(0.01, "1", "constant rolling resistance coefficient")
+    inclinationConstant = Parameter(0.0, "1", "constant inclination = tan(angle)")
+    v0 = Parameter(0.1, "m/s", "regularization below v0", positive=True)
+    inclination = ConditionalPort(RealInput("inclination=tan(angle)"), "useInclinationInput")
+    cr = ConditionalPort(RealInput("rolling resistance coefficient"), "useCrInput")
+
+    def structure(self, s):
+        rolling_region(s, self.reg)
+
+    def flange_force(self, e):
+        cr = _signal_or(e, self, "cr", "useCrInput", self.CrConstant)
+        inclination = _signal_or(e, self, "inclination", "useInclinationInput",
+                                 self.inclinationConstant)
+        v = self._rel_speed(e, self.flange)
+        self._record_relative(e, "v")
+        f_nominal = -cr * self.fWeight * ca.cos(ca.atan(inclination))
+        e.variable("f_nominal", f_nominal, "N",
+                   "nominal rolling resistance without regularization")
+        return -f_nominal * rolling_direction(e, v, self.v0, self.reg)
+
+
+#: Translational.Components.IdealRollingWheel is MSL's Rotational one.
+IdealRollingWheel = rotational.IdealRollingWheel
+
+_V_REF = 1.0               # m/s, Vehicle's reference velocity of the air drag (MSL's vRef)
+_WIND_F_CRIT = 50.0        # Hz, cut-off of Vehicle's wind filter (windSpeed's default f_crit)
+
+
+class Vehicle(Component):
+    """Simple vehicle model (MSL's Components.Vehicle): mass, drive-train inertia, wheel,
+    air drag, rolling resistance and inclination resistance.
+
+    Driven at the rotational ``flangeR`` (the drive-train inertia J [kg.m²] and a wheel of
+    radius R [m]: R·flangeR.phi = s), coupled to other vehicles at the translational
+    ``flangeT`` (flangeT.s = s); either may be left unconnected. Records s [m] (state,
+    start 0), v [m/s] (state, start 0), a [m/s²]. With α = atan(inclination)::
+
+        (m + J/R²)·a = flangeR.tau/R + flangeT.f − fDrag.f − fRoll.f + fGrav.f
+        fDrag.f = Cd·A·rho/2·(v − vWind)·|v − vWind|     (air drag, recorded)
+        fRoll.f = Cr·m·g·cos(α)·reg(v/vReg)              (rolling, recorded)
+        fGrav.f = −m·g·sin(α)                            (inclination, recorded)
+
+    with flangeR.tau, flangeT.f the torque and force the connected parts exert, reg MSL's
+    Linear regularization (v/vReg inside |v| < vReg, sign(v) outside: state events at |v|
+    = vReg, mode ``fRoll.region``; see RollingResistance). The signs are MSL's parts':
+    fDrag.f, fRoll.f are the flange forces of its QuadraticSpeedDependentForce and
+    RollingResistance (positive when they brake forward motion), fGrav.f the input of its
+    Force (positive pushing forward).
+
+    Parameters: m [kg] > 0, J [kg.m²] ≥ 0, R [m] > 0 (required: MSL gives no defaults),
+    g [m/s²] (9.80665), A [m²] (1), Cd (0.5), rho [kg/m³] (1.2), vWindConstant [m/s] (0),
+    CrConstant (0.015), vReg [m/s] (1e-3), inclinationConstant (0, = tan(α), positive
+    uphill). Options useWindInput, useCrInput, useInclinationInput give the inputs
+    ``vWind`` [m/s], ``cr`` and ``inclination`` in place of the constants. As MSL's
+    windSpeed (Sources.Speed, 50 Hz filter), an input wind passes a first-order filter
+    of cut-off 50 Hz, its output the state ``vWindFiltered`` [m/s] starting at vWind(0).
+
+    Differences from MSL: MSL composes Vehicle of Mass, Inertia, IdealRollingWheel,
+    QuadraticSpeedDependentForce, RollingResistance, Force, Speed and Blocks.Math blocks
+    (Atan, Sin, Gain); here its equations are written directly, with the laws of those
+    parts (``quadratic_law``, ``rolling_direction``): a composed acausal Model cannot bind
+    its parts' parameters to its own (m enters mass.m, fRoll.fWeight = m·g and
+    gravForceGain.k = −m·g), so m, g, Cd, ... would not be parameters of the compiled model
+    that can be changed at simulation time. The parts' variables other than the forces
+    (mass.*, inertia.*, fDrag.v, ...) are not recorded; s, v, a are the mass's.
+    """
+    options = {"useWindInput": False, "useCrInput": False, "useInclinationInput": False}
+    m = Parameter(1.0, "kg", "total mass of vehicle", positive=True)
+    g = Parameter(9.80665, "m/s2", "constant gravity acceleration")
+    J = Parameter(0.0, "kg.m2", "total rotational inertia of drive train", nonnegative=True)
+    R = Parameter(1.0, "m", "wheel radius", positive=True)
+    A = Parameter(1.0, "m2", "cross section of vehicle")
+    Cd = Parameter(0.5, "1", "drag resistance coefficient")
+    rho = Parameter(1.2, "kg/m3", "density of air")
+    vWindConstant = Parameter(0.0, "m/s", "constant wind velocity")
+    CrConstant = Parameter(0.015, "1", "constant rolling resistance coefficient")
+    vReg = Parameter(1e-3, "m/s", "velocity for regularization around 0", positive=True)
+    inclinationConstant = Parameter(0.0, "1", "constant inclination = tan(angle)")
+    required = ("m", "J", "R")
+    flangeT = Flange("translational flange")
+    flangeR = RotationalFlange("rotational flange")
+    inclination = ConditionalPort(RealInput("inclination=tan(angle)"), "useInclinationInput")
+    cr = ConditionalPort(RealInput("rolling resistance coefficient"), "useCrInput")
+    vWind = ConditionalPort(RealInput("wind velocity [m/s]"), "useWindInput")
+
+    def structure(self, s):
+        body = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
+        s.linear({self.flangeT: 1.0, body: -1.0}, 0.0, f"{self.path}: flangeT")
+        s.linear({self.flangeR: self.R, body: -1.0}, 0.0, f"{self.path}: R*flangeR.phi = s")
+        rolling_region(s, Regularization.Linear, "fRoll.")
+        if self.useWindInput:
+            s.state("vWindFiltered", 0.0, "m/s", "wind velocity, filtered (MSL's windSpeed.v)")
+
+    def physics(self, e):
+        body = e.node("s")
+        v = e.vel(body)
+        e.kinetic_energy(0.5 * (self.m + self.J / self.R ** 2) * v ** 2)
+        inclination = _signal_or(e, self, "inclination", "useInclinationInput",
+                                 self.inclinationConstant)
+        cr = _signal_or(e, self, "cr", "useCrInput", self.CrConstant)
+        alpha = ca.atan(inclination)
+        f_drag = self.Cd * self.A * self.rho * _V_REF ** 2 / 2 * quadratic_law(
+            (v - self._wind(e)) / _V_REF, False)
+        f_roll = cr * self.m * self.g * ca.cos(alpha) * rolling_direction(
+            e, v, self.vReg, Regularization.Linear, "fRoll.")
+        f_grav = -self.m * self.g * ca.sin(alpha)
+        e.flow(body, f_drag + f_roll - f_grav)
+        e.variable("fDrag.f", f_drag, "N", "air drag (flange force of fDrag)")
+        e.variable("fRoll.f", f_roll, "N", "rolling resistance (flange force of fRoll)")
+        e.variable("fGrav.f", f_grav, "N", "inclination force on the vehicle (input of fGrav)")
+
+    def _wind(self, e):
+        """The wind velocity [m/s]: vWindConstant, or the input vWind through the filter."""
+        if not self.useWindInput:
+            return self.vWindConstant
+        filtered, wind = e.state("vWindFiltered"), e.input(self.vWind)
+        e.derivative(filtered, (wind - filtered) * 2 * math.pi * _WIND_F_CRIT)
+        e.initial(filtered - wind, "vWindFiltered = vWind")
+        return filtered
 
 
 # =========================================================================================
