@@ -11,10 +11,11 @@ from __future__ import annotations
 
 import math
 
+import casadi as ca
 import numpy as np
 
 __all__ = ["parameter_problem", "row_scales", "ProjectionError", "project", "independent_rows", "moved_note", "event_times",
-           "just_before", "short_error", "first_failed_assertion"]
+           "just_before", "short_error", "first_failed_assertion", "has_nan_constant"]
 
 
 ASSEMBLY_RETRIES = 4     # restarts of a stalled projection from perturbed start values,
@@ -54,6 +55,9 @@ def project(equations, start, w0, nx: int, labels, targets, given: str = "x0",
     """
     start = np.asarray(start, dtype=float)
     w0 = np.asarray(w0, dtype=float)
+    not_finite = _not_finite(*equations(w0)[::-1], labels)
+    if not_finite:
+        raise ProjectionError(not_finite)
     limited = np.arange(nx) if positions is None else np.asarray(positions, dtype=int)
     scale = 1 + max(np.abs(start).max(initial=0.0), np.abs(w0).max(initial=0.0))
     seed = 12345
@@ -157,7 +161,22 @@ def _descend(equations, wk, limited, scale: float, iterations: int = 100):
     return wk
 
 
+def _not_finite(J, h, labels) -> str | None:
+    """The error for rows of H (or of its Jacobian) that are NaN or inf, or None."""
+    rows = np.flatnonzero(~(np.isfinite(h) & np.all(np.isfinite(J), axis=1)))
+    if not rows.size:
+        return None
+    one = rows.size == 1
+    return (f"cannot find initial values: {', '.join(labels[i] for i in rows)} "
+            f"{'is' if one else 'are'} not finite (NaN or inf) at the start; check the inputs "
+            f"and parameters {'it uses' if one else 'they use'} (an input that is NaN, a "
+            f"division by a parameter that is 0)")
+
+
 def _conflict(J, h, labels, targets, given) -> str:
+    not_finite = _not_finite(J, h, labels)
+    if not_finite:
+        return not_finite
     bad = [labels[i] for i in np.flatnonzero(np.abs(h) / row_scales(J) > 1e-10)]
     for i in range(len(targets)):
         for j in range(i + 1, len(targets)):
@@ -196,6 +215,14 @@ def parameter_problem(name: str, value: float, description: str = "", unit: str 
     if nonzero and value == 0:
         return f"parameter '{name}' must not be 0 ({what})"
     return None
+
+
+def has_nan_constant(ex: ca.SX) -> bool:
+    """Whether the expression holds a NaN constant: what Python's float() (and the math
+    module) make of a CasADi symbol, without complaint."""
+    f = ca.Function("f", ca.symvar(ex), [ex])
+    return any(f.instruction_id(k) == ca.OP_CONST and math.isnan(f.instruction_constant(k))
+               for k in range(f.n_instructions()))
 
 
 def independent_rows(J) -> np.ndarray:

@@ -2,6 +2,7 @@
 closed loop's matrix exponential, sampled against the exact discretization of the loop;
 Ctrl-C returning the run so far; the progress bar off by default."""
 import importlib
+import math
 import warnings
 
 import casadi as ca
@@ -69,6 +70,14 @@ def test_a_controller_that_rejects_symbols_needs_a_period(compiled):
         return 1.0 if y["mass.s"] < REF else -1.0
     with pytest.raises(SimulationError, match="period"):
         compiled.simulate(1.0, inputs={"F": bang_bang})
+
+
+def test_a_controller_that_makes_nan_of_symbols_is_refused(compiled):
+    """Python's float() and the math module turn a CasADi symbol into NaN without an error:
+    such a controller would feed NaN into the equations; it is refused by name."""
+    with pytest.raises(SimulationError, match="input 'F': the controller turns CasADi "
+                                              "symbols into NaN"):
+        compiled.simulate(1.0, inputs={"F": lambda t, y: -10.0 * math.tanh(y["mass.s"])})
 
 
 def sampled_loop(period, t, x0):

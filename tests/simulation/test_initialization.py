@@ -13,6 +13,7 @@ from acausal.analysis import operating_point
 from acausal.components import planar as pl
 from acausal.components import rotational as rot
 from acausal.components import translational as tr
+from acausal.numerics import ProjectionError, project
 
 
 def test_massless_node_between_stiff_springs_starts_where_the_forces_balance():
@@ -138,7 +139,6 @@ def test_states_stay_at_their_start_when_the_algebraic_variables_solve_the_equat
     every equation, so the projection keeps the states x at their start values exactly and
     gives z = A⁻¹·B·x (the start values of a body hung from massless junctions between
     3-D springs, MSL's ThreeSprings)."""
-    from acausal.numerics import project
     rng = np.random.default_rng(7)
     A, B = rng.normal(size=(3, 3)) + 3 * np.eye(3), rng.normal(size=(3, 3))
     x_start = rng.normal(size=4)
@@ -152,3 +152,13 @@ def test_states_stay_at_their_start_when_the_algebraic_variables_solve_the_equat
     w = project(equations, start, start, 4, ["row"] * 3, [])
     assert np.array_equal(w[:4], x_start)
     assert np.allclose(w[4:], np.linalg.solve(A, B4 @ x_start), rtol=0, atol=1e-13)
+
+
+def test_equations_not_finite_at_the_start_are_named():
+    """An equation that is NaN at the start (an input NaN there) cannot be met: the error
+    names it and says it is not finite, instead of listing no equation at all."""
+    def equations(w):
+        return np.array([w[0] - 1.0, np.nan]), np.array([[1.0], [1.0]])
+    with pytest.raises(ProjectionError, match=r"initial values: x\[n\] = u is not finite "
+                                              r"\(NaN or inf\) at the start"):
+        project(equations, np.zeros(1), np.zeros(1), 1, ["x0 row", "x[n] = u"], [1.0])

@@ -68,6 +68,19 @@ def test_numeric_callable(compiled):
     np.testing.assert_allclose(res["mass.s"], sine_response(2.0, 3.0, GRID), atol=5e-6)
 
 
+@pytest.mark.parametrize("force, response", [
+    (lambda t: 2.0 * math.sin(3.0 * t), lambda t: sine_response(2.0, 3.0, t)),
+    (lambda t: 1.5 * float(t >= 0.0), lambda t: step_response(1.5, t)),
+])
+def test_a_callable_that_makes_nan_of_symbols_is_sampled(compiled, force, response):
+    """math.sin and float() accept a CasADi symbol and give NaN (no error): the expression is
+    checked against the callable's values at numbers, and such a callable is sampled as one
+    that rejects symbols (not a NaN input; the error bound of test_numeric_callable)."""
+    with pytest.warns(UserWarning, match="does not accept CasADi symbols"):
+        res = compiled.simulate(T_END, t=GRID, inputs={"F": force})
+    np.testing.assert_allclose(res["mass.s"], response(GRID), atol=5e-6)
+
+
 def test_samples(compiled):
     """(times, values) on a grid unrelated to the output grid; linear between samples."""
     ts = np.linspace(0.0, T_END, 7)

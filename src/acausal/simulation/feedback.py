@@ -31,6 +31,7 @@ import casadi as ca
 import numpy as np
 
 from ..errors import SimulationError
+from ..numerics import has_nan_constant
 from .inputs import input_signal
 from .progress import progress_bar, warn_interrupted
 from .result import Result
@@ -133,6 +134,11 @@ def _expression(model, name, fb: Controller) -> ca.SX:
     if out.numel() != 1:
         raise SimulationError(f"input '{name}': the controller returns {out.numel()} values; "
                               f"one is needed")
+    if has_nan_constant(out):
+        raise SimulationError(f"input '{name}': the controller turns CasADi symbols into NaN "
+                              f"(Python's float() or the math module on a symbol); write it "
+                              f"with casadi operations (casadi.if_else, numpy ufuncs) or "
+                              f"sample it: Controller(fn, period=...)")
     if ca.depends_on(out, model.u):
         raise SimulationError(f"input '{name}': the controller reads a variable that depends "
                               f"on an input (an algebraic loop through {names}); feed it "

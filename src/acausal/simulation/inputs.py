@@ -4,8 +4,9 @@ An input is given as a number (constant), a callable of time, samples, or values
 output grid:
 
 - a callable that accepts CasADi symbols (numpy ufuncs do, ``casadi.if_else`` too) becomes
-  an exact expression; one that does not is sampled on a fine grid and interpolated linearly,
-  and a warning says so (give ``Samples(..., interpolation="hold")`` for a piecewise-constant
+  an exact expression; one that does not, or that turns them into NaN (``math.sin``,
+  ``float()``: checked against its values at numbers), is sampled on a fine grid and
+  interpolated linearly, and a warning says so (give ``Samples(..., interpolation="hold")`` for a piecewise-constant
   signal such as a sampled controller's output);
 - ``Samples(times, values, interpolation)`` or a pair ``(times, values)`` (linear): between
   samples linear, or held (zero-order hold: each value holds until the next sample time);
@@ -64,15 +65,9 @@ def input_signal(name: str, value, t: ca.SX, grid: np.ndarray) -> InputSignal:
 
 
 def _callable(name, f, t, grid) -> InputSignal:
-    try:
-        with warnings.catch_warnings():      # numpy ufuncs on SX: the casadi result is wanted
-            warnings.simplefilter("ignore", FutureWarning)
-            ex = f(t)
-        ex = ca.SX(ex) if not isinstance(ex, ca.SX) else ex
-        if ex.numel() == 1:
-            return InputSignal(ex)
-    except Exception:
-        pass
+    ex = _expression(f, t, grid)
+    if ex is not None:
+        return InputSignal(ex)
     fine = np.linspace(grid[0], grid[-1], max(FINE, 4 * len(grid)))
     try:
         vals = np.array([float(f(tk)) for tk in fine])
@@ -87,6 +82,29 @@ def _callable(name, f, t, grid) -> InputSignal:
               f"operations (casadi.if_else, numpy ufuncs) or give "
               f"Samples(times, values, interpolation='hold' or 'linear')")
     return InputSignal(_linear(t, fine, vals))
+
+
+def _expression(f, t, grid) -> ca.SX | None:
+    """``f(t)`` as a scalar expression of the time symbol ``t``, or None where ``f`` does not
+    give one that agrees with its values at numbers (at the grid's first, middle and last
+    time): a function that rejects CasADi symbols, or one that turns them into NaN without
+    complaint (``math.sin(t)``, ``float(t >= 1)``: Python's float() of a symbol is NaN)."""
+    try:
+        with warnings.catch_warnings():      # numpy ufuncs on SX: the casadi result is wanted
+            warnings.simplefilter("ignore", FutureWarning)
+            ex = f(t)
+        ex = ca.SX(ex) if not isinstance(ex, ca.SX) else ex
+        if ex.numel() != 1:
+            return None
+        at = ca.Function("input", [t], [ex])
+        for tk in (grid[0], grid[len(grid) // 2], grid[-1]):
+            symbolic, numeric = float(at(tk)), float(f(float(tk)))
+            if not (np.isfinite(symbolic)
+                    and abs(symbolic - numeric) <= 1e-12 * (1 + abs(numeric))):
+                return None
+    except Exception:
+        return None
+    return ex
 
 
 def _linear(t, times: np.ndarray, values: np.ndarray) -> ca.SX:
