@@ -3,6 +3,8 @@ options raise the package's errors naming the variable at fault; free final time
 failed solve and the bounds on recorded variables are checked on the cart-pole, in
 test_cartpole.py; a DAE with a non-DAE integrator in test_index1_model.py.)
 """
+import math
+
 import casadi as ca
 import numpy as np
 import pytest
@@ -33,6 +35,15 @@ def test_unknown_names_suggest_the_right_one(osc):
     with pytest.raises(ParameterError, match="'damper.dd'"):
         OCP(osc, N=5, params={"damper.dd": 1.0})
     assert issubclass(OCPError, AcausalError)
+
+
+def test_an_integrand_that_makes_nan_of_symbols_is_refused(osc):
+    """math.cos accepts a CasADi symbol and gives NaN (no error): the cost would be NaN."""
+    ocp = OCP(osc, N=5, T=1.0)
+    with pytest.raises(OCPError, match="turns the model's CasADi symbols into NaN"):
+        ocp.integral(lambda v: math.cos(v["mass.s"]) ** 2)
+    cost = ocp.view.expression(lambda v: np.cos(v["mass.s"]) ** 2)       # numpy: symbolic
+    assert float(ca.Function("f", [osc.x], [cost])(np.zeros(osc.x.numel()))) == 1.0
 
 
 def test_bad_bounds_guesses_and_options(osc):

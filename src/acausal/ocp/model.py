@@ -9,6 +9,7 @@ import numpy as np
 from ..compiler import recompile
 from ..compiler.lean import lean
 from ..errors import OCPError, ParameterError, VariableNameError, did_you_mean
+from ..numerics import has_nan_constant
 
 #: the OCP's word for each kind of name the compiled model resolves
 _KINDS = {"time": "time", "state": "state", "input": "control", "parameter": "parameter",
@@ -103,6 +104,10 @@ class ModelView:
             raise OCPError("an integrand must be a scalar CasADi SX expression of the model's "
                            "symbols, a variable name, or a callable v -> v['name'] ... "
                            f"(got {type(expr).__name__})")
+        if has_nan_constant(expr):
+            raise OCPError("an integrand turns the model's CasADi symbols into NaN (Python's "
+                           "float() or the math module on a symbol); write it with casadi "
+                           "operations or numpy ufuncs (np.sin, casadi.if_else)")
         return expr
 
     def function(self, exprs: list, name: str = "g", outputs=("g",)) -> ca.Function:
