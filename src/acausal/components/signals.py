@@ -651,71 +651,50 @@ def _new_sized(base: type, key: tuple) -> Component:
     return object.__new__(base._variant(*key))
 
 
-class KinematicPTP2(_Sized, Component):
-    """Point-to-point motion as fast as the limits allow (MSL Sources.KinematicPTP2): from
-    q_begin to q_end, each axis's speed within qd_max and acceleration within qdd_max
-    (> 0), all axes on one normalized path s(t) ∈ [0, 1] (only the axis at its limit is at
-    it): accelerate at the largest rate, cruise at the largest speed, brake to rest
-    (bang–bang, without cruise phase, when the largest speed is not reached). Outputs
-    q = q_begin + Δq·s, qd = Δq·der(s), qdd = Δq·der(der(s)) and moving = time < endTime
-    (false for an axis that does not move), vectors of nout = the longest of q_begin,
-    q_end, qd_max, qdd_max (a one-element one holds for every axis: MSL's rule); records
-    endTime [s] = startTime + duration (0 if nothing moves). Time events at the phase
-    changes (the acceleration jumps there).
-
-    Constructor arguments ``q_begin``, ``q_end``, ``qd_max``, ``qdd_max`` (numbers or
-    sequences; MSL's defaults 0, 1, 1, 1) give the parameters ``q_begin[i]`` ... (per
-    element, changeable at simulation time); ``startTime`` [s]. Ports ``q[i]``, ``qd[i]``,
-    ``qdd[i]``, ``moving[i]``, numbered from 1.
-    """
-    _classes: dict = {}
-    _vectors = {"q_begin": ("", "start position", {}, 0.0),
-                "q_end": ("", "end position", {}, 1.0),
-                "qd_max": ("", "maximum velocity der(q)", {"positive": True}, 1.0),
-                "qdd_max": ("", "maximum acceleration der(qd)", {"positive": True}, 1.0)}
+class _PointToPoint(_Sized, Component):
+    """What KinematicPTP and KinematicPTP2 share: vector parameters given as numbers or
+    sequences (``_vectors``: name -> (unit, description, rule, MSL default); a one-element
+    one holds for every axis: MSL's rule), nout = the longest of them, the class made per
+    nout (``_outputs(nout)``: its ports), ``startTime`` and the normalized path s(t) ∈ [0, 1]
+    of the fastest motion over the distances ``_distances()`` within qd_max and qdd_max."""
+    _vectors: dict
     startTime = Parameter(0.0, "s", "time instant at which movement starts")
 
     def __new__(cls, name=None, **kwargs):
-        return super().__new__(cls._variant(KinematicPTP2._nout(kwargs)))
+        return super().__new__(cls._variant(cls._nout(kwargs)))
 
-    @staticmethod
-    def _values(kwargs) -> dict:
+    @classmethod
+    def _values(cls, kwargs) -> dict:
         out = {}
-        for key, (*_, default) in KinematicPTP2._vectors.items():
+        for key, (*_, default) in cls._vectors.items():
             try:
                 v = np.atleast_1d(np.asarray(kwargs.get(key, default), dtype=float)).ravel()
             except (TypeError, ValueError):
                 v = None
             if v is None or v.size < 1:
-                raise ParameterError(f"KinematicPTP2: {key} must be a number or a sequence of "
-                                     f"numbers, got {kwargs.get(key)!r}")
+                raise ParameterError(f"{cls.__name__}: {key} must be a number or a sequence "
+                                     f"of numbers, got {kwargs.get(key)!r}")
             out[key] = v
         return out
 
-    @staticmethod
-    def _nout(kwargs) -> int:
-        values = KinematicPTP2._values(kwargs)
+    @classmethod
+    def _nout(cls, kwargs) -> int:
+        values = cls._values(kwargs)
         nout = max(v.size for v in values.values())
         wrong = [k for k, v in values.items() if v.size not in (1, nout)]
         if wrong:
-            raise ParameterError(f"KinematicPTP2: {wrong[0]} has {values[wrong[0]].size} "
-                                 f"elements; give 1 or nout = {nout} (the longest of q_begin, "
-                                 f"q_end, qd_max, qdd_max)")
+            raise ParameterError(f"{cls.__name__}: {wrong[0]} has {values[wrong[0]].size} "
+                                 f"elements; give 1 or nout = {nout} (the longest of "
+                                 f"{', '.join(cls._vectors)})")
         return nout
 
-    @staticmethod
-    def _declare(nout: int) -> dict:
+    @classmethod
+    def _declare(cls, nout: int) -> dict:
         attrs = {"nout": nout}
-        for key, (unit, text, rule, default) in KinematicPTP2._vectors.items():
+        for key, (unit, text, rule, default) in cls._vectors.items():
             for i in range(1, nout + 1):
                 attrs[f"{key}[{i}]"] = Parameter(default, unit, f"{text} [{i}]", **rule)
-        for key, cls, text in (("q", RealOutput, "reference position of path planning"),
-                               ("qd", RealOutput, "reference speed of path planning"),
-                               ("qdd", RealOutput, "reference acceleration of path planning"),
-                               ("moving", BooleanOutput, "= true, if end position not yet "
-                                                         "reached")):
-            attrs[key] = VectorPort(cls, nout, text)
-        return attrs
+        return {**attrs, **cls._outputs(nout)}
 
     def __init__(self, name: str | None = None, **kwargs):
         values = self._values(kwargs)
@@ -728,12 +707,16 @@ class KinematicPTP2(_Sized, Component):
     def _vector(self, key: str) -> list:
         return [getattr(self, f"{key}[{i}]") for i in range(1, self.nout + 1)]
 
+    def _distances(self) -> list:
+        """The distance each axis moves (expressions of the parameters)."""
+        raise NotImplementedError
+
     def profile(self) -> dict:
         """The normalized path's data, expressions of the parameters (MSL's names): sd_max,
         sdd_max, noWphase, the phase ends Ta1s, Ta2s, Tvs, Tes [s], s1, s2, s3, sd_max2 and
         ``moves`` (false when no axis moves: then s = 0 and endTime = 0)."""
         eps = 10 * 2.220446049250313e-16                     # MSL: 10*Modelica.Constants.eps
-        dq = [b - a for a, b in zip(self._vector("q_begin"), self._vector("q_end"))]
+        dq = self._distances()
         sd_inv = _vmax([ca.fabs(d / v) for d, v in zip(dq, self._vector("qd_max"))])
         sdd_inv = _vmax([ca.fabs(d / a) for d, a in zip(dq, self._vector("qdd_max"))])
         moves = ca.logic_and(sd_inv > eps, sdd_inv > eps)
@@ -757,8 +740,10 @@ class KinematicPTP2(_Sized, Component):
         p = self.profile()
         return ca.if_else(p["moves"], p["Tes"], 0.0)
 
-    def physics(self, e):
-        p, t, t0 = self.profile(), e.time, self.startTime
+    def normalized_path(self, e, p: dict) -> list:
+        """[s, der(s), der(der(s))] at the time of ``e`` on the profile ``p``; declares the
+        time events at the phase changes (the acceleration jumps there)."""
+        t, t0 = e.time, self.startTime
         a, v, noW = p["sdd_max"], p["sd_max"], p["noWphase"]
         tau = t - t0
         up = (a / 2 * tau ** 2, a * tau, a)                                # accelerating
@@ -774,7 +759,49 @@ class KinematicPTP2(_Sized, Component):
         s = list(rest)
         for cond, values in reversed(phases):
             s = [ca.if_else(cond, x, y) for x, y in zip(values, s)]
-        s = [ca.if_else(p["moves"], x, 0.0) for x in s]
+        for time in (t0, ca.if_else(noW, p["Ta1s"], p["Ta2s"]),
+                     ca.if_else(noW, p["Tes"], p["Tvs"]), p["Tes"]):
+            e.time_event(ca.if_else(p["moves"], time, t0))
+        return [ca.if_else(p["moves"], x, 0.0) for x in s]
+
+
+class KinematicPTP2(_PointToPoint):
+    """Point-to-point motion as fast as the limits allow (MSL Sources.KinematicPTP2): from
+    q_begin to q_end, each axis's speed within qd_max and acceleration within qdd_max
+    (> 0), all axes on one normalized path s(t) ∈ [0, 1] (only the axis at its limit is at
+    it): accelerate at the largest rate, cruise at the largest speed, brake to rest
+    (bang–bang, without cruise phase, when the largest speed is not reached). Outputs
+    q = q_begin + Δq·s, qd = Δq·der(s), qdd = Δq·der(der(s)) and moving = time < endTime
+    (false for an axis that does not move), vectors of nout = the longest of q_begin,
+    q_end, qd_max, qdd_max (a one-element one holds for every axis: MSL's rule); records
+    endTime [s] = startTime + duration (0 if nothing moves). Time events at the phase
+    changes (the acceleration jumps there).
+
+    Constructor arguments ``q_begin``, ``q_end``, ``qd_max``, ``qdd_max`` (numbers or
+    sequences; MSL's defaults 0, 1, 1, 1) give the parameters ``q_begin[i]`` ... (per
+    element, changeable at simulation time); ``startTime`` [s]. Ports ``q[i]``, ``qd[i]``,
+    ``qdd[i]``, ``moving[i]``, numbered from 1.
+    """
+    _classes: dict = {}
+    _vectors = {"q_begin": ("", "start position", {}, 0.0),
+                "q_end": ("", "end position", {}, 1.0),
+                "qd_max": ("", "maximum velocity der(q)", {"positive": True}, 1.0),
+                "qdd_max": ("", "maximum acceleration der(qd)", {"positive": True}, 1.0)}
+
+    @staticmethod
+    def _outputs(nout: int) -> dict:
+        return {key: VectorPort(cls, nout, text) for key, cls, text in (
+            ("q", RealOutput, "reference position of path planning"),
+            ("qd", RealOutput, "reference speed of path planning"),
+            ("qdd", RealOutput, "reference acceleration of path planning"),
+            ("moving", BooleanOutput, "= true, if end position not yet reached"))}
+
+    def _distances(self) -> list:
+        return [b - a for a, b in zip(self._vector("q_begin"), self._vector("q_end"))]
+
+    def physics(self, e):
+        p, t = self.profile(), e.time
+        s = self.normalized_path(e, p)
         end = self.end_time()
         for k, (qb, dq) in enumerate(zip(self._vector("q_begin"), p["dq"]), start=1):
             e.output(self.q[k], qb + dq * s[0])
@@ -782,9 +809,6 @@ class KinematicPTP2(_Sized, Component):
             e.output(self.qdd[k], dq * s[2])
             e.output(self.moving[k], ca.logic_and(ca.fabs(dq) > 10 * 2.220446049250313e-16,
                                                   t < end))
-        for time in (t0, ca.if_else(noW, p["Ta1s"], p["Ta2s"]),
-                     ca.if_else(noW, p["Tes"], p["Tvs"]), p["Tes"]):
-            e.time_event(ca.if_else(p["moves"], time, t0))
         e.variable("endTime", end, "s", "time instant at which movement stops")
 
 
