@@ -64,6 +64,8 @@ __all__ = [
     "SO", "SISO", "SI2SO", "SignalSource",
     "Constant", "Step", "Ramp", "Sine", "Cosine", "ExpSine", "Pulse", "Trapezoid", "TimeTable",
     "CombiTimeTable", "Smoothness", "Extrapolation", "TimeEvents", "KinematicPTP2",
+    "ContinuousClock", "Exponentials", "SawTooth", "Sinc", "SineVariableFrequencyAndAmplitude",
+    "CosineVariableFrequencyAndAmplitude", "LogFrequencySweep", "KinematicPTP",
     "Gain", "Add", "Add3", "Feedback", "Product", "Division", "Sum",
     "Integrator", "Derivative", "FirstOrder", "SecondOrder", "PI", "PID", "LimPID",
     "SimpleController", "Init", "TransferFunction", "StateSpace",
@@ -817,6 +819,198 @@ def _vmax(values: list):
     for v in values[1:]:
         out = ca.fmax(out, v)
     return out
+
+
+# ---- more sources (Modelica.Blocks.Sources, MSL 4.1) ---------------------------------------------
+class ContinuousClock(SignalSource):
+    """The current time: y = offset + (0 before startTime, else time − startTime)."""
+
+    def signal(self, t):
+        return t - self.startTime
+
+
+class Exponentials(SignalSource):
+    """A rising exponential, then a falling one: for τ = time − startTime ≥ 0,
+    y = offset + outMax·(1 − exp(−τ/riseTimeConst)) while τ < riseTime, then
+    y_riseTime·exp(−(τ − riseTime)/fallTimeConst), y_riseTime = outMax·(1 −
+    exp(−riseTime/riseTimeConst)). Time events at startTime and at the end of the rise (a
+    kink). fallTimeConst [s] defaults to riseTimeConst (MSL's binding: it follows
+    riseTimeConst, also at simulation time, unless it is given at construction, which
+    makes it a parameter of its own)."""
+    outMax = Parameter(1.0, "", "height of output for infinite riseTime")
+    riseTime = Parameter(0.5, "s", "rise time", nonnegative=True)
+    riseTimeConst = Parameter(0.1, "s", "rise time constant; rising is defined as "
+                                        "outMax*(1-exp(-riseTime/riseTimeConst))",
+                              positive=True)
+    _with_fallTimeConst: type | None = None
+
+    def __new__(cls, name=None, **params):
+        own = cls._with_fallTimeConst if "fallTimeConst" in params else None
+        return super().__new__(own or cls)
+
+    @property
+    def fallTimeConst(self):
+        """The fall time constant [s]: riseTimeConst (MSL's binding)."""
+        return self.riseTimeConst
+
+    def signal(self, t):
+        tau = t - self.startTime
+        y_riseTime = self.outMax * (1 - ca.exp(-self.riseTime / self.riseTimeConst))
+        return ca.if_else(tau < self.riseTime,
+                          self.outMax * (1 - ca.exp(-tau / self.riseTimeConst)),
+                          y_riseTime * ca.exp(-(tau - self.riseTime) / self.fallTimeConst))
+
+    def events(self):
+        return [(self.startTime, None), (self.startTime + self.riseTime, None)]
+
+
+class _ExponentialsFallTimeConst(Exponentials):
+    """Exponentials with fallTimeConst given at construction: a parameter of its own."""
+    fallTimeConst = Parameter(0.1, "s", "fall time constant", positive=True)
+
+
+_ExponentialsFallTimeConst.__name__ = "Exponentials"               # shows the MSL class's name
+Exponentials._with_fallTimeConst = _ExponentialsFallTimeConst
+
+
+class SawTooth(_Periodic):
+    """Saw tooth: y = offset + amplitude·(time − T_start)/period within each period that
+    starts at T_start, from startTime on for nperiod periods (< 0: infinitely many), else
+    offset. It jumps back to offset at every period's start: a time event there."""
+    amplitude = Parameter(1.0, "", "amplitude of saw tooth")
+
+    def wave(self, tp):
+        return self.amplitude * tp / self.period
+
+
+def _sinc(x):
+    """sin(x)/x, 1 at x = 0: near 0 its Taylor series (exact to rounding for |x| < 1e-3,
+    and so are its derivatives, which sin(x)/x loses to cancellation there)."""
+    x2 = x * x
+    series = 1 - x2 / 6 * (1 - x2 / 20 * (1 - x2 / 42))
+    small = ca.fabs(x) < 1e-3
+    return ca.if_else(small, series, ca.sin(x) / ca.if_else(small, 1, x))
+
+
+class Sinc(SignalSource):
+    """Sinc: y = offset + amplitude·sin(x)/x, x = 2π·f·(time − startTime), after startTime
+    (1 at x = 0: no division by zero); before it y = offset, or with ``continuous=True``
+    offset + amplitude (no jump at startTime)."""
+    options = {"continuous": False}
+    amplitude = Parameter(1.0, "", "amplitude of sine wave")
+    f = Parameter(1.0, "Hz", "frequency of sine wave")
+
+    def signal(self, t):
+        return self.amplitude * _sinc(2 * ca.pi * self.f * (t - self.startTime))
+
+    def before(self):
+        return self.amplitude if self.continuous else 0
+
+
+class _VariableFrequencyAndAmplitude(SO):
+    """y = offset + amplitude·wave(phi), der(phi) = 2π·f: the phase phi [rad] (a state,
+    start value ``phi_start``, MSL's phi(start = 0)) integrates the frequency, so a
+    changing f changes the wave's rate without a jump. amplitude and f [Hz] are the inputs
+    of those names, or with ``useConstantAmplitude`` / ``useConstantFrequency`` the
+    parameters constantAmplitude / constantFrequency (the input is then absent). No
+    startTime (MSL): an amplitude of 0 keeps y at offset."""
+    options = {"useConstantAmplitude": False, "useConstantFrequency": False}
+    constantAmplitude = Parameter(1.0, "", "constant amplitude")
+    constantFrequency = Parameter(1.0, "Hz", "constant frequency")
+    offset = Parameter(0.0, "", "offset of the sine wave")
+    amplitude = ConditionalPort(RealInput("amplitude"), "useConstantAmplitude", False)
+    f = ConditionalPort(RealInput("frequency [Hz]"), "useConstantFrequency", False)
+
+    def __init__(self, name: str | None = None, phi_start: float = 0.0, **params):
+        super().__init__(name, **params)
+        self.__dict__["phi_start"] = _start(phi_start, f"{type(self).__name__}: phi_start")
+
+    def wave(self, phi):
+        raise NotImplementedError
+
+    def structure(self, s):
+        s.state("phi", self.phi_start, "rad", "phase of the sine wave")
+
+    def physics(self, e):
+        phi = e.state("phi")
+        f = self.constantFrequency if self.useConstantFrequency else e.input(self.f)
+        amplitude = (self.constantAmplitude if self.useConstantAmplitude
+                     else e.input(self.amplitude))
+        e.derivative(phi, 2 * ca.pi * f)
+        e.output(self.y, self.offset + amplitude * self.wave(phi))
+
+
+class SineVariableFrequencyAndAmplitude(_VariableFrequencyAndAmplitude):
+    __doc__ = ("Sine with variable frequency and amplitude (MSL "
+               "Sources.SineVariableFrequencyAndAmplitude): "
+               + _VariableFrequencyAndAmplitude.__doc__.replace("wave(phi)", "sin(phi)", 1))
+
+    def wave(self, phi):
+        return ca.sin(phi)
+
+
+class CosineVariableFrequencyAndAmplitude(_VariableFrequencyAndAmplitude):
+    __doc__ = ("Cosine with variable frequency and amplitude (MSL "
+               "Sources.CosineVariableFrequencyAndAmplitude): "
+               + _VariableFrequencyAndAmplitude.__doc__.replace("wave(phi)", "cos(phi)", 1))
+
+    def wave(self, phi):
+        return ca.cos(phi)
+
+
+class LogFrequencySweep(SO):
+    """Logarithmic frequency sweep: log10(y) ramps linearly from log10(wMin) to log10(wMax)
+    over duration [s] from startTime [s]: y = wMin·(wMax/wMin)^min(1, τ/max(duration, eps)),
+    τ = time − startTime; wMin before, wMax after (no offset). wMin and wMax (> 0) are
+    required, as in MSL. Time events at the ramp's two kinks."""
+    required = ("wMin", "wMax")
+    wMin = Parameter(1.0, "", "start frequency", positive=True)
+    wMax = Parameter(1.0, "", "end frequency", positive=True)
+    startTime = Parameter(0.0, "s", "start time of frequency sweep")
+    duration = Parameter(1.0, "s", "duration of ramp (= 0.0 gives a Step)", nonnegative=True)
+
+    def physics(self, e):
+        t, duration = e.time, ca.fmax(self.duration, EPS)
+        x = ca.fmin(1, (t - self.startTime) / duration)
+        e.output(self.y, ca.if_else(t < self.startTime, self.wMin,
+                                    ca.if_else(t < self.startTime + duration,
+                                               self.wMin * (self.wMax / self.wMin) ** x,
+                                               self.wMax)))
+        e.time_event(self.startTime)
+        e.time_event(self.startTime + duration)
+
+
+class KinematicPTP(_PointToPoint):
+    """Acceleration of the fastest motion over the distances deltaq (MSL
+    Sources.KinematicPTP): each axis's speed within qd_max and acceleration within qdd_max
+    (> 0), all axes in the same phases (only the axis at its limit is at it): y = deltaq·
+    der(der(s)) on KinematicPTP2's normalized path s (accelerate, cruise, brake; bang–bang
+    when the largest speed is not reached); integrated twice it gives the positions. Time
+    events at the phase changes (the acceleration jumps there).
+
+    Constructor arguments ``deltaq``, ``qd_max``, ``qdd_max`` (numbers or sequences; MSL's
+    defaults 1, 1, 1; a one-element one holds for every axis) give the parameters
+    ``deltaq[i]`` ... (per element, changeable at simulation time); ``startTime`` [s].
+    Outputs ``y[i]``, numbered from 1, nout = the longest of the three. Difference from
+    the MSL: where no axis moves (deltaq all 0) y is 0 (MSL divides by zero there).
+    """
+    _classes: dict = {}
+    _vectors = {"deltaq": ("", "distance to move", {}, 1.0),
+                "qd_max": ("", "maximum velocity der(q)", {"positive": True}, 1.0),
+                "qdd_max": ("", "maximum acceleration der(qd)", {"positive": True}, 1.0)}
+
+    @staticmethod
+    def _outputs(nout: int) -> dict:
+        return {"y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+
+    def _distances(self) -> list:
+        return self._vector("deltaq")
+
+    def physics(self, e):
+        p = self.profile()
+        sdd = self.normalized_path(e, p)[2]
+        for k, dq in enumerate(p["dq"], start=1):
+            e.output(self.y[k], dq * sdd)
 
 
 # ---- routing (Modelica.Blocks.Routing) ---------------------------------------------------------
