@@ -20,8 +20,11 @@ at simulation time by the dotted name of a state or of any output, e.g. ``x0={"P
 
 Sources are expressions of time built with CasADi functions (``if_else``, ``floor``,
 ``interpolant``), so they are exact, differentiable where the MSL signal is, and usable
-inside optimal control problems. Discontinuous sources (Step, Pulse, table jumps) declare
-time events: the integrator restarts there. Limiter, VariableLimiter and DeadZone generate
+inside optimal control problems. Discontinuous sources (Step, Pulse, SawTooth, table jumps)
+declare time events: the integrator restarts there. After MSL 4.1 also ContinuousClock,
+Exponentials, Sinc, LogFrequencySweep, Sine/CosineVariableFrequencyAndAmplitude (the phase a
+state) and KinematicPTP; RealExpression is not needed in Python (a source is any expression
+of time: write a Component whose physics outputs it). Limiter, VariableLimiter and DeadZone generate
 state events at their kinks (MSL's default strict=false), so the simulator locates where the
 input reaches a limit; compiled with ``smooth=True`` their corners are rounded over a named
 width ``u_smooth`` (see Limiter); so does LimPID's output limiter (``y_smooth``). Blocks
