@@ -31,7 +31,8 @@ import casadi as ca
 
 from ..core import BooleanInput, Component, Parameter, RealInput, RealOutput
 from .logical import refuse_smooth
-from .signals import _Coefficients, _Matrices, _start, _StartValues
+from .signals.continuous import _Coefficients, _Matrices
+from .signals.interfaces import _start, _StartValues
 
 __all__ = ["DiscreteBlock", "DiscreteSISO", "DiscreteMIMO", "Sampler", "ZeroOrderHold",
            "FirstOrderHold", "UnitDelay", "TransferFunction", "StateSpace", "TriggeredSampler",

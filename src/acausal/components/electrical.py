@@ -26,7 +26,7 @@ from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, Negati
 from ..errors import ParameterError
 from . import rotational, translational
 from .logical import refuse_smooth
-from .signals import EPS, _start
+from .signals.interfaces import EPS, _start
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "Capacitor", "Inductor", "RotationalEMF", "EMF", "TranslationalEMF",

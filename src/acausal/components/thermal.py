@@ -14,7 +14,7 @@ higher-index network, refused when compiled; join them through a ThermalConducto
 from __future__ import annotations
 
 from ..core import Component, HeatPort_a, HeatPort_b, Parameter, RealInput, RealOutput
-from .signals import _start
+from .signals.interfaces import _start
 
 __all__ = ["Element1D", "HeatCapacitor", "ThermalConductor", "ThermalResistor", "Convection",
            "BodyRadiation", "FixedTemperature", "PrescribedTemperature", "FixedHeatFlow",

@@ -44,7 +44,7 @@ from ..core.ports import TRANSLATIONAL
 from ..errors import ParameterError
 from . import friction, interfaces, rotational
 from .interfaces import TRANSLATIONAL_AXIS, linear_law, quadratic_law
-from .signals import _limited, _limiter_region
+from .signals.nonlinear import _limited, _limiter_region
 
 Flange = TranslationalFlange
 
