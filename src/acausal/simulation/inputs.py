@@ -6,8 +6,8 @@ output grid:
 - a callable that accepts CasADi symbols (numpy ufuncs do, ``casadi.if_else`` too) becomes
   an exact expression; one that does not, or that turns them into NaN (``math.sin``,
   ``float()``: checked against its values at numbers), is sampled on a fine grid and
-  interpolated linearly, and a warning says so (give ``Samples(..., interpolation="hold")`` for a piecewise-constant
-  signal such as a sampled controller's output);
+  interpolated linearly, and a warning says so (give ``Samples(..., interpolation="hold")``
+  for a piecewise-constant signal such as a sampled controller's output);
 - ``Samples(times, values, interpolation)`` or a pair ``(times, values)`` (linear): between
   samples linear, or held (zero-order hold: each value holds until the next sample time);
   a time given twice is a step (the value jumps there). Like MSL's CombiTimeTable, linear
@@ -86,9 +86,10 @@ def _callable(name, f, t, grid) -> InputSignal:
 
 def _expression(f, t, grid) -> ca.SX | None:
     """``f(t)`` as a scalar expression of the time symbol ``t``, or None where ``f`` does not
-    give one that agrees with its values at numbers (at the grid's first, middle and last
-    time): a function that rejects CasADi symbols, or one that turns them into NaN without
-    complaint (``math.sin(t)``, ``float(t >= 1)``: Python's float() of a symbol is NaN)."""
+    give one that agrees with its finite values at numbers (at the grid's first, middle and
+    last time): a function that rejects CasADi symbols, or one that turns them into NaN
+    without complaint (``math.sin(t)``, ``float(t >= 1)``: Python's float() of a symbol is
+    NaN). Where the function has no finite value the expression's own (inf) stands."""
     try:
         with warnings.catch_warnings():      # numpy ufuncs on SX: the casadi result is wanted
             warnings.simplefilter("ignore", FutureWarning)
@@ -98,9 +99,12 @@ def _expression(f, t, grid) -> ca.SX | None:
             return None
         at = ca.Function("input", [t], [ex])
         for tk in (grid[0], grid[len(grid) // 2], grid[-1]):
-            symbolic, numeric = float(at(tk)), float(f(float(tk)))
-            if not (np.isfinite(symbolic)
-                    and abs(symbolic - numeric) <= 1e-12 * (1 + abs(numeric))):
+            symbolic = float(at(tk))
+            try:
+                numeric = float(f(float(tk)))
+            except (ArithmeticError, ValueError):     # no value there (1/(1 - t) at 1)
+                continue
+            if np.isfinite(numeric) and not abs(symbolic - numeric) <= 1e-12 * (1 + abs(numeric)):
                 return None
     except Exception:
         return None
