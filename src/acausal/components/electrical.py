@@ -19,19 +19,24 @@ diode, the control input for the switches); the diode has no smooth form.
 """
 from __future__ import annotations
 
+from types import MethodType
+
 import casadi as ca
 
 from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
                     Parameter, Pin, PositivePin, RealInput, RealOutput)
 from ..errors import ParameterError
 from . import rotational, translational
+from . import signals as sig
 from .logical import refuse_smooth
 from .signals import EPS, _start
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "Capacitor", "Inductor", "RotationalEMF", "EMF", "TranslationalEMF",
-           "ConstantVoltage", "SignalVoltage", "StepVoltage", "SineVoltage", "ConstantCurrent",
-           "SignalCurrent", "VoltageSensor", "CurrentSensor", "PowerSensor", "IdealDiode",
+           "ConstantVoltage", "SignalVoltage", "StepVoltage", "RampVoltage", "SineVoltage",
+           "CosineVoltage", "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
+           "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
+           "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent", "VoltageSensor", "CurrentSensor", "PowerSensor", "IdealDiode",
            "IdealOpeningSwitch", "IdealClosingSwitch", "IdealTransformer", "Gyrator",
            "NonlinearResistor", "IdealOpAmp", "IdealOpAmpLimited", "Diode"]
 
@@ -313,45 +318,221 @@ class SignalVoltage(_VoltageSource):
         super()._record(e, None, i)
 
 
-class _TimedVoltage(_VoltageSource):
-    """MSL Interfaces.VoltageSource: v = offset + (0 if time < startTime else signal)."""
+class _BlockSignal:
+    """The Modelica.Blocks.Sources block ``block`` that MSL's VoltageSource and
+    CurrentSource redeclare as ``signalSource``, seen from the electrical ``source`` that
+    holds it: the block's own methods (signal, before, events) on the source's values; a
+    block parameter reads the source's parameter of the same name, or the one ``renamed``
+    maps it to (the amplitude V or I), or, where the source has neither, the block's
+    default (Pulse's nperiod in PulseVoltage), as MSL's modifiers bind them."""
+
+    def __init__(self, source: Component, block: type, renamed: dict):
+        self._source, self._block, self._renamed = source, block, renamed
+
+    def __getattr__(self, name):
+        if name in self._renamed:
+            return getattr(self._source, self._renamed[name])
+        if name in type(self._source).parameters():
+            return getattr(self._source, name)
+        options = self._block.all_options()
+        if name in options:
+            return options[name]
+        declared = self._block.parameters().get(name)
+        if declared is not None:
+            return declared.default
+        attribute = getattr(self._block, name)
+        return MethodType(attribute, self) if callable(attribute) else attribute
+
+
+class _SignalSourced(OnePort):
+    """MSL Interfaces.VoltageSource / CurrentSource: the source's value [V or A] is
+    offset + (``before()`` before startTime, else ``signal(time)``) of its shape's
+    Blocks.Sources block (``_block``, whose parameter ``_role`` is the source's amplitude
+    ``_amplitude``), with the block's time events (startTime and the corners of the
+    periodic waves)."""
+    _block: type
+    _role = "amplitude"
+    _amplitude: str
+
+    def _source_value(self, e):
+        block = _BlockSignal(self, self._block, {self._role: self._amplitude})
+        for time, period in block.events():
+            e.time_event(time, period)
+        return self.offset + ca.if_else(e.time < self.startTime, block.before(),
+                                        block.signal(e.time))
+
+
+class _TimedVoltage(_SignalSourced, _VoltageSource):
+    """MSL Interfaces.VoltageSource: v = offset + (0 if time < startTime else signal) [V]."""
+    _amplitude = "V"
     offset = Parameter(0.0, "V", "voltage offset")
     startTime = Parameter(0.0, "s", "time offset")
 
-    def _signal(self, t):
-        raise NotImplementedError
-
     def _voltage(self, e):
-        e.time_event(self.startTime)
-        return self.offset + ca.if_else(e.time < self.startTime, 0,
-                                        self._signal(e.time))
+        return self._source_value(e)
 
 
-class StepVoltage(_TimedVoltage):
-    """Step voltage source: v = offset + (0 if time < startTime else V) [V]."""
-    V = Parameter(1.0, "V", "height of step")
-
-    def _signal(self, t):
-        return self.V
+# the shapes of the sources: the Blocks.Sources block and the parameters a voltage source
+# and a current source of that shape share (their amplitude, V or I, is their own)
+class _StepShape:
+    _block, _role = sig.Step, "height"
 
 
-class SineVoltage(_TimedVoltage):
-    """Sine voltage source: v = offset + V·sin(2π·f·(time − startTime) + phase) after
-    startTime, offset before [V]."""
-    V = Parameter(1.0, "V", "amplitude of sine wave")
+class _RampShape:
+    _block, _role = sig.Ramp, "height"
+    duration = Parameter(2.0, "s", "duration of ramp", positive=True)
+
+
+class _SineShape:
+    _block = sig.Sine
     phase = Parameter(0.0, "rad", "phase of sine wave")
     f = Parameter(1.0, "Hz", "frequency of sine wave")
 
-    def _signal(self, t):
-        return self.V * ca.sin(2 * ca.pi * self.f * (t - self.startTime) + self.phase)
+
+class _CosineShape:
+    _block = sig.Cosine
+    phase = Parameter(0.0, "rad", "phase of cosine wave")
+    f = Parameter(1.0, "Hz", "frequency of cosine wave")
 
 
-class ConstantCurrent(OnePort):
+class _ExpSineShape:
+    _block = sig.ExpSine
+    f = Parameter(2.0, "Hz", "frequency of sine wave")
+    phase = Parameter(0.0, "rad", "phase of sine wave")
+    damping = Parameter(1.0, "1/s", "damping coefficient of sine wave")
+
+
+class _PulseShape:
+    _block = sig.Pulse
+    width = Parameter(50.0, "%", "width of pulse in % of period", positive=True)
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+
+
+class _TrapezoidShape:
+    _block = sig.Trapezoid
+    rising = Parameter(0.0, "s", "rising duration of trapezoid", nonnegative=True)
+    width = Parameter(0.5, "s", "width duration of trapezoid", nonnegative=True)
+    falling = Parameter(0.0, "s", "falling duration of trapezoid", nonnegative=True)
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+    nperiod = Parameter(-1, "", "number of periods (< 0 means infinite number of periods)")
+
+
+class StepVoltage(_StepShape, _TimedVoltage):
+    """Step voltage source: v = offset + (0 if time < startTime else V) [V]."""
+    V = Parameter(1.0, "V", "height of step")
+
+
+class RampVoltage(_RampShape, _TimedVoltage):
+    """Ramp voltage source (MSL Sources.RampVoltage): v rises linearly from offset to
+    offset + V [V] between startTime and startTime + duration [s] (duration > 0)."""
+    V = Parameter(1.0, "V", "height of ramp")
+
+
+class SineVoltage(_SineShape, _TimedVoltage):
+    """Sine voltage source: v = offset + V·sin(2π·f·(time − startTime) + phase) after
+    startTime, offset before [V]."""
+    V = Parameter(1.0, "V", "amplitude of sine wave")
+
+
+class CosineVoltage(_CosineShape, _TimedVoltage):
+    """Cosine voltage source (MSL Sources.CosineVoltage): v = offset + V·cos(2π·f·(time −
+    startTime) + phase) after startTime, offset before [V]."""
+    V = Parameter(1.0, "V", "amplitude of cosine wave")
+
+
+class ExpSineVoltage(_ExpSineShape, _TimedVoltage):
+    """Exponentially damped sine voltage source (MSL Sources.ExpSineVoltage): v = offset +
+    V·exp(−damping·τ)·sin(2π·f·τ + phase), τ = time − startTime ≥ 0, offset before [V]."""
+    V = Parameter(1.0, "V", "amplitude of sine wave")
+
+
+class PulseVoltage(_PulseShape, _TimedVoltage):
+    """Pulse voltage source (MSL Sources.PulseVoltage): v = offset + V [V] during the first
+    ``width`` percent of every period [s] from startTime, offset otherwise; the edges are
+    time events."""
+    V = Parameter(1.0, "V", "amplitude of pulse")
+
+
+class TrapezoidVoltage(_TrapezoidShape, _TimedVoltage):
+    """Trapezoidal voltage source (MSL Sources.TrapezoidVoltage): from startTime, every
+    period [s] v rises from offset to offset + V [V] in ``rising``, holds ``width``, falls in
+    ``falling`` [s], then stays at offset; nperiod periods (< 0: infinitely many); the
+    corners are time events."""
+    V = Parameter(1.0, "V", "amplitude of trapezoid")
+
+
+class _CurrentSource(OnePort):
+    """A current source: i [A] from p through the source to n given by ``_current_value``;
+    its voltage v = p.v − n.v [V] is what the circuit sets."""
+
+    def _current_value(self, e):
+        raise NotImplementedError
+
+    def physics(self, e):
+        self._record(e, self._v(e), self._current(e, self._current_value(e)))
+
+
+class ConstantCurrent(_CurrentSource):
     """Constant current source: i = I [A] from p through the source to n."""
     I = Parameter(1.0, "A", "value of constant current")         # noqa: E741 (MSL's name)
 
-    def physics(self, e):
-        self._record(e, self._v(e), self._current(e, self.I))
+    def _current_value(self, e):
+        return self.I
+
+
+class _TimedCurrent(_SignalSourced, _CurrentSource):
+    """MSL Interfaces.CurrentSource: i = offset + (0 if time < startTime else signal) [A]
+    from p through the source to n."""
+    _amplitude = "I"
+    offset = Parameter(0.0, "A", "current offset")
+    startTime = Parameter(0.0, "s", "time offset")
+
+    def _current_value(self, e):
+        return self._source_value(e)
+
+
+class StepCurrent(_StepShape, _TimedCurrent):
+    """Step current source (MSL Sources.StepCurrent): i = offset + (0 if time < startTime
+    else I) [A]."""
+    I = Parameter(1.0, "A", "height of step")                   # noqa: E741 (MSL's name)
+
+
+class RampCurrent(_RampShape, _TimedCurrent):
+    """Ramp current source (MSL Sources.RampCurrent): i rises linearly from offset to
+    offset + I [A] between startTime and startTime + duration [s] (duration > 0)."""
+    I = Parameter(1.0, "A", "height of ramp")                   # noqa: E741 (MSL's name)
+
+
+class SineCurrent(_SineShape, _TimedCurrent):
+    """Sine current source (MSL Sources.SineCurrent): i = offset + I·sin(2π·f·(time −
+    startTime) + phase) after startTime, offset before [A]."""
+    I = Parameter(1.0, "A", "amplitude of sine wave")           # noqa: E741 (MSL's name)
+
+
+class CosineCurrent(_CosineShape, _TimedCurrent):
+    """Cosine current source (MSL Sources.CosineCurrent): i = offset + I·cos(2π·f·(time −
+    startTime) + phase) after startTime, offset before [A]."""
+    I = Parameter(1.0, "A", "amplitude of cosine wave")         # noqa: E741 (MSL's name)
+
+
+class ExpSineCurrent(_ExpSineShape, _TimedCurrent):
+    """Exponentially damped sine current source (MSL Sources.ExpSineCurrent): i = offset +
+    I·exp(−damping·τ)·sin(2π·f·τ + phase), τ = time − startTime ≥ 0, offset before [A]
+    (MSL declares I a plain Real; it is the current's amplitude)."""
+    I = Parameter(1.0, "A", "amplitude of sine wave")           # noqa: E741 (MSL's name)
+
+
+class PulseCurrent(_PulseShape, _TimedCurrent):
+    """Pulse current source (MSL Sources.PulseCurrent): i = offset + I [A] during the first
+    ``width`` percent of every period [s] from startTime, offset otherwise; the edges are
+    time events."""
+    I = Parameter(1.0, "A", "amplitude of pulse")               # noqa: E741 (MSL's name)
+
+
+class TrapezoidCurrent(_TrapezoidShape, _TimedCurrent):
+    """Trapezoidal current source (MSL Sources.TrapezoidCurrent): the TrapezoidVoltage's
+    wave for the current i [A], amplitude I; nperiod periods (< 0: infinitely many)."""
+    I = Parameter(1.0, "A", "amplitude of trapezoid")           # noqa: E741 (MSL's name)
 
 
 class SignalCurrent(OnePort):
