@@ -219,9 +219,11 @@ class Potentiometer(_TemperatureDependent):
     ``contact`` at r ∈ [0, 1] (clipped; r = 0 at pin_n, 1 at pin_p): Rp = R_actual·(1 − r)
     between pin_p and contact, Rn = R_actual·r between contact and pin_n, so
     pin_p.v − contact.v = Rp·pin_p.i and pin_n.v − contact.v = Rn·pin_n.i, the three pin
-    currents summing to zero. r is the parameter rConstant, or the input ``r`` with the
-    option ``useRinput``. T_ref defaults to 293.15 K here (MSL's). LossPower = (pin_p.v −
-    contact.v)·pin_p.i + (pin_n.v − contact.v)·pin_n.i [W]."""
+    currents summing to zero. r is the parameter rConstant (in [0, 1]), or the input ``r``
+    with the option ``useRinput``. T_ref defaults to 293.15 K here (MSL's). LossPower =
+    (pin_p.v − contact.v)·pin_p.i + (pin_n.v − contact.v)·pin_n.i [W]. At r = 0 or 1 the
+    contact is joined directly to a pin: a capacitor there is then in a loop with whatever
+    fixes that pin's potential (give it a series resistance)."""
     options = {"useRinput": False}
     R = Parameter(1.0, "Ohm", "resistance at temperature T_ref")
     T_ref = Parameter(293.15, "K", "reference temperature", positive=True)
@@ -233,6 +235,12 @@ class Potentiometer(_TemperatureDependent):
     pin_n = NegativePin("negative pin")
     r = ConditionalPort(RealInput("contact between n (r=0) and p (r=1) as input signal [1]"),
                         "useRinput")
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if self.rConstant > 1:
+            raise ParameterError(f"parameter '{type(self).__name__}.rConstant' must be <= 1 "
+                                 f"(contact between n (r=0) and p (r=1)), got {self.rConstant}")
 
     def physics(self, e):
         T = self._T_heatPort(e)
