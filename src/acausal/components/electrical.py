@@ -8,6 +8,10 @@ the current i = p.i flowing from p through the element to n (n.i = −i). Start 
 the states are constructor keywords (``Capacitor(C=1e-3, v_start=5)``, MSL's
 ``v(start=5)``), like ``x0`` at simulation.
 
+The timed sources (StepVoltage ... TrapezoidCurrent) are MSL's Interfaces.VoltageSource and
+CurrentSource: offset + the waveform of the Modelica.Blocks.Sources block MSL redeclares,
+evaluated by that block's own code in ``signals``, with its time events.
+
 A circuit needs a ``Ground``; a loop of capacitors and voltage sources, or a node fed only
 by inductors and current sources, is a higher-index network, refused when compiled with
 an error naming its parts.
@@ -41,7 +45,8 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
            "IdealDiode", "IdealOpeningSwitch", "IdealClosingSwitch", "Short", "Idle",
-           "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp", "IdealOpAmpLimited", "Diode"]
+           "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp",
+           "IdealOpAmpLimited", "Diode"]
 
 
 class Ground(Component):
