@@ -1,7 +1,8 @@
 """A model with electrical and thermal networks and heat ports as a native FMU (FMI 2.0 and
 3.0, model exchange and co-simulation) and through the pythonfmu backend: fmpy and the
 Reference FMUs' fmusim reproduce compiled.simulate to 1e-6 of each signal's peak, and the
-FMU's own result closes the model's heat balance.
+FMU's own result closes the model's heat balance. A pulse-driven RC, whose source's edges
+are periodic time events, is reproduced by fmpy likewise.
 
 The model: a DC motor whose armature resistance (α = 0.004 1/K) and load damper give their
 losses through their heat ports to a heat capacitor (the winding), which cools through a
@@ -102,3 +103,34 @@ def test_pythonfmu_backend_reproduces_simulate(exported):
     res = fmpy.simulate_fmu(str(fmus["pythonfmu"]), stop_time=T_END, output_interval=DT,
                             output=SIGNALS)
     check(ref, res["time"], lambda n: res[n])
+
+
+PULSE_END, PULSE_DT = 0.3, 0.004        # s
+
+
+@pytest.fixture(scope="module")
+def pulsed_rc(fmu_dir):
+    """A PulseVoltage (5 V, 30 % of 0.1 s from 0.02 s) charging C = 2 mF through 10 Ohm."""
+    m = acausal.Model("pulsed_rc")
+    m.source = el.PulseVoltage(V=5.0, width=30.0, period=0.1, startTime=0.02)
+    m.resistor, m.capacitor, m.ground = el.Resistor(R=10.0), el.Capacitor(C=2e-3), el.Ground()
+    for a, b in [(m.source.p, m.resistor.p), (m.resistor.n, m.capacitor.p),
+                 (m.capacitor.n, m.source.n), (m.source.n, m.ground.p)]:
+        m.connect(a, b)
+    compiled = acausal.compile(m)
+    grid = np.arange(0.0, PULSE_END + PULSE_DT / 2, PULSE_DT)
+    ref = compiled.simulate(PULSE_END, t=grid, rtol=1e-12, atol=1e-12)
+    return ref, {v: compiled.export_fmu(fmu_dir / f"pulsed_rc{v[0]}.fmu", fmi_version=v,
+                                        stop_time=PULSE_END) for v in VERSIONS}
+
+
+@pytest.mark.parametrize("kind", ["ModelExchange", "CoSimulation"])
+@pytest.mark.parametrize("version", VERSIONS)
+def test_fmpy_reproduces_a_pulse_source(pulsed_rc, version, kind):
+    ref, fmus = pulsed_rc
+    res = fmpy.simulate_fmu(str(fmus[version]), stop_time=PULSE_END,
+                            output_interval=PULSE_DT, fmi_type=kind,
+                            relative_tolerance=1e-10, output=["capacitor.v", "source.v"])
+    for n in ("capacitor.v", "source.v"):
+        v = np.interp(ref.t, res["time"], res[n])
+        assert np.max(np.abs(v - ref[n])) < RTOL * np.max(np.abs(ref[n])), n

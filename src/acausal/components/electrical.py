@@ -8,6 +8,10 @@ the current i = p.i flowing from p through the element to n (n.i = −i). Start 
 the states are constructor keywords (``Capacitor(C=1e-3, v_start=5)``, MSL's
 ``v(start=5)``), like ``x0`` at simulation.
 
+The timed sources (StepVoltage ... TrapezoidCurrent) are MSL's Interfaces.VoltageSource and
+CurrentSource: offset + the waveform of the Modelica.Blocks.Sources block MSL redeclares,
+evaluated by that block's own code in ``signals``, with its time events.
+
 A circuit needs a ``Ground``; a loop of capacitors and voltage sources, or a node fed only
 by inductors and current sources, is a higher-index network, refused when compiled with
 an error naming its parts.
@@ -19,21 +23,30 @@ diode, the control input for the switches); the diode has no smooth form.
 """
 from __future__ import annotations
 
+from types import MethodType
+
 import casadi as ca
 
 from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
                     Parameter, Pin, PositivePin, RealInput, RealOutput)
 from ..errors import ParameterError
 from . import rotational, translational
+from . import signals as sig
 from .logical import refuse_smooth
 from .signals.interfaces import EPS, _start
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
-           "Capacitor", "Inductor", "RotationalEMF", "EMF", "TranslationalEMF",
-           "ConstantVoltage", "SignalVoltage", "StepVoltage", "SineVoltage", "ConstantCurrent",
-           "SignalCurrent", "VoltageSensor", "CurrentSensor", "PowerSensor", "IdealDiode",
-           "IdealOpeningSwitch", "IdealClosingSwitch", "IdealTransformer", "Gyrator",
-           "NonlinearResistor", "IdealOpAmp", "IdealOpAmpLimited", "Diode"]
+           "VariableResistor", "VariableConductor", "Potentiometer", "Capacitor", "Inductor",
+           "VariableCapacitor", "VariableInductor", "Transformer", "VCV", "VCC", "CCV", "CCC",
+           "RotationalEMF", "EMF", "TranslationalEMF",
+           "ConstantVoltage", "SignalVoltage", "StepVoltage", "RampVoltage", "SineVoltage",
+           "CosineVoltage", "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
+           "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
+           "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
+           "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
+           "IdealDiode", "IdealOpeningSwitch", "IdealClosingSwitch", "Short", "Idle",
+           "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp",
+           "IdealOpAmpLimited", "Diode"]
 
 
 class Ground(Component):
@@ -88,8 +101,8 @@ class _ConditionalHeatPort(Component):
         e.variable("T_heatPort", T_heatPort, "K", "temperature of heatPort")
 
 
-class _TemperatureDependent(_ConditionalHeatPort, OnePort):
-    """MSL's ConditionalHeatPort(T=T_ref) of the Resistor and the Conductor: without heat
+class _TemperatureDependent(_ConditionalHeatPort):
+    """MSL's ConditionalHeatPort(T=T_ref) of the resistors and conductors: without heat
     port the device sits at T = T_ref [K], which follows T_ref also when T_ref is changed at
     simulation time (so R_actual = R, G_actual = G there); ``T`` given at construction is a
     parameter of its own (``Resistor(T=350)``, MSL's modifier: the class's twin declaring
@@ -125,16 +138,16 @@ def _with_parameter_T(cls):
     return cls
 
 
-class _PartialResistor(_TemperatureDependent):
+class _PartialResistor(_TemperatureDependent, OnePort):
     """The law of MSL's Resistor, v = R_actual·i, R_actual = R·(1 + alpha·(T_heatPort −
-    T_ref)) [Ohm], for the Resistor and MSL 3's HeatingResistor, which name the
-    resistance at T_ref differently (``_R``)."""
+    T_ref)) [Ohm], for the Resistor, the VariableResistor and MSL 3's HeatingResistor,
+    which give the resistance at T_ref differently (``_resistance``)."""
     alpha = Parameter(0.0, "1/K", "temperature coefficient of resistance (R_actual = "
                                   "R*(1 + alpha*(T_heatPort - T_ref)))")
 
     def physics(self, e):
         v, i, T = self._v(e), self._current(e), self._T_heatPort(e)
-        R_actual = self._R * self._scale(e, T)
+        R_actual = self._resistance(e) * self._scale(e, T)
         e.residual(v - R_actual * i)
         self._record(e, v, i)
         e.variable("R_actual", R_actual, "Ohm", "actual resistance = R*(1 + alpha*(T_heatPort "
@@ -149,27 +162,106 @@ class Resistor(_PartialResistor):
     unless given (MSL's T = T_ref)."""
     R = Parameter(1.0, "Ohm", "resistance at temperature T_ref")
 
-    @property
-    def _R(self):
+    def _resistance(self, e):
         return self.R
 
 
 @_with_parameter_T
-class Conductor(_TemperatureDependent):
-    """Ideal linear conductor: i = G_actual·v, G_actual = G/(1 + alpha·(T_heatPort − T_ref))
-    [S]; T_heatPort as for the Resistor."""
-    G = Parameter(1.0, "S", "conductance at temperature T_ref")
+class VariableResistor(_PartialResistor):
+    """Ideal linear resistor with variable resistance (MSL Basic.VariableResistor): the
+    Resistor's law with R [Ohm] the input ``R``, R_actual = R·(1 + alpha·(T_heatPort −
+    T_ref))."""
+    R = RealInput("resistance at temperature T_ref as input signal [Ohm]")
+
+    def _resistance(self, e):
+        return e.input(self.R)
+
+
+class _PartialConductor(_TemperatureDependent, OnePort):
+    """The law of MSL's Conductor, i = G_actual·v, G_actual = G/(1 + alpha·(T_heatPort −
+    T_ref)) [S], for the Conductor and the VariableConductor (``_conductance``)."""
     alpha = Parameter(0.0, "1/K", "temperature coefficient of conductance (G_actual = "
                                   "G/(1 + alpha*(T_heatPort - T_ref)))")
 
+    def _conductance(self, e):
+        raise NotImplementedError
+
     def physics(self, e):
         v, T = self._v(e), self._T_heatPort(e)
-        G_actual = self.G / self._scale(e, T)
+        G_actual = self._conductance(e) / self._scale(e, T)
         i = self._current(e, G_actual * v)
         self._record(e, v, i)
         e.variable("G_actual", G_actual, "S", "actual conductance = G/(1 + alpha*(T_heatPort "
                                               "- T_ref))")
         self._losses(e, v * i, T)
+
+
+@_with_parameter_T
+class Conductor(_PartialConductor):
+    """Ideal linear conductor: i = G_actual·v, G_actual = G/(1 + alpha·(T_heatPort − T_ref))
+    [S]; T_heatPort as for the Resistor."""
+    G = Parameter(1.0, "S", "conductance at temperature T_ref")
+
+    def _conductance(self, e):
+        return self.G
+
+
+@_with_parameter_T
+class VariableConductor(_PartialConductor):
+    """Ideal linear conductor with variable conductance (MSL Basic.VariableConductor): the
+    Conductor's law with G [S] the input ``G``, G_actual = G/(1 + alpha·(T_heatPort −
+    T_ref))."""
+    G = RealInput("conductance at temperature T_ref as input signal [S]")
+
+    def _conductance(self, e):
+        return e.input(self.G)
+
+
+@_with_parameter_T
+class Potentiometer(_TemperatureDependent):
+    """Adjustable resistor (MSL Basic.Potentiometer): the resistance R_actual = R·(1 +
+    alpha·(T_heatPort − T_ref)) [Ohm] between pin_p and pin_n, split by the sliding
+    ``contact`` at r ∈ [0, 1] (clipped; r = 0 at pin_n, 1 at pin_p): Rp = R_actual·(1 − r)
+    between pin_p and contact, Rn = R_actual·r between contact and pin_n, so
+    pin_p.v − contact.v = Rp·pin_p.i and pin_n.v − contact.v = Rn·pin_n.i, the three pin
+    currents summing to zero. r is the parameter rConstant (in [0, 1]), or the input ``r``
+    with the option ``useRinput``. T_ref defaults to 293.15 K here (MSL's). LossPower =
+    (pin_p.v − contact.v)·pin_p.i + (pin_n.v − contact.v)·pin_n.i [W]. At r = 0 or 1 the
+    contact is joined directly to a pin: a capacitor there is then in a loop with whatever
+    fixes that pin's potential (give it a series resistance)."""
+    options = {"useRinput": False}
+    R = Parameter(1.0, "Ohm", "resistance at temperature T_ref")
+    T_ref = Parameter(293.15, "K", "reference temperature", positive=True)
+    alpha = Parameter(0.0, "1/K", "temperature coefficient of resistance (R_actual = "
+                                  "R*(1 + alpha*(T_heatPort - T_ref)))")
+    rConstant = Parameter(0.5, "1", "contact between n (r=0) and p (r=1)", nonnegative=True)
+    pin_p = PositivePin("positive pin")
+    contact = PositivePin("sliding contact")
+    pin_n = NegativePin("negative pin")
+    r = ConditionalPort(RealInput("contact between n (r=0) and p (r=1) as input signal [1]"),
+                        "useRinput")
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if self.rConstant > 1:
+            raise ParameterError(f"parameter '{type(self).__name__}.rConstant' must be <= 1 "
+                                 f"(contact between n (r=0) and p (r=1)), got {self.rConstant}")
+
+    def physics(self, e):
+        T = self._T_heatPort(e)
+        r = e.input(self.r) if self.useRinput else self.rConstant
+        r = ca.fmin(1, ca.fmax(0, r))
+        R_actual = self.R * self._scale(e, T)
+        Rp, Rn = R_actual * (1 - r), R_actual * r
+        ip, i_n = e.flow_of(self.pin_p), e.flow_of(self.pin_n)
+        e.flow(self.contact, -(ip + i_n))
+        vp = e.potential(self.pin_p) - e.potential(self.contact)
+        vn = e.potential(self.pin_n) - e.potential(self.contact)
+        e.residual(vp - Rp * ip)
+        e.residual(vn - Rn * i_n)
+        e.variable("Rp", Rp, "Ohm", "actual resistance between pin_p and contact")
+        e.variable("Rn", Rn, "Ohm", "actual resistance between contact and pin_n")
+        self._losses(e, vp * ip + vn * i_n, T)
 
 
 class HeatingResistor(_PartialResistor):
@@ -188,9 +280,18 @@ class HeatingResistor(_PartialResistor):
                                  "without one use Resistor(R=R_ref)")
         super().__init__(name, **params)
 
-    @property
-    def _R(self):
+    def _resistance(self, e):
         return self.R_ref
+
+
+class _InitialValue(OnePort):
+    """MSL's IC and UIC of the variable capacitor and inductor: with the option ``UIC`` an
+    initial equation (v = IC, i = IC) holds at the start."""
+    options = {"UIC": False}
+
+    def _use_initial_condition(self, e, value, what: str):
+        if self.UIC:
+            e.initial(value - self.IC, f"{what} = IC (UIC = true)")
 
 
 class Capacitor(OnePort):
@@ -227,6 +328,49 @@ class Inductor(OnePort):
         self._current(e, i)
         e.derivative(i, v / self.L)
         self._record(e, v=v)
+
+
+class VariableCapacitor(_InitialValue):
+    """Ideal linear capacitor with variable capacitance (MSL Basic.VariableCapacitor): the
+    charge Q = max(C, Cmin)·v [A.s] (a state, start 0) with i = der(Q); C [F] the input
+    ``C`` (C ≥ 0 asserted), Cmin [F] its lower bound (> 0: no change of index where C
+    reaches 0). With the option ``UIC`` the initial equation v = IC [V]."""
+    C = RealInput("capacitance as input signal [F]")
+    Cmin = Parameter(EPS, "F", "lower bound for variable capacitance", positive=True)
+    IC = Parameter(0.0, "V", "initial value")
+
+    def structure(self, s):
+        s.state("Q", 0.0, "A.s", "electric charge")
+
+    def physics(self, e):
+        Q, C, i = e.state("Q"), e.input(self.C), self._current(e)
+        e.assertion(C >= 0, "Capacitance C has to be >= 0!")
+        v = Q / ca.fmax(C, self.Cmin)
+        e.residual(self._v(e) - v)
+        e.derivative(Q, i)
+        self._record(e, v, i)
+        self._use_initial_condition(e, v, "v")
+
+
+class VariableInductor(_InitialValue):
+    """Ideal linear inductor with variable inductance (MSL Basic.VariableInductor): the flux
+    Psi = max(L, Lmin)·i [Wb] (a state, start 0) with v = der(Psi); L [H] the input ``L``
+    (L ≥ 0 asserted), Lmin [H] its lower bound (> 0). With the option ``UIC`` the initial
+    equation i = IC [A]."""
+    L = RealInput("inductance as input signal [H]")
+    Lmin = Parameter(EPS, "H", "lower bound for variable inductance", positive=True)
+    IC = Parameter(0.0, "A", "initial value")
+
+    def structure(self, s):
+        s.state("Psi", 0.0, "Wb", "magnetic flux")
+
+    def physics(self, e):
+        Psi, L, v = e.state("Psi"), e.input(self.L), self._v(e)
+        e.assertion(L >= 0, "Inductance L has to be >= 0!")
+        i = self._current(e, Psi / ca.fmax(L, self.Lmin))
+        e.derivative(Psi, v)
+        self._record(e, v, i)
+        self._use_initial_condition(e, i, "i")
 
 
 class _PartialEMF(OnePort):
@@ -313,45 +457,221 @@ class SignalVoltage(_VoltageSource):
         super()._record(e, None, i)
 
 
-class _TimedVoltage(_VoltageSource):
-    """MSL Interfaces.VoltageSource: v = offset + (0 if time < startTime else signal)."""
+class _BlockSignal:
+    """The Modelica.Blocks.Sources block ``block`` that MSL's VoltageSource and
+    CurrentSource redeclare as ``signalSource``, seen from the electrical ``source`` that
+    holds it: the block's own methods (signal, before, events) on the source's values; a
+    block parameter reads the source's parameter of the same name, or the one ``renamed``
+    maps it to (the amplitude V or I), or, where the source has neither, the block's
+    default (Pulse's nperiod in PulseVoltage), as MSL's modifiers bind them."""
+
+    def __init__(self, source: Component, block: type, renamed: dict):
+        self._source, self._block, self._renamed = source, block, renamed
+
+    def __getattr__(self, name):
+        if name in self._renamed:
+            return getattr(self._source, self._renamed[name])
+        if name in type(self._source).parameters():
+            return getattr(self._source, name)
+        options = self._block.all_options()
+        if name in options:
+            return options[name]
+        declared = self._block.parameters().get(name)
+        if declared is not None:
+            return declared.default
+        attribute = getattr(self._block, name)
+        return MethodType(attribute, self) if callable(attribute) else attribute
+
+
+class _SignalSourced(OnePort):
+    """MSL Interfaces.VoltageSource / CurrentSource: the source's value [V or A] is
+    offset + (``before()`` before startTime, else ``signal(time)``) of its shape's
+    Blocks.Sources block (``_block``, whose parameter ``_role`` is the source's amplitude
+    ``_amplitude``), with the block's time events (startTime and the corners of the
+    periodic waves)."""
+    _block: type
+    _role = "amplitude"
+    _amplitude: str
+
+    def _source_value(self, e):
+        block = _BlockSignal(self, self._block, {self._role: self._amplitude})
+        for time, period in block.events():
+            e.time_event(time, period)
+        return self.offset + ca.if_else(e.time < self.startTime, block.before(),
+                                        block.signal(e.time))
+
+
+class _TimedVoltage(_SignalSourced, _VoltageSource):
+    """MSL Interfaces.VoltageSource: v = offset + (0 if time < startTime else signal) [V]."""
+    _amplitude = "V"
     offset = Parameter(0.0, "V", "voltage offset")
     startTime = Parameter(0.0, "s", "time offset")
 
-    def _signal(self, t):
-        raise NotImplementedError
-
     def _voltage(self, e):
-        e.time_event(self.startTime)
-        return self.offset + ca.if_else(e.time < self.startTime, 0,
-                                        self._signal(e.time))
+        return self._source_value(e)
 
 
-class StepVoltage(_TimedVoltage):
-    """Step voltage source: v = offset + (0 if time < startTime else V) [V]."""
-    V = Parameter(1.0, "V", "height of step")
-
-    def _signal(self, t):
-        return self.V
+# the shapes of the sources: the Blocks.Sources block and the parameters a voltage source
+# and a current source of that shape share (their amplitude, V or I, is their own)
+class _StepShape:
+    _block, _role = sig.Step, "height"
 
 
-class SineVoltage(_TimedVoltage):
-    """Sine voltage source: v = offset + V·sin(2π·f·(time − startTime) + phase) after
-    startTime, offset before [V]."""
-    V = Parameter(1.0, "V", "amplitude of sine wave")
+class _RampShape:
+    _block, _role = sig.Ramp, "height"
+    duration = Parameter(2.0, "s", "duration of ramp", positive=True)
+
+
+class _SineShape:
+    _block = sig.Sine
     phase = Parameter(0.0, "rad", "phase of sine wave")
     f = Parameter(1.0, "Hz", "frequency of sine wave")
 
-    def _signal(self, t):
-        return self.V * ca.sin(2 * ca.pi * self.f * (t - self.startTime) + self.phase)
+
+class _CosineShape:
+    _block = sig.Cosine
+    phase = Parameter(0.0, "rad", "phase of cosine wave")
+    f = Parameter(1.0, "Hz", "frequency of cosine wave")
 
 
-class ConstantCurrent(OnePort):
+class _ExpSineShape:
+    _block = sig.ExpSine
+    f = Parameter(2.0, "Hz", "frequency of sine wave")
+    phase = Parameter(0.0, "rad", "phase of sine wave")
+    damping = Parameter(1.0, "1/s", "damping coefficient of sine wave")
+
+
+class _PulseShape:
+    _block = sig.Pulse
+    width = Parameter(50.0, "%", "width of pulse in % of period", positive=True)
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+
+
+class _TrapezoidShape:
+    _block = sig.Trapezoid
+    rising = Parameter(0.0, "s", "rising duration of trapezoid", nonnegative=True)
+    width = Parameter(0.5, "s", "width duration of trapezoid", nonnegative=True)
+    falling = Parameter(0.0, "s", "falling duration of trapezoid", nonnegative=True)
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+    nperiod = Parameter(-1, "", "number of periods (< 0 means infinite number of periods)")
+
+
+class StepVoltage(_StepShape, _TimedVoltage):
+    """Step voltage source: v = offset + (0 if time < startTime else V) [V]."""
+    V = Parameter(1.0, "V", "height of step")
+
+
+class RampVoltage(_RampShape, _TimedVoltage):
+    """Ramp voltage source (MSL Sources.RampVoltage): v rises linearly from offset to
+    offset + V [V] between startTime and startTime + duration [s] (duration > 0)."""
+    V = Parameter(1.0, "V", "height of ramp")
+
+
+class SineVoltage(_SineShape, _TimedVoltage):
+    """Sine voltage source: v = offset + V·sin(2π·f·(time − startTime) + phase) after
+    startTime, offset before [V]."""
+    V = Parameter(1.0, "V", "amplitude of sine wave")
+
+
+class CosineVoltage(_CosineShape, _TimedVoltage):
+    """Cosine voltage source (MSL Sources.CosineVoltage): v = offset + V·cos(2π·f·(time −
+    startTime) + phase) after startTime, offset before [V]."""
+    V = Parameter(1.0, "V", "amplitude of cosine wave")
+
+
+class ExpSineVoltage(_ExpSineShape, _TimedVoltage):
+    """Exponentially damped sine voltage source (MSL Sources.ExpSineVoltage): v = offset +
+    V·exp(−damping·τ)·sin(2π·f·τ + phase), τ = time − startTime ≥ 0, offset before [V]."""
+    V = Parameter(1.0, "V", "amplitude of sine wave")
+
+
+class PulseVoltage(_PulseShape, _TimedVoltage):
+    """Pulse voltage source (MSL Sources.PulseVoltage): v = offset + V [V] during the first
+    ``width`` percent of every period [s] from startTime, offset otherwise; the edges are
+    time events."""
+    V = Parameter(1.0, "V", "amplitude of pulse")
+
+
+class TrapezoidVoltage(_TrapezoidShape, _TimedVoltage):
+    """Trapezoidal voltage source (MSL Sources.TrapezoidVoltage): from startTime, every
+    period [s] v rises from offset to offset + V [V] in ``rising``, holds ``width``, falls in
+    ``falling`` [s], then stays at offset; nperiod periods (< 0: infinitely many); the
+    corners are time events."""
+    V = Parameter(1.0, "V", "amplitude of trapezoid")
+
+
+class _CurrentSource(OnePort):
+    """A current source: i [A] from p through the source to n given by ``_current_value``;
+    its voltage v = p.v − n.v [V] is what the circuit sets."""
+
+    def _current_value(self, e):
+        raise NotImplementedError
+
+    def physics(self, e):
+        self._record(e, self._v(e), self._current(e, self._current_value(e)))
+
+
+class ConstantCurrent(_CurrentSource):
     """Constant current source: i = I [A] from p through the source to n."""
     I = Parameter(1.0, "A", "value of constant current")         # noqa: E741 (MSL's name)
 
-    def physics(self, e):
-        self._record(e, self._v(e), self._current(e, self.I))
+    def _current_value(self, e):
+        return self.I
+
+
+class _TimedCurrent(_SignalSourced, _CurrentSource):
+    """MSL Interfaces.CurrentSource: i = offset + (0 if time < startTime else signal) [A]
+    from p through the source to n."""
+    _amplitude = "I"
+    offset = Parameter(0.0, "A", "current offset")
+    startTime = Parameter(0.0, "s", "time offset")
+
+    def _current_value(self, e):
+        return self._source_value(e)
+
+
+class StepCurrent(_StepShape, _TimedCurrent):
+    """Step current source (MSL Sources.StepCurrent): i = offset + (0 if time < startTime
+    else I) [A]."""
+    I = Parameter(1.0, "A", "height of step")                   # noqa: E741 (MSL's name)
+
+
+class RampCurrent(_RampShape, _TimedCurrent):
+    """Ramp current source (MSL Sources.RampCurrent): i rises linearly from offset to
+    offset + I [A] between startTime and startTime + duration [s] (duration > 0)."""
+    I = Parameter(1.0, "A", "height of ramp")                   # noqa: E741 (MSL's name)
+
+
+class SineCurrent(_SineShape, _TimedCurrent):
+    """Sine current source (MSL Sources.SineCurrent): i = offset + I·sin(2π·f·(time −
+    startTime) + phase) after startTime, offset before [A]."""
+    I = Parameter(1.0, "A", "amplitude of sine wave")           # noqa: E741 (MSL's name)
+
+
+class CosineCurrent(_CosineShape, _TimedCurrent):
+    """Cosine current source (MSL Sources.CosineCurrent): i = offset + I·cos(2π·f·(time −
+    startTime) + phase) after startTime, offset before [A]."""
+    I = Parameter(1.0, "A", "amplitude of cosine wave")         # noqa: E741 (MSL's name)
+
+
+class ExpSineCurrent(_ExpSineShape, _TimedCurrent):
+    """Exponentially damped sine current source (MSL Sources.ExpSineCurrent): i = offset +
+    I·exp(−damping·τ)·sin(2π·f·τ + phase), τ = time − startTime ≥ 0, offset before [A]
+    (MSL declares I a plain Real; it is the current's amplitude)."""
+    I = Parameter(1.0, "A", "amplitude of sine wave")           # noqa: E741 (MSL's name)
+
+
+class PulseCurrent(_PulseShape, _TimedCurrent):
+    """Pulse current source (MSL Sources.PulseCurrent): i = offset + I [A] during the first
+    ``width`` percent of every period [s] from startTime, offset otherwise; the edges are
+    time events."""
+    I = Parameter(1.0, "A", "amplitude of pulse")               # noqa: E741 (MSL's name)
+
+
+class TrapezoidCurrent(_TrapezoidShape, _TimedCurrent):
+    """Trapezoidal current source (MSL Sources.TrapezoidCurrent): the TrapezoidVoltage's
+    wave for the current i [A], amplitude I; nperiod periods (< 0: infinitely many)."""
+    I = Parameter(1.0, "A", "amplitude of trapezoid")           # noqa: E741 (MSL's name)
 
 
 class SignalCurrent(OnePort):
@@ -364,6 +684,16 @@ class SignalCurrent(OnePort):
 
 
 # ---- sensors ------------------------------------------------------------------------------
+class PotentialSensor(Component):
+    """Potential of the pin p, phi = p.v [V] (MSL Sensors.PotentialSensor); no current."""
+    p = PositivePin("pin to be measured")
+    phi = RealOutput("absolute voltage potential as output signal [V]")
+
+    def physics(self, e):
+        e.flow(self.p, 0.0)
+        e.output(self.phi, e.potential(self.p))
+
+
 class VoltageSensor(OnePort):
     """Voltage between p and n, v = p.v − n.v [V]; no current."""
     v = RealOutput("voltage between pin p and n (= p.v - n.v) as output signal [V]")
@@ -392,13 +722,31 @@ class PowerSensor(Component):
     nv = NegativePin("negative pin, voltage path")
     power = RealOutput("instantaneous power as output signal [W]")
 
-    def physics(self, e):
+    def _current_and_voltage(self, e):
+        """The current i from pc to nc [A] and the voltage pv.v − nv.v [V]."""
         i = e.flow_of(self.pc)
         e.flow(self.nc, -i)
         e.residual(e.potential(self.pc) - e.potential(self.nc))
         e.flow(self.pv, 0.0)
         e.flow(self.nv, 0.0)
-        e.output(self.power, (e.potential(self.pv) - e.potential(self.nv)) * i)
+        return i, e.potential(self.pv) - e.potential(self.nv)
+
+    def physics(self, e):
+        i, v = self._current_and_voltage(e)
+        e.output(self.power, v * i)
+
+
+class MultiSensor(PowerSensor):
+    """The PowerSensor with its current and voltage as outputs too (MSL
+    Sensors.MultiSensor): i = pc.i [A], v = pv.v − nv.v [V], power = v·i [W]."""
+    i = RealOutput("current as output signal [A]")
+    v = RealOutput("voltage as output signal [V]")
+
+    def physics(self, e):
+        i, v = self._current_and_voltage(e)
+        e.output(self.i, i)
+        e.output(self.v, v)
+        e.output(self.power, v * i)
 
 
 # ---- ideal switching elements (Modelica.Electrical.Analog.Ideal) --------------------------
@@ -488,6 +836,24 @@ class IdealClosingSwitch(_IdealSwitching):
         return 1 - e.input(self.control)
 
 
+class Short(OnePort):
+    """Short cut branch (MSL Ideal.Short): v = 0 [V]; its current i [A] is what the circuit
+    sends through it."""
+
+    def physics(self, e):
+        e.residual(self._v(e))
+        self._record(e, i=self._current(e))
+
+
+class Idle(OnePort):
+    """Idle branch (MSL Ideal.Idle): i = 0 [A]; its voltage v [V] is what the circuit
+    sets."""
+
+    def physics(self, e):
+        self._current(e, 0.0)
+        self._record(e, v=self._v(e))
+
+
 # ---- two-ports ------------------------------------------------------------------------------
 class TwoPort(Component):
     """Two pin pairs (MSL Interfaces.TwoPort): v1 = p1.v − n1.v, i1 = p1.i = −n1.i [V, A]
@@ -542,6 +908,97 @@ class IdealTransformer(TwoPort):
         self._record(e, v1, i1, v2, i2)
         e.variable("im1", im1, "A", "magnetization current w.r.t. primary side")
         e.variable("psim1", self.Lm1 * im1, "Wb", "magnetic flux w.r.t. primary side")
+
+
+class Transformer(TwoPort):
+    """Transformer with two ports (MSL Basic.Transformer), coupled inductors: v1 = L1·der(i1)
+    + M·der(i2), v2 = M·der(i1) + L2·der(i2) [V]; states i1, i2 [A] (start ``i1_start``,
+    ``i2_start``, 0). L1, L2 [H] primary and secondary inductances, M [H] the coupling
+    inductance, with L1·L2 > M² (the derivatives are solved for: at perfect coupling, M² =
+    L1·L2, use the IdealTransformer with considerMagnetization). L1, L2 and M have no
+    default (as in MSL). Records the coupling's dv = v1 − v2 = (L1 − M)·der(i1) + (M −
+    L2)·der(i2) [V] as MSL does."""
+    required = ("L1", "L2", "M")
+    L1 = Parameter(1.0, "H", "primary inductance", positive=True)
+    L2 = Parameter(1.0, "H", "secondary inductance", positive=True)
+    M = Parameter(1.0, "H", "coupling inductance")
+
+    def __init__(self, name: str | None = None, *, i1_start=0.0, i2_start=0.0, **params):
+        super().__init__(name, **params)
+        if self.L1 * self.L2 - self.M ** 2 <= 0:
+            raise ParameterError(
+                f"{type(self).__name__}{f' {name!r}' if name else ''}: L1*L2 = "
+                f"{self.L1 * self.L2:g} H^2 must exceed M^2 = {self.M ** 2:g} H^2 (coupled "
+                f"inductors whose derivatives are solved for); for perfect coupling use "
+                f"IdealTransformer(considerMagnetization=True)")
+        for key, value in (("i1_start", i1_start), ("i2_start", i2_start)):
+            self.__dict__[key] = _start(value, f"{type(self).__name__}: {key}")
+
+    def structure(self, s):
+        s.state("i1", self.i1_start, "A", "current of port 1")
+        s.state("i2", self.i2_start, "A", "current of port 2")
+
+    def physics(self, e):
+        i1, i2 = e.state("i1"), e.state("i2")
+        v1, _ = self._port(e, 1, i1)
+        v2, _ = self._port(e, 2, i2)
+        det = self.L1 * self.L2 - self.M ** 2
+        e.assertion(det > 0, "L1*L2 must exceed M^2")
+        di1 = (self.L2 * v1 - self.M * v2) / det
+        di2 = (self.L1 * v2 - self.M * v1) / det
+        e.derivative(i1, di1)
+        e.derivative(i2, di2)
+        self._record(e, v1, i1, v2, i2)
+        e.variable("dv", (self.L1 - self.M) * di1 + (self.M - self.L2) * di2, "V",
+                   "difference between voltage drop over primary inductor and voltage drop "
+                   "over secondary inductor")
+
+
+class VCV(TwoPort):
+    """Linear voltage-controlled voltage source (MSL Basic.VCV): v2 = gain·v1 [V], i1 = 0;
+    i2 [A] is what the circuit draws."""
+    gain = Parameter(1.0, "1", "voltage gain")
+
+    def physics(self, e):
+        v1, i1 = self._port(e, 1, 0.0)
+        v2, i2 = self._port(e, 2)
+        e.residual(v2 - self.gain * v1)
+        self._record(e, v1, i1, v2, i2)
+
+
+class VCC(TwoPort):
+    """Linear voltage-controlled current source (MSL Basic.VCC): i2 = transConductance·v1
+    [A], i1 = 0."""
+    transConductance = Parameter(1.0, "S", "transconductance")
+
+    def physics(self, e):
+        v1, i1 = self._port(e, 1, 0.0)
+        v2, i2 = self._port(e, 2, self.transConductance * v1)
+        self._record(e, v1, i1, v2, i2)
+
+
+class CCV(TwoPort):
+    """Linear current-controlled voltage source (MSL Basic.CCV): v2 = transResistance·i1
+    [V], v1 = 0."""
+    transResistance = Parameter(1.0, "Ohm", "transresistance")
+
+    def physics(self, e):
+        v1, i1 = self._port(e, 1)
+        v2, i2 = self._port(e, 2)
+        e.residual(v1)
+        e.residual(v2 - self.transResistance * i1)
+        self._record(e, v1, i1, v2, i2)
+
+
+class CCC(TwoPort):
+    """Linear current-controlled current source (MSL Basic.CCC): i2 = gain·i1 [A], v1 = 0."""
+    gain = Parameter(1.0, "1", "current gain")
+
+    def physics(self, e):
+        v1, i1 = self._port(e, 1)
+        v2, i2 = self._port(e, 2, self.gain * i1)
+        e.residual(v1)
+        self._record(e, v1, i1, v2, i2)
 
 
 class Gyrator(TwoPort):
