@@ -13,7 +13,7 @@ from scipy.integrate import simpson, solve_ivp
 import acausal
 from acausal.components import rotational as rot
 from acausal.components import translational as tr
-from acausal.core import Component, RealOutput
+from time_signals import TimeSignal
 
 TOL = 1e-6
 
@@ -37,18 +37,6 @@ def hand(rhs, y0, t):
 def connect_all(m, *pairs):
     for a, b in pairs:
         m.connect(a, b)
-
-
-class TimeSignal(Component):
-    """Test-local signal source: y = fn(t), fn a CasADi-compatible function of time."""
-    y = RealOutput("fn(time)")
-
-    def __init__(self, fn, name=None):
-        super().__init__(name)
-        self.__dict__["_fn"] = fn
-
-    def physics(self, e):
-        e.output(self.y, self._fn(e.time))
 
 
 # =========================================================================================

@@ -9,12 +9,13 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy.integrate import quad, solve_ivp
+from scipy.integrate import solve_ivp
 
 import acausal
 from acausal import Model, ParameterError, StructureError
 from acausal.components import signals as sg
 from acausal.components.translational import Force, Mass, PositionSensor
+from time_signals import after, cumulative_integral
 
 SIM = dict(rtol=1e-10, atol=1e-12)   # quadratures over 2-3 s: rtol 1e-8 leaves ~1e-6 errors
 
@@ -28,34 +29,20 @@ def _source_model(src):
     return m
 
 
-def _cumulative_integral(f, t, breaks=()):
-    """∫_0^t f for every grid time, by adaptive quadrature between grid points."""
-    out = np.zeros_like(t)
-    for i in range(1, t.size):
-        pts = [b for b in breaks if t[i - 1] < b < t[i]]
-        out[i] = out[i - 1] + quad(f, t[i - 1], t[i], points=pts or None, limit=200,
-                                   epsabs=1e-13, epsrel=1e-13)[0]
-    return out
-
-
-def _after(t, t0, value):
-    return np.where(t < t0, 0.0, value)
-
-
 # ---- sources: output and integral vs the MSL formulas ----------------------------------------
 TWO_PI = 2 * np.pi
 
 SOURCES = {
     "Constant": (lambda: sg.Constant(k=2.5), lambda t: 2.5 + 0 * t, ()),
     "Step": (lambda: sg.Step(height=3.0, offset=-1.0, startTime=0.7),
-             lambda t: -1.0 + _after(t, 0.7, 3.0), (0.7,)),
+             lambda t: -1.0 + after(t, 0.7, 3.0), (0.7,)),
     "Ramp": (lambda: sg.Ramp(height=2.0, duration=1.2, offset=0.5, startTime=0.3),
-             lambda t: 0.5 + _after(t, 0.3, np.clip((t - 0.3) / 1.2, 0, 1) * 2.0), (0.3, 1.5)),
+             lambda t: 0.5 + after(t, 0.3, np.clip((t - 0.3) / 1.2, 0, 1) * 2.0), (0.3, 1.5)),
     "Sine": (lambda: sg.Sine(amplitude=1.5, f=0.8, phase=0.4, offset=0.2, startTime=0.5),
-             lambda t: 0.2 + _after(t, 0.5, 1.5 * np.sin(TWO_PI * 0.8 * (t - 0.5) + 0.4)),
+             lambda t: 0.2 + after(t, 0.5, 1.5 * np.sin(TWO_PI * 0.8 * (t - 0.5) + 0.4)),
              (0.5,)),
     "Cosine": (lambda: sg.Cosine(amplitude=0.7, f=1.3, phase=-0.2, offset=1.0, startTime=0.25),
-               lambda t: 1.0 + _after(t, 0.25, 0.7 * np.cos(TWO_PI * 1.3 * (t - 0.25) - 0.2)),
+               lambda t: 1.0 + after(t, 0.25, 0.7 * np.cos(TWO_PI * 1.3 * (t - 0.25) - 0.2)),
                (0.25,)),
     # MSL's continuous = true: before startTime the value the sine starts from, no jump
     "Sine_continuous": (lambda: sg.Sine(amplitude=1.5, f=0.8, phase=0.4, offset=0.2,
@@ -70,7 +57,7 @@ SOURCES = {
                           (0.25,)),
     "ExpSine": (lambda: sg.ExpSine(amplitude=2.0, f=1.5, phase=0.3, damping=0.8, offset=-0.3,
                                    startTime=0.4),
-                lambda t: -0.3 + _after(t, 0.4, 2.0 * np.exp(-0.8 * (t - 0.4))
+                lambda t: -0.3 + after(t, 0.4, 2.0 * np.exp(-0.8 * (t - 0.4))
                                         * np.sin(TWO_PI * 1.5 * (t - 0.4) + 0.3)), (0.4,)),
     "ExpSine_defaults": (lambda: sg.ExpSine(),      # MSL defaults: f = 2 Hz, damping = 1/s
                          lambda t: np.exp(-t) * np.sin(TWO_PI * 2.0 * t), ()),
@@ -83,7 +70,7 @@ SOURCES = {
     # rise 0.2 s, hold 0.3 s, fall 0.1 s, period 1 s, infinitely many periods
     "Trapezoid": (lambda: sg.Trapezoid(amplitude=1.5, rising=0.2, width=0.3, falling=0.1,
                                        period=1.0, offset=-0.5, startTime=0.1),
-                  lambda t: -0.5 + _after(t, 0.1, np.interp(np.mod(t - 0.1, 1.0),
+                  lambda t: -0.5 + after(t, 0.1, np.interp(np.mod(t - 0.1, 1.0),
                                                             [0, 0.2, 0.5, 0.6, 1.0],
                                                             [0, 1.5, 1.5, 0, 0])),
                   (0.1, 0.3, 0.6, 0.7, 1.1, 1.3, 1.6, 1.7, 2.1, 2.3, 2.6, 2.7)),
@@ -99,7 +86,7 @@ def test_source_and_its_integral(name):
     res = acausal.compile(_source_model(make())).simulate(3.0, t=t, max_step=max_step, **SIM)
     np.testing.assert_allclose(res["src.y"], f(t), rtol=0, atol=1e-12)
     np.testing.assert_allclose(res["integ.u"], f(t), rtol=0, atol=1e-12)
-    np.testing.assert_allclose(res["integ.y"], _cumulative_integral(f, t, breaks),
+    np.testing.assert_allclose(res["integ.y"], cumulative_integral(f, t, breaks),
                                rtol=0, atol=1e-7)
 
 
@@ -109,10 +96,10 @@ def test_source_parameters_change_at_simulation_time():
     t = np.linspace(0.0, 2.0, 41)
     res = c.simulate(2.0, t=t, params={"src.amplitude": 3.0, "src.f": 0.25,
                                        "src.startTime": 0.5, "src.offset": 1.0}, **SIM)
-    ref = 1.0 + _after(t, 0.5, 3.0 * np.sin(TWO_PI * 0.25 * (t - 0.5)))
+    ref = 1.0 + after(t, 0.5, 3.0 * np.sin(TWO_PI * 0.25 * (t - 0.5)))
     np.testing.assert_allclose(res["src.y"], ref, atol=1e-12)
-    np.testing.assert_allclose(res["integ.y"], _cumulative_integral(
-        lambda s: 1.0 + _after(s, 0.5, 3.0 * np.sin(TWO_PI * 0.25 * (s - 0.5))), t, (0.5,)),
+    np.testing.assert_allclose(res["integ.y"], cumulative_integral(
+        lambda s: 1.0 + after(s, 0.5, 3.0 * np.sin(TWO_PI * 0.25 * (s - 0.5))), t, (0.5,)),
         atol=1e-7)
 
 
@@ -120,7 +107,7 @@ def test_ramp_with_zero_duration_is_a_step():
     t = np.linspace(0.0, 1.0, 11)
     res = acausal.compile(_source_model(sg.Ramp(height=2.0, duration=0.0, startTime=0.45))) \
         .simulate(1.0, t=t, **SIM)
-    np.testing.assert_allclose(res["src.y"], _after(t, 0.45, 2.0), atol=0)
+    np.testing.assert_allclose(res["src.y"], after(t, 0.45, 2.0), atol=0)
 
 
 # ---- TimeTable --------------------------------------------------------------------------------
@@ -146,11 +133,11 @@ def test_timetable_vs_numpy_interp_with_offset_starttime_timescale():
     t = np.linspace(0.0, 1.8, 73)                # stays inside the table: (t - 0.4)/0.5 <= 2.8
     src = sg.TimeTable(table=table, offset=offset, startTime=start, timeScale=scale)
     res = acausal.compile(_source_model(src)).simulate(t[-1], t=t, **SIM)
-    ref = offset + _after(t, start, np.interp((t - start) / scale, table[:, 0], table[:, 1]))
+    ref = offset + after(t, start, np.interp((t - start) / scale, table[:, 0], table[:, 1]))
     np.testing.assert_allclose(res["src.y"], ref, atol=1e-12)
     f = lambda s: offset + (0.0 if s < start else np.interp((s - start) / scale, *table.T))
     breaks = [start] + list(start + scale * table[1:, 0])
-    np.testing.assert_allclose(res["integ.y"], _cumulative_integral(f, t, breaks), atol=1e-7)
+    np.testing.assert_allclose(res["integ.y"], cumulative_integral(f, t, breaks), atol=1e-7)
 
 
 def test_timetable_shifttime_and_extrapolation():
@@ -171,14 +158,14 @@ def test_timetable_shifttime_and_extrapolation():
     res = c.simulate(4.0, t=t, **SIM)
     tau = t - 0.5
     line = np.where(tau < 1.0, 1.0 + 2.0 * tau, 3.0 - (tau - 1.0))     # rows 1-2, rows 2-3
-    np.testing.assert_allclose(res["a.y"], _after(t, 0.2, line), atol=1e-12)
-    np.testing.assert_allclose(res["b.y"], 1.0 + _after(t, 0.3, 4.0), atol=1e-12)
+    np.testing.assert_allclose(res["a.y"], after(t, 0.2, line), atol=1e-12)
+    np.testing.assert_allclose(res["b.y"], 1.0 + after(t, 0.3, 4.0), atol=1e-12)
     # changing startTime at simulation time also moves a table whose shiftTime follows it
     c2 = acausal.compile(_source_model(sg.TimeTable(table=table)))
     res2 = c2.simulate(4.0, t=t, params={"src.startTime": 1.0}, **SIM)
     tau = t - 1.0
     np.testing.assert_allclose(
-        res2["src.y"], _after(t, 1.0, np.where(tau < 1.0, 1 + 2 * tau, 3 - (tau - 1))),
+        res2["src.y"], after(t, 1.0, np.where(tau < 1.0, 1 + 2 * tau, 3 - (tau - 1))),
         atol=1e-12)
 
 
@@ -214,14 +201,14 @@ def test_math_blocks_arithmetic():
     t = np.linspace(0.0, 2.0, 41)
     res = acausal.compile(m).simulate(2.0, t=t, **SIM)
     a = 0.3 + 2.0 * np.sin(np.pi * t)
-    b = 1.0 + _after(t, 0.2, 3.0 * np.clip(t - 0.2, 0, 1))
+    b = 1.0 + after(t, 0.2, 3.0 * np.clip(t - 0.2, 0, 1))
     c = -0.2 + 0.5 * np.cos(TWO_PI * t)
     for name, ref in [("gain.y", -1.7 * a), ("add.y", 0.5 * a - 2.0 * b),
                       ("add3.y", a + 2 * b - 3 * c), ("fb.y", b - c), ("prod.y", a * c),
                       ("div.y", a / b), ("sum.y", a - 0.5 * b + 2.0 * c),
                       ("sum.u[2]", b)]:
         np.testing.assert_allclose(res[name], ref, rtol=0, atol=1e-12, err_msg=name)
-    integral = _cumulative_integral(
+    integral = cumulative_integral(
         lambda s: (1.0 + (0.0 if s < 0.2 else 3.0 * min(s - 0.2, 1.0)))
         - (-0.2 + 0.5 * np.cos(TWO_PI * s)), t, (0.2, 1.2))
     np.testing.assert_allclose(res["integ.y"], 1.0 + 2.0 * integral, atol=1e-7)

@@ -13,11 +13,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from scipy.integrate import quad, solve_ivp
+from scipy.integrate import solve_ivp
 
 import acausal
 from acausal import DisabledPortError, Model, ParameterError
 from acausal.components import signals as sg
+from time_signals import after, cumulative_integral
 
 SIM = dict(rtol=1e-10, atol=1e-12)
 T_END = 3.0
@@ -37,24 +38,10 @@ def _source_model(src, *, inputs=()):
     return m
 
 
-def _cumulative_integral(f, t, breaks=()):
-    """∫_0^t f for every grid time, by adaptive quadrature between grid points."""
-    out = np.zeros_like(t)
-    for i in range(1, t.size):
-        pts = [b for b in breaks if t[i - 1] < b < t[i]]
-        out[i] = out[i - 1] + quad(f, t[i - 1], t[i], points=pts or None, limit=200,
-                                   epsabs=1e-13, epsrel=1e-13)[0]
-    return out
-
-
-def _after(t, t0, value):
-    return np.where(t < t0, 0.0, value)
-
-
 def _exponentials(t, outMax, riseTime, riseConst, fallConst, offset, t0):
     tau = np.maximum(t - t0, 0.0)
     y_rise = outMax * (1 - np.exp(-riseTime / riseConst))
-    return offset + _after(t, t0, np.where(tau < riseTime, outMax * (1 - np.exp(-tau / riseConst)),
+    return offset + after(t, t0, np.where(tau < riseTime, outMax * (1 - np.exp(-tau / riseConst)),
                                            y_rise * np.exp(-(tau - riseTime) / fallConst)))
 
 
@@ -72,7 +59,7 @@ def _log_sweep(t, wMin, wMax, t0, duration):
 # name: (block, numpy formula, discontinuities and kinks [s] on GRID)
 SOURCES = {
     "ContinuousClock": (lambda: sg.ContinuousClock(offset=0.5, startTime=0.75),
-                        lambda t: 0.5 + _after(t, 0.75, t - 0.75), (0.75,)),
+                        lambda t: 0.5 + after(t, 0.75, t - 0.75), (0.75,)),
     "Exponentials": (lambda: sg.Exponentials(outMax=2.0, riseTime=0.5, riseTimeConst=0.25,
                                              offset=-0.5, startTime=0.25),
                      lambda t: _exponentials(t, 2.0, 0.5, 0.25, 0.25, -0.5, 0.25), (0.25, 0.75)),
@@ -88,7 +75,7 @@ SOURCES = {
                          lambda t: _sawtooth(t, -1.0, 0.375, -1, 0.0, 0.0),
                          tuple(0.375 * np.arange(1, 8))),
     "Sinc": (lambda: sg.Sinc(amplitude=1.5, f=2.0, offset=0.25, startTime=0.5),
-             lambda t: 0.25 + _after(t, 0.5, 1.5 * np.sinc(2 * 2.0 * (t - 0.5))), (0.5,)),
+             lambda t: 0.25 + after(t, 0.5, 1.5 * np.sinc(2 * 2.0 * (t - 0.5))), (0.5,)),
     "Sinc_continuous": (lambda: sg.Sinc(amplitude=1.5, f=2.0, startTime=0.5, continuous=True),
                         lambda t: 1.5 * np.where(t < 0.5, 1.0, np.sinc(2 * 2.0 * (t - 0.5))),
                         (0.5,)),
@@ -107,7 +94,7 @@ def test_source_and_its_integral(name):
     res = acausal.compile(_source_model(make())).simulate(T_END, t=GRID, **SIM)
     assert np.array_equal(res.t, GRID)
     np.testing.assert_allclose(res["src.y"], f(GRID), rtol=0, atol=1e-13)
-    np.testing.assert_allclose(res["integ.y"], _cumulative_integral(f, GRID, breaks),
+    np.testing.assert_allclose(res["integ.y"], cumulative_integral(f, GRID, breaks),
                                rtol=0, atol=1e-8)
 
 
@@ -153,7 +140,7 @@ def test_sinc_at_zero_is_its_limit_and_smooth():
     x = TWO_PI * 3.0 * (t - 0.25)
     assert np.isfinite(res["src.y"]).all() and np.isfinite(res["der.y"]).all()
     assert res["src.y"][1] == 2.5
-    ref = 0.5 + _after(t, 0.25, 2.0 * np.sinc(x / np.pi))
+    ref = 0.5 + after(t, 0.25, 2.0 * np.sinc(x / np.pi))
     np.testing.assert_allclose(res["src.y"], ref, rtol=1e-15, atol=0)
     dsinc = np.where(x == 0, 0.0, (x * np.cos(x) - np.sin(x)) / np.where(x == 0, 1, x) ** 2)
     small = np.abs(x) < 1e-2
@@ -292,7 +279,7 @@ def test_kinematic_ptp_acceleration_and_its_integrals():
     np.testing.assert_array_equal(res["ptp.y[2]"], acc)
     np.testing.assert_array_equal(res["ptp.y[1]"], -0.25 * acc)
     f = lambda s: _ptp_acceleration(np.array([s]), 2.0, 1.0, 1.0, 0.25)[0][0]  # noqa: E731
-    qd = _cumulative_integral(f, t, phases)
+    qd = cumulative_integral(f, t, phases)
     np.testing.assert_allclose(res["qd.y"], qd, atol=1e-9)
     np.testing.assert_allclose(res["q.y"][-1], 2.0, atol=1e-9)
 

@@ -11,22 +11,11 @@ import acausal
 from acausal.core import Component, RealInput, RealOutput
 from acausal.errors import ParameterError, StructureError
 from acausal.components import translational as tr
+from time_signals import TimeSignal
 
 T_END = 1.0
 GRID = np.linspace(0.0, T_END, 101)
 TOL = 1e-6
-
-
-class TimeSignal(Component):
-    """Test-local source: y = fn(time) (an explicit function of time, differentiable)."""
-    y = RealOutput("signal")
-
-    def __init__(self, name=None, fn=None):
-        super().__init__(name)
-        self.__dict__["fn"] = fn
-
-    def physics(self, e):
-        e.output(self.y, self.fn(e.time))
 
 
 def close(a, b, tol=TOL):

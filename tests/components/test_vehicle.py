@@ -20,22 +20,10 @@ from scipy.integrate import cumulative_trapezoid, solve_ivp
 import acausal
 from acausal.components import rotational as rot
 from acausal.components import translational as tr
-from acausal.core import Component, RealOutput
+from time_signals import TimeSignal
 
 G_N = 9.80665
 TOL = dict(rtol=1e-10, atol=1e-12)
-
-
-class TimeSignal(Component):
-    """Test-local source: y = fn(time) (an explicit function of time, differentiable)."""
-    y = RealOutput("signal")
-
-    def __init__(self, name=None, fn=None):
-        super().__init__(name)
-        self.__dict__["fn"] = fn
-
-    def physics(self, e):
-        e.output(self.y, self.fn(e.time))
 
 
 def msl_direction(v, v0, reg: str):
