@@ -39,7 +39,9 @@ from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput
 from ..core.ports import ROTATIONAL
 from ..errors import ParameterError
 from . import friction, interfaces
-from .interfaces import ROTATIONAL_AXIS, linear_law, quadratic_law
+from .interfaces import (ROTATIONAL_AXIS, Regularization, inverse_law, linear_law,
+                         quadratic_law, regularization_region, regularized_sign,
+                         speed_band_region)
 
 Flange = RotationalFlange
 _EPS = 2.220446049250313e-16      # Modelica.Constants.eps
@@ -57,8 +59,8 @@ __all__ = [
     "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2",
     "InitializeFlange",
     # sources
-    "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
-    "LinearSpeedDependentTorque", "TorqueStep", "EddyCurrentTorque", "Position", "Speed",
+    "Torque", "Torque2", "ConstantTorque", "SignTorque", "QuadraticSpeedDependentTorque",
+    "LinearSpeedDependentTorque", "InverseSpeedDependentTorque", "TorqueStep", "EddyCurrentTorque", "Position", "Speed",
     "Accelerate", "Move",
     "ConstantSpeed",
     # sensors
@@ -655,14 +657,14 @@ class _SpeedDependentTorque(PartialTorque):
     required = ("tau_nominal", "w_nominal")
 
     def torque(self, e, phi, w):
-        return self.tau_nominal * self.law(w / self.w_nominal)
+        return self.tau_nominal * self.law(e, w / self.w_nominal)
 
 
 class QuadraticSpeedDependentTorque(_SpeedDependentTorque):
     """tau = tau_nominal·(w/w_nominal)² (TorqueDirection=True: same direction both ways), or
     tau_nominal·(w/w_nominal)·|w/w_nominal| (TorqueDirection=False)."""
 
-    def law(self, x):
+    def law(self, e, x):
         return quadratic_law(x, self.TorqueDirection)
 
 
@@ -670,8 +672,41 @@ class LinearSpeedDependentTorque(_SpeedDependentTorque):
     """tau = tau_nominal·|w/w_nominal| (TorqueDirection=True) or tau_nominal·w/w_nominal
     (TorqueDirection=False)."""
 
-    def law(self, x):
+    def law(self, e, x):
         return linear_law(x, self.TorqueDirection)
+
+
+class InverseSpeedDependentTorque(_SpeedDependentTorque):
+    """tau = tau_nominal·w_nominal/max(|w|, w0) (TorqueDirection=True: same direction both
+    ways) or tau_nominal·w/w0 for |w| < w0 and tau_nominal·w_nominal/w outside
+    (TorqueDirection=False; as MSL, a jump at |w| = w0 unless w0 = w_nominal). The switch at
+    |w| = w0 is a state event (mode ``region``; rounded over 0.01·w0 in smooth form).
+    w0 [rad/s] > 0 (default 0.1 = MSL start value)."""
+    w0 = Parameter(0.1, "rad/s", "regularization below w0", positive=True)
+
+    def structure(self, s):
+        speed_band_region(s)
+
+    def law(self, e, x):
+        return inverse_law(e, x, self.w0 / self.w_nominal, self.TorqueDirection)
+
+
+class SignTorque(PartialTorque):
+    """Constant torque changing sign with speed: tau = tau_nominal·sign(w) [N.m], regularized
+    within [−w0, w0] by ``reg`` (default Exp, see interfaces.Regularization: Exp, Sine,
+    Linear, CoSine). Required: tau_nominal [N.m] (MSL gives no default; negative: a load);
+    w0 [rad/s] > 0 (default 0.1 = MSL start value)."""
+    options = {"reg": Regularization.Exp}
+    tau_nominal = Parameter(0.0, "N.m", "nominal torque (if negative, torque is acting as "
+                                        "load)")
+    w0 = Parameter(0.1, "rad/s", "regularization below w0", positive=True)
+    required = ("tau_nominal",)
+
+    def structure(self, s):
+        regularization_region(s, self.reg)
+
+    def torque(self, e, phi, w):
+        return self.tau_nominal * regularized_sign(e, w, self.w0, self.reg)
 
 
 class TorqueStep(PartialTorque):
