@@ -151,3 +151,47 @@ def test_msl_two_masses():
     d = 100.0 * np.exp(-10 * (2 / 15) * t)
     np.testing.assert_allclose(res["Tsensor1.T"], 50.0 + d / 2, atol=1e-8)
     np.testing.assert_allclose(res["Tsensor2.T"], 50.0 - d / 2, atol=1e-8)
+
+
+def test_msl_motor():
+    """MSL's Examples.Motor over its 7200 s: winding losses from a periodic table of
+    constant segments (100 W for 0..360 s, 1000 W for 360..600 s), scaled by 1 + 3.03e-3·(T_w
+    − 368.15) (PrescribedHeatFlow), core losses 500 W, winding C = 2500 J/K —G = 10 W/K— core
+    C = 25000 J/K convecting with Gc = 25 W/K to 293.15 K: against scipy integrating the two
+    temperatures segment by segment."""
+    T_amb = 293.15
+    m = model("Motor", lambda m: [
+        (m.lossTable.y[1], m.windingLosses.Q_flow), (m.lossTable.y[2], m.coreLosses.Q_flow),
+        (m.windingLosses.port, m.winding.port), (m.coreLosses.port, m.core.port),
+        (m.winding.port, m.winding2core.port_a), (m.winding2core.port_b, m.core.port),
+        (m.winding2core.port_b, m.convection.solid), (m.convectionConstant.y, m.convection.Gc),
+        (m.convection.fluid, m.environment.port)],
+        lossTable=sig.CombiTimeTable(table=[[0, 100, 500], [360, 1000, 500], [600, 100, 500]],
+                                     extrapolation="Periodic", smoothness="ConstantSegments"),
+        windingLosses=th.PrescribedHeatFlow(T_ref=368.15, alpha=3.03e-3),
+        winding=th.HeatCapacitor(C=2500, T_start=T_amb), winding2core=th.ThermalConductor(G=10),
+        core=th.HeatCapacitor(C=25000, T_start=T_amb), coreLosses=th.PrescribedHeatFlow(),
+        convectionConstant=sig.Constant(k=25), convection=th.Convection(),
+        environment=th.FixedTemperature(T=T_amb))
+    t = np.linspace(0.0, 7200.0, 121)
+    res = acausal.compile(m).simulate(7200.0, t=t, **TIGHT)
+
+    def rhs(_, x, P):
+        Tw, Tc = x
+        Qw = P * (1 + 3.03e-3 * (Tw - 368.15))
+        return [(Qw - 10 * (Tw - Tc)) / 2500, (500 + 10 * (Tw - Tc) - 25 * (Tc - T_amb)) / 25000]
+
+    x, ts, xs = [T_amb, T_amb], [], []
+    for k in range(12):
+        for a, b, P in ((600 * k, 600 * k + 360, 100.0), (600 * k + 360, 600 * k + 600, 1000.0)):
+            sol = solve_ivp(rhs, (a, b), x, args=(P,), dense_output=True, rtol=1e-12,
+                            atol=1e-10)
+            x = sol.y[:, -1]
+            inside = t[(t >= a) & (t < b)]
+            ts.append(inside)
+            xs.append(sol.sol(inside))
+    ref, ts = np.concatenate(xs, axis=1), np.concatenate(ts)
+    rows = np.searchsorted(res.t, ts, side="right") - 1     # res.t has the events' instants
+    assert ts.size == t.size - 1 and np.allclose(res.t[rows], ts)
+    np.testing.assert_allclose(res["winding.T"][rows], ref[0], atol=1e-6)
+    np.testing.assert_allclose(res["core.T"][rows], ref[1], atol=1e-6)
