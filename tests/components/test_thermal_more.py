@@ -195,3 +195,60 @@ def test_msl_motor():
     assert ts.size == t.size - 1 and np.allclose(res.t[rows], ts)
     np.testing.assert_allclose(res["winding.T"][rows], ref[0], atol=1e-6)
     np.testing.assert_allclose(res["core.T"][rows], ref[1], atol=1e-6)
+
+
+def test_msl_controlled_temperature():
+    """MSL's Examples.ControlledTemperature over its 10 s: a resistor (R = 10 Ω, alpha =
+    1/255 1/K at 293.15 K) on 10 V through an IdealOpeningSwitch (Ron = 1e-5 Ω, Goff = 1e-5
+    S) heats a capacitor C = 1 J/K losing G = 0.1 W/K to 20 degC; an OnOffController
+    (bandwidth 2 K) keeps its Celsius temperature at a ramp 25 → 50 degC (2..8 s): against
+    scipy with the hysteresis's switches as events."""
+    from acausal.components import electrical as el
+    from acausal.components import logical as lg
+    T_amb = 293.15
+    m = model("ControlledTemperature", lambda m: [
+        (m.constantVoltage.n, m.resistor.n), (m.constantVoltage.n, m.ground.p),
+        (m.resistor.heatPort, m.thermalConductor.port_a),
+        (m.thermalConductor.port_b, m.fixedTemperature.port),
+        (m.resistor.heatPort, m.temperatureSensor.port),
+        (m.resistor.heatPort, m.heatCapacitor.port),
+        (m.constantVoltage.p, m.idealSwitch.p), (m.idealSwitch.n, m.resistor.p),
+        (m.ramp.y, m.onOffController.reference), (m.temperatureSensor.T, m.onOffController.u),
+        (m.onOffController.y, m.logicalNot.u), (m.logicalNot.y, m.idealSwitch.control)],
+        ground=el.Ground(), constantVoltage=el.ConstantVoltage(V=10),
+        heatCapacitor=th.HeatCapacitor(C=1, T_start=T_amb),
+        resistor=el.Resistor(R=10, T_ref=293.15, alpha=1 / 255, useHeatPort=True),
+        fixedTemperature=th.FixedTemperature(T=T_amb),
+        temperatureSensor=celsius.TemperatureSensor(),
+        thermalConductor=th.ThermalConductor(G=0.1), idealSwitch=el.IdealOpeningSwitch(),
+        ramp=sig.Ramp(height=25, duration=6, offset=25, startTime=2),
+        onOffController=lg.OnOffController(bandwidth=2), logicalNot=lg.Not())
+    t = np.linspace(0.0, 10.0, 201)
+    res = acausal.compile(m).simulate(10.0, t=t, **TIGHT)
+
+    def reference(tk):
+        return 25 + 25 * np.clip((tk - 2) / 6, 0, 1)
+
+    def rhs(tk, x, on):
+        R = 10 * (1 + (x[0] - 293.15) / 255)
+        i = 10 / (R + (1e-5 if on else 1 / 1e-5))
+        return [R * i ** 2 - 0.1 * (x[0] - T_amb)]
+
+    def switch(tk, x, on):            # heating stops at ref + 1, starts below ref − 1 (degC)
+        return x[0] - 273.15 - reference(tk) - (1 if on else -1)
+
+    switch.terminal = True
+    tk, x, on, ts, xs = 0.0, [T_amb], True, [], []
+    while tk < 10.0:
+        sol = solve_ivp(rhs, (tk, 10.0), x, args=(on,), events=switch, dense_output=True,
+                        rtol=1e-12, atol=1e-12, max_step=0.05)
+        end = sol.t[-1]
+        inside = t[(t >= tk) & (t < end)] if end < 10.0 else t[t >= tk]
+        ts.append(inside)
+        xs.append(sol.sol(inside)[0])
+        tk, x, on = end, sol.y[:, -1], not on
+    ts, ref = np.concatenate(ts), np.concatenate(xs)
+    assert len(xs) > 4                                      # it switches several times
+    rows = np.searchsorted(res.t, ts, side="right") - 1
+    np.testing.assert_allclose(res["heatCapacitor.T"][rows], ref, atol=1e-6)
+    np.testing.assert_allclose(res["temperatureSensor.T"][rows], ref - 273.15, atol=1e-6)

@@ -329,8 +329,8 @@ def quadratic_law(x, same_direction: bool):
 
 class Regularization(str, Enum):
     """Modelica.Blocks.Types.Regularization: how RollingResistance, SignForce and SignTorque
-    cross v = 0, with x = v/v0: Exp 2/(1 + exp(−x/0.01)) − 1; Sine sin(π/2·x); Linear x; CoSine sign(x)·(1 −
-    cos(π/2·x)), the last three inside |x| < 1 and sign(x) outside."""
+    cross v = 0, with x = v/v0: Exp 2/(1 + exp(−x/0.01)) − 1; Sine sin(π/2·x); Linear x;
+    CoSine sign(x)·(1 − cos(π/2·x)), the last three inside |x| < 1 and sign(x) outside."""
     Exp = "Exp"
     Sine = "Sine"
     Linear = "Linear"

@@ -29,7 +29,8 @@ HardStop (stops with a coefficient of restitution, not an MSL class) are state e
 RollingResistance's regularization switches by state events too, and so does Vehicle's (a
 component written with the equations of MSL's parts, see its docstring).
 SignForce and InverseSpeedDependentForce switch at |v| = v0 by state events too. Not here
-yet: the adaptors, InitializeFlange, RelativeStates. Differences from MSL are listed in each docstring.
+yet: the adaptors, InitializeFlange, RelativeStates. Differences from MSL are listed in each
+docstring.
 """
 from __future__ import annotations
 
@@ -60,7 +61,8 @@ __all__ = [
     "Regularization", "IdealRollingWheel", "Vehicle",
     # sources
     "Force", "Force2", "ConstantForce", "ForceStep", "SignForce", "LinearSpeedDependentForce",
-    "QuadraticSpeedDependentForce", "InverseSpeedDependentForce", "EddyCurrentForce", "Position", "Speed", "Accelerate", "Move",
+    "QuadraticSpeedDependentForce", "InverseSpeedDependentForce", "EddyCurrentForce",
+    "Position", "Speed", "Accelerate", "Move",
     "ConstantSpeed",
     # sensors
     "PositionSensor", "SpeedSensor", "AccSensor", "ForceSensor", "PowerSensor",
