@@ -75,6 +75,14 @@ def test_docs_build_without_warnings(tmp_path):
     assert "<p>useInclinationInput = True</p>" in vehicle          # the input's option
     assert 'id="translational-rollingresistance"' in page
     assert "Vehicle" in differences and "written directly" in differences
+    page = html.unescape((out / "components" / "thermal.html").read_text())
+    for section in ("thermal-thermalcollector", "thermal-convectiveresistor",
+                    "thermal-conditionalfixedheatflowsensor", "celsius-fixedtemperature",
+                    "celsius-tokelvin"):
+        assert f'id="{section}"' in page, f"the thermal page lacks {section}"
+    page = html.unescape((out / "components" / "rotational.html").read_text())
+    gearbox = page[page.index('id="rotational-gearbox"'):]
+    assert "<p>useHeatPort = True</p>" in gearbox and 'id="rotational-signtorque"' in page
     page = html.unescape((out / "components" / "multibody.html").read_text())
     revolute = page[page.index('id="joints-revolute"'):]
     assert "<p>useAxisFlange = True</p>" in revolute          # axis exists only with the option

@@ -17,18 +17,21 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from enum import Enum
 
 import casadi as ca
 
 from ..core import Component, ConditionalPort, HeatPort_a, Parameter, RealInput
 from ..core.component import who
 from ..errors import ParameterError
+from .signals.nonlinear import _limited, _limiter_region
 
 __all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS",
            "PartialElementaryConditionalHeatPortWithoutT", "PartialElementaryConditionalHeatPort",
            "linearTemperatureDependency", "PartialEddyCurrent",
            "PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
-           "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law",
+           "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law", "inverse_law",
+           "Regularization", "regularized_sign", "regularization_region", "speed_band_region",
            "Position", "Speed", "Accelerate", "Move", "ConstantSpeed", "drive_flanges",
            "PartialDrivenJoint", "unit_direction"]
 
@@ -266,7 +269,8 @@ class PartialElementaryTwoFlangesAndSupport2(_Support):
 
 
 # =========================================================================================
-# Speed-dependent laws (Linear/QuadraticSpeedDependentForce and -Torque)
+# Speed-dependent laws (Linear/Quadratic/InverseSpeedDependentForce and -Torque, SignForce
+# and SignTorque)
 # =========================================================================================
 def unit_direction(c: Component, name: str, example: str) -> ca.SX:
     """The unit vector v/|v| of ``c``'s direction parameter ``name`` (MSL's
@@ -321,6 +325,62 @@ def linear_law(x, same_direction: bool):
 def quadratic_law(x, same_direction: bool):
     """x² (same direction both ways) or x·|x|."""
     return x ** 2 if same_direction else x * ca.fabs(x)
+
+
+class Regularization(str, Enum):
+    """Modelica.Blocks.Types.Regularization: how RollingResistance, SignForce and SignTorque
+    cross v = 0, with x = v/v0: Exp 2/(1 + exp(−x/0.01)) − 1; Sine sin(π/2·x); Linear x;
+    CoSine sign(x)·(1 − cos(π/2·x)), the last three inside |x| < 1 and sign(x) outside."""
+    Exp = "Exp"
+    Sine = "Sine"
+    Linear = "Linear"
+    CoSine = "CoSine"
+
+
+def regularized_sign(e, v, v0, reg: Regularization, prefix: str = ""):
+    """The regularized sign(v) of MSL's RollingResistance, SignForce and SignTorque (see
+    Regularization), v and v0 [m/s or rad/s]. Sine, Linear and CoSine switch at |v| = v0 by
+    state events on the mode ``<prefix>region`` (declare it with ``regularization_region``),
+    as Modelica's ``if abs(v) >= v0``;
+    in smooth form their corners at |v| = v0 are rounded over 0.01·v0 (the width of the Exp
+    form)."""
+    x = v / v0
+    if reg is Regularization.Exp:
+        return 2 / (1 + ca.exp(-x / 0.01)) - 1
+    x = _limited(e, x, -1.0, 1.0, 0.01, True, prefix)
+    if reg is Regularization.Sine:
+        return ca.sin(math.pi / 2 * x)
+    if reg is Regularization.Linear:
+        return x
+    return ca.sign(x) * (1 - ca.cos(math.pi / 2 * x))
+
+
+def regularization_region(s, reg: Regularization, prefix: str = "") -> None:
+    """Declare the mode of ``regularized_sign`` (none for Exp, which has no band)."""
+    if reg is not Regularization.Exp:
+        speed_band_region(s, prefix)
+
+
+def speed_band_region(s, prefix: str = "") -> None:
+    """Declare the mode ``<prefix>region`` of a law switching at |v| = v0 (``inverse_law``,
+    ``regularized_sign``): −1, 0, 1 for v ≤ −v0, inside, v ≥ v0."""
+    _limiter_region(s, True, prefix)
+
+
+def inverse_law(e, x, x0, same_direction: bool, prefix: str = ""):
+    """MSL's InverseSpeedDependentForce/-Torque over x = v/v_nominal and x0 = v0/v_nominal:
+    1/max(|x|, x0) (same direction both ways) or x/x0 for |x| < x0, 1/x outside (as MSL:
+    a jump of 1 − 1/x0 at |x| = x0 unless v0 = v_nominal). The switch at |x| = x0 is a
+    state event on the mode ``<prefix>region`` (``speed_band_region``); in smooth form it is
+    rounded over 0.01·x0, as ``regularized_sign``."""
+    a = x / x0
+    c = _limited(e, a, -1.0, 1.0, 0.01, True, prefix)     # a inside the band, sign(a) outside
+    m = 1 + ca.fabs(a) - ca.fabs(c)                        # max(|a|, 1)
+    if same_direction:
+        return 1 / (x0 * m)
+    outside = ca.tanh((m - 1) / 0.01) if e.smooth else e.mode(f"{prefix}region") != 0
+    return c / m * (1 + (1 / x0 - 1) * outside)
+
 
 
 # =========================================================================================

@@ -26,6 +26,8 @@ Coulomb friction (BearingFriction, Brake, Clutch) has MSL's mode machine on stat
 Freewheel (not an MSL class) is its freewheel alone; LossyGear (mesh efficiency and bearing
 friction, stuck or rolling), ElastoBacklash and ElastoBacklash2 switch on modes at state
 events too, and each has a smooth form for optimal control (``compile(model, smooth=True)``).
+Gearbox is MSL's composition of a LossyGear and an ElastoBacklash (a Model of the two);
+SignTorque and InverseSpeedDependentTorque switch at |w| = w0 by state events.
 """
 from __future__ import annotations
 
@@ -34,12 +36,14 @@ import math
 import casadi as ca
 import numpy as np
 
-from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput,
-                    RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
+from ..core import (Component, ConditionalPort, HeatPort_a, Model, Parameter, RealInput,
+                    RealOutput, RotationalFlange, StateSelect, TranslationalFlange, VectorPort)
 from ..core.ports import ROTATIONAL
 from ..errors import ParameterError
 from . import friction, interfaces
-from .interfaces import ROTATIONAL_AXIS, linear_law, quadratic_law
+from .interfaces import (ROTATIONAL_AXIS, Regularization, inverse_law, linear_law,
+                         quadratic_law, regularization_region, regularized_sign,
+                         speed_band_region)
 
 Flange = RotationalFlange
 _EPS = 2.220446049250313e-16      # Modelica.Constants.eps
@@ -54,11 +58,12 @@ __all__ = [
     # components
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
-    "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2",
+    "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2", "Gearbox",
     "InitializeFlange",
     # sources
-    "Torque", "Torque2", "ConstantTorque", "QuadraticSpeedDependentTorque",
-    "LinearSpeedDependentTorque", "TorqueStep", "EddyCurrentTorque", "Position", "Speed",
+    "Torque", "Torque2", "ConstantTorque", "SignTorque", "QuadraticSpeedDependentTorque",
+    "LinearSpeedDependentTorque", "InverseSpeedDependentTorque", "TorqueStep",
+    "EddyCurrentTorque", "Position", "Speed",
     "Accelerate", "Move",
     "ConstantSpeed",
     # sensors
@@ -655,14 +660,14 @@ class _SpeedDependentTorque(PartialTorque):
     required = ("tau_nominal", "w_nominal")
 
     def torque(self, e, phi, w):
-        return self.tau_nominal * self.law(w / self.w_nominal)
+        return self.tau_nominal * self.law(e, w / self.w_nominal)
 
 
 class QuadraticSpeedDependentTorque(_SpeedDependentTorque):
     """tau = tau_nominal·(w/w_nominal)² (TorqueDirection=True: same direction both ways), or
     tau_nominal·(w/w_nominal)·|w/w_nominal| (TorqueDirection=False)."""
 
-    def law(self, x):
+    def law(self, e, x):
         return quadratic_law(x, self.TorqueDirection)
 
 
@@ -670,8 +675,41 @@ class LinearSpeedDependentTorque(_SpeedDependentTorque):
     """tau = tau_nominal·|w/w_nominal| (TorqueDirection=True) or tau_nominal·w/w_nominal
     (TorqueDirection=False)."""
 
-    def law(self, x):
+    def law(self, e, x):
         return linear_law(x, self.TorqueDirection)
+
+
+class InverseSpeedDependentTorque(_SpeedDependentTorque):
+    """tau = tau_nominal·w_nominal/max(|w|, w0) (TorqueDirection=True: same direction both
+    ways) or tau_nominal·w/w0 for |w| < w0 and tau_nominal·w_nominal/w outside
+    (TorqueDirection=False; as MSL, a jump at |w| = w0 unless w0 = w_nominal). The switch at
+    |w| = w0 is a state event (mode ``region``; rounded over 0.01·w0 in smooth form).
+    w0 [rad/s] > 0 (default 0.1 = MSL start value)."""
+    w0 = Parameter(0.1, "rad/s", "regularization below w0", positive=True)
+
+    def structure(self, s):
+        speed_band_region(s)
+
+    def law(self, e, x):
+        return inverse_law(e, x, self.w0 / self.w_nominal, self.TorqueDirection)
+
+
+class SignTorque(PartialTorque):
+    """Constant torque changing sign with speed: tau = tau_nominal·sign(w) [N.m], regularized
+    within [−w0, w0] by ``reg`` (default Exp, see interfaces.Regularization: Exp, Sine,
+    Linear, CoSine). Required: tau_nominal [N.m] (MSL gives no default; negative: a load);
+    w0 [rad/s] > 0 (default 0.1 = MSL start value)."""
+    options = {"reg": Regularization.Exp}
+    tau_nominal = Parameter(0.0, "N.m", "nominal torque (if negative, torque is acting as "
+                                        "load)")
+    w0 = Parameter(0.1, "rad/s", "regularization below w0", positive=True)
+    required = ("tau_nominal",)
+
+    def structure(self, s):
+        regularization_region(s, self.reg)
+
+    def torque(self, e, phi, w):
+        return self.tau_nominal * regularized_sign(e, w, self.w0, self.reg)
 
 
 class TorqueStep(PartialTorque):
@@ -1340,3 +1378,54 @@ class ElastoBacklash2(_ElastoBacklash):
         tau_neg = _smin(self.c * _smin(phi_diff + b_max, 0.0, eps) + on_neg * tau_d, 0.0,
                         tau_eps)
         return tau_pos + tau_neg, tau_d * w_rel * (on_pos + on_neg)
+
+
+class Gearbox(Model):
+    """Realistic model of a gearbox (MSL's Components.Gearbox): a LossyGear (mesh efficiency
+    and bearing friction) in series with an ElastoBacklash (gear elasticity, damping and
+    backlash), composed of these parts as in MSL::
+
+        flange_a ── lossyGear ── elastoBacklash ── flange_b
+                    (lossyGear.support ── support, or fixed with useSupport=False)
+
+    Constructor keywords (MSL's parameters): ratio [1] (1 = MSL start value; flange_a.phi /
+    lossyGear.flange_b.phi), lossTable (rows [|w_a|, eta_mf1, eta_mf2, tau_bf1, tau_bf2],
+    default [[0, 1, 1, 0, 0]], see LossyGear), c [N.m/rad] > 0 (1e5), d [N.m.s/rad] ≥ 0 (0),
+    b [rad] ≥ 0 (0, total backlash), stateSelect (prefer); options useSupport and
+    useHeatPort (the losses of both parts leave through ``heatPort``). The elasticity's
+    relative angle phi_rel = flange_b.phi − lossyGear.flange_b.phi [rad] and w_rel [rad/s]
+    are ``elastoBacklash.phi_rel``, ``elastoBacklash.w_rel`` (states).
+
+    Differences from MSL: the keywords set the parts' parameters (``lossyGear.ratio``,
+    ``elastoBacklash.c``, ...), by which they are changed at simulation time (an acausal
+    Model has no parameters of its own to bind its parts' to); phi_rel, w_rel, a_rel are
+    recorded under ``elastoBacklash`` only.
+    """
+    options = {"useSupport": False, "useHeatPort": False}
+    flange_a = Flange("flange of left shaft")
+    flange_b = Flange("flange of right shaft")
+    support = _support()
+    heatPort = ConditionalPort(HeatPort_a("optional port to which dissipated losses are "
+                                          "transported in form of heat", required=True),
+                               "useHeatPort")
+
+    def __init__(self, name: str | None = None, *, ratio: float = 1.0,
+                 lossTable=LossyGear.IDEAL, c: float = 1.0e5, d: float = 0.0, b: float = 0.0,
+                 stateSelect: StateSelect = StateSelect.prefer, useSupport: bool = False,
+                 useHeatPort: bool = False):
+        super().__init__(name, useSupport=useSupport, useHeatPort=useHeatPort)
+        self.lossyGear = LossyGear(ratio=ratio, lossTable=lossTable, useSupport=True,
+                                   useHeatPort=useHeatPort)
+        self.elastoBacklash = ElastoBacklash(b=b, c=c, d=d, phi_rel0=0.0,
+                                             stateSelect=stateSelect, useHeatPort=useHeatPort)
+        self.connect(self.flange_a, self.lossyGear.flange_a)
+        self.connect(self.lossyGear.flange_b, self.elastoBacklash.flange_a)
+        self.connect(self.elastoBacklash.flange_b, self.flange_b)
+        if useSupport:
+            self.connect(self.lossyGear.support, self.support)
+        else:
+            self.fixed = Fixed()
+            self.connect(self.lossyGear.support, self.fixed.flange)
+        if useHeatPort:
+            self.connect(self.lossyGear.heatPort, self.heatPort)
+            self.connect(self.elastoBacklash.heatPort, self.heatPort)

@@ -8,20 +8,28 @@ dT = port_a.T − port_b.T and the heat flow Q_flow = port_a.Q_flow = −port_b.
 port_a to port_b. Start values of the states are constructor keywords
 (``HeatCapacitor(C=10, T_start=350)``, MSL's ``T(start=350)``).
 
+ThermalCollector's m ports are the vector port ``port_a[1]`` .. ``port_a[m]`` (``m`` a
+constructor argument, as Blocks' vector inputs). The degC classes of MSL's Celsius package
+are in ``acausal.components.celsius`` (their MSL names would shadow the Kelvin classes
+here); Fahrenheit and Rankine are not in acausal.
+
 Two HeatCapacitors joined directly (or to a FixedTemperature) fix one temperature twice: a
 higher-index network, refused when compiled; join them through a ThermalConductor.
 """
 from __future__ import annotations
 
-from ..core import Component, HeatPort_a, HeatPort_b, Parameter, RealInput, RealOutput
-from .signals.interfaces import _start
+from ..core import (Component, HeatPort_a, HeatPort_b, Parameter, RealInput, RealOutput,
+                    VectorPort)
+from .signals.interfaces import _size, _Sized, _start
 
 __all__ = ["Element1D", "HeatCapacitor", "ThermalConductor", "ThermalResistor", "Convection",
-           "BodyRadiation", "FixedTemperature", "PrescribedTemperature", "FixedHeatFlow",
-           "PrescribedHeatFlow", "TemperatureSensor", "HeatFlowSensor", "SIGMA"]
+           "ConvectiveResistor", "BodyRadiation", "ThermalCollector", "FixedTemperature",
+           "PrescribedTemperature", "FixedHeatFlow", "PrescribedHeatFlow", "TemperatureSensor",
+           "RelTemperatureSensor", "HeatFlowSensor", "ConditionalFixedHeatFlowSensor", "SIGMA"]
 
 #: Stefan-Boltzmann constant [W/(m2.K4)], Modelica.Constants.sigma
 SIGMA = 5.670374419e-8
+_T_FIXED = 293.15          # K, ConditionalFixedHeatFlowSensor's fixed temperature (final)
 
 
 class Element1D(Component):
@@ -85,20 +93,76 @@ class ThermalResistor(Element1D):
         e.residual(self._dT(e) - self.R * Q)
 
 
-class Convection(Component):
-    """Convection: Q_flow = Gc·dT [W] from ``solid`` to ``fluid``, dT = solid.T − fluid.T,
-    the convective conductance Gc [W/K] an input."""
-    Gc = RealInput("signal representing the convective thermal conductance [W/K]")
+class _Convective(Component):
+    """Convection from ``solid`` to ``fluid`` (MSL's Convection, ConvectiveResistor): dT =
+    solid.T − fluid.T [K], Q_flow [W] from solid to fluid."""
     solid = HeatPort_a("solid side")
     fluid = HeatPort_b("fluid side")
 
-    def physics(self, e):
-        dT = e.potential(self.solid) - e.potential(self.fluid)
-        Q = e.input(self.Gc) * dT
-        e.flow(self.solid, Q)
+    def _dT(self, e):
+        return e.potential(self.solid) - e.potential(self.fluid)
+
+    def _heat_flow(self, e, value=None):
+        """Q_flow as Element1D._heat_flow, between solid and fluid."""
+        Q = e.flow_of(self.solid) if value is None else value
+        if value is not None:
+            e.flow(self.solid, Q)
         e.flow(self.fluid, -Q)
         e.variable("Q_flow", Q, "W", "heat flow rate from solid -> fluid")
-        e.variable("dT", dT, "K", "= solid.T - fluid.T")
+        e.variable("dT", self._dT(e), "K", "= solid.T - fluid.T")
+        return Q
+
+
+class Convection(_Convective):
+    """Convection: Q_flow = Gc·dT [W] from ``solid`` to ``fluid``, dT = solid.T − fluid.T,
+    the convective conductance Gc [W/K] an input."""
+    Gc = RealInput("signal representing the convective thermal conductance [W/K]")
+
+    def physics(self, e):
+        self._heat_flow(e, e.input(self.Gc) * self._dT(e))
+
+
+class ConvectiveResistor(_Convective):
+    """Convection: dT = Rc·Q_flow [K], Q_flow [W] from ``solid`` to ``fluid``, dT = solid.T
+    − fluid.T, the convective resistance Rc [K/W] an input (Rc = 0 allowed: no temperature
+    difference)."""
+    Rc = RealInput("signal representing the convective thermal resistance [K/W]")
+
+    def physics(self, e):
+        Q = self._heat_flow(e)
+        e.residual(self._dT(e) - e.input(self.Rc) * Q)
+
+
+class ThermalCollector(_Sized, Component):
+    """Collects m heat flows: the m ports ``port_a[1]`` .. ``port_a[m]`` and ``port_b`` at one
+    temperature, port_b.Q_flow + Σ port_a[i].Q_flow = 0. ``m`` (constructor argument, ≥ 1,
+    default 3) is MSL's structural parameter ``m``."""
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, m: int = 3, **params):
+        return super().__new__(cls._variant(_size(m, "ThermalCollector: m (number of "
+                                                      "collected heat flows)", 1)))
+
+    @staticmethod
+    def _declare(m: int) -> dict:
+        return {"port_a": VectorPort(HeatPort_a, m, "heat port a"),
+                "port_b": HeatPort_b("heat port b")}
+
+    def __init__(self, name: str | None = None, *, m: int = 3, **params):
+        super().__init__(name, **params)
+
+    @property
+    def m(self) -> int:
+        """Number of collected heat flows."""
+        return self._key[0]
+
+    def physics(self, e):
+        T = e.potential(self.port_b)
+        Q = 0.0
+        for port in self.port_a:
+            Q = Q + e.flow_of(port)
+            e.residual(e.potential(port) - T)
+        e.flow(self.port_b, -Q)
 
 
 class BodyRadiation(Element1D):
@@ -183,6 +247,18 @@ class TemperatureSensor(Component):
         e.output(self.T, e.potential(self.port))
 
 
+class RelTemperatureSensor(Component):
+    """Relative temperature T_rel = port_a.T − port_b.T [K]; no heat flow."""
+    port_a = HeatPort_a("heat port a")
+    port_b = HeatPort_b("heat port b")
+    T_rel = RealOutput("relative temperature as output signal [K]")
+
+    def physics(self, e):
+        e.flow(self.port_a, 0.0)
+        e.flow(self.port_b, 0.0)
+        e.output(self.T_rel, e.potential(self.port_a) - e.potential(self.port_b))
+
+
 class HeatFlowSensor(Component):
     """Heat flow rate Q_flow [W] from port_a to port_b; no temperature difference."""
     port_a = HeatPort_a("heat port a")
@@ -193,4 +269,20 @@ class HeatFlowSensor(Component):
         Q = e.flow_of(self.port_a)
         e.flow(self.port_b, -Q)
         e.residual(e.potential(self.port_a) - e.potential(self.port_b))
+        e.output(self.Q_flow, Q)
+
+
+class ConditionalFixedHeatFlowSensor(HeatFlowSensor):
+    """HeatFlowSensor with, for ``useFixedTemperature=True`` (default False), port_a held at
+    293.15 K (MSL's conditional FixedTemperature at port_a): Q_flow [W] is then the heat flow
+    into port_b's side (−port_b.Q_flow); port_a takes what the fixed temperature supplies."""
+    options = {"useFixedTemperature": False}
+
+    def physics(self, e):
+        if not self.useFixedTemperature:
+            return super().physics(e)
+        e.flow_of(self.port_a)
+        Q = -e.flow_of(self.port_b)
+        e.residual(e.potential(self.port_a) - _T_FIXED)
+        e.residual(e.potential(self.port_b) - e.potential(self.port_a))
         e.output(self.Q_flow, Q)

@@ -28,13 +28,13 @@ on state events (see ``friction``); MassWithStopAndFriction's stops, ElastoGap's
 HardStop (stops with a coefficient of restitution, not an MSL class) are state events too.
 RollingResistance's regularization switches by state events too, and so does Vehicle's (a
 component written with the equations of MSL's parts, see its docstring).
-Not here yet: SignForce, InverseSpeedDependentForce; nor the adaptors, InitializeFlange,
-RelativeStates. Differences from MSL are listed in each docstring.
+SignForce and InverseSpeedDependentForce switch at |v| = v0 by state events too. Not here
+yet: the adaptors, InitializeFlange, RelativeStates. Differences from MSL are listed in each
+docstring.
 """
 from __future__ import annotations
 
 import math
-from enum import Enum
 
 import casadi as ca
 
@@ -43,8 +43,9 @@ from ..core import (Component, ConditionalPort, Parameter, RealInput, RealOutput
 from ..core.ports import TRANSLATIONAL
 from ..errors import ParameterError
 from . import friction, interfaces, rotational
-from .interfaces import TRANSLATIONAL_AXIS, linear_law, quadratic_law
-from .signals.nonlinear import _limited, _limiter_region
+from .interfaces import (TRANSLATIONAL_AXIS, Regularization, inverse_law, linear_law,
+                         quadratic_law, regularization_region, regularized_sign,
+                         speed_band_region)
 
 Flange = TranslationalFlange
 
@@ -57,10 +58,11 @@ __all__ = [
     # components
     "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "SupportFriction", "Brake",
     "MassWithStopAndFriction", "ElastoGap", "HardStop", "contact_force", "RollingResistance",
-    "Regularization", "rolling_direction", "rolling_region", "IdealRollingWheel", "Vehicle",
+    "Regularization", "IdealRollingWheel", "Vehicle",
     # sources
-    "Force", "Force2", "ConstantForce", "ForceStep", "LinearSpeedDependentForce",
-    "QuadraticSpeedDependentForce", "EddyCurrentForce", "Position", "Speed", "Accelerate", "Move",
+    "Force", "Force2", "ConstantForce", "ForceStep", "SignForce", "LinearSpeedDependentForce",
+    "QuadraticSpeedDependentForce", "InverseSpeedDependentForce", "EddyCurrentForce",
+    "Position", "Speed", "Accelerate", "Move",
     "ConstantSpeed",
     # sensors
     "PositionSensor", "SpeedSensor", "AccSensor", "ForceSensor", "PowerSensor",
@@ -559,39 +561,6 @@ def check_stops(component, lower, upper, what: str) -> None:
                              f"{component.smax} with smin = {component.smin}: {what}")
 
 
-class Regularization(str, Enum):
-    """Modelica.Blocks.Types.Regularization: how RollingResistance crosses v = 0, with x =
-    v/v0: Exp 2/(1 + exp(−x/0.01)) − 1; Sine sin(π/2·x); Linear x; CoSine sign(x)·(1 −
-    cos(π/2·x)), the last three inside |x| < 1 and sign(x) outside."""
-    Exp = "Exp"
-    Sine = "Sine"
-    Linear = "Linear"
-    CoSine = "CoSine"
-
-
-def rolling_direction(e, v, v0, reg: Regularization, prefix: str = ""):
-    """The regularized sign(v) of MSL's RollingResistance (see Regularization), v [m/s], v0
-    [m/s]. Sine, Linear and CoSine switch at |v| = v0 by state events on the mode
-    ``<prefix>region`` (declare it with ``rolling_region``), as Modelica's ``if abs(v) >= v0``;
-    in smooth form their corners at |v| = v0 are rounded over 0.01·v0 (the width of the Exp
-    form)."""
-    x = v / v0
-    if reg is Regularization.Exp:
-        return 2 / (1 + ca.exp(-x / 0.01)) - 1
-    x = _limited(e, x, -1.0, 1.0, 0.01, True, prefix)
-    if reg is Regularization.Sine:
-        return ca.sin(math.pi / 2 * x)
-    if reg is Regularization.Linear:
-        return x
-    return ca.sign(x) * (1 - ca.cos(math.pi / 2 * x))
-
-
-def rolling_region(s, reg: Regularization, prefix: str = "") -> None:
-    """Declare the mode of ``rolling_direction`` (none for Exp, which has no band)."""
-    if reg is not Regularization.Exp:
-        _limiter_region(s, True, prefix)
-
-
 def _signal_or(e, component, port: str, option: str, constant):
     """The input ``port`` of ``component`` if its option ``option`` is on, else ``constant``."""
     return e.input(getattr(component, port)) if getattr(component, option) else constant
@@ -618,7 +587,7 @@ class RollingResistance(PartialForce):
     cr = ConditionalPort(RealInput("rolling resistance coefficient"), "useCrInput")
 
     def structure(self, s):
-        rolling_region(s, self.reg)
+        regularization_region(s, self.reg)
 
     def flange_force(self, e):
         cr = _signal_or(e, self, "cr", "useCrInput", self.CrConstant)
@@ -629,7 +598,7 @@ class RollingResistance(PartialForce):
         f_nominal = -cr * self.fWeight * ca.cos(ca.atan(inclination))
         e.variable("f_nominal", f_nominal, "N",
                    "nominal rolling resistance without regularization")
-        return -f_nominal * rolling_direction(e, v, self.v0, self.reg)
+        return -f_nominal * regularized_sign(e, v, self.v0, self.reg)
 
 
 #: Translational.Components.IdealRollingWheel is MSL's Rotational one.
@@ -671,7 +640,7 @@ class Vehicle(Component):
     Differences from MSL: MSL composes Vehicle of Mass, Inertia, IdealRollingWheel,
     QuadraticSpeedDependentForce, RollingResistance, Force, Speed and Blocks.Math blocks
     (Atan, Sin, Gain); here its equations are written directly, with the laws of those
-    parts (``quadratic_law``, ``rolling_direction``): a composed acausal Model cannot bind
+    parts (``quadratic_law``, ``regularized_sign``): a composed acausal Model cannot bind
     its parts' parameters to its own (m enters mass.m, fRoll.fWeight = m·g and
     gravForceGain.k = −m·g), so m, g, Cd, ... would not be parameters of the compiled model
     that can be changed at simulation time. The parts' variables other than the forces
@@ -700,7 +669,7 @@ class Vehicle(Component):
         body = s.node("s", TRANSLATIONAL, velocity="v", acceleration="a")
         s.linear({self.flangeT: 1.0, body: -1.0}, 0.0, f"{self.path}: flangeT")
         s.linear({self.flangeR: self.R, body: -1.0}, 0.0, f"{self.path}: R*flangeR.phi = s")
-        rolling_region(s, Regularization.Linear, "fRoll.")
+        regularization_region(s, Regularization.Linear, "fRoll.")
         if self.useWindInput:
             s.state("vWindFiltered", 0.0, "m/s", "wind velocity, filtered (MSL's windSpeed.v)")
 
@@ -714,7 +683,7 @@ class Vehicle(Component):
         alpha = ca.atan(inclination)
         f_drag = self.Cd * self.A * self.rho * _V_REF ** 2 / 2 * quadratic_law(
             (v - self._wind(e)) / _V_REF, False)
-        f_roll = cr * self.m * self.g * ca.cos(alpha) * rolling_direction(
+        f_roll = cr * self.m * self.g * ca.cos(alpha) * regularized_sign(
             e, v, self.vReg, Regularization.Linear, "fRoll.")
         f_grav = -self.m * self.g * ca.sin(alpha)
         e.flow(body, f_drag + f_roll - f_grav)
@@ -794,7 +763,7 @@ class _SpeedDependentForce(PartialForce):
 
     def flange_force(self, e):
         self._record_relative(e, "v")
-        return -self.f_nominal * self.law(self._rel_speed(e, self.flange) / self.v_nominal)
+        return -self.f_nominal * self.law(e, self._rel_speed(e, self.flange) / self.v_nominal)
 
 
 class EddyCurrentForce(PartialForce, interfaces.PartialEddyCurrent):
@@ -820,7 +789,7 @@ class LinearSpeedDependentForce(_SpeedDependentForce):
     """f = −f_nominal·|v/v_nominal| (ForceDirection=True: same direction both ways) or
     −f_nominal·v/v_nominal (ForceDirection=False)."""
 
-    def law(self, x):
+    def law(self, e, x):
         return linear_law(x, self.ForceDirection)
 
 
@@ -828,8 +797,42 @@ class QuadraticSpeedDependentForce(_SpeedDependentForce):
     """f = −f_nominal·(v/v_nominal)² (ForceDirection=True: same direction both ways) or
     −f_nominal·(v/v_nominal)·|v/v_nominal| (ForceDirection=False)."""
 
-    def law(self, x):
+    def law(self, e, x):
         return quadratic_law(x, self.ForceDirection)
+
+
+class InverseSpeedDependentForce(_SpeedDependentForce):
+    """f = −f_nominal·v_nominal/max(|v|, v0) (ForceDirection=True: same direction both ways)
+    or −f_nominal·v/v0 for |v| < v0 and −f_nominal·v_nominal/v outside (ForceDirection=False;
+    as MSL, a jump at |v| = v0 unless v0 = v_nominal). The switch at |v| = v0 is a state
+    event (mode ``region``; rounded over 0.01·v0 in smooth form). v0 [m/s] > 0 (default 0.1
+    = MSL start value)."""
+    v0 = Parameter(0.1, "m/s", "regularization below v0", positive=True)
+
+    def structure(self, s):
+        speed_band_region(s)
+
+    def law(self, e, x):
+        return inverse_law(e, x, self.v0 / self.v_nominal, self.ForceDirection)
+
+
+class SignForce(PartialForce):
+    """Constant force changing sign with speed: f = −f_nominal·sign(v), v = der(s) [m/s]
+    (recorded), regularized within [−v0, v0] by ``reg`` (default Exp, see
+    Regularization). Required: f_nominal [N] (MSL gives no default; negative: a load);
+    v0 [m/s] > 0 (default 0.1 = MSL start value)."""
+    options = {"reg": Regularization.Exp}
+    f_nominal = Parameter(0.0, "N", "nominal force (if negative, force is acting as load)")
+    v0 = Parameter(0.1, "m/s", "regularization below v0", positive=True)
+    required = ("f_nominal",)
+
+    def structure(self, s):
+        regularization_region(s, self.reg)
+
+    def flange_force(self, e):
+        self._record_relative(e, "v")
+        return -self.f_nominal * regularized_sign(e, self._rel_speed(e, self.flange), self.v0,
+                                                  self.reg)
 
 
 class Position(PartialElementaryOneFlangeAndSupport2, interfaces.Position):
