@@ -12,8 +12,10 @@ project = "acausal"
 author = "acausal contributors"
 copyright = "acausal contributors"
 
+# MathJax served from the built site itself (sphinx-mathjax-offline copies it into _static):
+# the pages read offline and load nothing from elsewhere
 extensions = ["sphinx.ext.autodoc", "sphinx.ext.napoleon", "sphinx.ext.mathjax",
-              "myst_parser", "acausal_docs"]
+              "sphinx-mathjax-offline", "myst_parser", "acausal_docs"]
 source_suffix = {".md": "markdown", ".rst": "restructuredtext"}
 exclude_patterns = ["_build", "_ext"]
 myst_enable_extensions = ["dollarmath", "colon_fence"]

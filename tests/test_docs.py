@@ -53,13 +53,20 @@ def test_docs_stay_inside_the_repository():
 def test_docs_build_without_warnings(tmp_path):
     """sphinx-build -W, the gallery's examples not run (ACAUSAL_DOCS_GALLERY=0); the
     component pages list what the classes declare."""
-    for module in ("sphinx", "myst_parser", "furo"):
+    for module in ("sphinx", "myst_parser", "furo", "sphinx-mathjax-offline"):
         pytest.importorskip(module, reason=f"{module} is in the docs extra: pip install '.[docs]'")
     out = tmp_path / "html"
     env = dict(os.environ, ACAUSAL_DOCS_GALLERY="0")
     run = subprocess.run([sys.executable, "-m", "sphinx", "-W", "--keep-going", "-q", "-b",
                           "html", str(DOCS), str(out)], capture_output=True, text=True, env=env)
     assert run.returncode == 0, run.stderr[-5000:]
+
+    theory = (out / "theory.html").read_text()          # math typeset by the site's own copy
+    assert 'src="_static/mathjax/tex-chtml.js"' in theory and (out / "_static" / "mathjax"
+                                                               / "tex-chtml.js").exists()
+    scripts = re.compile(r'<script[^>]*src="(https?:)?//')
+    for page in out.rglob("*.html"):
+        assert not scripts.search(page.read_text()), f"{page.name} loads a script from elsewhere"
 
     from acausal.components.multibody import Revolute
     from acausal.components.translational import Mass
