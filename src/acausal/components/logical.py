@@ -425,7 +425,8 @@ class _WhenChanged(Component):
     −1 before the event iteration at the start (``initial()``), so ``when_changed`` tells the
     start and every instant where the Boolean input ``u`` changes; ``discretes`` (name →
     (start, unit, description)) are the discrete Real variables that the subclass sets
-    there."""
+    there (``assign``). The outputs use the assigned values, as the equations after a
+    when-clause do, so they are right at both limits of an event."""
     u = BooleanInput("connector of Boolean input signal")
     discretes: dict = {}
 
@@ -442,6 +443,12 @@ class _WhenChanged(Component):
         u, pre_u = e.input(self.u), e.mode("pre_u")
         e.mode_update(pre_u, u)
         return u, pre_u < 0, u != pre_u
+
+    @staticmethod
+    def assign(e, variable, value):
+        """``variable`` (a discrete variable) takes ``value`` at events; returns ``value``."""
+        e.mode_update(variable, value)
+        return value
 
 
 class TriggeredTrapezoid(_WhenChanged):
@@ -487,10 +494,10 @@ class TriggeredTrapezoid(_WhenChanged):
         safe_rate = ca.if_else(rate_new == 0, 1, rate_new)
         T_new = ca.if_else(no_ramp, t,
                            t + (end_new - self._output(t, end, rate, T)) / safe_rate)
-        for sym, new in ((end, end_new), (rate, rate_new), (T, T_new)):
-            e.mode_update(sym, ca.if_else(changed, new, sym))
+        now = [self.assign(e, sym, ca.if_else(changed, new, sym))
+               for sym, new in ((end, end_new), (rate, rate_new), (T, T_new))]
         e.indicator("ramp_end", t - T, "s", "time since the ramp reached endValue")
-        e.output(self.y, self._output(t, end, rate, T))
+        e.output(self.y, self._output(t, *now))
 
 
 class LogicalDelay(_WhenChanged):
@@ -508,9 +515,9 @@ class LogicalDelay(_WhenChanged):
         t = e.time
         u, initial, changed = self.when_changed(e)
         t_switch = e.mode("tSwitch")
-        e.mode_update(t_switch, ca.if_else(initial, t - 2 * self.delayTime,
-                                           ca.if_else(changed, t, t_switch)))
-        late = t >= t_switch + self.delayTime
+        now = self.assign(e, t_switch, ca.if_else(initial, t - 2 * self.delayTime,
+                                                  ca.if_else(changed, t, t_switch)))
+        late = t >= now + self.delayTime
         e.indicator("delayed", t - t_switch - self.delayTime, "s",
                     "time since delayTime passed after the last change of u")
         e.output(self.y1, ca.logic_or(u, ca.logic_not(late)))
@@ -847,7 +854,7 @@ class MathBoolean:
             u, initial, changed = self.when_changed(e)
             t_next = e.mode("t_next")
             rising = ca.logic_and(ca.logic_and(u, changed), ca.logic_not(initial))
-            e.mode_update(t_next, ca.if_else(rising, t + self.delayTime,
-                                             ca.if_else(changed, t - 1, t_next)))
+            now = self.assign(e, t_next, ca.if_else(rising, t + self.delayTime,
+                                                    ca.if_else(changed, t - 1, t_next)))
             e.indicator("delayed", t - t_next, "s", "time since t_next")
-            e.output(self.y, ca.logic_and(u, t >= t_next))
+            e.output(self.y, ca.logic_and(u, t >= now))
