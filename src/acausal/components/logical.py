@@ -31,9 +31,20 @@ Edge detectors (``Edge``, ``FallingEdge``, ``Change``, MathBoolean's ``RisingEdg
 instants, as Modelica's edge(), change() and sample(): blocks they feed (``RSFlipFlop``,
 ``Timer``) act there; the Result, recorded after each event, shows them false.
 
-Not here yet: ZeroCrossing, TriggeredTrapezoid, LogicalDelay;
-Integer signals; model-level Boolean inputs and outputs (``Input`` / ``Output`` are Real: put
-a BooleanToReal in between).
+After MSL 4.1 also ZeroCrossing (an edge as above, at the state event where u crosses 0),
+TriggeredTrapezoid, LogicalDelay and MathBoolean.OnDelay (their when-clauses assign discrete
+variables at the edges of u; the delayed switchings and ramp ends are state events),
+AssertCondition, BooleanReplicator.
+
+MathBoolean: MSL has two blocks named And (Or, Xor, Nand, Nor, Not): Logical.And with the
+inputs u1, u2 and MathBoolean.And with a vector input u[nu]. Logical's keep their plain
+names here (``And``, as before); MathBoolean's are in the namespace class ``MathBoolean``,
+written as in MSL: ``MathBoolean.And(nu=3)``, ``MathBoolean.OnDelay(delayTime=1)``.
+MathBoolean.Not, RisingEdge, FallingEdge and ChangingEdge are Logical's classes (the same
+equations). Not available: MultiSwitch and the Integer blocks (no Integer connectors).
+
+Not here yet: Integer signals; model-level Boolean inputs and outputs (``Input`` /
+``Output`` are Real: put a BooleanToReal in between).
 """
 from __future__ import annotations
 

@@ -10,8 +10,7 @@ import numpy as np
 from ...core import Component, Parameter, RealInput, RealOutput, VectorPort
 from ...core.component import who
 from ...errors import ParameterError
-from .interfaces import (_matrix, _MultiInput, SI2SO, SISO, _size, _Sized, SO, _StartValues,
-                         _vmax)
+from .interfaces import _matrix, _MultiInput, SI2SO, SISO, _Sized, SO, _StartValues, _vmax
 from .nonlinear import _limit, _limited, _limiter_region
 
 
