@@ -94,3 +94,14 @@ def test_docs_build_without_warnings(tmp_path):
     revolute = page[page.index('id="joints-revolute"'):]
     assert "<p>useAxisFlange = True</p>" in revolute          # axis exists only with the option
     assert Revolute.parameters()["n"].description in revolute
+    page = html.unescape((out / "components" / "signals.html").read_text())
+    for section in ("signals-replicator", "signals-extractsignal", "signals-multiplex",
+                    "signals-multiplex6", "signals-demultiplex2", "signals-realpassthrough"):
+        assert f'id="{section}"' in page, f"the signals page lacks {section}"
+    page = html.unescape((out / "components" / "logical.html").read_text())
+    for section in ("logical-and", "mathboolean-and", "mathboolean-ondelay",
+                    "mathboolean-xor", "logical-triggeredtrapezoid", "logical-zerocrossing",
+                    "logical-logicaldelay", "logical-booleanreplicator"):
+        assert f'id="{section}"' in page, f"the logical page lacks {section}"
+    on_delay = page[page.index('id="mathboolean-ondelay"'):]
+    assert "<p>delayTime</p>" in on_delay[:on_delay.index("</section>")]

@@ -121,6 +121,16 @@ def differences(text: str) -> list[str]:
     return out
 
 
+def namespace(name: str):
+    """The module ``name``, or the namespace class ``module.Class`` (MSL's subpackages of
+    blocks whose names repeat others', e.g. ``logical.MathBoolean``)."""
+    try:
+        return importlib.import_module(name)
+    except ModuleNotFoundError:
+        parent, _, attr = name.rpartition(".")
+        return getattr(importlib.import_module(parent), attr)
+
+
 def components(module) -> list[tuple[str, type]]:
     """The component classes ``module`` exports, partial (base) classes last."""
     names = getattr(module, "__all__", None) or [n for n in vars(module) if not n.startswith("_")]
@@ -170,7 +180,7 @@ class ComponentTables(SphinxDirective):
 
     def run(self) -> list[nodes.Node]:
         name = self.arguments[0]
-        module = importlib.import_module(name)
+        module = namespace(name)
         self.env.note_dependency(inspect.getsourcefile(module))
         short = name.rsplit(".", 1)[-1]
         out: list[nodes.Node] = self.parse(inspect.cleandoc(module.__doc__ or ""))

@@ -31,9 +31,20 @@ Edge detectors (``Edge``, ``FallingEdge``, ``Change``, MathBoolean's ``RisingEdg
 instants, as Modelica's edge(), change() and sample(): blocks they feed (``RSFlipFlop``,
 ``Timer``) act there; the Result, recorded after each event, shows them false.
 
-Not here yet: ZeroCrossing, TriggeredTrapezoid, LogicalDelay;
-Integer signals; model-level Boolean inputs and outputs (``Input`` / ``Output`` are Real: put
-a BooleanToReal in between).
+After MSL 4.1 also ZeroCrossing (an edge as above, at the state event where u crosses 0),
+TriggeredTrapezoid, LogicalDelay and MathBoolean.OnDelay (their when-clauses assign discrete
+variables at the edges of u; the delayed switchings and ramp ends are state events),
+AssertCondition, BooleanReplicator.
+
+MathBoolean: MSL has two blocks named And (Or, Xor, Nand, Nor, Not): Logical.And with the
+inputs u1, u2 and MathBoolean.And with a vector input u[nu]. Logical's keep their plain
+names here (``And``, as before); MathBoolean's are in the namespace class ``MathBoolean``,
+written as in MSL: ``MathBoolean.And(nu=3)``, ``MathBoolean.OnDelay(delayTime=1)``.
+MathBoolean.Not, RisingEdge, FallingEdge and ChangingEdge are Logical's classes (the same
+equations). Not available: MultiSwitch and the Integer blocks (no Integer connectors).
+
+Not here yet: Integer signals; model-level Boolean inputs and outputs (``Input`` /
+``Output`` are Real: put a BooleanToReal in between).
 """
 from __future__ import annotations
 
@@ -41,10 +52,11 @@ import casadi as ca
 import numpy as np
 
 from ..core import (BooleanInput, BooleanOutput, Component, Parameter, RealInput, RealOutput,
-                    Unavailable)
+                    Unavailable, VectorPort)
 from ..core.component import who
 from ..errors import ParameterError, StructureError
 from .signals import Extrapolation
+from .signals.interfaces import _MultiInput, _size, _Sized
 
 __all__ = [
     "partialBooleanSISO", "partialBooleanSI2SO", "partialBooleanSO",
@@ -56,7 +68,8 @@ __all__ = [
     "BooleanConstant", "BooleanStep", "BooleanPulse", "BooleanTable",
     "BooleanToReal", "RealToBoolean", "BooleanPassThrough", "TerminateSimulation",
     "Edge", "FallingEdge", "Change", "RisingEdge", "ChangingEdge", "Timer", "RSFlipFlop",
-    "SampleTrigger",
+    "SampleTrigger", "ZeroCrossing", "TriggeredTrapezoid", "LogicalDelay", "AssertCondition",
+    "BooleanReplicator", "PartialBooleanMISO", "MathBoolean",
 ]
 
 
@@ -418,6 +431,155 @@ class RSFlipFlop(Component):
         e.output(self.QI, qi)
 
 
+class _WhenChanged(Component):
+    """A block with Modelica's ``when {initial(), u, not u}``: the mode ``pre_u`` is pre(u),
+    −1 before the event iteration at the start (``initial()``), so ``when_changed`` tells the
+    start and every instant where the Boolean input ``u`` changes; ``discretes`` (name →
+    (start, unit, description)) are the discrete Real variables that the subclass sets
+    there (``assign``). The outputs use the assigned values, as the equations after a
+    when-clause do, so they are right at both limits of an event."""
+    u = BooleanInput("connector of Boolean input signal")
+    discretes: dict = {}
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("pre_u", -1, values=(-1, 0, 1),
+               description="pre(u): the input before the event; -1 before the start")
+        for name, (start, unit, text) in self.discretes.items():
+            s.discrete(name, start, unit, text)
+
+    def when_changed(self, e):
+        """(u, initial, changed): the input, whether this is the start, whether u changed
+        (or this is the start); pre_u takes u."""
+        u, pre_u = e.input(self.u), e.mode("pre_u")
+        e.mode_update(pre_u, u)
+        return u, pre_u < 0, u != pre_u
+
+    @staticmethod
+    def assign(e, variable, value):
+        """``variable`` (a discrete variable) takes ``value`` at events; returns ``value``."""
+        e.mode_update(variable, value)
+        return value
+
+
+class TriggeredTrapezoid(_WhenChanged):
+    """Triggered trapezoid generator (MSL Logical.TriggeredTrapezoid): the Real output ``y``
+    rises from ``offset`` to offset + ``amplitude`` within ``rising`` [s] when the Boolean
+    input ``u`` becomes true, and falls back within ``falling`` [s] when it becomes false;
+    an edge during a ramp turns it at the value it has reached, with the other slope. With
+    MSL's discrete variables: at the start and at every change of u, endValue = offset +
+    amplitude if u else offset, rate = ±amplitude/rising (falling), T = time + (endValue −
+    pre(y))/rate (time where no ramp: rising or falling 0, amplitude 0, the start);
+    y = endValue − (T − time)·rate for time < T, endValue after (a state event at T).
+
+    ``falling`` defaults to ``rising`` as given at construction (MSL: falling = rising).
+    """
+    amplitude = Parameter(1.0, "", "amplitude of trapezoid")
+    rising = Parameter(0.0, "s", "rising duration of trapezoid", nonnegative=True)
+    falling = Parameter(0.0, "s", "falling duration of trapezoid (default: rising)",
+                        nonnegative=True)
+    offset = Parameter(0.0, "", "offset of output signal")
+    y = RealOutput("connector of Real output signal")
+    discretes = {"endValue": (0.0, "", "value of y at time of recent edge"),
+                 "rate": (0.0, "1/s", "current rising/falling rate"),
+                 "T": (0.0, "s", "predicted time of output reaching endValue")}
+
+    def __init__(self, name: str | None = None, **params):
+        params.setdefault("falling", params.get("rising", 0.0))
+        super().__init__(name, **params)
+
+    @staticmethod
+    def _output(t, end, rate, T):
+        return ca.if_else(t < T, end - (T - t) * rate, end)
+
+    def physics(self, e):
+        t = e.time
+        u, initial, changed = self.when_changed(e)
+        end, rate, T = (e.mode(n) for n in ("endValue", "rate", "T"))
+        end_new = ca.if_else(u, self.offset + self.amplitude, self.offset)
+        rate_new = ca.if_else(ca.logic_and(u, self.rising > 0), self.amplitude / self.rising,
+                              ca.if_else(ca.logic_and(ca.logic_not(u), self.falling > 0),
+                                         -self.amplitude / self.falling, 0))
+        no_ramp = ca.logic_or(ca.logic_or(rate_new == 0, ca.fabs(self.amplitude) <= 0),
+                              initial)
+        safe_rate = ca.if_else(rate_new == 0, 1, rate_new)
+        T_new = ca.if_else(no_ramp, t,
+                           t + (end_new - self._output(t, end, rate, T)) / safe_rate)
+        now = [self.assign(e, sym, ca.if_else(changed, new, sym))
+               for sym, new in ((end, end_new), (rate, rate_new), (T, T_new))]
+        e.indicator("ramp_end", t - T, "s", "time since the ramp reached endValue")
+        e.output(self.y, self._output(t, *now))
+
+
+class LogicalDelay(_WhenChanged):
+    """Delay a Boolean signal (MSL Logical.LogicalDelay): when ``u`` becomes true, ``y1``
+    becomes true at once and ``y2`` ``delayTime`` [s] later; when u becomes false, y2
+    becomes false at once and y1 delayTime later. tSwitch, the instant of u's last change
+    (time − 2·delayTime at the start), is a discrete variable; the delayed switchings are
+    state events at tSwitch + delayTime."""
+    delayTime = Parameter(0.0, "s", "time delay", nonnegative=True)
+    y1 = BooleanOutput("true at once when u becomes true, false delayTime after it falls")
+    y2 = BooleanOutput("true delayTime after u becomes true, false at once when it falls")
+    discretes = {"tSwitch": (0.0, "s", "time instant of the last change of u")}
+
+    def physics(self, e):
+        t = e.time
+        u, initial, changed = self.when_changed(e)
+        t_switch = e.mode("tSwitch")
+        now = self.assign(e, t_switch, ca.if_else(initial, t - 2 * self.delayTime,
+                                                  ca.if_else(changed, t, t_switch)))
+        late = t >= now + self.delayTime
+        e.indicator("delayed", t - t_switch - self.delayTime, "s",
+                    "time since delayTime passed after the last change of u")
+        e.output(self.y1, ca.logic_or(u, ca.logic_not(late)))
+        e.output(self.y2, ca.logic_and(u, late))
+
+
+class ZeroCrossing(partialBooleanSO):
+    """Trigger zero crossings of ``u`` (MSL Logical.ZeroCrossing): y is true at the instant
+    the Real input ``u`` crosses zero (a state event) while the Boolean input ``enable`` is
+    true, false elsewhere and at instants where enable changes: y = change(u_pos) and not
+    edge(enable) and not edge(not enable), u_pos = enable and u >= 0; pre(u_pos) and
+    pre(enable) are modes starting false. As the edge blocks, y is true only within the
+    event iteration (the Result shows it false): blocks it feeds (Timer, RSFlipFlop) act
+    there."""
+    u = RealInput("connector of Real input signal")
+    enable = BooleanInput("zero input crossing is triggered if the enable input signal is "
+                          "true")
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        s.mode("pre_u_pos", 0, values=(0, 1), description="pre(u_pos): enable and u >= 0")
+        s.mode("pre_enable", 0, values=(0, 1), description="pre(enable)")
+
+    def physics(self, e):
+        u, enable = e.input(self.u), e.input(self.enable)
+        pre_pos, pre_enable = e.mode("pre_u_pos"), e.mode("pre_enable")
+        u_pos = ca.logic_and(enable, u >= 0)
+        e.mode_update(pre_pos, u_pos)
+        e.mode_update(pre_enable, enable)
+        e.indicator("crossing", ca.if_else(enable, u, 1), "", "u while enabled")
+        e.output(self.y, ca.logic_and(u_pos != pre_pos, enable == pre_enable))
+
+
+class AssertCondition(Component):
+    """Assert that the Boolean input ``u`` is true (MSL Logical.AssertCondition): simulate()
+    stops with a SimulationError naming the block and ``message`` (constructor argument)
+    at the first point where u is false (``PhysicsBuilder.assertion``).
+
+    MSL differences: the assertion level is error only (no ``assertionLevel`` warning).
+    """
+    u = BooleanInput("connector of Boolean input signal")
+
+    def __init__(self, name: str | None = None, *, message: str = "Assert block failed",
+                 **params):
+        super().__init__(name, **params)
+        self.__dict__["message"] = str(message)
+
+    def physics(self, e):
+        e.assertion(e.input(self.u), self.message)
+
+
 class Switch(Component):
     """y = if u2 then u1 else u3: switch between two Real signals by a Boolean one (MSL
     Logical.Switch). Inputs ``u1``, ``u3`` (Real), ``u2`` (Boolean); output ``y`` (Real)."""
@@ -564,6 +726,34 @@ class BooleanPassThrough(partialBooleanSISO):
         e.output(self.y, e.input(self.u))
 
 
+class BooleanReplicator(_Sized, Component):
+    """y = fill(u, nout) (MSL Routing.BooleanReplicator): the Boolean input ``u`` copied to
+    the ``nout`` outputs ``y[1]`` .. ``y[nout]`` (constructor argument, default 1)."""
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, nout: int = 1, **params):
+        return super().__new__(cls._variant(_size(nout, f"{cls.__name__}: nout (number of "
+                                                        f"outputs)", 1)))
+
+    @staticmethod
+    def _declare(nout: int) -> dict:
+        return {"u": BooleanInput("connector of Boolean input signal"),
+                "y": VectorPort(BooleanOutput, nout, "connector of Boolean output signals")}
+
+    def __init__(self, name: str | None = None, *, nout: int = 1, **params):
+        super().__init__(name, **params)
+
+    @property
+    def nout(self) -> int:
+        """Number of outputs."""
+        return self._key[0]
+
+    def physics(self, e):
+        u = e.input(self.u)
+        for port in self.y:
+            e.output(port, u)
+
+
 # ---- terminate (Modelica.Blocks.Logical) --------------------------------------------------------
 class TerminateSimulation(Component):
     """Ends the simulation when ``condition`` becomes true (MSL
@@ -586,3 +776,96 @@ class TerminateSimulation(Component):
     def physics(self, e):
         if not e.smooth:
             e.terminate(e.input(self.condition), self.terminationText)
+
+
+# ---- MathBoolean (Modelica.Blocks.MathBoolean) --------------------------------------------------
+class PartialBooleanMISO(_MultiInput, partialBooleanSO):
+    """Boolean inputs ``u[1]`` .. ``u[nu]`` (``nu``: constructor argument, ≥ 1; MSL's
+    connectorSizing counts them), Boolean output ``y`` (MSL Interfaces.PartialBooleanMISO)."""
+    _classes: dict = {}
+    _input = BooleanInput
+
+
+def _all(values: list):
+    out = values[0]
+    for v in values[1:]:
+        out = ca.logic_and(out, v)
+    return out
+
+
+def _any(values: list):
+    out = values[0]
+    for v in values[1:]:
+        out = ca.logic_or(out, v)
+    return out
+
+
+class MathBoolean:
+    """The blocks of Modelica.Blocks.MathBoolean, as ``MathBoolean.And(nu=3)``: And, Or, Xor,
+    Nand, Nor have a vector input ``u[1]`` .. ``u[nu]`` (``nu``, constructor argument ≥ 1)
+    and are not Logical's And .. Nor (inputs u1, u2) of the same names, so they live in
+    this namespace, as in MSL. Not, RisingEdge, FallingEdge and ChangingEdge are the
+    equations of Logical.Not, Logical.Edge, Logical.FallingEdge and Logical.Change (the
+    same classes' behavior); OnDelay is MathBoolean's own. MultiSwitch, ShowValue and the
+    Integer-valued blocks are not available (no Integer connectors)."""
+
+    class And(PartialBooleanMISO):
+        """y = u[1] and u[2] and ... and u[nu] (MSL MathBoolean.And)."""
+        _classes: dict = {}
+
+        def physics(self, e):
+            e.output(self.y, _all(self.inputs(e)))
+
+    class Or(PartialBooleanMISO):
+        """y = u[1] or u[2] or ... or u[nu] (MSL MathBoolean.Or)."""
+        _classes: dict = {}
+
+        def physics(self, e):
+            e.output(self.y, _any(self.inputs(e)))
+
+    class Xor(PartialBooleanMISO):
+        """y = oneTrue(u): true if exactly one element of u is true (MSL MathBoolean.Xor)."""
+        _classes: dict = {}
+
+        def physics(self, e):
+            e.output(self.y, sum(self.inputs(e), ca.SX(0)) == 1)
+
+    class Nand(PartialBooleanMISO):
+        """y = not (u[1] and u[2] and ... and u[nu]) (MSL MathBoolean.Nand)."""
+        _classes: dict = {}
+
+        def physics(self, e):
+            e.output(self.y, ca.logic_not(_all(self.inputs(e))))
+
+    class Nor(PartialBooleanMISO):
+        """y = not (u[1] or u[2] or ... or u[nu]) (MSL MathBoolean.Nor)."""
+        _classes: dict = {}
+
+        def physics(self, e):
+            e.output(self.y, ca.logic_not(_any(self.inputs(e))))
+
+    Not = Not
+    RisingEdge = RisingEdge
+    FallingEdge = FallingEdge
+    ChangingEdge = ChangingEdge
+
+    class OnDelay(_WhenChanged, partialBooleanSO):
+        """Delay a rising edge of the Boolean input ``u`` by ``delayTime`` [s], not a
+        falling one (MSL MathBoolean.OnDelay): y becomes true delayTime after u became true,
+        if u is still true then, and false at once when u becomes false. As MSL's algorithm
+        (``when initial()`` first): a u true at the start gives y true at once. t_next, the
+        instant y becomes true (time + delayTime at a rising edge), is a discrete variable;
+        y's switching there is a state event."""
+        required = ("delayTime",)
+        delayTime = Parameter(1.0, "s", "delay time", positive=True)
+        discretes = {"t_next": (0.0, "s", "time instant where y becomes true if u stays true")}
+
+        def physics(self, e):
+            t = e.time
+            u, initial, changed = self.when_changed(e)
+            t_next = e.mode("t_next")
+            rising = ca.logic_and(ca.logic_and(u, changed), ca.logic_not(initial))
+            now = self.assign(e, t_next, ca.if_else(rising, t + self.delayTime,
+                                                    ca.if_else(changed, t - 1, t_next)))
+            e.indicator("delayed", t - t_next, "s", "time since t_next")
+            e.output(self.y, ca.logic_and(u, t >= now))

@@ -48,7 +48,9 @@ mechanical part; a purely algebraic loop is reported by the compiler as an error
 
 The blocks live in modules after MSL's packages, all importable from here:
 ``interfaces`` (SO, SISO, SI2SO, SignalSource, ``Init`` and what the blocks share),
-``sources``, ``math_blocks`` (Math and Routing), ``nonlinear``, ``continuous``;
+``sources``, ``math_blocks`` (Math), ``routing`` (Routing: RealPassThrough, Replicator,
+ExtractSignal, Multiplex, DeMultiplex, Multiplex2..6, DeMultiplex2..6: outputs that are
+inputs, vector connectors sized at construction), ``nonlinear``, ``continuous``;
 ``filter_design`` computes the analog filters' coefficients.
 """
 from .interfaces import (SO, SISO, SI2SO, SignalSource, Init)
@@ -57,10 +59,13 @@ from .sources import (Constant, Step, Ramp, Sine, Cosine, ExpSine, Pulse, Trapez
                       ContinuousClock, Exponentials, SawTooth, Sinc,
                       SineVariableFrequencyAndAmplitude, CosineVariableFrequencyAndAmplitude,
                       LogFrequencySweep, KinematicPTP)
-from .math_blocks import (Gain, Add, Add3, Feedback, Product, Division, Sum, RealPassThrough, Abs,
-                          Sign, Sqrt, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Exp,
+from .math_blocks import (Gain, Add, Add3, Feedback, Product, Division, Sum, Abs, Sign,
+                          Sqrt, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Exp,
                           Power, Exponentiation, Log, Log10, Atan2, Max, Min, MinMax, MultiSum,
                           MultiProduct, MatrixGain, Mean, RootMeanSquare)
+from .routing import (RealPassThrough, Replicator, ExtractSignal, Multiplex, DeMultiplex,
+                      Multiplex2, Multiplex3, Multiplex4, Multiplex5, Multiplex6, DeMultiplex2,
+                      DeMultiplex3, DeMultiplex4, DeMultiplex5, DeMultiplex6)
 from .nonlinear import (Limiter, VariableLimiter, DeadZone, LimiterHomotopy,
                         VariableLimiterHomotopy, SlewRateLimiter, PadeDelay, pade_polynomials,
                         balance_abc)
@@ -82,5 +87,7 @@ __all__ = [
     "Abs", "Sign", "Sqrt", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Sinh", "Cosh", "Tanh",
     "Exp", "Power", "Exponentiation", "Log", "Log10", "Atan2", "Max", "Min", "MinMax", "MultiSum",
     "MultiProduct", "MatrixGain", "Mean", "RootMeanSquare", "SlewRateLimiter", "PadeDelay",
-    "pade_polynomials", "balance_abc",
+    "pade_polynomials", "balance_abc", "Replicator", "ExtractSignal", "Multiplex", "DeMultiplex",
+    "Multiplex2", "Multiplex3", "Multiplex4", "Multiplex5", "Multiplex6", "DeMultiplex2",
+    "DeMultiplex3", "DeMultiplex4", "DeMultiplex5", "DeMultiplex6",
 ]

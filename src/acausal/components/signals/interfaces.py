@@ -8,7 +8,7 @@ from enum import Enum
 import casadi as ca
 import numpy as np
 
-from ...core import Component, Parameter, RealInput, RealOutput
+from ...core import BooleanInput, Component, Parameter, RealInput, RealOutput, VectorPort
 from ...errors import ParameterError
 
 
@@ -91,7 +91,7 @@ class _Sized:
             base._classes[key] = type(base.__name__, (base,), {
                 "__doc__": base._written, "_written": base._written,
                 "__module__": base.__module__,
-                "__qualname__": base.__name__, "_key": key, **base._declare(*key)})
+                "__qualname__": base.__qualname__, "_key": key, **base._declare(*key)})
         return base._classes[key]
 
     def __reduce_ex__(self, protocol):
@@ -191,3 +191,33 @@ def _size(value, what: str, least: int) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < least:
         raise ParameterError(f"{what} must be an integer >= {least}, got {value!r}")
     return int(value)
+
+
+class _MultiInput(_Sized, Component):
+    """A block with ``nu`` inputs ``u[1]`` .. ``u[nu]`` (constructor argument; MSL's
+    connectorSizing counts them) of the port class ``_input``, its class made per nu (MSL
+    PartialRealMISO, PartialBooleanMISO)."""
+    _classes: dict = {}
+    _least = 1
+    _input: type = RealInput
+
+    def __new__(cls, name=None, *, nu: int = 1, **params):
+        return super().__new__(cls._variant(_size(nu, f"{cls.__qualname__}: nu (number of "
+                                                      f"inputs)", cls._least)))
+
+    @classmethod
+    def _declare(cls, nu: int) -> dict:
+        kind = "Boolean" if issubclass(cls._input, BooleanInput) else "Real"
+        return {"u": VectorPort(cls._input, nu, tuple(f"connector of {kind} input signal {i}"
+                                                       for i in range(1, nu + 1)))}
+
+    def __init__(self, name: str | None = None, *, nu: int = 1, **params):
+        super().__init__(name, **params)
+
+    @property
+    def nu(self) -> int:
+        """Number of inputs."""
+        return self._key[0]
+
+    def inputs(self, e) -> list:
+        return [e.input(p) for p in self.u]

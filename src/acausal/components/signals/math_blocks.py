@@ -1,4 +1,4 @@
-"""Math (Modelica.Blocks.Math) and Routing: gains, sums, products, functions of the inputs,
+"""Math (Modelica.Blocks.Math): gains, sums, products, functions of the inputs,
 sampled means."""
 from __future__ import annotations
 
@@ -10,15 +10,8 @@ import numpy as np
 from ...core import Component, Parameter, RealInput, RealOutput, VectorPort
 from ...core.component import who
 from ...errors import ParameterError
-from .interfaces import _matrix, SI2SO, SISO, _size, _Sized, SO, _StartValues, _vmax
+from .interfaces import _matrix, _MultiInput, SI2SO, SISO, _Sized, SO, _StartValues, _vmax
 from .nonlinear import _limit, _limited, _limiter_region
-
-
-class RealPassThrough(SISO):
-    """y = u (MSL Routing.RealPassThrough): a signal passed on under another name."""
-
-    def physics(self, e):
-        e.output(self.y, e.input(self.u))
 
 
 class Gain(SISO):
@@ -377,33 +370,6 @@ class Min(SI2SO):
 
     def physics(self, e):
         e.output(self.y, ca.fmin(e.input(self.u1), e.input(self.u2)))
-
-
-class _MultiInput(_Sized, Component):
-    """A block with ``nu`` inputs ``u[1]`` .. ``u[nu]`` (constructor argument; MSL's
-    connectorSizing counts them), its class made per nu (MSL PartialRealMISO)."""
-    _classes: dict = {}
-    _least = 1
-
-    def __new__(cls, name=None, *, nu: int = 1, **params):
-        return super().__new__(cls._variant(_size(nu, f"{cls.__name__}: nu (number of "
-                                                      f"inputs)", cls._least)))
-
-    @staticmethod
-    def _declare(nu: int) -> dict:
-        return {"u": VectorPort(RealInput, nu, tuple(f"connector of Real input signal {i}"
-                                                      for i in range(1, nu + 1)))}
-
-    def __init__(self, name: str | None = None, *, nu: int = 1, **params):
-        super().__init__(name, **params)
-
-    @property
-    def nu(self) -> int:
-        """Number of inputs."""
-        return self._key[0]
-
-    def inputs(self, e) -> list:
-        return [e.input(p) for p in self.u]
 
 
 class MultiSum(_MultiInput, SO):
