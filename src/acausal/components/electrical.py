@@ -44,7 +44,11 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
-           "IdealDiode", "IdealOpeningSwitch", "IdealClosingSwitch", "Short", "Idle",
+           "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",
+           "IdealClosingSwitch", "ControlledIdealOpeningSwitch", "ControlledIdealClosingSwitch",
+           "IdealTwoWaySwitch", "IdealCommutingSwitch", "ControlledIdealTwoWaySwitch",
+           "ControlledIdealCommutingSwitch", "IdealIntermediateSwitch",
+           "ControlledIdealIntermediateSwitch", "Short", "Idle",
            "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp",
            "IdealOpAmpLimited", "Diode"]
 
@@ -782,18 +786,20 @@ class _IdealSwitching(_ConditionalHeatPort, OnePort):
         self._losses(e, v * i, self._T_heatPort(e))
 
 
-#: how far past the knee [1: A when conducting, V when blocking] the diode's event is
-#: located, so that s < 0 is unambiguous at the event (at s = 0 itself both states hold)
+#: how far past the knee [1: A when conducting, V when blocking] the event of an ideal
+#: semiconductor is located, so that s < 0 is unambiguous at the event (at s = 0 itself
+#: both states hold)
 S_NOISE = 1e-10
 
 
-class IdealDiode(_IdealSwitching):
-    """Ideal diode (MSL Ideal.IdealDiode): the characteristic of ``_IdealSwitching`` with
-    the Boolean mode off = s < 0 (start true, MSL's), switched at a state event (indicator
-    ``s``) located where s has crossed 0 by ``S_NOISE`` (1e-10: a current of 1e-10 A, a
-    voltage of 1e-10 V; the switching instant is late by S_NOISE/|ds/dt|, 3e-12 s in the
-    rectifier of the tests). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0. No smooth form
-    (refused when compiled with smooth=True)."""
+class _IdealSemiconductor(_IdealSwitching):
+    """MSL Interfaces.IdealSemiconductor: the characteristic of ``_IdealSwitching`` through
+    the knee (Vknee [V], Goff·Vknee [A]), its Boolean mode off (start true, MSL's) switched
+    at events to ``_next_off`` (of the present mode, MSL's pre(off)), and a state event
+    where s crosses 0: its indicator ``s`` is located past the knee by ``S_NOISE`` (1e-10:
+    a current of 1e-10 A, a voltage of 1e-10 V; the switching instant is late by
+    S_NOISE/|ds/dt|, 3e-12 s in the rectifier of the tests), so that s < 0 is unambiguous
+    at the event. No smooth form (refused when compiled with smooth=True)."""
     Vknee = Parameter(0.0, "V", "forward threshold voltage", nonnegative=True)
     T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
                   positive=True)
@@ -807,13 +813,50 @@ class IdealDiode(_IdealSwitching):
         super().structure(s)
         s.mode("off", 1, values=(0, 1), description="switching state (1: blocking)")
 
+    def _next_off(self, e, off, blocking):
+        """The mode off after an event, from the present one and ``blocking`` (s < 0)."""
+        raise NotImplementedError
+
     def _off(self, e):
         off, sa = e.mode("off"), e.state("s")
-        e.mode_update(off, sa < 0)
+        e.mode_update(off, self._next_off(e, off, sa < 0))
         e.indicator("s", ca.if_else(off, sa - S_NOISE, sa + S_NOISE), "1",
-                    "position on the characteristic past the knee by S_NOISE: the diode "
+                    "position on the characteristic past the knee by S_NOISE: the element "
                     "switches where it crosses 0")
         return off
+
+
+class IdealDiode(_IdealSemiconductor):
+    """Ideal diode (MSL Ideal.IdealDiode): the characteristic of ``_IdealSwitching`` with
+    off = s < 0, switched at the state event where s crosses 0 (``_IdealSemiconductor``).
+    Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0. No smooth form (refused when compiled with
+    smooth=True)."""
+
+    def _next_off(self, e, off, blocking):
+        return blocking
+
+
+class IdealThyristor(_IdealSemiconductor):
+    """Ideal thyristor (MSL Ideal.IdealThyristor): off = s < 0 or (pre(off) and not fire):
+    a blocking thyristor conducts once v > Vknee while the Boolean input ``fire`` is true
+    (switched at the event of ``fire``'s rise or of s crossing 0), and keeps conducting
+    after ``fire`` falls until its current falls below Goff·Vknee (s < 0). Ron [Ohm] 1e-5,
+    Goff [S] 1e-5, Vknee [V] 0; no smooth form."""
+    fire = BooleanInput("true => the thyristor may conduct (it turns on if v > Vknee)")
+
+    def _next_off(self, e, off, blocking):
+        return ca.logic_or(blocking, ca.logic_and(off, ca.logic_not(e.input(self.fire))))
+
+
+class IdealGTOThyristor(_IdealSemiconductor):
+    """Ideal GTO thyristor or switching transistor (MSL Ideal.IdealGTOThyristor): off = s < 0
+    or not fire: conducting while v > Vknee and the Boolean input ``fire`` is true, blocking
+    as soon as ``fire`` falls (at its event). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0;
+    no smooth form."""
+    fire = BooleanInput("true => conducting if v > Vknee, false => blocking")
+
+    def _next_off(self, e, off, blocking):
+        return ca.logic_or(blocking, ca.logic_not(e.input(self.fire)))
 
 
 class IdealOpeningSwitch(_IdealSwitching):
@@ -834,6 +877,180 @@ class IdealClosingSwitch(_IdealSwitching):
 
     def _off(self, e):
         return 1 - e.input(self.control)
+
+
+class _ControlPin(Component):
+    """The control pin of MSL's Controlled* switches: no current (control.i = 0); the
+    switch state follows control.v > level [V], a Boolean mode ``above`` switched at the
+    state event where control.v − level crosses 0 (indicator ``control``). No smooth form
+    (refused when compiled with smooth=True)."""
+    level = Parameter(0.5, "V", "switch level")
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        super().structure(s)
+        s.mode("above", 0, values=(0, 1), description="control.v > level")
+
+    def _above(self, e):
+        """The mode control.v > level (1: true)."""
+        above, vc = e.mode("above"), e.potential(self.control)
+        e.flow(self.control, 0.0)
+        e.mode_update(above, vc > self.level)
+        e.indicator("control", vc - self.level, "V", "control.v - level: the switch "
+                                                      "switches where it crosses 0")
+        return above
+
+
+class ControlledIdealOpeningSwitch(_ControlPin, _IdealSwitching):
+    """Controlled ideal electrical opener (MSL Ideal.ControlledIdealOpeningSwitch): off =
+    control.v > level [V] (0.5), the pin ``control`` carrying no current; Ron [Ohm] 1e-5,
+    Goff [S] 1e-5."""
+    control = Pin("control pin: control.v > level switch open, otherwise p--n connected")
+
+    def _off(self, e):
+        return self._above(e)
+
+
+class ControlledIdealClosingSwitch(_ControlPin, _IdealSwitching):
+    """Controlled ideal electrical closer (MSL Ideal.ControlledIdealClosingSwitch): off =
+    control.v < level [V] (0.5; at control.v = level exactly it is closed here, open in MSL:
+    the instant of the crossing), the pin ``control`` carrying no current; Ron [Ohm] 1e-5,
+    Goff [S] 1e-5."""
+    control = Pin("control pin: control.v > level switch closed, otherwise switch open")
+
+    def _off(self, e):
+        return 1 - self._above(e)
+
+
+class _TwoWaySwitching(_ConditionalHeatPort):
+    """MSL's IdealTwoWaySwitch and its controlled twin: the pin p connected to n1 (a
+    resistance Ron [Ohm] 1e-5) and not to n2 (a conductance Goff [S] 1e-5) while the
+    switch state ``_to_n2`` is false, the other way round while it is true; each path k
+    (p–n1, p–n2) a point s_k [1] (an algebraic unknown) on its two-segment characteristic,
+    p.v − nk.v = s_k·(Ron if closed else 1), nk.i = −s_k·(1 if closed else Goff),
+    p.i = −(n1.i + n2.i). T [K] 293.15 without heat port (MSL's final T); LossPower =
+    p.i·p.v + n1.i·n1.v + n2.i·n2.v [W]."""
+    Ron = Parameter(1e-5, "Ohm", "closed switch resistance", nonnegative=True)
+    Goff = Parameter(1e-5, "S", "opened switch conductance", nonnegative=True)
+    T = 293.15
+    p = PositivePin("positive pin")
+    n1 = NegativePin("negative pin, connected to p while the switch is in its first position")
+    n2 = NegativePin("negative pin, connected to p while the switch is in its second position")
+
+    def structure(self, s):
+        super().structure(s)
+        for k in (1, 2):
+            s.algebraic(f"s{k}", 0.0, "1", "auxiliary variable")
+
+    def _to_n2(self, e):
+        raise NotImplementedError
+
+    def physics(self, e):
+        to_n2 = self._to_n2(e)
+        vp, currents, loss = e.potential(self.p), [], 0
+        for k, pin, closed in ((1, self.n1, 1 - to_n2), (2, self.n2, to_n2)):
+            sk = e.state(f"s{k}")
+            e.residual(vp - e.potential(pin) - sk * ca.if_else(closed, self.Ron, 1.0))
+            ik = -sk * ca.if_else(closed, 1.0, self.Goff)
+            e.flow(pin, ik)
+            currents.append(ik)
+            loss += ik * e.potential(pin)
+        ip = -(currents[0] + currents[1])
+        e.flow(self.p, ip)
+        self._losses(e, loss + ip * vp, self._T_heatPort(e))
+
+
+class IdealTwoWaySwitch(_TwoWaySwitching):
+    """Ideal two-way switch (MSL Ideal.IdealTwoWaySwitch, MSL 3's IdealCommutingSwitch):
+    the Boolean input ``control`` connects p–n2 when true, p–n1 when false (see
+    ``_TwoWaySwitching``: Ron [Ohm] 1e-5 closed, Goff [S] 1e-5 open)."""
+    control = BooleanInput("true => p--n2 connected, false => p--n1 connected")
+
+    def _to_n2(self, e):
+        return e.input(self.control)
+
+
+class ControlledIdealTwoWaySwitch(_ControlPin, _TwoWaySwitching):
+    """Controlled ideal two-way switch (MSL Ideal.ControlledIdealTwoWaySwitch, MSL 3's
+    ControlledIdealCommutingSwitch): p–n2 connected while control.v > level [V] (0.5),
+    p–n1 otherwise; the pin ``control`` carries no current; Ron [Ohm] 1e-5, Goff [S] 1e-5."""
+    control = Pin("control pin: if control.v > level p--n2 connected, otherwise p--n1 "
+                  "connected")
+
+    def _to_n2(self, e):
+        return self._above(e)
+
+
+class _IntermediateSwitching(_ConditionalHeatPort):
+    """MSL's IdealIntermediateSwitch and its controlled twin: p1–n1 and p2–n2 connected
+    while the switch state ``_crossed`` is false, p1–n2 and p2–n1 while it is true; each of
+    the four paths a point s_k [1] (an algebraic unknown) on its two-segment
+    characteristic, the voltage s_k·(Ron if closed else 1) [V], the currents at the pins
+    the sums of the two paths meeting there, s·1 for a closed path and s·Goff for an open
+    one [A] (MSL's equations). Ron [Ohm] 1e-5, Goff [S] 1e-5; T [K] 293.15 without heat
+    port (MSL's final T); LossPower = Σ pin.i·pin.v [W]."""
+    Ron = Parameter(1e-5, "Ohm", "closed switch resistance", nonnegative=True)
+    Goff = Parameter(1e-5, "S", "opened switch conductance", nonnegative=True)
+    T = 293.15
+    p1 = PositivePin("positive pin 1")
+    p2 = PositivePin("positive pin 2")
+    n1 = NegativePin("negative pin 1")
+    n2 = NegativePin("negative pin 2")
+
+    def structure(self, s):
+        super().structure(s)
+        for k in (1, 2, 3, 4):
+            s.algebraic(f"s{k}", 0.0, "1", "auxiliary variable")
+
+    def _crossed(self, e):
+        raise NotImplementedError
+
+    def physics(self, e):
+        crossed = self._crossed(e)
+        # the paths: (k, from, to, closed while crossed)
+        paths = ((1, self.p1, self.n1, False), (2, self.p2, self.n2, False),
+                 (3, self.p1, self.n2, True), (4, self.p2, self.n1, True))
+        current = {}
+        for k, a, b, when in paths:
+            sk = e.state(f"s{k}")
+            closed = crossed if when else 1 - crossed
+            e.residual(e.potential(a) - e.potential(b)
+                       - sk * ca.if_else(closed, self.Ron, 1.0))
+            current[k] = sk * ca.if_else(closed, 1.0, self.Goff)
+        flows = ((self.p1, current[1] + current[3]), (self.p2, current[2] + current[4]),
+                 (self.n1, -(current[1] + current[4])), (self.n2, -(current[2] + current[3])))
+        loss = 0
+        for pin, i in flows:
+            e.flow(pin, i)
+            loss += i * e.potential(pin)
+        self._losses(e, loss, self._T_heatPort(e))
+
+
+class IdealIntermediateSwitch(_IntermediateSwitching):
+    """Ideal intermediate switch (MSL Ideal.IdealIntermediateSwitch): the Boolean input
+    ``control`` connects p1–n2 and p2–n1 when true, p1–n1 and p2–n2 when false (see
+    ``_IntermediateSwitching``: Ron [Ohm] 1e-5, Goff [S] 1e-5)."""
+    control = BooleanInput("true => p1--n2, p2--n1 connected, otherwise p1--n1, p2--n2 "
+                           "connected")
+
+    def _crossed(self, e):
+        return e.input(self.control)
+
+
+class ControlledIdealIntermediateSwitch(_ControlPin, _IntermediateSwitching):
+    """Controlled ideal intermediate switch (MSL Ideal.ControlledIdealIntermediateSwitch):
+    p1–n2 and p2–n1 connected while control.v > level [V] (0.5), p1–n1 and p2–n2
+    otherwise; the pin ``control`` carries no current; Ron [Ohm] 1e-5, Goff [S] 1e-5."""
+    control = Pin("control pin: if control.v > level p1--n2, p2--n1 connected, otherwise "
+                  "p1--n1, p2--n2 connected")
+
+    def _crossed(self, e):
+        return self._above(e)
+
+
+#: MSL 3's names of the two-way switches
+IdealCommutingSwitch = IdealTwoWaySwitch
+ControlledIdealCommutingSwitch = ControlledIdealTwoWaySwitch
 
 
 class Short(OnePort):
