@@ -29,6 +29,7 @@ import casadi as ca
 
 from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
                     Parameter, Pin, PositivePin, RealInput, RealOutput)
+from ..core.component import who
 from ..errors import ParameterError
 from . import rotational, translational
 from . import signals as sig
@@ -50,7 +51,7 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "ControlledIdealCommutingSwitch", "IdealIntermediateSwitch",
            "ControlledIdealIntermediateSwitch", "Short", "Idle",
            "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp",
-           "IdealOpAmpLimited", "Diode"]
+           "IdealOpAmpLimited", "Diode", "ZDiode", "SaturatingInductor"]
 
 
 class Ground(Component):
@@ -375,6 +376,69 @@ class VariableInductor(_InitialValue):
         e.derivative(Psi, v)
         self._record(e, v, i)
         self._use_initial_condition(e, i, "i")
+
+
+def _saturation_current(Lnom, Lzer, Linf, Inom):
+    """MSL SaturatingInductor's Ipar [A], the root of (Lnom − Linf)/(Lzer − Linf) =
+    x·(π/2 − atan(x)), x = Ipar/Inom: the right side g(x) = x·atan(1/x) rises from 0 to 1,
+    concave (g'' = −2/(1 + x²)²), so Newton's method from x = 0 climbs to the root without
+    overshooting; 60 steps reach it to round-off for ratios up to 1 − 1e-10 (x ≈ 6e4).
+    Written in CasADi operations: Ipar follows the parameters also when they are changed at
+    simulation time."""
+    ratio = (Lnom - Linf) / (Lzer - Linf)
+    x = 0.0
+    for _ in range(60):
+        g = x * (ca.pi / 2 - ca.atan(x))
+        slope = ca.pi / 2 - ca.atan(x) - x / (1 + x * x)
+        x = x + (ratio - g) / slope
+    return x * Inom
+
+
+class SaturatingInductor(OnePort):
+    """Simple model of an inductor with saturation (MSL Basic.SaturatingInductor): the flux
+    Psi = Linf·i + (Lzer − Linf)·Ipar·atan(i/Ipar) [Wb], v = der(Psi), so the present
+    inductance Lact = Psi/i falls from Lzer at i = 0 through Lnom at i = Inom towards Linf
+    at large currents; Ipar [A] solves (Lnom − Linf)/(Lzer − Linf) = Ipar/Inom·(π/2 −
+    atan(Ipar/Inom)) (MSL's initial equation; ``_saturation_current``). State i [A]
+    (start ``i_start``, 0; MSL's i(start=0)), der(i) = v/(dPsi/di), dPsi/di = Linf + (Lzer −
+    Linf)/(1 + (i/Ipar)²) > 0. Inom [A] nominal current, Lnom [H] nominal inductance at
+    Inom, Lzer [H] inductance near i = 0 (> Lnom), Linf [H] inductance at large currents
+    (< Lnom). Records v, i, Lact, Psi."""
+    Inom = Parameter(1.0, "A", "nominal current", positive=True)
+    Lnom = Parameter(1.0, "H", "nominal inductance at nominal current", positive=True)
+    Lzer = Parameter(2.0, "H", "inductance near current = 0", positive=True)
+    Linf = Parameter(0.5, "H", "inductance at large currents", positive=True)
+
+    def __init__(self, name: str | None = None, *, i_start=0.0, **params):
+        super().__init__(name, **params)
+        if not self.Lzer > self.Lnom * (1 + EPS):
+            raise ParameterError(f"{who(self)}: Lzer (= {self.Lzer:g} H) has to be > Lnom (= "
+                                 f"{self.Lnom:g} H): the inductance near i = 0 exceeds the "
+                                 f"nominal one; raise Lzer (MSL's default 2*Lnom)")
+        if not self.Linf < self.Lnom * (1 - EPS):
+            raise ParameterError(f"{who(self)}: Linf (= {self.Linf:g} H) has to be < Lnom (= "
+                                 f"{self.Lnom:g} H): the inductance at large currents is "
+                                 f"below the nominal one; lower Linf (MSL's default Lnom/2)")
+        self.__dict__["i_start"] = _start(i_start, f"{type(self).__name__}: i_start")
+
+    def structure(self, s):
+        s.state("i", self.i_start, "A", "current flowing from pin p to pin n")
+
+    def physics(self, e):
+        i, v = e.state("i"), self._v(e)
+        e.assertion(self.Lzer > self.Lnom * (1 + EPS), "Lzer has to be > Lnom")
+        e.assertion(self.Linf < self.Lnom * (1 - EPS), "Linf has to be < Lnom")
+        Ipar = _saturation_current(self.Lnom, self.Lzer, self.Linf, self.Inom)
+        x = i / Ipar
+        self._current(e, i)
+        e.derivative(i, v / (self.Linf + (self.Lzer - self.Linf) / (1 + x * x)))
+        self._record(e, v=v)
+        psi = self.Linf * i + (self.Lzer - self.Linf) * Ipar * ca.atan(x)
+        e.variable("Psi", psi, "Wb", "present flux")
+        e.variable("Lact", self.Linf + (self.Lzer - self.Linf) * ca.if_else(
+            ca.fabs(x) < EPS, 1.0, ca.atan(x) / ca.if_else(ca.fabs(x) < EPS, 1.0, x)), "H",
+            "present inductance")
+        e.variable("Ipar", Ipar, "A", "current parameter of the saturation law")
 
 
 class _PartialEMF(OnePort):
@@ -1360,3 +1424,37 @@ class Diode(_ConditionalHeatPort, OnePort):
         e.variable("id", i_d, "A", "diode current")
         e.variable("vt_t", vt_t, "V", "temperature voltage")
         self._losses(e, v * i, T)
+
+
+class ZDiode(_ConditionalHeatPort, OnePort):
+    """Zener diode with 3 working areas (MSL Semiconductors.ZDiode): with the ohmic
+    parallel conductance v/R [A] in all three,
+    forward (v > Maxexp·Vt): i = Ids·(exlin(v/Vt, Maxexp) − 1), the exponential continued
+    linearly; breakdown (v + Bv < −Maxexp·Nbv·Vt): i = −Ids − Ibv·exlin(−(v + Bv)/(Nbv·Vt),
+    Maxexp), the breakdown exponential continued linearly; between: i = Ids·(exp(v/Vt) − 1)
+    − Ibv·exp(−(v + Bv)/(Nbv·Vt)). Ids [A] saturation current, Vt [V] voltage equivalent of
+    temperature, Maxexp [1] the exponent of the linear continuation (30), R [Ohm] parallel
+    resistance, Bv [V] breakthrough (Zener) voltage, Ibv [A] breakthrough knee current, Nbv
+    [1] breakthrough emission coefficient. The device temperature (T [K] 293.15, or
+    heatPort.T with ``useHeatPort``) does not enter the law (MSL's); LossPower = v·i [W].
+    The law is continuous to round-off (MSL's smooth(1, ...)): no events."""
+    Ids = Parameter(1e-6, "A", "saturation current")
+    Vt = Parameter(0.04, "V", "voltage equivalent of temperature (kT/qn)", positive=True)
+    Maxexp = Parameter(30.0, "1", "max. exponent for linear continuation", positive=True)
+    R = Parameter(1e8, "Ohm", "parallel ohmic resistance", positive=True)
+    Bv = Parameter(5.1, "V", "breakthrough voltage = Zener- or Z-voltage")
+    Ibv = Parameter(0.7, "A", "breakthrough knee current")
+    Nbv = Parameter(0.74, "1", "breakthrough emission coefficient", positive=True)
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
+
+    def physics(self, e):
+        v = self._v(e)
+        x_forward, x_breakdown = v / self.Vt, -(v + self.Bv) / (self.Nbv * self.Vt)
+        forward = self.Ids * (exlin(x_forward, self.Maxexp) - 1)
+        breakdown = self.Ibv * exlin(x_breakdown, self.Maxexp)
+        i = self._current(e, v / self.R + ca.if_else(
+            x_forward > self.Maxexp, forward,
+            ca.if_else(x_breakdown > self.Maxexp, -self.Ids - breakdown, forward - breakdown)))
+        self._record(e, v, i)
+        self._losses(e, v * i, self._T_heatPort(e))
