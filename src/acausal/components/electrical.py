@@ -42,8 +42,10 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "RotationalEMF", "EMF", "TranslationalEMF",
            "ConstantVoltage", "SignalVoltage", "StepVoltage", "RampVoltage", "SineVoltage",
            "CosineVoltage", "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
+           "SawToothVoltage", "ExponentialsVoltage",
            "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
+           "SawToothCurrent", "ExponentialsCurrent",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
            "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",
            "IdealClosingSwitch", "ControlledIdealOpeningSwitch", "ControlledIdealClosingSwitch",
@@ -539,7 +541,8 @@ class _BlockSignal:
     def __getattr__(self, name):
         if name in self._renamed:
             return getattr(self._source, self._renamed[name])
-        if name in type(self._source).parameters():
+        if name in type(self._source).parameters() or isinstance(
+                getattr(type(self._source), name, None), property):   # a parameter or binding
             return getattr(self._source, name)
         options = self._block.all_options()
         if name in options:
@@ -624,6 +627,39 @@ class _TrapezoidShape:
     nperiod = Parameter(-1, "", "number of periods (< 0 means infinite number of periods)")
 
 
+class _SawToothShape:
+    _block = sig.SawTooth
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+
+
+class _ExponentialsShape:
+    """The Exponentials block's rise and fall; fallTimeConst [s] follows riseTimeConst (MSL's
+    binding, also at simulation time) unless given at construction, which makes it a
+    parameter of its own (the class's twin registered by ``_with_parameter_fallTimeConst``)."""
+    _block, _role = sig.Exponentials, "outMax"
+    riseTime = Parameter(0.5, "s", "rise time", nonnegative=True)
+    riseTimeConst = Parameter(0.1, "s", "rise time constant", positive=True)
+
+    def __new__(cls, name=None, **params):
+        twin = vars(cls).get("_with_fallTimeConst")
+        return super().__new__(twin if "fallTimeConst" in params and twin else cls)
+
+    @property
+    def fallTimeConst(self):
+        """Fall time constant [s]: riseTimeConst (MSL's binding)."""
+        return self.riseTimeConst
+
+
+def _with_parameter_fallTimeConst(cls):
+    """Register on ``cls`` its twin with the parameter fallTimeConst [s] (named like ``cls``
+    in messages), which ``cls(fallTimeConst=...)`` builds."""
+    cls._with_fallTimeConst = type(cls.__name__, (cls,), {
+        "__module__": cls.__module__, "__qualname__": f"{cls.__qualname__}._with_fallTimeConst",
+        "__doc__": cls.__doc__,
+        "fallTimeConst": Parameter(0.1, "s", "fall time constant", positive=True)})
+    return cls
+
+
 class StepVoltage(_StepShape, _TimedVoltage):
     """Step voltage source: v = offset + (0 if time < startTime else V) [V]."""
     V = Parameter(1.0, "V", "height of step")
@@ -666,6 +702,25 @@ class TrapezoidVoltage(_TrapezoidShape, _TimedVoltage):
     ``falling`` [s], then stays at offset; nperiod periods (< 0: infinitely many); the
     corners are time events."""
     V = Parameter(1.0, "V", "amplitude of trapezoid")
+
+
+class SawToothVoltage(_SawToothShape, _TimedVoltage):
+    """Saw tooth voltage source (MSL Sources.SawToothVoltage): from startTime, v rises
+    linearly from offset to offset + V [V] within every period [s] and jumps back at its end
+    (a time event there); offset before startTime."""
+    V = Parameter(1.0, "V", "amplitude of saw tooth")
+
+
+@_with_parameter_fallTimeConst
+class ExponentialsVoltage(_ExponentialsShape, _TimedVoltage):
+    """Rising and falling exponential voltage source (MSL Sources.ExponentialsVoltage): for
+    τ = time − startTime ≥ 0, v = offset + vMax·(1 − exp(−τ/riseTimeConst)) while τ <
+    riseTime [s], then the value reached decays as exp(−(τ − riseTime)/fallTimeConst) [V];
+    offset before startTime. fallTimeConst [s] is riseTimeConst unless given (MSL's
+    binding). Time events at startTime and at the end of the rise (MSL declares vMax a plain
+    Real; it is the voltage's upper bound)."""
+    _amplitude = "vMax"
+    vMax = Parameter(1.0, "V", "upper bound for rising edge")
 
 
 class _CurrentSource(OnePort):
@@ -740,6 +795,21 @@ class TrapezoidCurrent(_TrapezoidShape, _TimedCurrent):
     """Trapezoidal current source (MSL Sources.TrapezoidCurrent): the TrapezoidVoltage's
     wave for the current i [A], amplitude I; nperiod periods (< 0: infinitely many)."""
     I = Parameter(1.0, "A", "amplitude of trapezoid")           # noqa: E741 (MSL's name)
+
+
+class SawToothCurrent(_SawToothShape, _TimedCurrent):
+    """Saw tooth current source (MSL Sources.SawToothCurrent): the SawToothVoltage's wave
+    for the current i [A], amplitude I."""
+    I = Parameter(1.0, "A", "amplitude of saw tooth")           # noqa: E741 (MSL's name)
+
+
+@_with_parameter_fallTimeConst
+class ExponentialsCurrent(_ExponentialsShape, _TimedCurrent):
+    """Rising and falling exponential current source (MSL Sources.ExponentialsCurrent): the
+    ExponentialsVoltage's wave for the current i [A], upper bound iMax (a plain Real in
+    MSL)."""
+    _amplitude = "iMax"
+    iMax = Parameter(1.0, "A", "upper bound for rising edge")
 
 
 class SignalCurrent(OnePort):
