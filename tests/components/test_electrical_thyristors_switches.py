@@ -69,6 +69,41 @@ def test_thyristor_conducts_from_the_firing_angle_to_the_current_zero():
     np.testing.assert_allclose(res["th.LossPower"], res["th.v"] * res["th.i"], atol=1e-12)
 
 
+def test_thyristor_with_an_rl_load_turns_off_at_the_extinction_angle():
+    """R-L load: after firing at alpha the current is V/Z·(sin(θ − φ) − sin(alpha − φ)·
+    exp(−(θ − alpha)/tan φ)), Z = |R + jωL|, φ = atan(ωL/R) (R including Ron); the thyristor
+    turns off at its zero beta > π (scipy's brentq), conduction angle beta − alpha. Before
+    the firing the blocking thyristor (1/Goff) leaks the steady current V/Zb·sin(θ − φb)
+    (its transient decays with L/(R + 1/Goff) = 0.2 µs), the start of the conducting
+    current's own decaying term."""
+    from scipy.optimize import brentq
+    alpha, L = math.pi / 4, 0.02
+    m = model("thyristor_rl", lambda m: [
+        (m.src.p, m.th.p), (m.th.n, m.r.p), (m.r.n, m.l.p), (m.l.n, m.ground.p),
+        (m.src.n, m.ground.p), (m.pulse.y, m.th.fire)],
+        src=el.SineVoltage(V=V, f=F), th=el.IdealThyristor(), r=el.Resistor(R=R),
+        l=el.Inductor(L=L), pulse=lg.BooleanPulse(period=1 / F, width=5.0, startTime=alpha / W),
+        ground=el.Ground())
+    t = np.linspace(0.0, 1 / F, 401)
+    res = acausal.compile(m).simulate(1 / F, t=t, **TIGHT)
+    Rs = R + 1e-5
+    Z, phi = math.hypot(Rs, W * L), math.atan2(W * L, Rs)
+    Rb = R + 1 / 1e-5
+    Zb, phib = math.hypot(Rb, W * L), math.atan2(W * L, Rb)
+    leak = V / Zb * math.sin(alpha - phib)
+
+    def current(theta):
+        return V / Z * np.sin(theta - phi) + (leak - V / Z * math.sin(alpha - phi)) * np.exp(
+            -(theta - alpha) / math.tan(phi))
+    beta = brentq(current, math.pi, 2 * math.pi, xtol=1e-14)
+    on, off = on_off(res, "th")
+    np.testing.assert_allclose(on, [alpha / W], atol=1e-9)
+    np.testing.assert_allclose(off, [beta / W], atol=1e-8)
+    theta = W * res.t
+    k = (theta > alpha + 1e-6) & (theta < beta - 1e-6)
+    np.testing.assert_allclose(res["l.i"][k], current(theta[k]), atol=1e-6)
+
+
 def test_gto_thyristor_turns_off_when_fire_falls():
     """The GTO conducts only while fire is true and v > 0: fired at alpha for a quarter of
     the period it turns off at alpha + T/4 (before the current zero): conduction angle
