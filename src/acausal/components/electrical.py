@@ -16,10 +16,11 @@ A circuit needs a ``Ground``; a loop of capacitors and voltage sources, or a nod
 by inductors and current sources, is a higher-index network, refused when compiled with
 an error naming its parts.
 
-The ideal switching elements (IdealDiode, IdealOpeningSwitch, IdealClosingSwitch) are MSL's
-parametric characteristics: an auxiliary unknown s places the element on one of two
-straight segments, chosen by the Boolean ``off`` (a mode switched at state events for the
-diode, the control input for the switches); the diode has no smooth form.
+The ideal switching elements (IdealDiode, IdealThyristor, IdealGTOThyristor, the opening,
+closing, two-way and intermediate switches) are MSL's parametric characteristics: an
+auxiliary unknown s places each path on one of two straight segments, chosen by a Boolean
+(a mode switched at state events for the semiconductors and the Controlled* switches, the
+control input for the others); the modes have no smooth form.
 """
 from __future__ import annotations
 
