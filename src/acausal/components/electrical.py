@@ -27,19 +27,21 @@ from __future__ import annotations
 from types import MethodType
 
 import casadi as ca
+import numpy as np
 
 from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
-                    Parameter, Pin, PositivePin, RealInput, RealOutput)
+                    Parameter, Pin, PositivePin, RealInput, RealOutput, VectorPort)
 from ..core.component import who
 from ..errors import ParameterError
 from . import rotational, translational
 from . import signals as sig
 from .logical import refuse_smooth
-from .signals.interfaces import EPS, _start
+from .signals.interfaces import EPS, _size, _Sized, _start
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "VariableResistor", "VariableConductor", "Potentiometer", "Capacitor", "Inductor",
-           "VariableCapacitor", "VariableInductor", "Transformer", "VCV", "VCC", "CCV", "CCC",
+           "VariableCapacitor", "VariableInductor", "Transformer", "M_Transformer", "VCV",
+           "VCC", "CCV", "CCC",
            "RotationalEMF", "EMF", "TranslationalEMF",
            "ConstantVoltage", "SignalVoltage", "StepVoltage", "RampVoltage", "SineVoltage",
            "CosineVoltage", "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
@@ -1304,6 +1306,76 @@ class Transformer(TwoPort):
         e.variable("dv", (self.L1 - self.M) * di1 + (self.M - self.L2) * di2, "V",
                    "difference between voltage drop over primary inductor and voltage drop "
                    "over secondary inductor")
+
+
+class M_Transformer(_Sized, Component):
+    """Generic transformer with N coupled inductors (MSL Basic.M_Transformer): the pins
+    ``p[1]`` .. ``p[N]``, ``n[1]`` .. ``n[N]``, v[j] = p[j].v − n[j].v [V], i[j] = p[j].i =
+    −n[j].i [A], v = Lm·der(i) with the symmetric inductance matrix Lm [H] from L, its upper
+    triangle row by row (``L[1]`` .. ``L[N(N+1)/2]``: Lm[1,1], Lm[1,2], .., Lm[1,N],
+    Lm[2,2], ..; MSL's numbering). N (constructor argument, ≥ 1, default 3) is structural;
+    L defaults to MSL's {1, 0.1, 0.2, 2, 0.3, 3} for N = 3 and must be given otherwise.
+    States i[j] (start 0, MSL's fixed start). der(i) = Lm⁻¹·v is solved for: Lm must be
+    positive definite (checked at construction; perfect coupling is the
+    IdealTransformer's)."""
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, N: int = 3, **params):
+        return super().__new__(cls._variant(_size(N, "M_Transformer: N (number of "
+                                                      "inductors)", 1)))
+
+    @staticmethod
+    def _declare(N: int) -> dict:
+        default = (1.0, 0.1, 0.2, 2.0, 0.3, 3.0) if N == 3 else (0.0,) * (N * (N + 1) // 2)
+        return {"L": Parameter(default, "H", "inductances and coupling inductances"),
+                "p": VectorPort(PositivePin, N, "positive pin"),
+                "n": VectorPort(NegativePin, N, "negative pin")}
+
+    def __init__(self, name: str | None = None, *, N: int = 3, **params):
+        if N != 3 and "L" not in params:
+            raise ParameterError(f"M_Transformer{f' {name!r}' if name else ''}: give the "
+                                 f"{N * (N + 1) // 2} inductances L (the upper triangle of "
+                                 f"the inductance matrix, row by row) for N = {N}")
+        super().__init__(name, **params)
+        if np.linalg.eigvalsh(self._matrix(self.L)).min() <= 0:
+            raise ParameterError(f"{who(self)}: the inductance matrix of L = "
+                                 f"{list(self.L)} H is not positive definite (coupled "
+                                 f"inductors whose derivatives are solved for); lower the "
+                                 f"coupling inductances, or for perfect coupling use "
+                                 f"IdealTransformer(considerMagnetization=True)")
+
+    @property
+    def N(self) -> int:
+        """Number of inductors."""
+        return self._key[0]
+
+    def _matrix(self, L):
+        """The symmetric matrix Lm [H] from the upper-triangle elements L (numbers or
+        symbols): a nested list."""
+        N, k = self.N, 0
+        Lm = [[None] * N for _ in range(N)]
+        for r in range(N):
+            for c in range(r, N):
+                Lm[r][c] = Lm[c][r] = L[k]
+                k += 1
+        return Lm
+
+    def structure(self, s):
+        for j in range(1, self.N + 1):
+            s.state(f"i[{j}]", 0.0, "A", f"current through inductor {j}")
+
+    def physics(self, e):
+        i = [e.state(f"i[{j}]") for j in range(1, self.N + 1)]
+        v = []
+        for j, (p, n) in enumerate(zip(self.p, self.n)):
+            e.flow(p, i[j])
+            e.flow(n, -i[j])
+            v.append(e.potential(p) - e.potential(n))
+        Lm = ca.vertcat(*[ca.horzcat(*row) for row in self._matrix(self.L)])
+        di = ca.solve(Lm, ca.vertcat(*v))
+        for j in range(self.N):
+            e.derivative(i[j], di[j])
+            e.variable(f"v[{j + 1}]", v[j], "V", f"voltage drop over inductor {j + 1}")
 
 
 class VCV(TwoPort):

@@ -1,5 +1,6 @@
-"""SaturatingInductor and ZDiode of Modelica.Electrical.Analog against numpy (MSL's laws
-written out) and scipy (an RL step with the saturating inductance)."""
+"""SaturatingInductor, M_Transformer and ZDiode of Modelica.Electrical.Analog against numpy
+(MSL's laws written out), scipy (an RL step with the saturating inductance, three coupled
+inductors) and energy balances."""
 from __future__ import annotations
 
 import math
@@ -119,3 +120,40 @@ def test_zdiode_characteristic_in_forward_reverse_and_breakdown():
     k = np.argmin(np.abs(v + 2.0))                      # blocking: −Ids + v/R at −2 V
     assert res["d.i"][k] == pytest.approx(-1e-6 + v[k] / 1e8, rel=1e-9)
     np.testing.assert_allclose(res["d.LossPower"], res["d.v"] * res["d.i"], rtol=1e-12)
+
+
+def test_m_transformer_matches_scipy_and_balances_energy():
+    """M_Transformer, N = 3 with MSL's default L: a SineVoltage on inductor 1, resistors on
+    2 and 3 (v_j = −R_j·i_j): scipy integrates Lm·der(i) = v; the energy the source puts in
+    is the resistors' losses plus ½·iᵀ·Lm·i."""
+    Vs, f, R2, R3 = 5.0, 2.0, 3.0, 7.0
+    m = model("m_transformer", lambda m: [
+        (m.src.p, m.tr.p[1]), (m.src.n, m.tr.n[1]), (m.r2.p, m.tr.p[2]), (m.r2.n, m.tr.n[2]),
+        (m.r3.p, m.tr.p[3]), (m.r3.n, m.tr.n[3]), (m.src.n, m.ground.p),
+        (m.r2.n, m.ground2.p), (m.r3.n, m.ground3.p)],
+        src=el.SineVoltage(V=Vs, f=f), tr=el.M_Transformer(), r2=el.Resistor(R=R2),
+        r3=el.Resistor(R=R3), ground=el.Ground(), ground2=el.Ground(), ground3=el.Ground())
+    t = np.linspace(0.0, 1.0, 2001)
+    res = acausal.compile(m).simulate(1.0, t=t, **TIGHT)
+    Lm = np.array([[1.0, 0.1, 0.2], [0.1, 2.0, 0.3], [0.2, 0.3, 3.0]])
+    w = 2 * math.pi * f
+    ref = solve_ivp(lambda tt, x: np.linalg.solve(
+        Lm, [Vs * math.sin(w * tt), -R2 * x[1], -R3 * x[2]]), (0, 1.0), [0.0, 0.0, 0.0],
+        t_eval=t, method="Radau", rtol=1e-12, atol=1e-14)
+    for j in range(3):
+        np.testing.assert_allclose(res[f"tr.i[{j + 1}]"], ref.y[j], atol=1e-9)
+    np.testing.assert_allclose(res["tr.v[2]"], -R2 * ref.y[1], atol=1e-9)
+    power_in = res["tr.v[1]"] * res["tr.i[1]"]
+    loss = R2 * res["tr.i[2]"] ** 2 + R3 * res["tr.i[3]"] ** 2
+    i_end = ref.y[:, -1]
+    assert np.trapezoid(power_in - loss, t) == pytest.approx(0.5 * i_end @ Lm @ i_end,
+                                                              rel=1e-5, abs=1e-9)
+
+
+def test_m_transformer_refuses_bad_inductances():
+    with pytest.raises(ParameterError, match="give the 3 inductances L"):
+        el.M_Transformer(N=2)
+    with pytest.raises(ParameterError, match="M_Transformer 'tr'.*not positive definite"):
+        el.M_Transformer("tr", N=2, L=(1.0, 2.0, 1.0))
+    with pytest.raises(ParameterError, match="N .* must be an integer >= 1"):
+        el.M_Transformer(N=0)
