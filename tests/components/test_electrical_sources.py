@@ -48,6 +48,24 @@ def exponentials(t, top, rise, rise_const, fall_const, start):
     return np.where(tau < 0, 0.0, y)
 
 
+def table_by_hand(tau, times, values, jump=None, after=None):
+    """Linear interpolation through (times, values), extrapolated through the last two
+    points; with ``jump``: from that time on the row (jump, after) replaces the value there
+    (a repeated time in the table)."""
+    times, values = list(times), list(values)
+    if jump is not None:
+        k = times.index(jump)
+        before = np.interp(tau, times[:k + 1], values[:k + 1])
+        tail_t, tail_v = [jump] + times[k + 1:], [after] + values[k + 1:]
+        slope = (tail_v[-1] - tail_v[-2]) / (tail_t[-1] - tail_t[-2])
+        later = np.where(tau > tail_t[-1], tail_v[-1] + slope * (tau - tail_t[-1]),
+                         np.interp(tau, tail_t, tail_v))
+        return np.where(tau < jump, before, later)
+    slope = (values[-1] - values[-2]) / (times[-1] - times[-2])
+    return np.where(tau > times[-1], values[-1] + slope * (tau - times[-1]),
+                    np.interp(tau, times, values))
+
+
 # (class, parameters, closed form of the source's value as a function of t); sample times
 # avoid the discontinuities (a value there is either side's)
 T_SAMPLE = np.linspace(0.0, 1.0, 101)[:-1] + 0.0037
@@ -89,6 +107,11 @@ WAVES = [
     (el.ExponentialsVoltage, dict(vMax=2.0, riseTime=0.3, riseTimeConst=0.05, offset=0.2,
                                   startTime=0.1),
      lambda t: 0.2 + exponentials(t, 2.0, 0.3, 0.05, 0.05, 0.1)),
+    (el.TableVoltage, dict(table=[[0, 0], [0.2, 1.0], [0.4, 1.0], [0.4, -2.0], [0.6, 0.5]],
+                           offset=0.1, startTime=0.15),
+     lambda t: 0.1 + np.where(t < 0.15, 0.0, table_by_hand(
+         t - 0.15, [0, 0.2, 0.4, 0.6], [0, 1.0, 1.0, 0.5], 0.4, -2.0))),
+    (el.TableCurrent, dict(), lambda t: table_by_hand(t, [0, 1, 2], [0, 1, 4])),
     (el.ExponentialsCurrent, dict(iMax=-1.5, riseTime=0.4, riseTimeConst=0.2,
                                   fallTimeConst=0.07),
      lambda t: exponentials(t, -1.5, 0.4, 0.2, 0.07, 0.0)),
@@ -183,6 +206,8 @@ def test_exponentials_fall_time_constant_follows_the_rise_time_constant():
 
 @pytest.mark.parametrize("make", [
     lambda: el.SawToothVoltage(period=0.0), lambda: el.ExponentialsCurrent(riseTimeConst=0.0),
+    lambda: el.TableVoltage(table=[[0, 1, 2], [1, 2, 3]]),
+    lambda: el.TableCurrent(table=[[0.5, 1], [1, 2]]),
     lambda: el.ExponentialsVoltage(fallTimeConst=-1.0),
     lambda: el.PulseVoltage(period=0.0), lambda: el.PulseCurrent(width=0.0),
     lambda: el.PulseVoltage(width=-5.0), lambda: el.TrapezoidCurrent(period=-1.0),
@@ -190,5 +215,6 @@ def test_exponentials_fall_time_constant_follows_the_rise_time_constant():
     lambda: el.RampCurrent(duration=-1.0)])
 def test_bad_source_parameters_are_refused_naming_the_component(make):
     with pytest.raises(ParameterError,
-                       match=r"(Pulse|Trapezoid|Ramp|SawTooth|Exponentials)(Voltage|Current)\."):
+                       match=r"(Pulse|Trapezoid|Ramp|SawTooth|Exponentials|Table)(Voltage|Current)"
+                             r"(\.| *:)"):
         make()

@@ -37,6 +37,7 @@ from . import rotational, translational
 from . import signals as sig
 from .logical import refuse_smooth
 from .signals.interfaces import EPS, _size, _Sized, _start
+from .signals.sources import _check_table, _table_events, _table_values
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "VariableResistor", "VariableConductor", "Potentiometer", "Capacitor", "Inductor",
@@ -45,10 +46,10 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "RotationalEMF", "EMF", "TranslationalEMF",
            "ConstantVoltage", "SignalVoltage", "StepVoltage", "RampVoltage", "SineVoltage",
            "CosineVoltage", "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
-           "SawToothVoltage", "ExponentialsVoltage",
+           "SawToothVoltage", "ExponentialsVoltage", "TableVoltage",
            "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
-           "SawToothCurrent", "ExponentialsCurrent",
+           "SawToothCurrent", "ExponentialsCurrent", "TableCurrent",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
            "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",
            "IdealClosingSwitch", "ControlledIdealOpeningSwitch", "ControlledIdealClosingSwitch",
@@ -663,6 +664,37 @@ def _with_parameter_fallTimeConst(cls):
     return cls
 
 
+class _TableShape:
+    """MSL's TableVoltage / TableCurrent: the Blocks.Sources.TimeTable redeclared with the
+    source's ``table`` (constructor argument, rows [time [s], value], times non-decreasing
+    from 0, a time given twice a jump; MSL's default [0, 0; 1, 1; 2, 4]), interpolated
+    linearly by the TimeTable's own functions at time − startTime (its shiftTime bound to
+    startTime, timeScale 1 s), extrapolated through the last two rows; a time event at
+    startTime and at every jump. The table is fixed when the model is compiled."""
+
+    def __init__(self, name: str | None = None, *, table=((0.0, 0.0), (1.0, 1.0), (2.0, 4.0)),
+                 **params):
+        super().__init__(name, **params)
+        tab = _check_table(table, who(self), first_at_zero=False)
+        if tab.shape[1] != 2:
+            raise ParameterError(f"{who(self)}: table must have rows [time, value] (shape "
+                                 f"(n, 2)), got shape {tab.shape}")
+        if tab.shape[0] > 1 and tab[0, 0] != 0:
+            raise ParameterError(f"{who(self)}: the first point in time has to be 0, but is "
+                                 f"table[1,1] = {tab[0, 0]}; shift the table with startTime")
+        self.__dict__["times"] = tab[:, 0]
+        self.__dict__["table"] = tuple(float(v) for v in tab[:, 1])
+
+    def _source_value(self, e):
+        smoothness, extrapolation, time_events = sig.TimeTable._modes()
+        e.time_event(self.startTime, None)
+        for tk, period in _table_events(self.times, smoothness, extrapolation, time_events):
+            e.time_event(self.startTime + tk, period)
+        value = _table_values(e.time - self.startTime, self.times, self.table, smoothness,
+                              extrapolation)[0]
+        return self.offset + ca.if_else(e.time < self.startTime, 0.0, value)
+
+
 class StepVoltage(_StepShape, _TimedVoltage):
     """Step voltage source: v = offset + (0 if time < startTime else V) [V]."""
     V = Parameter(1.0, "V", "height of step")
@@ -724,6 +756,12 @@ class ExponentialsVoltage(_ExponentialsShape, _TimedVoltage):
     Real; it is the voltage's upper bound)."""
     _amplitude = "vMax"
     vMax = Parameter(1.0, "V", "upper bound for rising edge")
+
+
+class TableVoltage(_TableShape, _TimedVoltage):
+    """Voltage source by linear interpolation in a table (MSL Sources.TableVoltage): v =
+    offset + the table's voltage [V] at time − startTime, offset before startTime (see
+    ``_TableShape``: ``table`` rows [time [s], voltage [V]])."""
 
 
 class _CurrentSource(OnePort):
@@ -813,6 +851,12 @@ class ExponentialsCurrent(_ExponentialsShape, _TimedCurrent):
     MSL)."""
     _amplitude = "iMax"
     iMax = Parameter(1.0, "A", "upper bound for rising edge")
+
+
+class TableCurrent(_TableShape, _TimedCurrent):
+    """Current source by linear interpolation in a table (MSL Sources.TableCurrent): i =
+    offset + the table's current [A] at time − startTime, offset before startTime (see
+    ``_TableShape``: ``table`` rows [time [s], current [A]])."""
 
 
 class SignalCurrent(OnePort):
