@@ -1094,7 +1094,7 @@ class ControlledIdealOpeningSwitch(_ControlPin, _IdealSwitching):
 
 class ControlledIdealClosingSwitch(_ControlPin, _IdealSwitching):
     """Controlled ideal electrical closer (MSL Ideal.ControlledIdealClosingSwitch): off =
-    control.v < level [V] (0.5; at control.v = level exactly it is closed here, open in MSL:
+    control.v < level [V] (0.5; at control.v = level exactly it is open here, closed in MSL:
     the instant of the crossing), the pin ``control`` carrying no current; Ron [Ohm] 1e-5,
     Goff [S] 1e-5."""
     control = Pin("control pin: control.v > level switch closed, otherwise switch open")
