@@ -87,6 +87,13 @@ def test_docs_build_without_warnings(tmp_path):
                     "thermal-conditionalfixedheatflowsensor", "celsius-fixedtemperature",
                     "celsius-tokelvin"):
         assert f'id="{section}"' in page, f"the thermal page lacks {section}"
+    page = html.unescape((out / "components" / "electrical.html").read_text())
+    for section in ("electrical-idealthyristor", "electrical-idealgtothyristor",
+                    "electrical-idealtwowayswitch", "electrical-controlledidealintermediateswitch",
+                    "electrical-saturatinginductor", "electrical-zdiode",
+                    "electrical-sawtoothvoltage", "electrical-exponentialscurrent",
+                    "electrical-tablevoltage", "electrical-m-transformer"):
+        assert f'id="{section}"' in page, f"the electrical page lacks {section}"
     page = html.unescape((out / "components" / "rotational.html").read_text())
     gearbox = page[page.index('id="rotational-gearbox"'):]
     assert "<p>useHeatPort = True</p>" in gearbox and 'id="rotational-signtorque"' in page

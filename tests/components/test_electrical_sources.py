@@ -40,6 +40,32 @@ def trapezoid(t, a, rising, width, falling, period, start, nperiod):
     return np.where((tau >= 0) & ((nperiod < 0) | (count < nperiod)), y, 0.0)
 
 
+def exponentials(t, top, rise, rise_const, fall_const, start):
+    tau = t - start
+    reached = top * (1 - np.exp(-rise / rise_const))
+    y = np.where(tau < rise, top * (1 - np.exp(-np.clip(tau, 0, None) / rise_const)),
+                 reached * np.exp(-np.clip(tau - rise, 0, None) / fall_const))
+    return np.where(tau < 0, 0.0, y)
+
+
+def table_by_hand(tau, times, values, jump=None, after=None):
+    """Linear interpolation through (times, values), extrapolated through the last two
+    points; with ``jump``: from that time on the row (jump, after) replaces the value there
+    (a repeated time in the table)."""
+    times, values = list(times), list(values)
+    if jump is not None:
+        k = times.index(jump)
+        before = np.interp(tau, times[:k + 1], values[:k + 1])
+        tail_t, tail_v = [jump] + times[k + 1:], [after] + values[k + 1:]
+        slope = (tail_v[-1] - tail_v[-2]) / (tail_t[-1] - tail_t[-2])
+        later = np.where(tau > tail_t[-1], tail_v[-1] + slope * (tau - tail_t[-1]),
+                         np.interp(tau, tail_t, tail_v))
+        return np.where(tau < jump, before, later)
+    slope = (values[-1] - values[-2]) / (times[-1] - times[-2])
+    return np.where(tau > times[-1], values[-1] + slope * (tau - times[-1]),
+                    np.interp(tau, times, values))
+
+
 # (class, parameters, closed form of the source's value as a function of t); sample times
 # avoid the discontinuities (a value there is either side's)
 T_SAMPLE = np.linspace(0.0, 1.0, 101)[:-1] + 0.0037
@@ -74,6 +100,21 @@ WAVES = [
      lambda t: 0.2 + pulse(t, -1.5, 60.0, 0.25, 0.0)),
     (el.TrapezoidCurrent, dict(I=1.0, rising=0.1, width=0.05, falling=0.1, period=0.4),
      lambda t: trapezoid(t, 1.0, 0.1, 0.05, 0.1, 0.4, 0.0, -1)),
+    (el.SawToothVoltage, dict(V=3.0, period=0.3, offset=-0.5, startTime=0.1),
+     lambda t: -0.5 + np.where(t < 0.1, 0.0, 3.0 * np.mod(t - 0.1, 0.3) / 0.3)),
+    (el.SawToothCurrent, dict(I=-2.0, period=0.15),
+     lambda t: -2.0 * np.mod(t, 0.15) / 0.15),
+    (el.ExponentialsVoltage, dict(vMax=2.0, riseTime=0.3, riseTimeConst=0.05, offset=0.2,
+                                  startTime=0.1),
+     lambda t: 0.2 + exponentials(t, 2.0, 0.3, 0.05, 0.05, 0.1)),
+    (el.TableVoltage, dict(table=[[0, 0], [0.2, 1.0], [0.4, 1.0], [0.4, -2.0], [0.6, 0.5]],
+                           offset=0.1, startTime=0.15),
+     lambda t: 0.1 + np.where(t < 0.15, 0.0, table_by_hand(
+         t - 0.15, [0, 0.2, 0.4, 0.6], [0, 1.0, 1.0, 0.5], 0.4, -2.0))),
+    (el.TableCurrent, dict(), lambda t: table_by_hand(t, [0, 1, 2], [0, 1, 4])),
+    (el.ExponentialsCurrent, dict(iMax=-1.5, riseTime=0.4, riseTimeConst=0.2,
+                                  fallTimeConst=0.07),
+     lambda t: exponentials(t, -1.5, 0.4, 0.2, 0.07, 0.0)),
 ]
 
 
@@ -150,11 +191,30 @@ def test_rc_on_a_pulse_current_matches_the_exact_piecewise_response():
     np.testing.assert_allclose(res["c.v"], expected, atol=1e-9)
 
 
+def test_exponentials_fall_time_constant_follows_the_rise_time_constant():
+    """MSL's binding fallTimeConst = riseTimeConst holds at simulation time too (changing
+    riseTimeConst changes the fall); given at construction fallTimeConst is a parameter of
+    its own."""
+    assert "fallTimeConst" not in el.ExponentialsVoltage.parameters()
+    assert "fallTimeConst" in type(el.ExponentialsVoltage(fallTimeConst=0.2)).parameters()
+    compiled = acausal.compile(on_resistor(el.ExponentialsVoltage(vMax=1.0, riseTime=0.2)))
+    res = compiled.simulate(T_SAMPLE[-1], t=T_SAMPLE, params={"src.riseTimeConst": 0.08},
+                            **TIGHT)
+    np.testing.assert_allclose(res["src.v"], exponentials(T_SAMPLE, 1.0, 0.2, 0.08, 0.08, 0.0),
+                               atol=1e-12)
+
+
 @pytest.mark.parametrize("make", [
+    lambda: el.SawToothVoltage(period=0.0), lambda: el.ExponentialsCurrent(riseTimeConst=0.0),
+    lambda: el.TableVoltage(table=[[0, 1, 2], [1, 2, 3]]),
+    lambda: el.TableCurrent(table=[[0.5, 1], [1, 2]]),
+    lambda: el.ExponentialsVoltage(fallTimeConst=-1.0),
     lambda: el.PulseVoltage(period=0.0), lambda: el.PulseCurrent(width=0.0),
     lambda: el.PulseVoltage(width=-5.0), lambda: el.TrapezoidCurrent(period=-1.0),
     lambda: el.TrapezoidVoltage(rising=-0.1), lambda: el.RampVoltage(duration=0.0),
     lambda: el.RampCurrent(duration=-1.0)])
 def test_bad_source_parameters_are_refused_naming_the_component(make):
-    with pytest.raises(ParameterError, match=r"(Pulse|Trapezoid|Ramp)(Voltage|Current)\."):
+    with pytest.raises(ParameterError,
+                       match=r"(Pulse|Trapezoid|Ramp|SawTooth|Exponentials|Table)(Voltage|Current)"
+                             r"(\.| *:)"):
         make()

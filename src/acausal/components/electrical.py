@@ -16,37 +16,48 @@ A circuit needs a ``Ground``; a loop of capacitors and voltage sources, or a nod
 by inductors and current sources, is a higher-index network, refused when compiled with
 an error naming its parts.
 
-The ideal switching elements (IdealDiode, IdealOpeningSwitch, IdealClosingSwitch) are MSL's
-parametric characteristics: an auxiliary unknown s places the element on one of two
-straight segments, chosen by the Boolean ``off`` (a mode switched at state events for the
-diode, the control input for the switches); the diode has no smooth form.
+The ideal switching elements (IdealDiode, IdealThyristor, IdealGTOThyristor, the opening,
+closing, two-way and intermediate switches) are MSL's parametric characteristics: an
+auxiliary unknown s places each path on one of two straight segments, chosen by a Boolean
+(a mode switched at state events for the semiconductors and the Controlled* switches, the
+control input for the others); the modes have no smooth form.
 """
 from __future__ import annotations
 
 from types import MethodType
 
 import casadi as ca
+import numpy as np
 
 from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
-                    Parameter, Pin, PositivePin, RealInput, RealOutput)
+                    Parameter, Pin, PositivePin, RealInput, RealOutput, VectorPort)
+from ..core.component import who
 from ..errors import ParameterError
 from . import rotational, translational
 from . import signals as sig
 from .logical import refuse_smooth
-from .signals.interfaces import EPS, _start
+from .signals.interfaces import EPS, _size, _Sized, _start
+from .signals.sources import _check_table, _table_events, _table_values
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "VariableResistor", "VariableConductor", "Potentiometer", "Capacitor", "Inductor",
-           "VariableCapacitor", "VariableInductor", "Transformer", "VCV", "VCC", "CCV", "CCC",
+           "VariableCapacitor", "VariableInductor", "Transformer", "M_Transformer", "VCV",
+           "VCC", "CCV", "CCC",
            "RotationalEMF", "EMF", "TranslationalEMF",
            "ConstantVoltage", "SignalVoltage", "StepVoltage", "RampVoltage", "SineVoltage",
            "CosineVoltage", "ExpSineVoltage", "PulseVoltage", "TrapezoidVoltage",
+           "SawToothVoltage", "ExponentialsVoltage", "TableVoltage",
            "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
+           "SawToothCurrent", "ExponentialsCurrent", "TableCurrent",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
-           "IdealDiode", "IdealOpeningSwitch", "IdealClosingSwitch", "Short", "Idle",
+           "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",
+           "IdealClosingSwitch", "ControlledIdealOpeningSwitch", "ControlledIdealClosingSwitch",
+           "IdealTwoWaySwitch", "IdealCommutingSwitch", "ControlledIdealTwoWaySwitch",
+           "ControlledIdealCommutingSwitch", "IdealIntermediateSwitch",
+           "ControlledIdealIntermediateSwitch", "Short", "Idle",
            "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp",
-           "IdealOpAmpLimited", "Diode"]
+           "IdealOpAmpLimited", "Diode", "ZDiode", "SaturatingInductor"]
 
 
 class Ground(Component):
@@ -373,6 +384,69 @@ class VariableInductor(_InitialValue):
         self._use_initial_condition(e, i, "i")
 
 
+def _saturation_current(Lnom, Lzer, Linf, Inom):
+    """MSL SaturatingInductor's Ipar [A], the root of (Lnom − Linf)/(Lzer − Linf) =
+    x·(π/2 − atan(x)), x = Ipar/Inom: the right side g(x) = x·atan(1/x) rises from 0 to 1,
+    concave (g'' = −2/(1 + x²)²), so Newton's method from x = 0 climbs to the root without
+    overshooting; 60 steps reach it to round-off for ratios up to 1 − 1e-10 (x ≈ 6e4).
+    Written in CasADi operations: Ipar follows the parameters also when they are changed at
+    simulation time."""
+    ratio = (Lnom - Linf) / (Lzer - Linf)
+    x = 0.0
+    for _ in range(60):
+        g = x * (ca.pi / 2 - ca.atan(x))
+        slope = ca.pi / 2 - ca.atan(x) - x / (1 + x * x)
+        x = x + (ratio - g) / slope
+    return x * Inom
+
+
+class SaturatingInductor(OnePort):
+    """Simple model of an inductor with saturation (MSL Basic.SaturatingInductor): the flux
+    Psi = Linf·i + (Lzer − Linf)·Ipar·atan(i/Ipar) [Wb], v = der(Psi), so the present
+    inductance Lact = Psi/i falls from Lzer at i = 0 through Lnom at i = Inom towards Linf
+    at large currents; Ipar [A] solves (Lnom − Linf)/(Lzer − Linf) = Ipar/Inom·(π/2 −
+    atan(Ipar/Inom)) (MSL's initial equation; ``_saturation_current``). State i [A]
+    (start ``i_start``, 0; MSL's i(start=0)), der(i) = v/(dPsi/di), dPsi/di = Linf + (Lzer −
+    Linf)/(1 + (i/Ipar)²) > 0. Inom [A] nominal current, Lnom [H] nominal inductance at
+    Inom, Lzer [H] inductance near i = 0 (> Lnom), Linf [H] inductance at large currents
+    (< Lnom). Records v, i, Lact, Psi."""
+    Inom = Parameter(1.0, "A", "nominal current", positive=True)
+    Lnom = Parameter(1.0, "H", "nominal inductance at nominal current", positive=True)
+    Lzer = Parameter(2.0, "H", "inductance near current = 0", positive=True)
+    Linf = Parameter(0.5, "H", "inductance at large currents", positive=True)
+
+    def __init__(self, name: str | None = None, *, i_start=0.0, **params):
+        super().__init__(name, **params)
+        if not self.Lzer > self.Lnom * (1 + EPS):
+            raise ParameterError(f"{who(self)}: Lzer (= {self.Lzer:g} H) has to be > Lnom (= "
+                                 f"{self.Lnom:g} H): the inductance near i = 0 exceeds the "
+                                 f"nominal one; raise Lzer (MSL's default 2*Lnom)")
+        if not self.Linf < self.Lnom * (1 - EPS):
+            raise ParameterError(f"{who(self)}: Linf (= {self.Linf:g} H) has to be < Lnom (= "
+                                 f"{self.Lnom:g} H): the inductance at large currents is "
+                                 f"below the nominal one; lower Linf (MSL's default Lnom/2)")
+        self.__dict__["i_start"] = _start(i_start, f"{type(self).__name__}: i_start")
+
+    def structure(self, s):
+        s.state("i", self.i_start, "A", "current flowing from pin p to pin n")
+
+    def physics(self, e):
+        i, v = e.state("i"), self._v(e)
+        e.assertion(self.Lzer > self.Lnom * (1 + EPS), "Lzer has to be > Lnom")
+        e.assertion(self.Linf < self.Lnom * (1 - EPS), "Linf has to be < Lnom")
+        Ipar = _saturation_current(self.Lnom, self.Lzer, self.Linf, self.Inom)
+        x = i / Ipar
+        self._current(e, i)
+        e.derivative(i, v / (self.Linf + (self.Lzer - self.Linf) / (1 + x * x)))
+        self._record(e, v=v)
+        psi = self.Linf * i + (self.Lzer - self.Linf) * Ipar * ca.atan(x)
+        e.variable("Psi", psi, "Wb", "present flux")
+        e.variable("Lact", self.Linf + (self.Lzer - self.Linf) * ca.if_else(
+            ca.fabs(x) < EPS, 1.0, ca.atan(x) / ca.if_else(ca.fabs(x) < EPS, 1.0, x)), "H",
+            "present inductance")
+        e.variable("Ipar", Ipar, "A", "current parameter of the saturation law")
+
+
 class _PartialEMF(OnePort):
     """Electromotoric force between the pins and a mechanical ``flange`` (with the optional
     ``support`` of the mechanical partial it is combined with): k·speed = v, the flange's
@@ -471,7 +545,8 @@ class _BlockSignal:
     def __getattr__(self, name):
         if name in self._renamed:
             return getattr(self._source, self._renamed[name])
-        if name in type(self._source).parameters():
+        if name in type(self._source).parameters() or isinstance(
+                getattr(type(self._source), name, None), property):   # a parameter or binding
             return getattr(self._source, name)
         options = self._block.all_options()
         if name in options:
@@ -556,6 +631,70 @@ class _TrapezoidShape:
     nperiod = Parameter(-1, "", "number of periods (< 0 means infinite number of periods)")
 
 
+class _SawToothShape:
+    _block = sig.SawTooth
+    period = Parameter(1.0, "s", "time for one period", positive=True)
+
+
+class _ExponentialsShape:
+    """The Exponentials block's rise and fall; fallTimeConst [s] follows riseTimeConst (MSL's
+    binding, also at simulation time) unless given at construction, which makes it a
+    parameter of its own (the class's twin registered by ``_with_parameter_fallTimeConst``)."""
+    _block, _role = sig.Exponentials, "outMax"
+    riseTime = Parameter(0.5, "s", "rise time", nonnegative=True)
+    riseTimeConst = Parameter(0.1, "s", "rise time constant", positive=True)
+
+    def __new__(cls, name=None, **params):
+        twin = vars(cls).get("_with_fallTimeConst")
+        return super().__new__(twin if "fallTimeConst" in params and twin else cls)
+
+    @property
+    def fallTimeConst(self):
+        """Fall time constant [s]: riseTimeConst (MSL's binding)."""
+        return self.riseTimeConst
+
+
+def _with_parameter_fallTimeConst(cls):
+    """Register on ``cls`` its twin with the parameter fallTimeConst [s] (named like ``cls``
+    in messages), which ``cls(fallTimeConst=...)`` builds."""
+    cls._with_fallTimeConst = type(cls.__name__, (cls,), {
+        "__module__": cls.__module__, "__qualname__": f"{cls.__qualname__}._with_fallTimeConst",
+        "__doc__": cls.__doc__,
+        "fallTimeConst": Parameter(0.1, "s", "fall time constant", positive=True)})
+    return cls
+
+
+class _TableShape:
+    """MSL's TableVoltage / TableCurrent: the Blocks.Sources.TimeTable redeclared with the
+    source's ``table`` (constructor argument, rows [time [s], value], times non-decreasing
+    from 0, a time given twice a jump; MSL's default [0, 0; 1, 1; 2, 4]), interpolated
+    linearly by the TimeTable's own functions at time − startTime (its shiftTime bound to
+    startTime, timeScale 1 s), extrapolated through the last two rows; a time event at
+    startTime and at every jump. The table is fixed when the model is compiled."""
+
+    def __init__(self, name: str | None = None, *, table=((0.0, 0.0), (1.0, 1.0), (2.0, 4.0)),
+                 **params):
+        super().__init__(name, **params)
+        tab = _check_table(table, who(self), first_at_zero=False)
+        if tab.shape[1] != 2:
+            raise ParameterError(f"{who(self)}: table must have rows [time, value] (shape "
+                                 f"(n, 2)), got shape {tab.shape}")
+        if tab.shape[0] > 1 and tab[0, 0] != 0:
+            raise ParameterError(f"{who(self)}: the first point in time has to be 0, but is "
+                                 f"table[1,1] = {tab[0, 0]}; shift the table with startTime")
+        self.__dict__["times"] = tab[:, 0]
+        self.__dict__["table"] = tuple(float(v) for v in tab[:, 1])
+
+    def _source_value(self, e):
+        smoothness, extrapolation, time_events = sig.TimeTable._modes()
+        e.time_event(self.startTime, None)
+        for tk, period in _table_events(self.times, smoothness, extrapolation, time_events):
+            e.time_event(self.startTime + tk, period)
+        value = _table_values(e.time - self.startTime, self.times, self.table, smoothness,
+                              extrapolation)[0]
+        return self.offset + ca.if_else(e.time < self.startTime, 0.0, value)
+
+
 class StepVoltage(_StepShape, _TimedVoltage):
     """Step voltage source: v = offset + (0 if time < startTime else V) [V]."""
     V = Parameter(1.0, "V", "height of step")
@@ -598,6 +737,31 @@ class TrapezoidVoltage(_TrapezoidShape, _TimedVoltage):
     ``falling`` [s], then stays at offset; nperiod periods (< 0: infinitely many); the
     corners are time events."""
     V = Parameter(1.0, "V", "amplitude of trapezoid")
+
+
+class SawToothVoltage(_SawToothShape, _TimedVoltage):
+    """Saw tooth voltage source (MSL Sources.SawToothVoltage): from startTime, v rises
+    linearly from offset to offset + V [V] within every period [s] and jumps back at its end
+    (a time event there); offset before startTime."""
+    V = Parameter(1.0, "V", "amplitude of saw tooth")
+
+
+@_with_parameter_fallTimeConst
+class ExponentialsVoltage(_ExponentialsShape, _TimedVoltage):
+    """Rising and falling exponential voltage source (MSL Sources.ExponentialsVoltage): for
+    τ = time − startTime ≥ 0, v = offset + vMax·(1 − exp(−τ/riseTimeConst)) while τ <
+    riseTime [s], then the value reached decays as exp(−(τ − riseTime)/fallTimeConst) [V];
+    offset before startTime. fallTimeConst [s] is riseTimeConst unless given (MSL's
+    binding). Time events at startTime and at the end of the rise (MSL declares vMax a plain
+    Real; it is the voltage's upper bound)."""
+    _amplitude = "vMax"
+    vMax = Parameter(1.0, "V", "upper bound for rising edge")
+
+
+class TableVoltage(_TableShape, _TimedVoltage):
+    """Voltage source by linear interpolation in a table (MSL Sources.TableVoltage): v =
+    offset + the table's voltage [V] at time − startTime, offset before startTime (see
+    ``_TableShape``: ``table`` rows [time [s], voltage [V]])."""
 
 
 class _CurrentSource(OnePort):
@@ -672,6 +836,27 @@ class TrapezoidCurrent(_TrapezoidShape, _TimedCurrent):
     """Trapezoidal current source (MSL Sources.TrapezoidCurrent): the TrapezoidVoltage's
     wave for the current i [A], amplitude I; nperiod periods (< 0: infinitely many)."""
     I = Parameter(1.0, "A", "amplitude of trapezoid")           # noqa: E741 (MSL's name)
+
+
+class SawToothCurrent(_SawToothShape, _TimedCurrent):
+    """Saw tooth current source (MSL Sources.SawToothCurrent): the SawToothVoltage's wave
+    for the current i [A], amplitude I."""
+    I = Parameter(1.0, "A", "amplitude of saw tooth")           # noqa: E741 (MSL's name)
+
+
+@_with_parameter_fallTimeConst
+class ExponentialsCurrent(_ExponentialsShape, _TimedCurrent):
+    """Rising and falling exponential current source (MSL Sources.ExponentialsCurrent): the
+    ExponentialsVoltage's wave for the current i [A], upper bound iMax (a plain Real in
+    MSL)."""
+    _amplitude = "iMax"
+    iMax = Parameter(1.0, "A", "upper bound for rising edge")
+
+
+class TableCurrent(_TableShape, _TimedCurrent):
+    """Current source by linear interpolation in a table (MSL Sources.TableCurrent): i =
+    offset + the table's current [A] at time − startTime, offset before startTime (see
+    ``_TableShape``: ``table`` rows [time [s], current [A]])."""
 
 
 class SignalCurrent(OnePort):
@@ -782,18 +967,20 @@ class _IdealSwitching(_ConditionalHeatPort, OnePort):
         self._losses(e, v * i, self._T_heatPort(e))
 
 
-#: how far past the knee [1: A when conducting, V when blocking] the diode's event is
-#: located, so that s < 0 is unambiguous at the event (at s = 0 itself both states hold)
+#: how far past the knee [1: A when conducting, V when blocking] the event of an ideal
+#: semiconductor is located, so that s < 0 is unambiguous at the event (at s = 0 itself
+#: both states hold)
 S_NOISE = 1e-10
 
 
-class IdealDiode(_IdealSwitching):
-    """Ideal diode (MSL Ideal.IdealDiode): the characteristic of ``_IdealSwitching`` with
-    the Boolean mode off = s < 0 (start true, MSL's), switched at a state event (indicator
-    ``s``) located where s has crossed 0 by ``S_NOISE`` (1e-10: a current of 1e-10 A, a
-    voltage of 1e-10 V; the switching instant is late by S_NOISE/|ds/dt|, 3e-12 s in the
-    rectifier of the tests). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0. No smooth form
-    (refused when compiled with smooth=True)."""
+class _IdealSemiconductor(_IdealSwitching):
+    """MSL Interfaces.IdealSemiconductor: the characteristic of ``_IdealSwitching`` through
+    the knee (Vknee [V], Goff·Vknee [A]), its Boolean mode off (start true, MSL's) switched
+    at events to ``_next_off`` (of the present mode, MSL's pre(off)), and a state event
+    where s crosses 0: its indicator ``s`` is located past the knee by ``S_NOISE`` (1e-10:
+    a current of 1e-10 A, a voltage of 1e-10 V; the switching instant is late by
+    S_NOISE/|ds/dt|, 3e-12 s in the rectifier of the tests), so that s < 0 is unambiguous
+    at the event. No smooth form (refused when compiled with smooth=True)."""
     Vknee = Parameter(0.0, "V", "forward threshold voltage", nonnegative=True)
     T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
                   positive=True)
@@ -807,13 +994,50 @@ class IdealDiode(_IdealSwitching):
         super().structure(s)
         s.mode("off", 1, values=(0, 1), description="switching state (1: blocking)")
 
+    def _next_off(self, e, off, blocking):
+        """The mode off after an event, from the present one and ``blocking`` (s < 0)."""
+        raise NotImplementedError
+
     def _off(self, e):
         off, sa = e.mode("off"), e.state("s")
-        e.mode_update(off, sa < 0)
+        e.mode_update(off, self._next_off(e, off, sa < 0))
         e.indicator("s", ca.if_else(off, sa - S_NOISE, sa + S_NOISE), "1",
-                    "position on the characteristic past the knee by S_NOISE: the diode "
+                    "position on the characteristic past the knee by S_NOISE: the element "
                     "switches where it crosses 0")
         return off
+
+
+class IdealDiode(_IdealSemiconductor):
+    """Ideal diode (MSL Ideal.IdealDiode): the characteristic of ``_IdealSwitching`` with
+    off = s < 0, switched at the state event where s crosses 0 (``_IdealSemiconductor``).
+    Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0. No smooth form (refused when compiled with
+    smooth=True)."""
+
+    def _next_off(self, e, off, blocking):
+        return blocking
+
+
+class IdealThyristor(_IdealSemiconductor):
+    """Ideal thyristor (MSL Ideal.IdealThyristor): off = s < 0 or (pre(off) and not fire):
+    a blocking thyristor conducts once v > Vknee while the Boolean input ``fire`` is true
+    (switched at the event of ``fire``'s rise or of s crossing 0), and keeps conducting
+    after ``fire`` falls until its current falls below Goff·Vknee (s < 0). Ron [Ohm] 1e-5,
+    Goff [S] 1e-5, Vknee [V] 0; no smooth form."""
+    fire = BooleanInput("true => the thyristor may conduct (it turns on if v > Vknee)")
+
+    def _next_off(self, e, off, blocking):
+        return ca.logic_or(blocking, ca.logic_and(off, ca.logic_not(e.input(self.fire))))
+
+
+class IdealGTOThyristor(_IdealSemiconductor):
+    """Ideal GTO thyristor or switching transistor (MSL Ideal.IdealGTOThyristor): off = s < 0
+    or not fire: conducting while v > Vknee and the Boolean input ``fire`` is true, blocking
+    as soon as ``fire`` falls (at its event). Ron [Ohm] 1e-5, Goff [S] 1e-5, Vknee [V] 0;
+    no smooth form."""
+    fire = BooleanInput("true => conducting if v > Vknee, false => blocking")
+
+    def _next_off(self, e, off, blocking):
+        return ca.logic_or(blocking, ca.logic_not(e.input(self.fire)))
 
 
 class IdealOpeningSwitch(_IdealSwitching):
@@ -834,6 +1058,180 @@ class IdealClosingSwitch(_IdealSwitching):
 
     def _off(self, e):
         return 1 - e.input(self.control)
+
+
+class _ControlPin(Component):
+    """The control pin of MSL's Controlled* switches: no current (control.i = 0); the
+    switch state follows control.v > level [V], a Boolean mode ``above`` switched at the
+    state event where control.v − level crosses 0 (indicator ``control``). No smooth form
+    (refused when compiled with smooth=True)."""
+    level = Parameter(0.5, "V", "switch level")
+
+    def structure(self, s):
+        refuse_smooth(self, s)
+        super().structure(s)
+        s.mode("above", 0, values=(0, 1), description="control.v > level")
+
+    def _above(self, e):
+        """The mode control.v > level (1: true)."""
+        above, vc = e.mode("above"), e.potential(self.control)
+        e.flow(self.control, 0.0)
+        e.mode_update(above, vc > self.level)
+        e.indicator("control", vc - self.level, "V", "control.v - level: the switch "
+                                                      "switches where it crosses 0")
+        return above
+
+
+class ControlledIdealOpeningSwitch(_ControlPin, _IdealSwitching):
+    """Controlled ideal electrical opener (MSL Ideal.ControlledIdealOpeningSwitch): off =
+    control.v > level [V] (0.5), the pin ``control`` carrying no current; Ron [Ohm] 1e-5,
+    Goff [S] 1e-5."""
+    control = Pin("control pin: control.v > level switch open, otherwise p--n connected")
+
+    def _off(self, e):
+        return self._above(e)
+
+
+class ControlledIdealClosingSwitch(_ControlPin, _IdealSwitching):
+    """Controlled ideal electrical closer (MSL Ideal.ControlledIdealClosingSwitch): off =
+    control.v < level [V] (0.5; at control.v = level exactly it is open here, closed in MSL:
+    the instant of the crossing), the pin ``control`` carrying no current; Ron [Ohm] 1e-5,
+    Goff [S] 1e-5."""
+    control = Pin("control pin: control.v > level switch closed, otherwise switch open")
+
+    def _off(self, e):
+        return 1 - self._above(e)
+
+
+class _TwoWaySwitching(_ConditionalHeatPort):
+    """MSL's IdealTwoWaySwitch and its controlled twin: the pin p connected to n1 (a
+    resistance Ron [Ohm] 1e-5) and not to n2 (a conductance Goff [S] 1e-5) while the
+    switch state ``_to_n2`` is false, the other way round while it is true; each path k
+    (p–n1, p–n2) a point s_k [1] (an algebraic unknown) on its two-segment characteristic,
+    p.v − nk.v = s_k·(Ron if closed else 1), nk.i = −s_k·(1 if closed else Goff),
+    p.i = −(n1.i + n2.i). T [K] 293.15 without heat port (MSL's final T); LossPower =
+    p.i·p.v + n1.i·n1.v + n2.i·n2.v [W]."""
+    Ron = Parameter(1e-5, "Ohm", "closed switch resistance", nonnegative=True)
+    Goff = Parameter(1e-5, "S", "opened switch conductance", nonnegative=True)
+    T = 293.15
+    p = PositivePin("positive pin")
+    n1 = NegativePin("negative pin, connected to p while the switch is in its first position")
+    n2 = NegativePin("negative pin, connected to p while the switch is in its second position")
+
+    def structure(self, s):
+        super().structure(s)
+        for k in (1, 2):
+            s.algebraic(f"s{k}", 0.0, "1", "auxiliary variable")
+
+    def _to_n2(self, e):
+        raise NotImplementedError
+
+    def physics(self, e):
+        to_n2 = self._to_n2(e)
+        vp, currents, loss = e.potential(self.p), [], 0
+        for k, pin, closed in ((1, self.n1, 1 - to_n2), (2, self.n2, to_n2)):
+            sk = e.state(f"s{k}")
+            e.residual(vp - e.potential(pin) - sk * ca.if_else(closed, self.Ron, 1.0))
+            ik = -sk * ca.if_else(closed, 1.0, self.Goff)
+            e.flow(pin, ik)
+            currents.append(ik)
+            loss += ik * e.potential(pin)
+        ip = -(currents[0] + currents[1])
+        e.flow(self.p, ip)
+        self._losses(e, loss + ip * vp, self._T_heatPort(e))
+
+
+class IdealTwoWaySwitch(_TwoWaySwitching):
+    """Ideal two-way switch (MSL Ideal.IdealTwoWaySwitch, MSL 3's IdealCommutingSwitch):
+    the Boolean input ``control`` connects p–n2 when true, p–n1 when false (see
+    ``_TwoWaySwitching``: Ron [Ohm] 1e-5 closed, Goff [S] 1e-5 open)."""
+    control = BooleanInput("true => p--n2 connected, false => p--n1 connected")
+
+    def _to_n2(self, e):
+        return e.input(self.control)
+
+
+class ControlledIdealTwoWaySwitch(_ControlPin, _TwoWaySwitching):
+    """Controlled ideal two-way switch (MSL Ideal.ControlledIdealTwoWaySwitch, MSL 3's
+    ControlledIdealCommutingSwitch): p–n2 connected while control.v > level [V] (0.5),
+    p–n1 otherwise; the pin ``control`` carries no current; Ron [Ohm] 1e-5, Goff [S] 1e-5."""
+    control = Pin("control pin: if control.v > level p--n2 connected, otherwise p--n1 "
+                  "connected")
+
+    def _to_n2(self, e):
+        return self._above(e)
+
+
+class _IntermediateSwitching(_ConditionalHeatPort):
+    """MSL's IdealIntermediateSwitch and its controlled twin: p1–n1 and p2–n2 connected
+    while the switch state ``_crossed`` is false, p1–n2 and p2–n1 while it is true; each of
+    the four paths a point s_k [1] (an algebraic unknown) on its two-segment
+    characteristic, the voltage s_k·(Ron if closed else 1) [V], the currents at the pins
+    the sums of the two paths meeting there, s·1 for a closed path and s·Goff for an open
+    one [A] (MSL's equations). Ron [Ohm] 1e-5, Goff [S] 1e-5; T [K] 293.15 without heat
+    port (MSL's final T); LossPower = Σ pin.i·pin.v [W]."""
+    Ron = Parameter(1e-5, "Ohm", "closed switch resistance", nonnegative=True)
+    Goff = Parameter(1e-5, "S", "opened switch conductance", nonnegative=True)
+    T = 293.15
+    p1 = PositivePin("positive pin 1")
+    p2 = PositivePin("positive pin 2")
+    n1 = NegativePin("negative pin 1")
+    n2 = NegativePin("negative pin 2")
+
+    def structure(self, s):
+        super().structure(s)
+        for k in (1, 2, 3, 4):
+            s.algebraic(f"s{k}", 0.0, "1", "auxiliary variable")
+
+    def _crossed(self, e):
+        raise NotImplementedError
+
+    def physics(self, e):
+        crossed = self._crossed(e)
+        # the paths: (k, from, to, closed while crossed)
+        paths = ((1, self.p1, self.n1, False), (2, self.p2, self.n2, False),
+                 (3, self.p1, self.n2, True), (4, self.p2, self.n1, True))
+        current = {}
+        for k, a, b, when in paths:
+            sk = e.state(f"s{k}")
+            closed = crossed if when else 1 - crossed
+            e.residual(e.potential(a) - e.potential(b)
+                       - sk * ca.if_else(closed, self.Ron, 1.0))
+            current[k] = sk * ca.if_else(closed, 1.0, self.Goff)
+        flows = ((self.p1, current[1] + current[3]), (self.p2, current[2] + current[4]),
+                 (self.n1, -(current[1] + current[4])), (self.n2, -(current[2] + current[3])))
+        loss = 0
+        for pin, i in flows:
+            e.flow(pin, i)
+            loss += i * e.potential(pin)
+        self._losses(e, loss, self._T_heatPort(e))
+
+
+class IdealIntermediateSwitch(_IntermediateSwitching):
+    """Ideal intermediate switch (MSL Ideal.IdealIntermediateSwitch): the Boolean input
+    ``control`` connects p1–n2 and p2–n1 when true, p1–n1 and p2–n2 when false (see
+    ``_IntermediateSwitching``: Ron [Ohm] 1e-5, Goff [S] 1e-5)."""
+    control = BooleanInput("true => p1--n2, p2--n1 connected, otherwise p1--n1, p2--n2 "
+                           "connected")
+
+    def _crossed(self, e):
+        return e.input(self.control)
+
+
+class ControlledIdealIntermediateSwitch(_ControlPin, _IntermediateSwitching):
+    """Controlled ideal intermediate switch (MSL Ideal.ControlledIdealIntermediateSwitch):
+    p1–n2 and p2–n1 connected while control.v > level [V] (0.5), p1–n1 and p2–n2
+    otherwise; the pin ``control`` carries no current; Ron [Ohm] 1e-5, Goff [S] 1e-5."""
+    control = Pin("control pin: if control.v > level p1--n2, p2--n1 connected, otherwise "
+                  "p1--n1, p2--n2 connected")
+
+    def _crossed(self, e):
+        return self._above(e)
+
+
+#: MSL 3's names of the two-way switches
+IdealCommutingSwitch = IdealTwoWaySwitch
+ControlledIdealCommutingSwitch = ControlledIdealTwoWaySwitch
 
 
 class Short(OnePort):
@@ -952,6 +1350,76 @@ class Transformer(TwoPort):
         e.variable("dv", (self.L1 - self.M) * di1 + (self.M - self.L2) * di2, "V",
                    "difference between voltage drop over primary inductor and voltage drop "
                    "over secondary inductor")
+
+
+class M_Transformer(_Sized, Component):
+    """Generic transformer with N coupled inductors (MSL Basic.M_Transformer): the pins
+    ``p[1]`` .. ``p[N]``, ``n[1]`` .. ``n[N]``, v[j] = p[j].v − n[j].v [V], i[j] = p[j].i =
+    −n[j].i [A], v = Lm·der(i) with the symmetric inductance matrix Lm [H] from L, its upper
+    triangle row by row (``L[1]`` .. ``L[N(N+1)/2]``: Lm[1,1], Lm[1,2], .., Lm[1,N],
+    Lm[2,2], ..; MSL's numbering). N (constructor argument, ≥ 1, default 3) is structural;
+    L defaults to MSL's {1, 0.1, 0.2, 2, 0.3, 3} for N = 3 and must be given otherwise.
+    States i[j] (start 0, MSL's fixed start). der(i) = Lm⁻¹·v is solved for: Lm must be
+    positive definite (checked at construction; perfect coupling is the
+    IdealTransformer's)."""
+    _classes: dict = {}
+
+    def __new__(cls, name=None, *, N: int = 3, **params):
+        return super().__new__(cls._variant(_size(N, "M_Transformer: N (number of "
+                                                      "inductors)", 1)))
+
+    @staticmethod
+    def _declare(N: int) -> dict:
+        default = (1.0, 0.1, 0.2, 2.0, 0.3, 3.0) if N == 3 else (0.0,) * (N * (N + 1) // 2)
+        return {"L": Parameter(default, "H", "inductances and coupling inductances"),
+                "p": VectorPort(PositivePin, N, "positive pin"),
+                "n": VectorPort(NegativePin, N, "negative pin")}
+
+    def __init__(self, name: str | None = None, *, N: int = 3, **params):
+        if N != 3 and "L" not in params:
+            raise ParameterError(f"M_Transformer{f' {name!r}' if name else ''}: give the "
+                                 f"{N * (N + 1) // 2} inductances L (the upper triangle of "
+                                 f"the inductance matrix, row by row) for N = {N}")
+        super().__init__(name, **params)
+        if np.linalg.eigvalsh(self._matrix(self.L)).min() <= 0:
+            raise ParameterError(f"{who(self)}: the inductance matrix of L = "
+                                 f"{list(self.L)} H is not positive definite (coupled "
+                                 f"inductors whose derivatives are solved for); lower the "
+                                 f"coupling inductances, or for perfect coupling use "
+                                 f"IdealTransformer(considerMagnetization=True)")
+
+    @property
+    def N(self) -> int:
+        """Number of inductors."""
+        return self._key[0]
+
+    def _matrix(self, L):
+        """The symmetric matrix Lm [H] from the upper-triangle elements L (numbers or
+        symbols): a nested list."""
+        N, k = self.N, 0
+        Lm = [[None] * N for _ in range(N)]
+        for r in range(N):
+            for c in range(r, N):
+                Lm[r][c] = Lm[c][r] = L[k]
+                k += 1
+        return Lm
+
+    def structure(self, s):
+        for j in range(1, self.N + 1):
+            s.state(f"i[{j}]", 0.0, "A", f"current through inductor {j}")
+
+    def physics(self, e):
+        i = [e.state(f"i[{j}]") for j in range(1, self.N + 1)]
+        v = []
+        for j, (p, n) in enumerate(zip(self.p, self.n)):
+            e.flow(p, i[j])
+            e.flow(n, -i[j])
+            v.append(e.potential(p) - e.potential(n))
+        Lm = ca.vertcat(*[ca.horzcat(*row) for row in self._matrix(self.L)])
+        di = ca.solve(Lm, ca.vertcat(*v))
+        for j in range(self.N):
+            e.derivative(i[j], di[j])
+            e.variable(f"v[{j + 1}]", v[j], "V", f"voltage drop over inductor {j + 1}")
 
 
 class VCV(TwoPort):
@@ -1143,3 +1611,37 @@ class Diode(_ConditionalHeatPort, OnePort):
         e.variable("id", i_d, "A", "diode current")
         e.variable("vt_t", vt_t, "V", "temperature voltage")
         self._losses(e, v * i, T)
+
+
+class ZDiode(_ConditionalHeatPort, OnePort):
+    """Zener diode with 3 working areas (MSL Semiconductors.ZDiode): with the ohmic
+    parallel conductance v/R [A] in all three,
+    forward (v > Maxexp·Vt): i = Ids·(exlin(v/Vt, Maxexp) − 1), the exponential continued
+    linearly; breakdown (v + Bv < −Maxexp·Nbv·Vt): i = −Ids − Ibv·exlin(−(v + Bv)/(Nbv·Vt),
+    Maxexp), the breakdown exponential continued linearly; between: i = Ids·(exp(v/Vt) − 1)
+    − Ibv·exp(−(v + Bv)/(Nbv·Vt)). Ids [A] saturation current, Vt [V] voltage equivalent of
+    temperature, Maxexp [1] the exponent of the linear continuation (30), R [Ohm] parallel
+    resistance, Bv [V] breakthrough (Zener) voltage, Ibv [A] breakthrough knee current, Nbv
+    [1] breakthrough emission coefficient. The device temperature (T [K] 293.15, or
+    heatPort.T with ``useHeatPort``) does not enter the law (MSL's); LossPower = v·i [W].
+    The law is continuous to round-off (MSL's smooth(1, ...)): no events."""
+    Ids = Parameter(1e-6, "A", "saturation current")
+    Vt = Parameter(0.04, "V", "voltage equivalent of temperature (kT/qn)", positive=True)
+    Maxexp = Parameter(30.0, "1", "max. exponent for linear continuation", positive=True)
+    R = Parameter(1e8, "Ohm", "parallel ohmic resistance", positive=True)
+    Bv = Parameter(5.1, "V", "breakthrough voltage = Zener- or Z-voltage")
+    Ibv = Parameter(0.7, "A", "breakthrough knee current")
+    Nbv = Parameter(0.74, "1", "breakthrough emission coefficient", positive=True)
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
+
+    def physics(self, e):
+        v = self._v(e)
+        x_forward, x_breakdown = v / self.Vt, -(v + self.Bv) / (self.Nbv * self.Vt)
+        forward = self.Ids * (exlin(x_forward, self.Maxexp) - 1)
+        breakdown = self.Ibv * exlin(x_breakdown, self.Maxexp)
+        i = self._current(e, v / self.R + ca.if_else(
+            x_forward > self.Maxexp, forward,
+            ca.if_else(x_breakdown > self.Maxexp, -self.Ids - breakdown, forward - breakdown)))
+        self._record(e, v, i)
+        self._losses(e, v * i, self._T_heatPort(e))
