@@ -251,7 +251,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
             tree, R_q, nh, _stack([f for *_, f in ws.velocity_constraints]),
             [f"{o.path}.{n}" for o, n, _, _ in ws.velocity_constraints], ws, resolve)
     else:
-        motion = _on_charts(solve_motion(tree, R_q, phi[keep], ws, (bodies, T_other), resolve),
+        motion = _on_charts(solve_motion(tree, R_q, phi[keep, :], ws, (bodies, T_other), resolve),
                             tree)
     lam = ca.SX.zeros(phi.numel())               # dropped (redundant) rows carry nothing
     lam[keep] = motion.lam
@@ -352,7 +352,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         nominal=nominal,
         events=_events(ws.events, p),
         recorder=recorder,
-        lagrange=Lagrange(tree, Residuals(R_T[:nq], R_V[:nq], R_Q[:nq]), phi[keep], t, p, u,
+        lagrange=Lagrange(tree, Residuals(R_T[:nq], R_V[:nq], R_Q[:nq]), phi[keep, :], t, p, u,
                           [c.path for c, _ in ws.inputs], z_states),
         coordinates=tree.q_names,
         method=motion.method,
@@ -498,7 +498,7 @@ def _followers(ws: Workspace, final, owner, k: int, x: ca.SX, free: ca.SX, p: ca
     declared is kept."""
     if k not in velocities or not ws.state_selects:
         return []
-    w = x[list(velocities)]
+    w = x[list(velocities), :]
     kept = _kept_rows(ws, final, owner, w)
     if not kept:
         return []
@@ -518,7 +518,7 @@ def _combination_jumps(ws: Workspace, final, owner, v: ca.SX, x: ca.SX, free: ca
     coordinates): each x[j] jumps by d_j times the jump of v, the states a Modelica tool
     keeps kept as for a reinit of a state (``_followers``), v being the one that changes.
     None when v is not such a velocity."""
-    w = x[list(velocities)]
+    w = x[list(velocities), :]
     if w.numel() == 0:
         return None
     J = ca.jacobian(v, w)
