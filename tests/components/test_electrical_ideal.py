@@ -3,6 +3,7 @@ event-driven scipy model, closed forms, power balances and MSL's ChuaCircuit."""
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -11,6 +12,7 @@ from scipy.integrate import solve_ivp
 import acausal
 from acausal.components import electrical as el
 from acausal.components import logical as lg
+from acausal.errors import SimulationError
 from wiring import model
 
 TIGHT = {"rtol": 1e-11, "atol": 1e-12}
@@ -98,6 +100,30 @@ def test_opening_switch_in_an_rl_circuit_decays_through_goff():
     k = t != t0         # at the time event itself the output shows s's left limit
     np.testing.assert_allclose(res["switch.v"][at][k], np.where(t < t0, Ron, 1 / Goff)[k] *
                                i[k], rtol=1e-8, atol=1e-12)
+
+
+def test_a_blocking_diode_without_leakage_in_series_with_an_inductor_is_refused():
+    """An IdealDiode with Goff = 0 blocks an R-L branch at its current's zero: then the
+    diode's voltage (its curve parameter s) is determined by no equation while the
+    inductor's derivative depends on it (in a Modelica tool: a singular system). The
+    simulation stops there with an error naming s and what to do, instead of holding s and
+    missing the next turn-on (the conduction interval before it is the closed form's: the
+    current's zero beta)."""
+    from scipy.optimize import brentq
+    V, F, R, L = 10.0, 50.0, 10.0, 0.01
+    w = 2 * math.pi * F
+    m = model("rl_rectifier", lambda m: [
+        (m.src.p, m.d.p), (m.d.n, m.r.p), (m.r.n, m.l.p), (m.l.n, m.src.n),
+        (m.src.n, m.ground.p)],
+        src=el.SineVoltage(V=V, f=F), d=el.IdealDiode(Goff=0.0), r=el.Resistor(R=R),
+        l=el.Inductor(L=L), ground=el.Ground())
+    phi = math.atan2(w * L, R + 1e-5)
+    beta = brentq(lambda th: math.sin(th - phi) + math.sin(phi) * math.exp(-th / math.tan(phi)),
+                  math.pi, 2 * math.pi, xtol=1e-14)
+    with pytest.raises(SimulationError, match=r"do not determine d\.s.*Goff > 0") as err:
+        acausal.compile(m).simulate(2 / F, **TIGHT)
+    stopped = float(re.search(r"at t = (\S+) s", str(err.value)).group(1))
+    assert abs(stopped - beta / w) < 1e-6          # at the turn-off, the message's 6 digits
 
 
 def test_closing_switch_charges_a_capacitor_through_goff_then_ron():

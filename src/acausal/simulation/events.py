@@ -248,7 +248,8 @@ class EventSimulation(ModeIteration):
         if self.has_alg:    # IDAS is given consistent derivatives at each start
             self.xdot = ca.Function("xdot", [model.x, model.z, model.t, d], [ode])
             self.alg_jacobian = ca.Function("alg_jacobian", [model.x, model.z, model.t, d],
-                                            [ca.jacobian(alg, model.z)])
+                                            [ca.jacobian(alg, model.z),
+                                             ca.jacobian(ode, model.z)])
         self.regular = self._integrators(alg)
         self.dae, self.step = self.regular
         self._maps = {}       # Functions mapped over n points, by (kind, n)
@@ -295,20 +296,31 @@ class EventSimulation(ModeIteration):
         friction elements stuck on one rigid shaft share its holding torque in any
         proportion, MSL's LossyGearDemo2; a Modelica tool picks a split by pivoting), their
         independent rows and the indeterminate combinations of the algebraic variables held
-        at their values there (the least-norm split the event iteration solved)."""
+        at their values there (the least-norm split the event iteration solved). Where such a
+        combination drives the states (the model has no unique solution in these modes: an
+        ideal diode with Goff = 0 blocking an inductor's current), a SimulationError."""
         self.dae, self.step = self.regular
         if not self.has_alg or self.loops:
             return
         xs, zs = x / self.Nx, z / self.Nz
-        J = np.array(self.alg_jacobian(xs, zs, t, d), dtype=float)
+        J, J_ode = (np.array(v, dtype=float) for v in self.alg_jacobian(xs, zs, t, d))
         held = null_space(J)                        # the indeterminate combinations
         if not len(held):
             return
+        if np.abs(J_ode @ held.T).max() > SINGULAR * max(np.abs(J_ode).max(), 1.0):
+            free = np.flatnonzero(np.abs(held).max(axis=0) > 1e-8)
+            raise SimulationError(
+                f"at t = {t:g} s, in the modes entered there, the algebraic equations do not "
+                f"determine {', '.join(self.model.z_names[k] for k in free)}, and the states' "
+                f"derivatives depend on it: the model has no unique solution in these modes "
+                f"(e.g. an ideal diode or switch with Goff = 0 that blocks an inductor's "
+                f"current); give the blocking element a conductance (Goff > 0, MSL's default "
+                f"1e-5 S) or a resistor in parallel")
         rows, tol = [], SINGULAR * max(np.linalg.norm(J, 2), 1.0)
         for k in range(J.shape[0]):                 # the first independent rows
             if np.linalg.matrix_rank(J[rows + [k]], tol=tol) > len(rows):
                 rows.append(k)
-        alg = ca.vertcat(self.alg[rows], ca.mtimes(ca.DM(held), self.model.z - ca.DM(zs)))
+        alg = ca.vertcat(self.alg[rows, :], ca.mtimes(ca.DM(held), self.model.z - ca.DM(zs)))
         self.dae, self.step = self._integrators(alg)
 
     def indicators(self, t, x, z, d) -> np.ndarray:
