@@ -48,15 +48,18 @@ Not here yet: Integer signals; model-level Boolean inputs and outputs (``Input``
 """
 from __future__ import annotations
 
+from functools import reduce
+
 import casadi as ca
 import numpy as np
 
 from ..core import (BooleanInput, BooleanOutput, Component, Parameter, RealInput, RealOutput,
-                    Unavailable, VectorPort)
+                    Unavailable)
 from ..core.component import who
 from ..errors import ParameterError, StructureError
 from .signals import Extrapolation
-from .signals.interfaces import _MultiInput, _size, _Sized
+from .signals.interfaces import _MultiInput
+from .signals.routing import _Replicating
 
 __all__ = [
     "partialBooleanSISO", "partialBooleanSI2SO", "partialBooleanSO",
@@ -726,32 +729,11 @@ class BooleanPassThrough(partialBooleanSISO):
         e.output(self.y, e.input(self.u))
 
 
-class BooleanReplicator(_Sized, Component):
+class BooleanReplicator(_Replicating):
     """y = fill(u, nout) (MSL Routing.BooleanReplicator): the Boolean input ``u`` copied to
     the ``nout`` outputs ``y[1]`` .. ``y[nout]`` (constructor argument, default 1)."""
     _classes: dict = {}
-
-    def __new__(cls, name=None, *, nout: int = 1, **params):
-        return super().__new__(cls._variant(_size(nout, f"{cls.__name__}: nout (number of "
-                                                        f"outputs)", 1)))
-
-    @staticmethod
-    def _declare(nout: int) -> dict:
-        return {"u": BooleanInput("connector of Boolean input signal"),
-                "y": VectorPort(BooleanOutput, nout, "connector of Boolean output signals")}
-
-    def __init__(self, name: str | None = None, *, nout: int = 1, **params):
-        super().__init__(name, **params)
-
-    @property
-    def nout(self) -> int:
-        """Number of outputs."""
-        return self._key[0]
-
-    def physics(self, e):
-        u = e.input(self.u)
-        for port in self.y:
-            e.output(port, u)
+    _signal = ("Boolean", BooleanInput, BooleanOutput)
 
 
 # ---- terminate (Modelica.Blocks.Logical) --------------------------------------------------------
@@ -786,20 +768,6 @@ class PartialBooleanMISO(_MultiInput, partialBooleanSO):
     _input = BooleanInput
 
 
-def _all(values: list):
-    out = values[0]
-    for v in values[1:]:
-        out = ca.logic_and(out, v)
-    return out
-
-
-def _any(values: list):
-    out = values[0]
-    for v in values[1:]:
-        out = ca.logic_or(out, v)
-    return out
-
-
 class MathBoolean:
     """The blocks of Modelica.Blocks.MathBoolean, as ``MathBoolean.And(nu=3)``: And, Or, Xor,
     Nand, Nor have a vector input ``u[1]`` .. ``u[nu]`` (``nu``, constructor argument ≥ 1)
@@ -814,14 +782,14 @@ class MathBoolean:
         _classes: dict = {}
 
         def physics(self, e):
-            e.output(self.y, _all(self.inputs(e)))
+            e.output(self.y, reduce(ca.logic_and, self.inputs(e)))
 
     class Or(PartialBooleanMISO):
         """y = u[1] or u[2] or ... or u[nu] (MSL MathBoolean.Or)."""
         _classes: dict = {}
 
         def physics(self, e):
-            e.output(self.y, _any(self.inputs(e)))
+            e.output(self.y, reduce(ca.logic_or, self.inputs(e)))
 
     class Xor(PartialBooleanMISO):
         """y = oneTrue(u): true if exactly one element of u is true (MSL MathBoolean.Xor)."""
@@ -835,14 +803,14 @@ class MathBoolean:
         _classes: dict = {}
 
         def physics(self, e):
-            e.output(self.y, ca.logic_not(_all(self.inputs(e))))
+            e.output(self.y, ca.logic_not(reduce(ca.logic_and, self.inputs(e))))
 
     class Nor(PartialBooleanMISO):
         """y = not (u[1] or u[2] or ... or u[nu]) (MSL MathBoolean.Nor)."""
         _classes: dict = {}
 
         def physics(self, e):
-            e.output(self.y, ca.logic_not(_any(self.inputs(e))))
+            e.output(self.y, ca.logic_not(reduce(ca.logic_or, self.inputs(e))))
 
     Not = Not
     RisingEdge = RisingEdge

@@ -103,13 +103,6 @@ def _new_sized(base: type, key: tuple) -> Component:
     return object.__new__(base._variant(*key))
 
 
-def _vmax(values: list):
-    out = values[0]
-    for v in values[1:]:
-        out = ca.fmax(out, v)
-    return out
-
-
 class _StartValues:
     """Start values of a block's states, given as constructor keyword arguments (default 0):
     a number each, or for the names ``_start_size`` gives a length n, n numbers (a tuple;

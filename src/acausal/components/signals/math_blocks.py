@@ -3,6 +3,7 @@ sampled means."""
 from __future__ import annotations
 
 import math
+from functools import reduce
 
 import casadi as ca
 import numpy as np
@@ -10,7 +11,7 @@ import numpy as np
 from ...core import Component, Parameter, RealInput, RealOutput, VectorPort
 from ...core.component import who
 from ...errors import ParameterError
-from .interfaces import _matrix, _MultiInput, SI2SO, SISO, _Sized, SO, _StartValues, _vmax
+from .interfaces import _matrix, _MultiInput, SI2SO, SISO, _Sized, SO, _StartValues
 from .nonlinear import _limit, _limited, _limiter_region
 
 
@@ -415,8 +416,8 @@ class MinMax(_MultiInput):
 
     def physics(self, e):
         u = self.inputs(e)
-        e.output(self.yMax, _vmax(u))
-        e.output(self.yMin, -_vmax([-v for v in u]))
+        e.output(self.yMax, reduce(ca.fmax, u))
+        e.output(self.yMin, reduce(ca.fmin, u))
 
 
 class MatrixGain(_Sized, Component):

@@ -35,19 +35,21 @@ def _route(e, sources, targets) -> None:
         e.output(dst, e.input(src))
 
 
-class Replicator(_Sized, Component):
-    """y = fill(u, nout) (MSL Routing.Replicator): the input ``u`` copied to the ``nout``
-    outputs ``y[1]`` .. ``y[nout]`` (constructor argument, default 1)."""
-    _classes: dict = {}
+class _Replicating(_Sized, Component):
+    """y = fill(u, nout): the input ``u`` copied to the ``nout`` outputs ``y[1]`` ..
+    ``y[nout]`` (constructor argument, default 1), on the ports of ``_signal`` (Real here,
+    Boolean in ``logical.BooleanReplicator``)."""
+    _signal = ("Real", RealInput, RealOutput)
 
     def __new__(cls, name=None, *, nout: int = 1, **params):
         return super().__new__(cls._variant(_size(nout, f"{cls.__name__}: nout (number of "
                                                         f"outputs)", 1)))
 
-    @staticmethod
-    def _declare(nout: int) -> dict:
-        return {"u": RealInput("connector of Real input signal"),
-                "y": VectorPort(RealOutput, nout, "connector of Real output signals")}
+    @classmethod
+    def _declare(cls, nout: int) -> dict:
+        kind, port_in, port_out = cls._signal
+        return {"u": port_in(f"connector of {kind} input signal"),
+                "y": VectorPort(port_out, nout, f"connector of {kind} output signals")}
 
     def __init__(self, name: str | None = None, *, nout: int = 1, **params):
         super().__init__(name, **params)
@@ -59,6 +61,12 @@ class Replicator(_Sized, Component):
 
     def physics(self, e):
         _route(e, [self.u] * self.nout, self.y)
+
+
+class Replicator(_Replicating):
+    """y = fill(u, nout) (MSL Routing.Replicator): the input ``u`` copied to the ``nout``
+    outputs ``y[1]`` .. ``y[nout]`` (constructor argument, default 1)."""
+    _classes: dict = {}
 
 
 class ExtractSignal(_Sized, Component):

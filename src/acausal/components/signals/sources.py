@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from enum import Enum
+from functools import reduce
 
 import casadi as ca
 import numpy as np
@@ -10,7 +11,7 @@ from ...core import (BooleanOutput, Component, ConditionalPort, Parameter, RealI
                      RealOutput, Unavailable, VectorPort)
 from ...core.component import who
 from ...errors import ParameterError
-from .interfaces import EPS, SignalSource, _Sized, SO, _start, _vmax
+from .interfaces import EPS, SignalSource, _Sized, SO, _start
 
 
 class Constant(SO):
@@ -563,8 +564,8 @@ class _PointToPoint(_Sized, Component):
         ``moves`` (false when no axis moves: then s = 0 and endTime = 0)."""
         eps = 10 * 2.220446049250313e-16                     # MSL: 10*Modelica.Constants.eps
         dq = self._distances()
-        sd_inv = _vmax([ca.fabs(d / v) for d, v in zip(dq, self._vector("qd_max"))])
-        sdd_inv = _vmax([ca.fabs(d / a) for d, a in zip(dq, self._vector("qdd_max"))])
+        sd_inv = reduce(ca.fmax, [ca.fabs(d / v) for d, v in zip(dq, self._vector("qd_max"))])
+        sdd_inv = reduce(ca.fmax, [ca.fabs(d / a) for d, a in zip(dq, self._vector("qdd_max"))])
         moves = ca.logic_and(sd_inv > eps, sdd_inv > eps)
         sd_max, sdd_max = 1 / ca.fmax(sd_inv, eps), 1 / ca.fmax(sdd_inv, eps)
         Ta1, Ta2 = ca.sqrt(1 / sdd_max), sd_max / sdd_max
