@@ -86,8 +86,10 @@ def der_with(ex, table: dict) -> ca.SX:
         if d is None:
             raise UnknownDerivative(
                 f"the time derivative of '{s.name()}' is needed but unknown (it is a model "
-                f"input or an algebraic variable); use a filtered source (exact=False) or give "
-                f"the signal as a function of time")
+                f"input or an algebraic variable): a component differentiates it (a Der block, "
+                f"an exact Position, Speed or Accelerate source); use a filtered source "
+                f"(exact=False) or a Derivative block (k·s/(T·s + 1)), or give the signal as a "
+                f"function of time")
         if isinstance(d, (int, float)) and d == 0:
             continue
         args.append(s)
