@@ -11,14 +11,10 @@ import pytest
 import acausal
 from acausal.components import rotational as rot
 from acausal.components.signals import Constant, Feedback, Ramp, Sine
+from msl_examples import at_reference_times, connect_all, simulate_like_reference
 
 EXAMPLES = "Modelica.Mechanics.Rotational.Examples"
 TOL = dict(rtol=1e-10, atol=1e-12)
-
-
-def connect_all(model, pairs) -> None:
-    for a, b in pairs:
-        model.connect(a, b)
 
 
 def first_grounded():
@@ -77,33 +73,18 @@ def simple_gear_shift():
     return m, 5.0, start
 
 
-def at_reference_times(res, t: np.ndarray, name: str) -> np.ndarray:
-    """``name`` of ``res`` at the times t (simulated on that grid, events added): the value
-    after an event, as the reference keeps it."""
-    at = np.searchsorted(res.t, t, side="right") - 1
-    assert np.allclose(res.t[at], t, rtol=0, atol=1e-12)
-    return res[name][at]
-
-
 def switches(t: np.ndarray, values: np.ndarray) -> list[tuple[float, float]]:
     """[(time, value after)] of a piecewise constant signal."""
     k = np.flatnonzero(np.diff(values) != 0)
     return [(t[i + 1], values[i + 1]) for i in k]
 
 
-def simulate_like_reference(build, name: str, reference_result, **tol):
-    ref = reference_result("MAP-LIB_ReferenceResults", f"{EXAMPLES}.{name}")
-    model, stop_time, start = build()
-    res = acausal.compile(model).simulate(stop_time, t=ref["time"], x0=start, **tol)
-    assert ref["time"][-1] == pytest.approx(stop_time)
-    return res, ref
-
-
 def test_first_grounded_matches_the_msl_reference(reference_result):
     """Largest error 2.1e-4 rad/s in inertia3.w (3.1e-4 of its range): the reference's own
     integration error, the same as in First (see test_first_example: DASSL at tolerance
     1e-6, reproduced by IDAS at that tolerance); the others within 6.5e-5 of their range."""
-    res, ref = simulate_like_reference(first_grounded, "FirstGrounded", reference_result, **TOL)
+    res, ref = simulate_like_reference(first_grounded, f"{EXAMPLES}.FirstGrounded",
+                                       reference_result, **TOL)
     bound = {"damper.phi_rel": 1e-4, "damper.w_rel": 1e-4, "inertia3.phi": 1e-4,
              "inertia3.w": 4e-4}
     assert sorted(bound) == sorted(n for n in ref if n != "time")
@@ -118,8 +99,8 @@ def test_simple_gear_shift_matches_the_msl_reference(reference_result):
     for 3e-7 s, free from 2.1 s; clutch: free, engaged sliding backward from 2 s, stuck at
     2.1107904 s) at the same times within 1e-6 s (largest difference 2e-7 s, the end of the
     brake's startForward: its speed leaving the round-off band around 0)."""
-    res, ref = simulate_like_reference(simple_gear_shift, "SimpleGearShift", reference_result,
-                                       **TOL)
+    res, ref = simulate_like_reference(simple_gear_shift, f"{EXAMPLES}.SimpleGearShift",
+                                       reference_result, **TOL)
     t = ref["time"]
     for name in ("clutch.phi_rel", "clutch.w_rel", "engine.phi", "engine.w", "load.phi",
                  "load.w"):

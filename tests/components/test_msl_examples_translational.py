@@ -20,14 +20,10 @@ import acausal
 from acausal.components import translational as tr
 from acausal.components import rotational as rot
 from acausal.components.signals import CombiTimeTable, Constant, Gain, Sine
+from msl_examples import at_reference_times, connect_all, simulate_like_reference
 
 EXAMPLES = "Modelica.Mechanics.Translational.Examples"
 TOL = dict(rtol=1e-10, atol=1e-12)
-
-
-def connect_all(model, pairs) -> None:
-    for a, b in pairs:
-        model.connect(a, b)
 
 
 def initial_conditions():
@@ -202,27 +198,11 @@ def vehicle():
     return m, 60.0, {}
 
 
-def at_reference_times(res, t: np.ndarray, name: str) -> np.ndarray:
-    """``name`` of ``res`` at the times t (simulated on that grid, events added): the value
-    after an event, as the reference keeps it."""
-    at = np.searchsorted(res.t, t, side="right") - 1
-    assert np.allclose(res.t[at], t, rtol=0, atol=1e-12)
-    return res[name][at]
-
-
 def max_relative_error(ours: np.ndarray, ref: np.ndarray) -> float:
     """max |ours − ref| over the signal's scale: its range, or if it is constant (a body at
     rest) its magnitude but at least 1 (the error is then absolute)."""
     scale = np.ptp(ref) if np.ptp(ref) > 1e-9 else np.max(np.abs(ref), initial=1.0)
     return float(np.max(np.abs(ours - ref)) / scale)
-
-
-def simulate_like_reference(build, name: str, reference_result):
-    ref = reference_result("MAP-LIB_ReferenceResults", f"{EXAMPLES}.{name}")
-    model, stop_time, start = build()
-    res = acausal.compile(model).simulate(stop_time, t=ref["time"], x0=start, **TOL)
-    assert ref["time"][-1] == pytest.approx(stop_time)
-    return res, ref
 
 
 @pytest.mark.parametrize("build, name, bound", [
@@ -235,7 +215,7 @@ def simulate_like_reference(build, name: str, reference_result):
     (vehicle, "Vehicle", 1e-4),
 ], ids=lambda v: v if isinstance(v, str) else "")
 def test_example_matches_the_msl_reference(build, name, bound, reference_result):
-    res, ref = simulate_like_reference(build, name, reference_result)
+    res, ref = simulate_like_reference(build, f"{EXAMPLES}.{name}", reference_result, **TOL)
     signals = [n for n in ref if n != "time"]
     assert signals
     for signal in signals:
