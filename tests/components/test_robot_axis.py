@@ -11,11 +11,11 @@ import pytest
 
 import acausal
 from acausal.components import electrical as el
-from acausal.components import logical as lg
 from acausal.components import rotational as rot
 from acausal.components import signals as sig
 from acausal.errors import InitializationError, ParameterError, StructureError
 from acausal.models.robot_axis import STOP_TIME, GearType2, Motor, OneAxis
+from fast_spin import fast_enough
 from wiring import model
 
 ONE_AXIS = "Modelica.Mechanics.MultiBody.Examples.Systems.RobotR3.OneAxis"
@@ -306,13 +306,7 @@ def test_terminate_simulation_stops_at_the_condition():
     """An inertia (2 kg.m²) under 3 N.m from rest, the run to end when its speed exceeds
     4.5 rad/s (GreaterThreshold, a state event): at t = 4.5·2/3 = 3 s, located to the event
     tolerance; the Result ends there and says why; the grid after it is left out."""
-    m = model("terminated", lambda m: [(m.torque.flange, m.inertia.flange_a),
-                                       (m.tau.y, m.torque.tau),
-                                       (m.speed.flange, m.inertia.flange_b),
-                                       (m.speed.w, m.fast.u), (m.fast.y, m.stop.condition)],
-              torque=rot.Torque(), inertia=rot.Inertia(J=2.0), tau=sig.Constant(k=3.0),
-              speed=rot.SpeedSensor(), fast=lg.GreaterThreshold(threshold=4.5),
-              stop=lg.TerminateSimulation(terminationText="fast enough"))
+    m = fast_enough()
     res = acausal.compile(m).simulate(10.0)
     assert res.terminated.time == pytest.approx(3.0, abs=1e-11)
     assert res.terminated.component == "stop" and res.terminated.message == "fast enough"

@@ -44,12 +44,12 @@ from fmpy.fmi1 import FMICallException                             # noqa: E402
 from fmpy.fmi2 import fmi2Discard, fmi2LastSuccessfulTime, fmi2Terminated  # noqa: E402
 
 import acausal                                                     # noqa: E402
-from acausal.components import logical as lg                       # noqa: E402
 from acausal.components import rotational as rot                   # noqa: E402
 from acausal.components import signals as sig                      # noqa: E402
 from acausal.errors import FmuExportError                          # noqa: E402
 from acausal.models import FourBar                                 # noqa: E402
 from acausal.models.robot_axis import STOP_TIME, Motor, OneAxis    # noqa: E402
+from fast_spin import fast_enough                                  # noqa: E402
 from fmi_calls import init, instance                               # noqa: E402
 from importers import fmu_check, fmusim                             # noqa: E402
 from wiring import model                                           # noqa: E402
@@ -96,16 +96,6 @@ class StartedFourBar(FourBar):
         self.connect(self.init.flange, self.rev1.axis)
         self.connect(self.phi0.y, self.init.phi_start)
         self.connect(self.w0.y, self.init.w_start)
-
-
-def fast_enough():
-    return model("fast_enough", lambda m: [(m.torque.flange, m.inertia.flange_a),
-                                           (m.tau.y, m.torque.tau),
-                                           (m.speed.flange, m.inertia.flange_b),
-                                           (m.speed.w, m.fast.u), (m.fast.y, m.stop.condition)],
-                 torque=rot.Torque(), inertia=rot.Inertia(J=2.0), tau=sig.Constant(k=3.0),
-                 speed=rot.SpeedSensor(), fast=lg.GreaterThreshold(threshold=4.5),
-                 stop=lg.TerminateSimulation(terminationText="fast enough"))
 
 
 # name: (model, stop time [s], output interval [s], start values set, closed form t -> {name:
