@@ -31,7 +31,7 @@ import numpy as np
 
 from ..core import (BooleanInput, Component, ConditionalPort, HeatPort_a, NegativePin,
                     Parameter, Pin, PositivePin, RealInput, RealOutput, VectorPort)
-from ..core.component import who
+from ..core.component import BoundParameters, bound_twin, who
 from ..errors import ParameterError
 from . import rotational, translational
 from . import signals as sig
@@ -112,17 +112,13 @@ class _ConditionalHeatPort(Component):
         e.variable("T_heatPort", T_heatPort, "K", "temperature of heatPort")
 
 
-class _TemperatureDependent(_ConditionalHeatPort):
+class _TemperatureDependent(BoundParameters, _ConditionalHeatPort):
     """MSL's ConditionalHeatPort(T=T_ref) of the resistors and conductors: without heat
     port the device sits at T = T_ref [K], which follows T_ref also when T_ref is changed at
     simulation time (so R_actual = R, G_actual = G there); ``T`` given at construction is a
     parameter of its own (``Resistor(T=350)``, MSL's modifier: the class's twin declaring
-    T, registered by ``_with_parameter_T``)."""
+    T, registered by ``_own_T``)."""
     T_ref = Parameter(300.15, "K", "reference temperature", positive=True)
-
-    def __new__(cls, name=None, **params):
-        twin = vars(cls).get("_with_T")
-        return super().__new__(twin if "T" in params and twin else cls)
 
     @property
     def T(self):
@@ -137,16 +133,11 @@ class _TemperatureDependent(_ConditionalHeatPort):
         return scale
 
 
-def _with_parameter_T(cls):
-    """Register on ``cls`` its twin with the parameter T [K] (named like ``cls`` in
-    messages), which ``cls(T=...)`` builds."""
-    twin = type(cls.__name__, (cls,), {
-        "__module__": cls.__module__, "__qualname__": f"{cls.__qualname__}._with_T",
-        "__doc__": cls.__doc__,
-        "T": Parameter(300.15, "K", "fixed device temperature if useHeatPort = false",
-                       positive=True)})
-    cls._with_T = twin
-    return cls
+def _own_T(cls):
+    """``cls`` with its twin whose T [K] is a parameter of its own (built by
+    ``cls(T=...)``)."""
+    return bound_twin(cls, "T", Parameter(300.15, "K", "fixed device temperature if "
+                                          "useHeatPort = false", positive=True))
 
 
 class _PartialResistor(_TemperatureDependent, OnePort):
@@ -166,7 +157,7 @@ class _PartialResistor(_TemperatureDependent, OnePort):
         self._losses(e, v * i, T)
 
 
-@_with_parameter_T
+@_own_T
 class Resistor(_PartialResistor):
     """Ideal linear resistor: v = R_actual·i, R_actual = R·(1 + alpha·(T_heatPort − T_ref))
     [Ohm]; T_heatPort [K] is heatPort.T with ``useHeatPort``, otherwise T, which is T_ref
@@ -177,7 +168,7 @@ class Resistor(_PartialResistor):
         return self.R
 
 
-@_with_parameter_T
+@_own_T
 class VariableResistor(_PartialResistor):
     """Ideal linear resistor with variable resistance (MSL Basic.VariableResistor): the
     Resistor's law with R [Ohm] the input ``R``, R_actual = R·(1 + alpha·(T_heatPort −
@@ -207,7 +198,7 @@ class _PartialConductor(_TemperatureDependent, OnePort):
         self._losses(e, v * i, T)
 
 
-@_with_parameter_T
+@_own_T
 class Conductor(_PartialConductor):
     """Ideal linear conductor: i = G_actual·v, G_actual = G/(1 + alpha·(T_heatPort − T_ref))
     [S]; T_heatPort as for the Resistor."""
@@ -217,7 +208,7 @@ class Conductor(_PartialConductor):
         return self.G
 
 
-@_with_parameter_T
+@_own_T
 class VariableConductor(_PartialConductor):
     """Ideal linear conductor with variable conductance (MSL Basic.VariableConductor): the
     Conductor's law with G [S] the input ``G``, G_actual = G/(1 + alpha·(T_heatPort −
@@ -228,7 +219,7 @@ class VariableConductor(_PartialConductor):
         return e.input(self.G)
 
 
-@_with_parameter_T
+@_own_T
 class Potentiometer(_TemperatureDependent):
     """Adjustable resistor (MSL Basic.Potentiometer): the resistance R_actual = R·(1 +
     alpha·(T_heatPort − T_ref)) [Ohm] between pin_p and pin_n, split by the sliding
@@ -636,17 +627,13 @@ class _SawToothShape:
     period = Parameter(1.0, "s", "time for one period", positive=True)
 
 
-class _ExponentialsShape:
+class _ExponentialsShape(BoundParameters):
     """The Exponentials block's rise and fall; fallTimeConst [s] follows riseTimeConst (MSL's
     binding, also at simulation time) unless given at construction, which makes it a
-    parameter of its own (the class's twin registered by ``_with_parameter_fallTimeConst``)."""
+    parameter of its own (the class's twin registered by ``_own_fallTimeConst``)."""
     _block, _role = sig.Exponentials, "outMax"
     riseTime = Parameter(0.5, "s", "rise time", nonnegative=True)
     riseTimeConst = Parameter(0.1, "s", "rise time constant", positive=True)
-
-    def __new__(cls, name=None, **params):
-        twin = vars(cls).get("_with_fallTimeConst")
-        return super().__new__(twin if "fallTimeConst" in params and twin else cls)
 
     @property
     def fallTimeConst(self):
@@ -654,14 +641,11 @@ class _ExponentialsShape:
         return self.riseTimeConst
 
 
-def _with_parameter_fallTimeConst(cls):
-    """Register on ``cls`` its twin with the parameter fallTimeConst [s] (named like ``cls``
-    in messages), which ``cls(fallTimeConst=...)`` builds."""
-    cls._with_fallTimeConst = type(cls.__name__, (cls,), {
-        "__module__": cls.__module__, "__qualname__": f"{cls.__qualname__}._with_fallTimeConst",
-        "__doc__": cls.__doc__,
-        "fallTimeConst": Parameter(0.1, "s", "fall time constant", positive=True)})
-    return cls
+def _own_fallTimeConst(cls):
+    """``cls`` with its twin whose fallTimeConst [s] is a parameter of its own (built by
+    ``cls(fallTimeConst=...)``)."""
+    return bound_twin(cls, "fallTimeConst",
+                      Parameter(0.1, "s", "fall time constant", positive=True))
 
 
 class _TableShape:
@@ -746,7 +730,7 @@ class SawToothVoltage(_SawToothShape, _TimedVoltage):
     V = Parameter(1.0, "V", "amplitude of saw tooth")
 
 
-@_with_parameter_fallTimeConst
+@_own_fallTimeConst
 class ExponentialsVoltage(_ExponentialsShape, _TimedVoltage):
     """Rising and falling exponential voltage source (MSL Sources.ExponentialsVoltage): for
     τ = time − startTime ≥ 0, v = offset + vMax·(1 − exp(−τ/riseTimeConst)) while τ <
@@ -844,7 +828,7 @@ class SawToothCurrent(_SawToothShape, _TimedCurrent):
     I = Parameter(1.0, "A", "amplitude of saw tooth")           # noqa: E741 (MSL's name)
 
 
-@_with_parameter_fallTimeConst
+@_own_fallTimeConst
 class ExponentialsCurrent(_ExponentialsShape, _TimedCurrent):
     """Rising and falling exponential current source (MSL Sources.ExponentialsCurrent): the
     ExponentialsVoltage's wave for the current i [A], upper bound iMax (a plain Real in

@@ -300,6 +300,32 @@ class Component:
         """Contribute energies, flows, state derivatives, outputs. Default: none."""
 
 
+class BoundParameters:
+    """Mixin of a component with MSL's bound parameters (``uMin = -uMax``, ``T = T_ref``):
+    such a parameter is a property of the class reading its binding (so it follows the
+    other parameter, also when that one is changed at simulation time) unless it is given
+    at construction, which builds the class's twin declaring it as a parameter of its own
+    (``bound_twin``)."""
+
+    def __new__(cls, name=None, **params):
+        for key in params:
+            twin = vars(cls).get(f"_twin_{key}")
+            if twin is not None:
+                return super().__new__(twin)
+        return super().__new__(cls)
+
+
+def bound_twin(cls: type, name: str, parameter: Parameter) -> type:
+    """Register on ``cls`` (a BoundParameters) its twin declaring ``name`` as ``parameter``,
+    the class ``cls(name=...)`` builds; it shows cls's name in messages. Returns ``cls``
+    (usable as a decorator)."""
+    attribute = f"_twin_{name}"
+    setattr(cls, attribute, type(cls.__name__, (cls,), {
+        "__module__": cls.__module__, "__qualname__": f"{cls.__qualname__}.{attribute}",
+        "__doc__": cls.__doc__, name: parameter}))
+    return cls
+
+
 def port_rows(cls) -> list[tuple[str, str, str, str]]:
     """(name, type, description, condition) of the ports a component class declares."""
     rows = []

@@ -9,7 +9,7 @@ import casadi as ca
 import numpy as np
 
 from ...core import Component, ConditionalPort, Parameter, RealInput, RealOutput, VectorPort
-from ...core.component import who
+from ...core.component import BoundParameters, bound_twin, who
 from ...errors import ParameterError
 from .filter_design import BESSEL_MAX_ORDER, AnalogFilter, FilterType, base_filter, filter_roots
 from .interfaces import EPS, Init, _initial_equations, _matrix, SISO, _Sized, _start, _StartValues
@@ -179,7 +179,7 @@ class SimpleController(str, Enum):
     PID = "PID"
 
 
-class LimPID(_StartValues, Component):
+class LimPID(BoundParameters, _StartValues, Component):
     """P, PI, PD or PID controller with limited output, anti-windup, set-point weighting and
     optional feed-forward (MSL Continuous.LimPID), the equations of its internal blocks::
 
@@ -243,9 +243,6 @@ class LimPID(_StartValues, Component):
                                    "output limiter are rounded (error <= y_smooth/2)",
                          positive=True)
 
-    def __new__(cls, name=None, **params):
-        return super().__new__(_LimPIDyMin if cls is LimPID and "yMin" in params else cls)
-
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
         _check_limits(self, "yMax", "yMin")
@@ -305,12 +302,7 @@ class LimPID(_StartValues, Component):
         e.output(self.y, y)
 
 
-class _LimPIDyMin(LimPID):
-    """LimPID with yMin given at construction: a parameter of its own."""
-    yMin = Parameter(-1.0, "", "lower limit of output")
-
-
-_LimPIDyMin.__name__ = "LimPID"
+bound_twin(LimPID, "yMin", Parameter(-1.0, "", "lower limit of output"))
 
 
 class _Coefficients(_Sized):
@@ -549,7 +541,7 @@ def _smoothstep(x):
     return ca.if_else(x <= 0, 0, ca.if_else(x >= 1, 1, x * x * (3 - 2 * x)))
 
 
-class LimIntegrator(_StartValues, SISO):
+class LimIntegrator(BoundParameters, _StartValues, SISO):
     """Integrator with limited output (MSL Continuous.LimIntegrator): der(y) = k·u, halted
     at the limits: der(y) = 0 if y > outMax and k·u > 0 or y < outMin and k·u < 0.
 
@@ -582,10 +574,6 @@ class LimIntegrator(_StartValues, SISO):
     outMax = Parameter(1.0, "", "upper limit of output")
     y_smooth = Parameter(1e-3, "", "smooth form only: width below each limit over which the "
                                    "integration is halted gradually", positive=True)
-
-    def __new__(cls, name=None, **params):
-        return super().__new__(_LimIntegratorOutMin if cls is LimIntegrator and "outMin" in
-                               params else cls)
 
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
@@ -627,12 +615,7 @@ class LimIntegrator(_StartValues, SISO):
                            {"y = y_start": y - self.y_start})
 
 
-class _LimIntegratorOutMin(LimIntegrator):
-    """LimIntegrator with outMin given at construction: a parameter of its own."""
-    outMin = Parameter(-1.0, "", "lower limit of output")
-
-
-_LimIntegratorOutMin.__name__ = "LimIntegrator"
+bound_twin(LimIntegrator, "outMin", Parameter(-1.0, "", "lower limit of output"))
 
 
 class Der(SISO):

@@ -8,7 +8,7 @@ import casadi as ca
 import numpy as np
 
 from ...core import Parameter, RealInput
-from ...core.component import who
+from ...core.component import BoundParameters, bound_twin, who
 from ...errors import ParameterError
 from .interfaces import Init, SISO, _size, _Sized, _StartValues
 
@@ -92,16 +92,11 @@ def _limited(e, u, lower, upper, width, events: bool, prefix: str = ""):
     return ca.if_else(region == 1, upper, ca.if_else(region == -1, lower, u))
 
 
-class _SymmetricLimits(_Limiting):
+class _SymmetricLimits(BoundParameters, _Limiting):
     """MSL's ``uMax`` (required) and ``uMin`` bound to −uMax: uMin follows uMax, also at
     simulation time, unless it is given at construction, which makes it a parameter of its
-    own (the class ``_own_uMin`` derives). Limits with uMax < uMin are refused."""
+    own (``core.component.bound_twin``). Limits with uMax < uMin are refused."""
     required = ("uMax",)
-    _with_uMin: type | None = None
-
-    def __new__(cls, name=None, **params):
-        own = cls.__dict__.get("_with_uMin") if "uMin" in params else None
-        return super().__new__(own or cls)
 
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
@@ -111,17 +106,6 @@ class _SymmetricLimits(_Limiting):
     def uMin(self):
         """The lower limit: −uMax (MSL's binding)."""
         return -self.uMax
-
-
-def _own_uMin(cls, description: str) -> type:
-    """The variant of ``cls`` (a _SymmetricLimits) whose uMin is a parameter of its own,
-    made when uMin is given at construction; it shows the MSL class's name."""
-    variant = type(cls.__name__, (cls,), {
-        "__doc__": f"{cls.__name__} with uMin given at construction: a parameter of its own.",
-        "__module__": cls.__module__, "__qualname__": f"_{cls.__name__}UMin",
-        "uMin": Parameter(-1.0, "", description)})
-    cls._with_uMin = variant
-    return variant
 
 
 class Limiter(_SymmetricLimits):
@@ -154,7 +138,7 @@ class Limiter(_SymmetricLimits):
         e.output(self.y, self.limited(e, e.input(self.u), self.uMin, self.uMax))
 
 
-_LimiterUMin = _own_uMin(Limiter, "lower limits of input signals")
+bound_twin(Limiter, "uMin", Parameter(-1.0, "", "lower limits of input signals"))
 
 
 class VariableLimiter(_Limiting):
@@ -191,10 +175,10 @@ class DeadZone(_SymmetricLimits):
         e.output(self.y, u - self.limited(e, u, self.uMin, self.uMax))
 
 
-_DeadZoneUMin = _own_uMin(DeadZone, "lower limits of dead zones")
+bound_twin(DeadZone, "uMin", Parameter(-1.0, "", "lower limits of dead zones"))
 
 
-class SlewRateLimiter(_StartValues, _Limiting):
+class SlewRateLimiter(BoundParameters, _StartValues, _Limiting):
     """Limits the slew rate of a signal (MSL Nonlinear.SlewRateLimiter): the input
     differentiated with time constant Td [s], the rate limited to [Falling, Rising] [1/s]::
 
@@ -213,12 +197,6 @@ class SlewRateLimiter(_StartValues, _Limiting):
     options = {"initType": Init.SteadyState, "strict": False}
     Rising = Parameter(1.0, "1/s", "maximum rising slew rate [+small..+inf)", positive=True)
     Td = Parameter(0.001, "s", "derivative time constant", positive=True)
-    _with_Falling: type | None = None
-
-    def __new__(cls, name=None, **params):
-        own = cls.__dict__.get("_with_Falling") if "Falling" in params else None
-        return super().__new__(own or cls)
-
     def __init__(self, name: str | None = None, **params):
         super().__init__(name, **params)
         if not self.Falling < 0:
@@ -246,15 +224,8 @@ class SlewRateLimiter(_StartValues, _Limiting):
             e.initial(y - self.y_start, f"y = y_start (initType={self.initType.value})")
 
 
-class _SlewRateLimiterFalling(SlewRateLimiter):
-    """SlewRateLimiter with Falling given at construction: a parameter of its own."""
-    Falling = Parameter(-1.0, "1/s", "maximum falling slew rate (-inf..-small]")
-
-
-_SlewRateLimiterFalling.__name__ = "SlewRateLimiter"
-
-
-SlewRateLimiter._with_Falling = _SlewRateLimiterFalling
+bound_twin(SlewRateLimiter, "Falling",
+           Parameter(-1.0, "1/s", "maximum falling slew rate (-inf..-small]"))
 
 
 def pade_polynomials(T, n: int, m: int) -> tuple[list, list]:

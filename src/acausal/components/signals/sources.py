@@ -9,7 +9,7 @@ import numpy as np
 
 from ...core import (BooleanOutput, Component, ConditionalPort, Parameter, RealInput,
                      RealOutput, Unavailable, VectorPort)
-from ...core.component import who
+from ...core.component import BoundParameters, bound_twin, who
 from ...errors import ParameterError
 from .interfaces import EPS, SignalSource, _Sized, SO, _start
 
@@ -666,7 +666,7 @@ class ContinuousClock(SignalSource):
         return t - self.startTime
 
 
-class Exponentials(SignalSource):
+class Exponentials(BoundParameters, SignalSource):
     """A rising exponential, then a falling one: for τ = time − startTime ≥ 0,
     y = offset + outMax·(1 − exp(−τ/riseTimeConst)) while τ < riseTime, then
     y_riseTime·exp(−(τ − riseTime)/fallTimeConst), y_riseTime = outMax·(1 −
@@ -679,12 +679,6 @@ class Exponentials(SignalSource):
     riseTimeConst = Parameter(0.1, "s", "rise time constant; rising is defined as "
                                         "outMax*(1-exp(-riseTime/riseTimeConst))",
                               positive=True)
-    _with_fallTimeConst: type | None = None
-
-    def __new__(cls, name=None, **params):
-        own = cls._with_fallTimeConst if "fallTimeConst" in params else None
-        return super().__new__(own or cls)
-
     @property
     def fallTimeConst(self):
         """The fall time constant [s]: riseTimeConst (MSL's binding)."""
@@ -701,15 +695,8 @@ class Exponentials(SignalSource):
         return [(self.startTime, None), (self.startTime + self.riseTime, None)]
 
 
-class _ExponentialsFallTimeConst(Exponentials):
-    """Exponentials with fallTimeConst given at construction: a parameter of its own."""
-    fallTimeConst = Parameter(0.1, "s", "fall time constant", positive=True)
-
-
-_ExponentialsFallTimeConst.__name__ = "Exponentials"               # shows the MSL class's name
-
-
-Exponentials._with_fallTimeConst = _ExponentialsFallTimeConst
+bound_twin(Exponentials, "fallTimeConst",
+           Parameter(0.1, "s", "fall time constant", positive=True))
 
 
 class SawTooth(_Periodic):
