@@ -30,20 +30,25 @@ from .interfaces import OnePort, TwoPort
 from .basic import (Ground, Resistor, HeatingResistor, Conductor, VariableResistor,
                     VariableConductor, Potentiometer, Capacitor, Inductor, VariableCapacitor,
                     VariableInductor, SaturatingInductor, Transformer, M_Transformer, VCV, VCC,
-                    CCV, CCC, Gyrator, RotationalEMF, EMF, TranslationalEMF, NonlinearResistor)
+                    CCV, CCC, Gyrator, RotationalEMF, EMF, TranslationalEMF, NonlinearResistor,
+                    OpAmp)
 from .sources import (ConstantVoltage, SignalVoltage, StepVoltage, RampVoltage, SineVoltage,
                       CosineVoltage, ExpSineVoltage, PulseVoltage, TrapezoidVoltage,
                       SawToothVoltage, ExponentialsVoltage, TableVoltage, ConstantCurrent,
                       SignalCurrent, StepCurrent, RampCurrent, SineCurrent, CosineCurrent,
                       ExpSineCurrent, PulseCurrent, TrapezoidCurrent, SawToothCurrent,
-                      ExponentialsCurrent, TableCurrent)
+                      ExponentialsCurrent, TableCurrent, SineVoltageVariableFrequencyAndAmplitude,
+                      CosineVoltageVariableFrequencyAndAmplitude,
+                      SineCurrentVariableFrequencyAndAmplitude,
+                      CosineCurrentVariableFrequencyAndAmplitude, SupplyVoltage)
 from .sensors import PotentialSensor, VoltageSensor, CurrentSensor, PowerSensor, MultiSensor
 from .ideal import (IdealDiode, IdealThyristor, IdealGTOThyristor, IdealOpeningSwitch,
                     IdealClosingSwitch, ControlledIdealOpeningSwitch,
                     ControlledIdealClosingSwitch, IdealTwoWaySwitch, IdealCommutingSwitch,
                     ControlledIdealTwoWaySwitch, ControlledIdealCommutingSwitch,
                     IdealIntermediateSwitch, ControlledIdealIntermediateSwitch, Short, Idle,
-                    IdealTransformer, IdealOpAmp, IdealOpAmpLimited, S_NOISE)
+                    IdealTransformer, IdealOpAmp, IdealOpAmpLimited, S_NOISE, IdealOpAmp3Pin,
+                    OpAmpLimited, IdealizedOpAmpLimited, InitOpAmp)
 from .semiconductors import Diode, ZDiode, K_BOLTZMANN, Q_ELECTRON, exlin
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
@@ -57,6 +62,9 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
            "SawToothCurrent", "ExponentialsCurrent", "TableCurrent",
+           "SineVoltageVariableFrequencyAndAmplitude", "CosineVoltageVariableFrequencyAndAmplitude",
+           "SineCurrentVariableFrequencyAndAmplitude", "CosineCurrentVariableFrequencyAndAmplitude",
+           "SupplyVoltage",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
            "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",
            "IdealClosingSwitch", "ControlledIdealOpeningSwitch", "ControlledIdealClosingSwitch",
@@ -65,4 +73,5 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "ControlledIdealIntermediateSwitch", "Short", "Idle",
            "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp",
            "IdealOpAmpLimited", "Diode", "ZDiode", "SaturatingInductor",
+           "OpAmp", "IdealOpAmp3Pin", "OpAmpLimited", "IdealizedOpAmpLimited", "InitOpAmp",
            "S_NOISE", "K_BOLTZMANN", "Q_ELECTRON", "exlin"]

@@ -14,7 +14,7 @@ from ...core.component import BoundParameters, bound_twin, who
 from ...errors import ParameterError
 from .. import rotational, translational
 from ..signals.interfaces import EPS, _size, _Sized, _start
-from .interfaces import OnePort, TwoPort, _ConditionalHeatPort
+from .interfaces import OnePort, TwoPort, _ConditionalHeatPort, _LimitedOpAmp
 
 
 class Ground(Component):
@@ -594,3 +594,24 @@ class NonlinearResistor(OnePort):
                        ca.if_else(v > self.Ve, self.Gb * (v - self.Ve) + self.Ga * self.Ve,
                                   self.Ga * v))
         self._record(e, v, self._current(e, i))
+
+
+class OpAmp(_LimitedOpAmp):
+    """Simple nonideal operational amplifier with limitation (MSL Basic.OpAmp): no input or
+    supply currents, and the smooth characteristic out.v = (VMax.v + VMin.v)/2 +
+    |Slope|·vin/(1 + |Slope|·|f·vin|) [V], vin = in_p.v − in_n.v [V], f = 2/(VMax.v −
+    VMin.v) [1/V]: the slope |Slope| at vin = 0, out.v approaching VMax.v and VMin.v as vin
+    grows (C1: no events). The output current is whatever the circuit draws (the supply
+    pins carry none). MSL declares Slope with start value 10000 but no default; 10000 is
+    the default here. Records vin."""
+    Slope = Parameter(10000.0, "1", "slope of the out.v/vin characteristic at vin=0")
+
+    def physics(self, e):
+        vin, _ = self._input_and_output(e)
+        vmax, vmin = self._limits(e)
+        slope, f = ca.fabs(self.Slope), 2 / (vmax - vmin)
+        law = (vmax + vmin) / 2 + slope * vin / (1 + slope * ca.fabs(f * vin))
+        # divided by the slope: the residual is the input voltage's error, not that error
+        # amplified by the high gain beyond round-off
+        e.residual((e.potential(self.out) - law) / ca.fmax(1, slope))
+        e.variable("vin", vin, "V", "input voltage")

@@ -3,12 +3,19 @@ elements (parametric characteristics, see the package's docstring), Short, Idle,
 IdealTransformer and the ideal operational amplifiers."""
 from __future__ import annotations
 
+from enum import Enum
+
 import casadi as ca
 
-from ...core import BooleanInput, Component, NegativePin, Parameter, Pin, PositivePin
+from ...core import (BooleanInput, Component, ConditionalPort, NegativePin, Parameter, Pin,
+                     PositivePin)
+from ...core.component import who
+from ...errors import ParameterError
 from ..logical import refuse_smooth
+from ..signals.nonlinear import LimiterHomotopy, _limited, _limiter_region
 from ..signals.interfaces import _start
-from .interfaces import OnePort, TwoPort, _ConditionalHeatPort
+from .interfaces import (OnePort, TwoPort, _ConditionalHeatPort, _LimitedOpAmp, _nullator,
+                         _ThreePinOpAmp)
 
 
 class _IdealSwitching(_ConditionalHeatPort, OnePort):
@@ -358,14 +365,6 @@ class IdealTransformer(TwoPort):
         e.variable("psim1", self.Lm1 * im1, "Wb", "magnetic flux w.r.t. primary side")
 
 
-def _nullator(e, p, n):
-    """The input port of an ideal operational amplifier: no current into the pins p, n;
-    its voltage p.v − n.v [V] (0 for the nullator: the amplifier's equations fix it)."""
-    e.flow(p, 0.0)
-    e.flow(n, 0.0)
-    return e.potential(p) - e.potential(n)
-
-
 class IdealOpAmp(TwoPort):
     """Ideal operational amplifier (MSL Ideal.IdealOpAmp), a norator–nullator pair: the
     left port p1, n1 a nullator, v1 = 0 [V] and i1 = 0 [A]; the right port p2, n2 a
@@ -379,31 +378,178 @@ class IdealOpAmp(TwoPort):
         self._record(e, v1, 0.0, v2, i2)
 
 
-class IdealOpAmpLimited(Component):
+class IdealOpAmp3Pin(_ThreePinOpAmp):
+    """Ideal operational amplifier with three pins (MSL Ideal.IdealOpAmp3Pin): the
+    IdealOpAmp with its negative output pin left out: in_p.v = in_n.v and no input current
+    (a nullator); the output pin's voltage and current are whatever the circuit needs.
+    Records vin = in_p.v − in_n.v [V] (0)."""
+
+    def physics(self, e):
+        vin, _ = self._input_and_output(e)
+        e.residual(vin)
+        e.variable("vin", vin, "V", "input voltage")
+
+
+class IdealOpAmpLimited(_LimitedOpAmp):
     """Ideal operational amplifier with limitation (MSL Ideal.IdealOpAmpLimited): no input
     or supply currents; an auxiliary s [1] (algebraic unknown) with vin = in_p.v − in_n.v =
     (s + 1 if s < −1, s − 1 if s > 1, else 0) [V] and out.v = VMin.v if s < −1, VMax.v if
     s > 1, else (VMax.v − VMin.v)·s/2 + (VMax.v + VMin.v)/2: a nullor (vin = 0) while the
     output lies between the supply pins, the output at a supply pin (vin ≠ 0) otherwise.
     Both laws are continuous in s; their kinks are integrated across. Records vin, s."""
-    in_p = PositivePin("positive pin of the input port")
-    in_n = NegativePin("negative pin of the input port")
-    out = PositivePin("output pin")
-    VMax = PositivePin("positive output voltage limitation")
-    VMin = NegativePin("negative output voltage limitation")
 
     def structure(self, s):
         s.algebraic("s", 0.0, "1", "auxiliary variable")
 
     def physics(self, e):
         sa = e.state("s")
-        vin = _nullator(e, self.in_p, self.in_n)
-        for pin in (self.VMax, self.VMin):
-            e.flow(pin, 0.0)
-        e.flow_of(self.out)
-        vmax, vmin = e.potential(self.VMax), e.potential(self.VMin)
+        vin, _ = self._input_and_output(e)
+        vmax, vmin = self._limits(e)
         e.residual(vin - ca.if_else(sa < -1, sa + 1, ca.if_else(sa > 1, sa - 1, 0.0)))
         e.residual(e.potential(self.out) - ca.if_else(
             sa < -1, vmin, ca.if_else(sa > 1, vmax, (vmax - vmin) * sa / 2 + (vmax + vmin) / 2)))
         e.variable("vin", vin, "V", "input voltage")
         e.variable("s", sa, "1", "auxiliary variable")
+
+
+class InitOpAmp(str, Enum):
+    """Modelica.Electrical.Analog.Types.InitOpAmp: the initial intermediate voltage v_int of
+    OpAmpLimited with useFirstOrder: V0·v_in limited to the supply (Linear), the positive
+    supply (UpperLimit) or the negative one (LowerLimit)."""
+    Linear = "Linear"
+    UpperLimit = "UpperLimit"
+    LowerLimit = "LowerLimit"
+
+
+class _SuppliedOpAmp(_ThreePinOpAmp):
+    """MSL's OpAmpLimited and IdealizedOpAmpLimited: no input current; the output voltage
+    v_out = out.v is the intermediate voltage v_int (``_intermediate``: V0·v_in, or its
+    first-order lag) limited to the supply [vns, vps] [V]. The supply is the parameters Vps,
+    Vns, or with the option ``useSupply`` the potentials of the pins s_p, s_n, which then
+    take the supply current i_s = p_s/(vps − vns) [A] (into s_p, out of s_n): the amplifier
+    stores and dissipates nothing, p_in + p_out + p_s = 0 with the input power p_in =
+    in_p.v·in_p.i + in_n.v·in_n.i (0), the output power p_out = out.v·out.i and the supply
+    power p_s [W] (without the pins it comes from an implicit internal supply). vps > vns
+    is asserted. Compiled with ``smooth=True`` the limitation's corners are rounded over
+    v_smooth [V] (the Limiter's smooth form, error ≤ v_smooth/2). Records vps, vns, v_in,
+    v_int, v_out, i_out, p_in, p_out, p_s, i_s."""
+    options = {"useSupply": False}
+    V0 = Parameter(15000.0, "1", "no-load amplification")
+    Vps = Parameter(15.0, "V", "positive supply voltage")
+    Vns = Parameter(-15.0, "V", "negative supply voltage")
+    v_smooth = Parameter(1e-3, "V", "smooth form only: width over which the corners at the "
+                                    "supply limits are rounded (error <= v_smooth/2)",
+                         positive=True)
+    s_p = ConditionalPort(PositivePin("optional positive supply pin", required=True),
+                          "useSupply")
+    s_n = ConditionalPort(NegativePin("optional negative supply pin", required=True),
+                          "useSupply")
+
+    def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)
+        if not self.useSupply and not self.Vps > self.Vns:
+            raise ParameterError(f"{who(self)}: the supply voltages are not consistent: Vps (= "
+                                 f"{self.Vps:g} V) must exceed Vns (= {self.Vns:g} V)")
+
+    #: whether v_int lags V0·v_in (a state) rather than equals it
+    _first_order = False
+
+    def _events(self) -> bool:
+        """Whether the limitation generates state events (the mode ``region``)."""
+        raise NotImplementedError
+
+    def _intermediate(self, e, v_in, vps, vns):
+        """The intermediate voltage v_int [V] before the limitation."""
+        return self.V0 * v_in
+
+    def structure(self, s):
+        _limiter_region(s, self._events())
+
+    def physics(self, e):
+        v_in, i_out = self._input_and_output(e)
+        if self.useSupply:
+            vps, vns = e.potential(self.s_p), e.potential(self.s_n)
+        else:
+            vps, vns = self.Vps, self.Vns
+        e.assertion(vps > vns, "OpAmp supply voltages are not consistent.")
+        v_int = self._intermediate(e, v_in, vps, vns)
+        v_out = _limited(e, v_int, vns, vps, self.v_smooth, self._events())
+        # with v_int = V0·v_in the output's equation is divided by the gain, so that its
+        # residual is the input voltage's error, not that error amplified beyond round-off
+        gain = 1 if self._first_order else ca.fmax(1, ca.fabs(self.V0))
+        e.residual((e.potential(self.out) - v_out) / gain)
+        p_out = v_out * i_out
+        p_s = -p_out                                         # p_in = 0: no input current
+        i_s = p_s / (vps - vns)
+        if self.useSupply:
+            e.flow(self.s_p, i_s)
+            e.flow(self.s_n, -i_s)
+        for name, value, unit, text in (
+                ("vps", vps, "V", "positive supply voltage"),
+                ("vns", vns, "V", "negative supply voltage"),
+                ("v_in", v_in, "V", "input voltage difference"),
+                ("v_int", v_int, "V", "intermediate voltage"),
+                ("v_out", v_out, "V", "output voltage to ground"),
+                ("i_out", i_out, "A", "output current into OpAmp"),
+                ("p_in", 0.0, "W", "input power"), ("p_out", p_out, "W", "output power"),
+                ("p_s", p_s, "W", "supply power"), ("i_s", i_s, "A", "supply current")):
+            e.variable(name, value, unit, text)
+
+
+class OpAmpLimited(_SuppliedOpAmp):
+    """Operational amplifier with saturation (MSL Ideal.OpAmpLimited, which MSL adds after
+    4.1.0 as the improved IdealizedOpAmpLimited): no input current, the no-load
+    amplification V0 [1] (high, not infinite), the output limited to the supply:
+    v_out = min(vps, max(vns, v_int)) [V], v_int = V0·v_in, or with the option
+    ``useFirstOrder`` the first-order rise Tau·der(v_int) = V0·v_in − v_int (Tau [s]; v_int
+    a state, its initial value by ``initOpAmp``: InitOpAmp.Linear v_int = min(vps,
+    max(vns, V0·v_in)), UpperLimit vps, LowerLimit vns). Saturation (MSL's satPos: v_int ≥
+    vps, satNeg: v_int ≤ vns) is located by state events (the mode ``region``: 1 positive,
+    −1 negative saturation, 0 between; recorded as satPos, satNeg). Supply, power balance
+    and smooth form: see ``_SuppliedOpAmp``."""
+    options = {"useFirstOrder": False, "initOpAmp": InitOpAmp.Linear}
+    Tau = Parameter(1e-5, "s", "time constant of firstOrder rise of output voltage",
+                    positive=True)
+
+    def _events(self) -> bool:
+        return True
+
+    @property
+    def _first_order(self) -> bool:
+        return self.useFirstOrder
+
+    def structure(self, s):
+        super().structure(s)
+        if self.useFirstOrder:
+            s.state("v_int", 0.0, "V", "intermediate voltage")
+
+    def _intermediate(self, e, v_in, vps, vns):
+        if not self.useFirstOrder:
+            return super()._intermediate(e, v_in, vps, vns)
+        v_int = e.state("v_int")
+        e.derivative(v_int, (self.V0 * v_in - v_int) / self.Tau)
+        start = {InitOpAmp.Linear: ca.fmin(vps, ca.fmax(vns, self.V0 * v_in)),
+                 InitOpAmp.UpperLimit: vps, InitOpAmp.LowerLimit: vns}[self.initOpAmp]
+        e.initial(v_int - start, f"v_int = {self.initOpAmp.value} (initOpAmp)")
+        return v_int
+
+    def physics(self, e):
+        super().physics(e)
+        if not e.smooth:
+            region = e.mode("region")
+            e.variable("satPos", region == 1, "", "positive saturation")
+            e.variable("satNeg", region == -1, "", "negative saturation")
+
+
+class IdealizedOpAmpLimited(_SuppliedOpAmp):
+    """Idealized operational amplifier with saturation (MSL Ideal.IdealizedOpAmpLimited): no
+    input current, v_out = V0·v_in limited to the supply [vns, vps] [V] (V0 [1] the
+    no-load amplification). With ``strict`` (MSL's default: noEvent) the limitation is the
+    plain expression, its kinks integrated across; with strict=False state events locate
+    them (the mode ``region``, as the Limiter's). ``homotopyType`` is accepted and changes
+    nothing (the initialization solves the actual model). Supply, power balance and smooth
+    form: see ``_SuppliedOpAmp``."""
+    options = {"strict": True, "homotopyType": LimiterHomotopy.NoHomotopy}
+
+    def _events(self) -> bool:
+        return not self.strict

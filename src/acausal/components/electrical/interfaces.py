@@ -1,5 +1,6 @@
 """Interfaces of the analog electrical components (after Modelica.Electrical.Analog.Interfaces):
-the two-pin OnePort, the four-pin TwoPort and MSL's ConditionalHeatPort."""
+the two-pin OnePort, the four-pin TwoPort, MSL's ConditionalHeatPort, and the pins the
+operational amplifiers share."""
 from __future__ import annotations
 
 from ...core import Component, ConditionalPort, HeatPort_a, NegativePin, PositivePin
@@ -71,3 +72,37 @@ class TwoPort(Component):
                                   ("i2", i2, "A")):
             e.variable(name, value, unit, f"{'voltage drop' if unit == 'V' else 'current'} "
                                           f"of port {name[1]}")
+
+
+def _nullator(e, p, n):
+    """The input port of an operational amplifier: no current into the pins p, n; its
+    voltage p.v − n.v [V] (0 for the nullator: the amplifier's equations fix it)."""
+    e.flow(p, 0.0)
+    e.flow(n, 0.0)
+    return e.potential(p) - e.potential(n)
+
+
+class _ThreePinOpAmp(Component):
+    """The pins of MSL's operational amplifiers with one output pin: the input port in_p,
+    in_n (no current) and the output pin ``out``, whose current is what the circuit
+    draws."""
+    in_p = PositivePin("positive pin of the input port")
+    in_n = NegativePin("negative pin of the input port")
+    out = PositivePin("output pin")
+
+    def _input_and_output(self, e):
+        """(vin = in_p.v − in_n.v [V], the current out.i into the output pin [A])."""
+        return _nullator(e, self.in_p, self.in_n), e.flow_of(self.out)
+
+
+class _LimitedOpAmp(_ThreePinOpAmp):
+    """The pins of MSL's operational amplifiers limited by the potentials of the pins VMax
+    and VMin (which carry no current; the output's power comes from nowhere)."""
+    VMax = PositivePin("positive output voltage limitation")
+    VMin = NegativePin("negative output voltage limitation")
+
+    def _limits(self, e):
+        """(VMax.v, VMin.v) [V]."""
+        for pin in (self.VMax, self.VMin):
+            e.flow(pin, 0.0)
+        return e.potential(self.VMax), e.potential(self.VMin)

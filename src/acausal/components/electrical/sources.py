@@ -7,11 +7,13 @@ from types import MethodType
 
 import casadi as ca
 
-from ...core import Component, Parameter, RealInput
+from ...core import (Component, ConditionalPort, NegativePin, Parameter, PositivePin,
+                     RealInput)
 from ...core.component import BoundParameters, bound_twin, who
 from ...errors import ParameterError
 from .. import signals as sig
-from ..signals.sources import _check_table, _table_events, _table_values
+from ..signals.sources import (_check_table, _table_events, _table_values,
+                               _VariableFrequencyWave)
 from .interfaces import OnePort
 
 
@@ -375,3 +377,90 @@ class SignalCurrent(OnePort):
     def physics(self, e):
         self._current(e, e.input(self.i))
         self._record(e, v=self._v(e))
+
+
+class _VariableFrequencyShape(_VariableFrequencyWave):
+    """MSL's Sources.*VariableFrequencyAndAmplitude: the source's value offset +
+    amplitude·wave(phi), der(phi) = 2π·f, by the logic of Blocks.Sources'
+    SineVariableFrequencyAndAmplitude (``signals.sources._VariableFrequencyWave``): the
+    phase phi [rad] a state (start ``phi_start``, 0), f [Hz] the input ``f`` or
+    constantFrequency (``useConstantFrequency``), the amplitude the input V or I or
+    constantAmplitude (``useConstantAmplitude``)."""
+    constantFrequency = Parameter(1.0, "Hz", "constant frequency")
+    f = ConditionalPort(RealInput("frequency [Hz]"), "useConstantFrequency", False)
+
+
+class _VariableVoltage(_VariableFrequencyShape, _VoltageSource):
+    constantAmplitude = Parameter(1.0, "V", "constant amplitude")
+    offset = Parameter(0.0, "V", "offset of the sine wave")
+    V = ConditionalPort(RealInput("amplitude [V]"), "useConstantAmplitude", False)
+    _amplitude = "V"
+
+    def _voltage(self, e):
+        return self._wave_value(e)
+
+
+class _VariableCurrent(_VariableFrequencyShape, _CurrentSource):
+    constantAmplitude = Parameter(1.0, "A", "constant amplitude")
+    offset = Parameter(0.0, "A", "offset of the sine wave")
+    I = ConditionalPort(RealInput("amplitude [A]"), "useConstantAmplitude",   # noqa: E741
+                        False)
+    _amplitude = "I"
+
+    def _current_value(self, e):
+        return self._wave_value(e)
+
+
+class SineVoltageVariableFrequencyAndAmplitude(_VariableVoltage):
+    """Sine voltage source with variable frequency and amplitude (MSL
+    Sources.SineVoltageVariableFrequencyAndAmplitude): v = offset + V·sin(phi) [V],
+    der(phi) = 2π·f; the amplitude V [V] and the frequency f [Hz] inputs, or the constants
+    of the options useConstantAmplitude / useConstantFrequency (``_VariableFrequencyShape``).
+    A frequency that changes changes the wave's rate without a jump."""
+    wave = staticmethod(ca.sin)
+
+
+class CosineVoltageVariableFrequencyAndAmplitude(_VariableVoltage):
+    """Cosine voltage source with variable frequency and amplitude (MSL
+    Sources.CosineVoltageVariableFrequencyAndAmplitude): v = offset + V·cos(phi) [V],
+    der(phi) = 2π·f, as SineVoltageVariableFrequencyAndAmplitude."""
+    wave = staticmethod(ca.cos)
+
+
+class SineCurrentVariableFrequencyAndAmplitude(_VariableCurrent):
+    """Sine current source with variable frequency and amplitude (MSL
+    Sources.SineCurrentVariableFrequencyAndAmplitude): i = offset + I·sin(phi) [A] from p
+    through the source to n, der(phi) = 2π·f; the amplitude I [A] and the frequency f [Hz]
+    inputs, or the constants of the options useConstantAmplitude / useConstantFrequency."""
+    wave = staticmethod(ca.sin)
+
+
+class CosineCurrentVariableFrequencyAndAmplitude(_VariableCurrent):
+    """Cosine current source with variable frequency and amplitude (MSL
+    Sources.CosineCurrentVariableFrequencyAndAmplitude): i = offset + I·cos(phi) [A],
+    der(phi) = 2π·f, as SineCurrentVariableFrequencyAndAmplitude."""
+    wave = staticmethod(ca.cos)
+
+
+class SupplyVoltage(Component):
+    """Supply voltage, positive and negative (MSL Sources.SupplyVoltage): pin_p.v − ground.v
+    = Vps and pin_n.v − ground.v = Vns [V] (MSL's two ConstantVoltages, positiveSupply
+    from ground to pin_p and negativeSupply from pin_n to ground, written as these two
+    equations); the currents into pin_p and pin_n are what the circuit draws, ground
+    returns their sum (pin_p.i + pin_n.i + ground.i = 0). Records the supplies' currents
+    i_p = −pin_p.i and i_n = pin_n.i [A] (positiveSupply.i and negativeSupply.i in MSL:
+    from their p through them to their n)."""
+    Vps = Parameter(15.0, "V", "positive supply")
+    Vns = Parameter(-15.0, "V", "negative supply")
+    pin_p = PositivePin("positive supply pin")
+    pin_n = NegativePin("negative supply pin")
+    ground = NegativePin("ground pin")
+
+    def physics(self, e):
+        ip, i_n = e.flow_of(self.pin_p), e.flow_of(self.pin_n)
+        e.flow(self.ground, -(ip + i_n))
+        v0 = e.potential(self.ground)
+        e.residual(e.potential(self.pin_p) - v0 - self.Vps)
+        e.residual(e.potential(self.pin_n) - v0 - self.Vns)
+        e.variable("i_p", -ip, "A", "current of the positive supply (positiveSupply.i)")
+        e.variable("i_n", i_n, "A", "current of the negative supply (negativeSupply.i)")
