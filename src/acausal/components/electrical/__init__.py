@@ -48,8 +48,9 @@ from .ideal import (IdealDiode, IdealThyristor, IdealGTOThyristor, IdealOpeningS
                     ControlledIdealTwoWaySwitch, ControlledIdealCommutingSwitch,
                     IdealIntermediateSwitch, ControlledIdealIntermediateSwitch, Short, Idle,
                     IdealTransformer, IdealOpAmp, IdealOpAmpLimited, S_NOISE, IdealOpAmp3Pin,
-                    OpAmpLimited, IdealizedOpAmpLimited, InitOpAmp)
-from .semiconductors import Diode, ZDiode, K_BOLTZMANN, Q_ELECTRON, exlin
+                    OpAmpLimited, IdealizedOpAmpLimited, InitOpAmp, IdealTriac)
+from .semiconductors import (Diode, ZDiode, K_BOLTZMANN, Q_ELECTRON, exlin, Thyristor,
+                             SimpleTriac, NPN, PNP, exlin2, powlin)
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "VariableResistor", "VariableConductor", "Potentiometer", "Capacitor", "Inductor",
@@ -64,7 +65,8 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "SawToothCurrent", "ExponentialsCurrent", "TableCurrent",
            "SineVoltageVariableFrequencyAndAmplitude", "CosineVoltageVariableFrequencyAndAmplitude",
            "SineCurrentVariableFrequencyAndAmplitude", "CosineCurrentVariableFrequencyAndAmplitude",
-           "SupplyVoltage",
+           "SupplyVoltage", "Thyristor", "SimpleTriac", "IdealTriac", "NPN", "PNP", "exlin2",
+           "powlin",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
            "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",
            "IdealClosingSwitch", "ControlledIdealOpeningSwitch", "ControlledIdealClosingSwitch",

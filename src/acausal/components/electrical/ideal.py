@@ -7,13 +7,14 @@ from enum import Enum
 
 import casadi as ca
 
-from ...core import (BooleanInput, Component, ConditionalPort, NegativePin, Parameter, Pin,
-                     PositivePin)
+from ...core import (BooleanInput, Component, ConditionalPort, Model, NegativePin, Parameter,
+                     Pin, PositivePin)
 from ...core.component import who
 from ...errors import ParameterError
 from ..logical import refuse_smooth
 from ..signals.nonlinear import LimiterHomotopy, _limited, _limiter_region
 from ..signals.interfaces import _start
+from .basic import Capacitor, Resistor
 from .interfaces import (OnePort, TwoPort, _ConditionalHeatPort, _LimitedOpAmp, _nullator,
                          _ThreePinOpAmp)
 
@@ -310,6 +311,43 @@ class ControlledIdealIntermediateSwitch(_ControlPin, _IntermediateSwitching):
 
     def _crossed(self, e):
         return self._above(e)
+
+
+class IdealTriac(Model):
+    """Ideal triac (MSL Ideal.IdealTriac), made of MSL's parts: two IdealThyristors in
+    antiparallel between the anode ``p`` and the cathode ``n`` (``idealThyristor1`` from p
+    to n, ``idealThyristor`` from n to p), both fired by the Boolean input ``fire1``, and
+    the disturbance elimination (snubber) ``resistor`` Rdis in series with ``capacitor``
+    Cdis across them::
+
+        p ── idealThyristor1 ── n,   n ── idealThyristor ── p,   p ── Cdis ── Rdis ── n
+
+    So each half-wave is conducted from the instant fire1 is true while the voltage across
+    the thyristor of that direction exceeds Vknee until its current falls below
+    Goff·Vknee (IdealThyristor). Constructor keywords (MSL's parameters, set on the parts,
+    by whose names they are changed at simulation time): Ron [Ohm] (1e-5), Goff [S]
+    (1e-5), Vknee [V] (0.8) of both thyristors, Rdis [Ohm] (100, ``resistor.R``), Cdis [F]
+    (0.005, ``capacitor.C``; its voltage a state starting at 0)."""
+    p = PositivePin("anode")
+    n = NegativePin("cathode")
+    fire1 = BooleanInput("gate")
+
+    def __init__(self, name: str | None = None, *, Ron: float = 1e-5, Goff: float = 1e-5,
+                 Vknee: float = 0.8, Rdis: float = 100.0, Cdis: float = 0.005):
+        super().__init__(name)
+        self.idealThyristor = IdealThyristor(Ron=Ron, Goff=Goff, Vknee=Vknee)
+        self.idealThyristor1 = IdealThyristor(Ron=Ron, Goff=Goff, Vknee=Vknee)
+        self.resistor = Resistor(R=Rdis)
+        self.capacitor = Capacitor(C=Cdis)
+        for a, b in [(self.idealThyristor.n, self.capacitor.n),
+                     (self.capacitor.n, self.idealThyristor1.p),
+                     (self.idealThyristor1.n, self.resistor.p),
+                     (self.resistor.p, self.idealThyristor.p),
+                     (self.resistor.n, self.capacitor.p),
+                     (self.idealThyristor1.fire, self.fire1),
+                     (self.idealThyristor.fire, self.fire1), (self.n, self.idealThyristor.p),
+                     (self.idealThyristor1.p, self.p)]:
+            self.connect(a, b)
 
 
 #: MSL 3's names of the two-way switches
