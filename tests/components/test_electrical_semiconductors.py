@@ -254,3 +254,275 @@ def test_ideal_triac_phase_control_matches_a_scipy_model_with_its_snubber():
     np.testing.assert_allclose([tt for tt, _ in got], [tt for tt, _ in switches], atol=1e-8)
     at = np.searchsorted(res.t, t, side="right") - 1
     np.testing.assert_allclose(res["r.i"][at], ref, atol=1e-6)
+
+
+# ---- MOSFETs ------------------------------------------------------------------------------
+def nmos_drain_current(vD, vG, vS, vB, W=20e-6, L=6e-6, Beta=0.041e-3, Vt=0.8, K2=1.144,
+                       K5=0.7311, dW=-2.5e-6, dL=-1.5e-6, RDS=1e7):
+    """D.i of MSL's Semiconductors.NMOS, its equations as written there."""
+    gds = 1 / RDS
+    v = Beta * (W + dW) / (L + dL)
+    ud = vS if vD < vS else vD
+    us = vD if vD < vS else vS
+    uds = ud - us
+    ubs = 0 if vB > us else vB - us
+    ugst = (vG - us - Vt + K2 * ubs) * K5
+    if ugst <= 0:
+        i = uds * gds
+    elif ugst > uds:
+        i = v * uds * (ugst - uds / 2) + uds * gds
+    else:
+        i = v * ugst * ugst / 2 + uds * gds
+    return -i if vD < vS else i
+
+
+def pmos_drain_current(vD, vG, vS, vB, W=20e-6, L=6e-6, Beta=0.0105e-3, Vt=-1.0, K2=0.41,
+                       K5=0.839, dW=-2.5e-6, dL=-2.1e-6, RDS=1e7):
+    """D.i of MSL's Semiconductors.PMOS, its equations as written there."""
+    gds = 1 / RDS
+    v = Beta * (W + dW) / (L + dL)
+    ud = vS if vD > vS else vD
+    us = vD if vD > vS else vS
+    uds = ud - us
+    ubs = 0 if vB < us else vB - us
+    ugst = (vG - us - Vt + K2 * ubs) * K5
+    if ugst >= 0:
+        i = uds * gds
+    elif ugst < uds:
+        i = -v * uds * (ugst - uds / 2) + uds * gds
+    else:
+        i = -v * ugst * ugst / 2 + uds * gds
+    return -i if vD > vS else i
+
+
+def test_cmos_inverter_transfer_curve_matches_msl_equations():
+    """CMOS inverter (PMOS from Vdd = 5 V, NMOS to ground, gates on a ramp 0 → 5 V, drains
+    the output, 1 MΩ load): the output solves NMOS.D.i + PMOS.D.i + vout/1 MΩ = 0 with
+    MSL's equations (brentq); high for a low input, low for a high one, the switching
+    threshold between; no gate current; the supply delivers what the transistors and the
+    load dissipate."""
+    from scipy.optimize import brentq
+    Vdd, RL = 5.0, 1e6
+    m = model("inverter", lambda m: [
+        (m.vdd.p, m.pmos.S), (m.vdd.p, m.pmos.B), (m.pmos.D, m.out.p), (m.nmos.D, m.out.p),
+        (m.nmos.S, m.ground.p), (m.nmos.B, m.ground.p), (m.vin.p, m.nmos.G),
+        (m.vin.p, m.pmos.G), (m.out.n, m.ground.p), (m.vdd.n, m.ground.p),
+        (m.vin.n, m.ground.p)],
+        vdd=el.ConstantVoltage(V=Vdd), pmos=el.PMOS(), nmos=el.NMOS(), out=el.Resistor(R=RL),
+        vin=el.RampVoltage(V=Vdd, duration=1.0), ground=el.Ground())
+    t = np.linspace(0.0, 1.0, 201)
+    res = acausal.compile(m).simulate(1.0, t=t, **TIGHT)
+    vin = Vdd * t
+
+    def vout(u):
+        return brentq(lambda o: nmos_drain_current(o, u, 0.0, 0.0)
+                      + pmos_drain_current(o, u, Vdd, Vdd) + o / RL, -1.0, Vdd + 1.0,
+                      xtol=1e-14)
+    ref = np.array([vout(u) for u in vin])
+    np.testing.assert_allclose(res["out.v"], ref, atol=1e-8)
+    assert ref[0] > 4.9 and ref[-1] < 0.1
+    np.testing.assert_allclose(res["nmos.G.i"], 0.0, atol=0)
+    supplied = -res["vdd.i"] * Vdd
+    dissipated = res["nmos.LossPower"] + res["pmos.LossPower"] + res["out.v"] ** 2 / RL
+    np.testing.assert_allclose(supplied, dissipated, atol=1e-12)
+
+
+@pytest.mark.parametrize("cls, kw", [(el.NMOS, {}), (el.PMOS, {})], ids=["NMOS", "PMOS"])
+def test_mosfet_drain_characteristic_in_every_region_and_direction(cls, kw):
+    """Drain voltage swept through ±6 V at three gate voltages, the bulk below the source
+    (NMOS) or above it (PMOS), the source at 1 V: D.i against MSL's equations, reverse
+    operation (D below S for the NMOS) included; the temperature dependence at T_heatPort
+    = 350 K from a FixedTemperature against the same equations with MSL's beta_t, vt_t,
+    k2_t."""
+    from acausal.components import thermal as th
+    sign = 1 if cls is el.NMOS else -1
+    law = nmos_drain_current if cls is el.NMOS else pmos_drain_current
+    defaults = {k: p.default for k, p in cls.parameters().items()}
+    for temperature in (None, 350.0):
+        for vg in (0.5, 2.5, 4.0):
+            params = dict(useTemperatureDependency=True) if temperature else {}
+            dev = cls(**params)
+            m = model("sweep", lambda m: [
+                (m.vd.p, m.dev.D), (m.vg.p, m.dev.G), (m.vs.p, m.dev.S), (m.vb.p, m.dev.B)]
+                + [(s.n, m.ground.p) for s in (m.vd, m.vg, m.vs, m.vb)]
+                + ([(m.dev.heatPort, m.fixed.port)] if temperature else []),
+                vd=el.RampVoltage(V=12.0, offset=-6.0, duration=1.0),
+                vg=el.ConstantVoltage(V=1.0 + sign * vg), vs=el.ConstantVoltage(V=1.0),
+                vb=el.ConstantVoltage(V=1.0 - sign * 0.5), dev=dev, ground=el.Ground(),
+                **({"fixed": th.FixedTemperature(T=temperature)} if temperature else {}))
+            t = np.linspace(0.0, 1.0, 121)
+            res = acausal.compile(m).simulate(1.0, t=t, **TIGHT)
+            scaled = {}
+            if temperature:
+                dT = temperature - defaults["Tnom"]
+                scaled = dict(Beta=defaults["Beta"] * (temperature / defaults["Tnom"]) ** -1.5,
+                              Vt=defaults["Vt"] * (1 + dT * defaults["kvt"]),
+                              K2=defaults["K2"] * (1 + dT * defaults["kk2"]))
+            ref = [law(-6.0 + 12.0 * tt, 1.0 + sign * vg, 1.0, 1.0 - sign * 0.5, **scaled)
+                   for tt in t]
+            np.testing.assert_allclose(res["dev.D.i"], ref, rtol=1e-10, atol=1e-15)
+            np.testing.assert_allclose(res["dev.S.i"], -np.array(ref), rtol=1e-10,
+                                       atol=1e-15)
+
+
+def test_mosfet_refuses_a_non_positive_effective_size():
+    with pytest.raises(ParameterError, match="NMOS 'q'.*effective length"):
+        el.NMOS("q", L=1e-6)
+    with pytest.raises(ParameterError, match="PMOS.*effective width"):
+        el.PMOS(W=2e-6)
+
+
+# ---- Diode2 -------------------------------------------------------------------------------
+def diode2_current(v, Vt, Vf=0.7, Ids=1e-13, Rs=16.0, N=1.0, Bv=100.0, Gp=1e-6):
+    """i of MSL's Semiconductors.Diode2 at the voltage v: vd from v = vd + id(vd)·Rs
+    (brentq), then i = id + v·Gp, its equations as written there."""
+    from scipy.optimize import brentq
+    VdMax = Vf + N * Vt
+    iVdMax = Ids * (math.exp(VdMax / (N * Vt)) - 1)
+    diVdMax = Ids * math.exp(VdMax / (N * Vt)) / (N * Vt)
+
+    def i_d(vd):
+        if vd < -Bv / 2:
+            return -Ids * (math.exp(-(vd + Bv) / (N * Vt)) + 1 - 2 * math.exp(-Bv / (2 * N * Vt)))
+        if vd < VdMax:
+            return Ids * (math.exp(vd / (N * Vt)) - 1)
+        return iVdMax + (vd - VdMax) * diVdMax
+    vd = brentq(lambda u: u + i_d(u) * Rs - v, min(v, -Bv), max(v, 1.0), xtol=1e-15)
+    return i_d(vd) + v * Gp
+
+
+@pytest.mark.parametrize("temperature", [None, 330.0], ids=["Vt", "heatPort"])
+def test_diode2_characteristic_from_breakdown_to_the_linear_continuation(temperature):
+    """The voltage across Diode2 ramped from −104 V (past the breakdown Bv = 100 V) to
+    1.4 V (past VdMax): i against MSL's equations (vd by brentq); Vt = k·T/q at T = 293.15
+    K by MSL's binding, or k·T_heatPort/q with a heat port at 330 K."""
+    from acausal.components import thermal as th
+    params = {"useHeatPort": True} if temperature else {}
+    m = model("d2", lambda m: [(m.src.p, m.d.p), (m.d.n, m.src.n), (m.src.n, m.ground.p)]
+              + ([(m.d.heatPort, m.fixed.port)] if temperature else []),
+              src=el.RampVoltage(V=105.4, offset=-104.0, duration=1.0), d=el.Diode2(**params),
+              ground=el.Ground(),
+              **({"fixed": th.FixedTemperature(T=temperature)} if temperature else {}))
+    t = np.linspace(0.0, 1.0, 301)
+    res = acausal.compile(m).simulate(1.0, t=t, **TIGHT)
+    Vt = 1.380649e-23 * (temperature or 293.15) / 1.602176634e-19
+    ref = np.array([diode2_current(v, Vt) for v in -104.0 + 105.4 * t])
+    np.testing.assert_allclose(res["d.i"], ref, rtol=1e-8, atol=1e-15)
+    assert ref[0] < -1e-3 and ref[-1] > 0.03                  # breakdown, conducting
+    np.testing.assert_allclose(res["d.LossPower"], res["d.v"] * res["d.i"], rtol=1e-12)
+    if not temperature:
+        assert el.Diode2().Vt == pytest.approx(Vt, rel=1e-15)
+        assert el.Diode2(Vt=0.03).Vt == 0.03
+
+
+# ---- bipolar transistors ------------------------------------------------------------------
+def exlin2(x, lo=-100.0, hi=40.0):
+    """MSL's Semiconductors.exlin2 (as written there)."""
+    if x < lo:
+        return math.exp(lo) * (1 + x - lo)
+    return math.exp(hi) * (1 + x - hi) if x > hi else math.exp(x)
+
+
+def powlin(x, y):
+    """MSL's Semiconductors.powlin (as written there)."""
+    return 1 + y * x if x > 0 else (1 - x) ** (-y)
+
+
+BJT = dict(Bf=50.0, Br=0.1, Is=1e-16, Vak=0.02, Tauf=0.12e-9, Taur=5e-9, Ccs=1e-12,
+           Cje=0.4e-12, Cjc=0.5e-12, Phie=0.8, Me=0.4, Phic=0.8, Mc=0.333, Gbc=1e-15,
+           Gbe=1e-15, Vt=0.02585, NF=1.0, NR=1.0)               # MSL's NPN and PNP defaults
+VCC, RC, RB, RE = 10.0, 1e3, 1e4, 10.0
+
+
+def vin(t):
+    return 1.0 + np.sin(2 * np.pi * 100.0 * t)
+
+
+def stage_by_hand(kind, t_out):
+    """A common-emitter stage (Vcc = 10 V through Rc = 1 kΩ to the collector, vin = 1 +
+    sin(2π·100·t) V through Rb = 10 kΩ to the base, the emitter through Re = 10 Ω to
+    ground, the substrate grounded) — for the PNP every potential negated — integrated in
+    MSL's states (vbc, vbe, vcs; vcb, veb, vcs) by LSODA, with MSL's equations of the NPN
+    or the PNP as written in the .mo files, the three capacitive currents solved from the
+    pin currents the resistors give. Returns the collector potential at t_out."""
+    p = BJT
+    s = 1.0 if kind == "NPN" else -1.0
+
+    def rhs(t, x):
+        vj_c, vj_e, vcs = x                      # NPN: vbc, vbe; PNP: vcb, veb
+        vC = vcs                                  # vS = 0
+        vB = vC + s * vj_c
+        vE = vB - s * vj_e
+        iC = (s * VCC - vC) / RC                  # the pin currents from the resistors
+        iB = (s * vin(t) - vB) / RB
+        iE = -vE / RE
+        ic = p["Is"] * (exlin2(vj_c / (p["NR"] * p["Vt"])) - 1) + vj_c * p["Gbc"]
+        ie = p["Is"] * (exlin2(vj_e / (p["NF"] * p["Vt"])) - 1) + vj_e * p["Gbe"]
+        cc = (p["Taur"] * p["Is"] / (p["NR"] * p["Vt"]) * exlin2(vj_c / (p["NR"] * p["Vt"]))
+              + p["Cjc"] * powlin(vj_c / p["Phic"], p["Mc"]))
+        ce = (p["Tauf"] * p["Is"] / (p["NF"] * p["Vt"]) * exlin2(vj_e / (p["NF"] * p["Vt"]))
+              + p["Cje"] * powlin(vj_e / p["Phie"], p["Me"]))
+        qbk = 1 - vj_c * p["Vak"]
+        iS = -iB - iC - iE                        # E.i = −B.i − C.i − iS
+        dvcs = -iS / p["Ccs"]                     # iS = −Ccs·der(vcs)
+        if kind == "NPN":
+            # C.i = (ibe − ibc)·qbk − ibc/Br − cbc·der(vbc) − iS
+            dc = ((ie - ic) * qbk - ic / p["Br"] - iS - iC) / cc
+            # B.i = ibe/Bf + ibc/Br + cbc·der(vbc) + cbe·der(vbe)
+            de = (iB - ie / p["Bf"] - ic / p["Br"] - cc * dc) / ce
+        else:
+            # C.i = icb/Br + ccb·der(vcb) + (icb − ieb)·qbk − iS
+            dc = (iC - ic / p["Br"] - (ic - ie) * qbk + iS) / cc
+            # B.i = −ieb/Bf − icb/Br − ceb·der(veb) − ccb·der(vcb)
+            de = (-iB - ie / p["Bf"] - ic / p["Br"] - cc * dc) / ce
+        return [dc, de, dvcs]
+    sol = solve_ivp(rhs, (0.0, t_out[-1]), [0.0, 0.0, 0.0], method="LSODA", t_eval=t_out,
+                    rtol=1e-10, atol=1e-12, first_step=1e-15)
+    return sol.y[2]
+
+
+@pytest.mark.parametrize("kind", ["NPN", "PNP"])
+def test_common_emitter_stage_matches_a_scipy_model_of_msl_equations(kind):
+    """The collector potential of the stage over two periods of the input against the
+    scipy model (including the start, where the pF junction capacitances charge within
+    ns); the PNP's circuit is the NPN's with every potential negated, and so is its
+    collector potential (MSL's PNP is the NPN with voltages and currents reversed); the
+    stage inverts and amplifies: the collector falls as the input rises."""
+    cls, s = (el.NPN, 1.0) if kind == "NPN" else (el.PNP, -1.0)
+    m = model("stage", lambda m: [
+        (m.vcc.p, m.rc.p), (m.rc.n, m.q.C), (m.q.E, m.re.p), (m.re.n, m.ground.p),
+        (m.vcc.n, m.ground.p), (m.vin.p, m.rb.p), (m.rb.n, m.q.B), (m.vin.n, m.ground.p)],
+        vcc=el.ConstantVoltage(V=s * VCC), rc=el.Resistor(R=RC), rb=el.Resistor(R=RB),
+        re=el.Resistor(R=RE), q=cls(),
+        vin=el.SineVoltage(V=s * 1.0, f=100.0, offset=s * 1.0), ground=el.Ground())
+    t = np.linspace(0.0, 0.02, 401)
+    res = acausal.compile(m).simulate(0.02, t=t, **TIGHT)
+    ref = stage_by_hand(kind, t)
+    np.testing.assert_allclose(res["q.C.v"], ref, atol=1e-6)
+    vc = s * ref
+    assert vc[np.argmax(vin(t))] < 6.0 and vc[np.argmin(vin(t[1:])) + 1] > 9.9
+    if kind == "NPN":          # the active region: the collector current Bf·qbk times the base's
+        k = (np.abs(vin(t) - 1.0) < 0.2) & (t > 1e-3)
+        ratio = res["q.C.i"][k] / res["q.B.i"][k]
+        np.testing.assert_allclose(ratio, BJT["Bf"] * res["q.qbk"][k], rtol=2e-3)
+
+
+def test_grounded_emitter_closes_a_capacitor_loop_reduced_on_request():
+    """With the emitter grounded (and the substrate implicitly so) the three junction
+    capacitances close a loop: refused naming the transistor, and with index_reduction the
+    same stage as with the emitter resistor gone (scipy: Re → 0 Ω is the limit, here
+    checked against Re = 1 mΩ)."""
+    def stage(re):
+        return model("stage", lambda m: [
+            (m.vcc.p, m.rc.p), (m.rc.n, m.q.C), (m.vcc.n, m.ground.p), (m.vin.p, m.rb.p),
+            (m.rb.n, m.q.B), (m.vin.n, m.ground.p)]
+            + ([(m.q.E, m.re.p), (m.re.n, m.ground.p)] if re else [(m.q.E, m.ground.p)]),
+            vcc=el.ConstantVoltage(V=VCC), rc=el.Resistor(R=RC), rb=el.Resistor(R=RB),
+            q=el.NPN(), vin=el.SineVoltage(V=1.0, f=100.0, offset=1.0), ground=el.Ground(),
+            **({"re": el.Resistor(R=re)} if re else {}))
+    with pytest.raises(acausal.StructureError, match="NPN 'q'.*index_reduction=True"):
+        acausal.compile(stage(None))
+    t = np.linspace(0.0, 0.01, 101)
+    reduced = acausal.compile(stage(None), index_reduction=True).simulate(0.01, t=t, **TIGHT)
+    near = acausal.compile(stage(1e-3)).simulate(0.01, t=t, **TIGHT)
+    np.testing.assert_allclose(reduced["q.C.v"], near["q.C.v"], atol=1e-3)

@@ -50,7 +50,8 @@ from .ideal import (IdealDiode, IdealThyristor, IdealGTOThyristor, IdealOpeningS
                     IdealTransformer, IdealOpAmp, IdealOpAmpLimited, S_NOISE, IdealOpAmp3Pin,
                     OpAmpLimited, IdealizedOpAmpLimited, InitOpAmp, IdealTriac)
 from .semiconductors import (Diode, ZDiode, K_BOLTZMANN, Q_ELECTRON, exlin, Thyristor,
-                             SimpleTriac, NPN, PNP, exlin2, powlin)
+                             SimpleTriac, NPN, PNP, NMOS, PMOS, Diode2, exlin2,
+                             powlin)
 
 __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Conductor",
            "VariableResistor", "VariableConductor", "Potentiometer", "Capacitor", "Inductor",
@@ -65,7 +66,7 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "SawToothCurrent", "ExponentialsCurrent", "TableCurrent",
            "SineVoltageVariableFrequencyAndAmplitude", "CosineVoltageVariableFrequencyAndAmplitude",
            "SineCurrentVariableFrequencyAndAmplitude", "CosineCurrentVariableFrequencyAndAmplitude",
-           "SupplyVoltage", "Thyristor", "SimpleTriac", "IdealTriac", "NPN", "PNP", "exlin2",
+           "SupplyVoltage", "Thyristor", "SimpleTriac", "IdealTriac", "NPN", "PNP", "NMOS", "PMOS", "Diode2", "exlin2",
            "powlin",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
            "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",

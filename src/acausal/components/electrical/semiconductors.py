@@ -7,7 +7,7 @@ import casadi as ca
 
 from ...core import (ConditionalPort, HeatPort_a, Model, NegativePin, Parameter, Pin,
                      PositivePin)
-from ...core.component import who
+from ...core.component import BoundParameters, bound_twin, who
 from ...errors import ParameterError
 from ..logical import refuse_smooth
 from .ideal import IdealDiode
@@ -31,6 +31,13 @@ def exlin2(x, Minexp, Maxexp):
     Minexp and above Maxexp (``exlin``'s form at both ends)."""
     m = ca.fmax(ca.fmin(x, Maxexp), Minexp)
     return ca.exp(m) * (1 + x - m)
+
+
+def _exp(x):
+    """exp(x), continued linearly above x = 80 (``exlin``): finite in the branches of a law
+    that are not taken and at the compiler's probe values, the same as exp wherever a
+    diode's current is physical (Ids·e^80 is 5e21 A for Ids = 1e-13 A)."""
+    return exlin(x, 80)
 
 
 def powlin(x, y):
@@ -119,6 +126,62 @@ class ZDiode(_ConditionalHeatPort, OnePort):
         self._record(e, v, i)
         self._losses(e, v * i, self._T_heatPort(e))
 
+
+
+class Diode2(BoundParameters, _ConditionalHeatPort, OnePort):
+    """Improved diode model (MSL Semiconductors.Diode2): a pure diode (voltage vd [V],
+    current id [A]) in series with the ohmic resistance Rs [Ohm], the parallel conductance
+    Gp [S] across both: v = vd + id·Rs, i = id + v·Gp, with
+
+        id = −Ids·(exp(−(vd + Bv)/(N·Vt_applied)) + 1 − 2·exp(−Bv/(2·N·Vt_applied)))
+                                                    for vd < −Bv/2 (reverse breakdown),
+             Ids·(exp(vd/(N·Vt_applied)) − 1)      for vd < VdMax,
+             iVdMax + (vd − VdMax)·diVdMax         above (continued linearly),
+
+    VdMax = Vf + N·Vt_applied, iVdMax and diVdMax the exponential's value and slope there
+    (C1). Vt_applied = k·T_heatPort/q with ``useHeatPort``, else the parameter Vt [V],
+    which is k·T/q (T = 293.15 K: 0.02526 V) unless given (MSL's binding R·T/F; it follows
+    T when T is changed at simulation time). vd is an algebraic unknown. Vf [V] forward
+    voltage, Ids [A] reverse saturation current, N [1] emission coefficient, Bv [V] reverse
+    breakdown voltage (> 0). LossPower = v·i [W]. Records v, i, vd, id."""
+    Vf = Parameter(0.7, "V", "forward voltage", positive=True)
+    Ids = Parameter(1e-13, "A", "reverse saturation current")
+    Rs = Parameter(16.0, "Ohm", "ohmic resistance")
+    N = Parameter(1.0, "1", "emission coefficient", positive=True)
+    Bv = Parameter(100.0, "V", "reverse breakdown voltage", positive=True)
+    Gp = Parameter(1e-6, "S", "parallel conductance for numerical stability")
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
+
+    @property
+    def Vt(self):
+        """Thermal voltage (kT/q) [V]: k·T/q (MSL's binding R·T/F)."""
+        return K_BOLTZMANN / Q_ELECTRON * self.T
+
+    def structure(self, s):
+        s.algebraic("vd", 0.0, "V", "voltage across pure diode part")
+
+    def physics(self, e):
+        vd, v, T = e.state("vd"), self._v(e), self._T_heatPort(e)
+        e.assertion(self.Vt > 0, "Vt must be greater than zero")
+        nvt = self.N * (K_BOLTZMANN / Q_ELECTRON * T if self.useHeatPort else self.Vt)
+        VdMax = self.Vf + nvt
+        iVdMax = self.Ids * (_exp(VdMax / nvt) - 1)
+        diVdMax = self.Ids * _exp(VdMax / nvt) / nvt
+        i_d = ca.if_else(
+            vd < -self.Bv / 2,
+            -self.Ids * (_exp(-(vd + self.Bv) / nvt) + 1 - 2 * _exp(-self.Bv / (2 * nvt))),
+            ca.if_else(vd < VdMax, self.Ids * (_exp(vd / nvt) - 1),
+                       iVdMax + (vd - VdMax) * diVdMax))
+        e.residual(v - (vd + i_d * self.Rs))
+        i = self._current(e, i_d + v * self.Gp)
+        self._record(e, v, i)
+        e.variable("id", i_d, "A", "diode current")
+        self._losses(e, v * i, T)
+
+
+bound_twin(Diode2, "Vt", Parameter(0.025, "V", "thermal voltage (kT/q), 0.026 at normal "
+                                                "conditions (around 20 degC)", positive=True))
 
 class Thyristor(_ConditionalHeatPort):
     """Simple thyristor model (MSL Semiconductors.Thyristor) between Anode, Cathode and
@@ -421,4 +484,118 @@ class PNP(_BipolarTransistor):
     (states), icb, ieb [A], ccb, ceb [F]: C.i = icb/br_t + ccb·der(vcb) + (icb − ieb)·qbk −
     iS, B.i = −ieb/bf_t − icb/br_t − ceb·der(veb) − ccb·der(vcb) [A]: the NPN's laws with
     every voltage and current reversed."""
+    _s = -1
+
+
+class _MOS(_ConditionalHeatPort):
+    """MSL's NMOS and PMOS (simple Shichman–Hodges MOSFETs with heating port, no
+    capacitances), one model with the polarity ``_s`` (+1 NMOS, −1 PMOS): with every
+    potential multiplied by s (and the threshold vt_t by s), the NMOS law
+
+        ud, us = max(D.v, S.v), min(D.v, S.v),  uds = ud − us,  ubs = min(B.v − us, 0),
+        ugst = (G.v − us − vt_t + k2_t·ubs)·K5,  v = beta_t·(W + dW)/(L + dL),
+        id = uds·gds                            if ugst ≤ 0 (cut off),
+             v·uds·(ugst − uds/2) + uds·gds     if ugst > uds (linear region),
+             v·ugst²/2 + uds·gds                otherwise (saturation),
+        D.i = −id if D.v < S.v else id,  S.i = −D.i,  G.i = B.i = 0,
+
+    and the currents multiplied by s: MSL's PMOS equations exactly (its mirrored
+    comparisons and signs). gds = 1/RDS [S] (1e20 for |RDS| < 1e-20). With
+    useTemperatureDependency (useHeatPort defaults to it): beta_t = Beta·(T/Tnom)^−1.5,
+    vt_t = Vt·(1 + (T − Tnom)·kvt), k2_t = K2·(1 + (T − Tnom)·kk2), T = T_heatPort;
+    otherwise Beta, Vt, K2. LossPower = D.i·(D.v − S.v) [W]. The law is continuous (MSL's
+    smooth(0, ...)); its kinks are integrated across, no events. L + dL > 0 and W + dW > 0
+    are checked at construction (and asserted while simulating). Records id, ugst, uds,
+    ubs."""
+    options = {"useTemperatureDependency": False, "useHeatPort": False}
+    W = Parameter(20e-6, "m", "width")
+    L = Parameter(6e-6, "m", "length")
+    Beta: Parameter
+    Vt: Parameter
+    K2: Parameter
+    K5: Parameter
+    dW = Parameter(-2.5e-6, "m", "narrowing of channel")
+    dL: Parameter
+    RDS = Parameter(1e7, "Ohm", "drain-source-resistance")
+    Tnom = Parameter(300.15, "K", "parameter measurement temperature", positive=True)
+    kvt: Parameter
+    kk2: Parameter
+    T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
+                  positive=True)
+    D = Pin("drain")
+    G = Pin("gate")
+    S = Pin("source")
+    B = Pin("bulk")
+    _s: int
+
+    def __init__(self, name: str | None = None, **params):
+        params.setdefault("useHeatPort", params.get("useTemperatureDependency", False))
+        super().__init__(name, **params)
+        for size, text in (("L", "length"), ("W", "width")):
+            value, change = getattr(self, size), getattr(self, "d" + size)
+            if not value + change > 0:
+                raise ParameterError(f"{who(self)}: the effective {text} {size} + d{size} = "
+                                     f"{value:g} + {change:g} m must be positive")
+
+    def physics(self, e):
+        sign = self._s
+        vD, vG, vS, vB = (sign * e.potential(p) for p in (self.D, self.G, self.S, self.B))
+        T = self._T_heatPort(e)
+        e.assertion(self.L + self.dL > 0, "Effective length must be positive")
+        e.assertion(self.W + self.dW > 0, "Effective width must be positive")
+        e.assertion(T > 0, "Temperature must be positive")
+        if self.useTemperatureDependency:
+            beta_t = self.Beta * (T / self.Tnom) ** -1.5
+            vt_t = self.Vt * (1 + (T - self.Tnom) * self.kvt)
+            k2_t = self.K2 * (1 + (T - self.Tnom) * self.kk2)
+        else:
+            beta_t, vt_t, k2_t = self.Beta, self.Vt, self.K2
+        gds = ca.if_else(ca.fabs(self.RDS) < 1e-20, 1e20, 1 / self.RDS)
+        v = beta_t * (self.W + self.dW) / (self.L + self.dL)
+        reverse = vD < vS
+        ud, us = ca.fmax(vD, vS), ca.fmin(vD, vS)
+        uds = ud - us
+        ubs = ca.fmin(vB - us, 0)
+        ugst = (vG - us - sign * vt_t + k2_t * ubs) * self.K5
+        i_d = ca.if_else(ugst <= 0, uds * gds, ca.if_else(
+            ugst > uds, v * uds * (ugst - uds / 2) + uds * gds, v * ugst * ugst / 2 + uds * gds))
+        iD = sign * ca.if_else(reverse, -i_d, i_d)
+        e.flow(self.D, iD)
+        e.flow(self.S, -iD)
+        e.flow(self.G, 0.0)
+        e.flow(self.B, 0.0)
+        for name, value, text in (("id", sign * i_d, "drain current (from the higher to the "
+                                                     "lower of drain and source)"),
+                                  ("ugst", sign * ugst, "effective gate voltage"),
+                                  ("uds", sign * uds, "drain-source voltage"),
+                                  ("ubs", sign * ubs, "bulk-source voltage")):
+            e.variable(name, value, "A" if name == "id" else "V", text)
+        self._losses(e, iD * (e.potential(self.D) - e.potential(self.S)), T)
+
+
+class NMOS(_MOS):
+    """Simple n-channel MOSFET with heating port (MSL Semiconductors.NMOS), Shichman–Hodges
+    without capacitances: ``_MOS`` with the NMOS's parameters; D.i > 0 flows from drain to
+    source when G.v exceeds the source by more than the threshold Vt (0.8 V)."""
+    Beta = Parameter(0.041e-3, "A/V2", "transconductance parameter")
+    Vt = Parameter(0.8, "V", "zero bias threshold voltage")
+    K2 = Parameter(1.144, "1", "bulk threshold parameter")
+    K5 = Parameter(0.7311, "1", "reduction of pinch-off region")
+    dL = Parameter(-1.5e-6, "m", "shortening of channel")
+    kvt = Parameter(-6.96e-3, "1/K", "fitting parameter for Vt")
+    kk2 = Parameter(6e-4, "1/K", "fitting parameter for K2")
+    _s = 1
+
+
+class PMOS(_MOS):
+    """Simple p-channel MOSFET with heating port (MSL Semiconductors.PMOS), Shichman–Hodges
+    without capacitances: ``_MOS`` with the PMOS's parameters; current flows from source
+    to drain (D.i < 0) when G.v lies below the source by more than |Vt| (Vt = −1 V)."""
+    Beta = Parameter(0.0105e-3, "A/V2", "transconductance parameter")
+    Vt = Parameter(-1.0, "V", "zero bias threshold voltage")
+    K2 = Parameter(0.41, "1", "bulk threshold parameter")
+    K5 = Parameter(0.839, "1", "reduction of pinch-off region")
+    dL = Parameter(-2.1e-6, "m", "shortening of channel")
+    kvt = Parameter(-2.9e-3, "1/K", "fitting parameter for Vt")
+    kk2 = Parameter(6.2e-4, "1/K", "fitting parameter for K2")
     _s = -1
