@@ -30,7 +30,8 @@ IG = 0.01                                      # gate current [A]
 class MSLThyristor:
     """MSL's Semiconductors.Thyristor with its default parameters, written out by hand."""
     VDRM = VRRM = 100.0
-    VTM, IH, ITM, VGT, IGT, TON, TOFF, Vt, Nbv = 1.7, 6e-3, 25.0, 0.7, 5e-3, 1e-6, 15e-6, 0.04, 0.74
+    VTM, IH, ITM, VGT, IGT = 1.7, 6e-3, 25.0, 0.7, 5e-3
+    TON, TOFF, Vt, Nbv = 1e-6, 15e-6, 0.04, 0.74
     Von, Voff = 5.0, 1.5
     Ron = (VTM - 0.7) / ITM
     Roff = VDRM ** 2 / VTM / IH
@@ -58,7 +59,8 @@ def phase_control_by_hand(t_out, periods):
     """SineVoltage (V, F) → Anode; Cathode → R → ground; a gate current IG into the Gate
     during [START, START + WIDTH] of every period: the state vControl integrated by LSODA,
     the anode voltage from Kirchhoff's law vAK = vs − R·(iA + iG) (iA = vAK·G(vControl)
-    above −VRRM, where V < VRRM keeps it), the holding mode switched where iA crosses IH (an event of solve_ivp).
+    above −VRRM, where V < VRRM keeps it), the holding mode switched where iA crosses IH
+    (an event of solve_ivp).
     Returns (load current at t_out, the switching times of the mode)."""
     th = MSLThyristor()
     edges = sorted({0.0, periods / F} | {START + k / F for k in range(periods)}
@@ -526,3 +528,15 @@ def test_grounded_emitter_closes_a_capacitor_loop_reduced_on_request():
     reduced = acausal.compile(stage(None), index_reduction=True).simulate(0.01, t=t, **TIGHT)
     near = acausal.compile(stage(1e-3)).simulate(0.01, t=t, **TIGHT)
     np.testing.assert_allclose(reduced["q.C.v"], near["q.C.v"], atol=1e-3)
+
+
+@pytest.mark.parametrize("make, match", [
+    (lambda: el.NPN("q", Cje=0.0), r"NPN.*Cje.*> 0"),
+    (lambda: el.PNP(Ccs=-1e-12), r"PNP.*Ccs.*> 0"),
+    (lambda: el.Diode2(Bv=0.0), r"Diode2.*Bv.*> 0"),
+    (lambda: el.SimpleTriac("tr", VDRM=50.0, VGT=0.5), r"Thyristor.*VGT.*vRef"),
+    (lambda: el.SimpleTriac("tr", Ron=1.0), r"SimpleTriac 'tr' has no parameter 'Ron'"),
+    (lambda: el.IdealTriac(Goff=-1.0), r"IdealThyristor.*Goff")])
+def test_bad_semiconductor_parameters_are_refused_naming_the_component(make, match):
+    with pytest.raises(ParameterError, match=match):
+        make()

@@ -1,5 +1,5 @@
 """Analog electrical components after Modelica.Electrical.Analog (Basic, Ideal, Sources,
-Sensors).
+Sensors, Semiconductors).
 
 Pins carry the potential v [V] and the current i [A] flowing into the pin (MSL's sign); a
 connection set has one potential and its currents sum to zero (Kirchhoff), as compiled by
@@ -21,6 +21,15 @@ closing, two-way and intermediate switches) are MSL's parametric characteristics
 auxiliary unknown s places each path on one of two straight segments, chosen by a Boolean
 (a mode switched at state events for the semiconductors and the Controlled* switches, the
 control input for the others); the modes have no smooth form.
+
+The operational amplifiers: Ideal.IdealOpAmp, IdealOpAmp3Pin and IdealOpAmpLimited
+(nullors), Basic.OpAmp (a smooth limited characteristic) and Ideal.OpAmpLimited /
+IdealizedOpAmpLimited (a finite gain limited to the supply, whose power they draw from
+their supply pins). The semiconductors: Diode, Diode2, ZDiode, the Thyristor, the
+SimpleTriac (two of them) and Ideal.IdealTriac (two ideal thyristors and a snubber), the
+bipolar transistors NPN and PNP
+(Ebers–Moll with their junction capacitances: see NPN about the loops those close) and the
+MOSFETs NMOS and PMOS.
 
 The components live in modules after MSL's packages, all importable from here:
 ``interfaces`` (OnePort, TwoPort, the conditional heat port), ``basic``, ``sources``,
@@ -64,10 +73,10 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "ConstantCurrent", "SignalCurrent", "StepCurrent", "RampCurrent", "SineCurrent",
            "CosineCurrent", "ExpSineCurrent", "PulseCurrent", "TrapezoidCurrent",
            "SawToothCurrent", "ExponentialsCurrent", "TableCurrent",
-           "SineVoltageVariableFrequencyAndAmplitude", "CosineVoltageVariableFrequencyAndAmplitude",
-           "SineCurrentVariableFrequencyAndAmplitude", "CosineCurrentVariableFrequencyAndAmplitude",
-           "SupplyVoltage", "Thyristor", "SimpleTriac", "IdealTriac", "NPN", "PNP", "NMOS", "PMOS", "Diode2", "exlin2",
-           "powlin",
+           "SineVoltageVariableFrequencyAndAmplitude",
+           "CosineVoltageVariableFrequencyAndAmplitude",
+           "SineCurrentVariableFrequencyAndAmplitude",
+           "CosineCurrentVariableFrequencyAndAmplitude", "SupplyVoltage",
            "PotentialSensor", "VoltageSensor", "CurrentSensor", "PowerSensor", "MultiSensor",
            "IdealDiode", "IdealThyristor", "IdealGTOThyristor", "IdealOpeningSwitch",
            "IdealClosingSwitch", "ControlledIdealOpeningSwitch", "ControlledIdealClosingSwitch",
@@ -77,4 +86,6 @@ __all__ = ["Ground", "OnePort", "TwoPort", "Resistor", "HeatingResistor", "Condu
            "IdealTransformer", "Gyrator", "NonlinearResistor", "IdealOpAmp",
            "IdealOpAmpLimited", "Diode", "ZDiode", "SaturatingInductor",
            "OpAmp", "IdealOpAmp3Pin", "OpAmpLimited", "IdealizedOpAmpLimited", "InitOpAmp",
+           "Diode2", "Thyristor", "SimpleTriac", "IdealTriac", "NPN", "PNP", "NMOS", "PMOS",
+           "exlin2", "powlin",
            "S_NOISE", "K_BOLTZMANN", "Q_ELECTRON", "exlin"]

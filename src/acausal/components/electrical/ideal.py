@@ -512,9 +512,12 @@ class _SuppliedOpAmp(_ThreePinOpAmp):
         e.assertion(vps > vns, "OpAmp supply voltages are not consistent.")
         v_int = self._intermediate(e, v_in, vps, vns)
         v_out = _limited(e, v_int, vns, vps, self.v_smooth, self._events())
-        # with v_int = V0·v_in the output's equation is divided by the gain, so that its
-        # residual is the input voltage's error, not that error amplified beyond round-off
+        # with v_int = V0·v_in the output's equation is divided by the gain between the
+        # limits, so that its residual is the input voltage's error, not that error
+        # amplified beyond round-off; at a limit (out.v = the supply) it is not
         gain = 1 if self._first_order else ca.fmax(1, ca.fabs(self.V0))
+        if self._events() and not e.smooth:
+            gain = ca.if_else(e.mode("region") == 0, gain, 1)
         e.residual((e.potential(self.out) - v_out) / gain)
         p_out = v_out * i_out
         p_s = -p_out                                         # p_in = 0: no input current

@@ -1,6 +1,7 @@
-"""Semiconductors (after Modelica.Electrical.Analog.Semiconductors): the Diode and the ZDiode,
-with MSL's exlin, the exponential continued linearly; the simple Thyristor and the
-SimpleTriac made of two of them."""
+"""Semiconductors (after Modelica.Electrical.Analog.Semiconductors): the Diode, Diode2 and
+the ZDiode, with MSL's exlin, the exponential continued linearly; the simple Thyristor and
+the SimpleTriac made of two of them; the bipolar transistors NPN and PNP (Ebers–Moll) and
+the MOSFETs NMOS and PMOS (Shichman–Hodges)."""
 from __future__ import annotations
 
 import casadi as ca
@@ -278,7 +279,7 @@ class Thyristor(_ConditionalHeatPort):
                 ("vGK", vGK, "V", "voltage between gate and cathode"),
                 ("iGK", iGK, "A", "gate current"),
                 ("vContot", vContot, "V", "total control voltage"),
-                ("vConmain", vConmain, "V", "control voltage of holding and forward breakthrough")):
+                ("vConmain", vConmain, "V", "control voltage of holding and breakthrough")):
             e.variable(name, value, unit, text)
         self._losses(e, iA * vA - (iA + iGK) * vK + iGK * vG, self._T_heatPort(e))
 
@@ -359,7 +360,12 @@ class _BipolarTransistor(_ConditionalHeatPort):
     emitter and the substrate (the emitter grounded while the substrate is implicitly
     grounded, or both on fixed potentials) closes a loop of capacitors, a higher-index
     network: compile it with ``index_reduction=True`` (one of the three voltages then
-    follows from the other two)."""
+    follows from the other two). So do a collector on a supply rail (the collector–
+    substrate capacitance across a voltage source) and two transistors joined at their
+    emitters; a resistor in series breaks such a loop. The pF capacitances make a circuit
+    stiff (ns time constants beside the circuit's own): where a source jumps (a step, a
+    pulse) in a model without events, IDAS's restart at the jump fails on the capacitances'
+    sudden currents: give the edge a finite rise (TrapezoidVoltage)."""
     options = {"useTemperatureDependency": False, "useSubstrate": False, "UIC": False,
                "useHeatPort": False}
     Bf = Parameter(50.0, "1", "forward beta")
@@ -434,8 +440,10 @@ class _BipolarTransistor(_ConditionalHeatPort):
         ee = exlin2(vje / (self.NF * vt_t), self.EMin, self.EMax)
         ijc = is_t * (ec - 1) + vjc * self.Gbc
         ije = is_t * (ee - 1) + vje * self.Gbe
-        cjc = self.Taur * is_t / (self.NR * vt_t) * ec + self.Cjc * powlin(vjc / self.Phic, self.Mc)
-        cje = self.Tauf * is_t / (self.NF * vt_t) * ee + self.Cje * powlin(vje / self.Phie, self.Me)
+        cjc = (self.Taur * is_t / (self.NR * vt_t) * ec
+               + self.Cjc * powlin(vjc / self.Phic, self.Mc))
+        cje = (self.Tauf * is_t / (self.NF * vt_t) * ee
+               + self.Cje * powlin(vje / self.Phie, self.Me))
         qbk = 1 - vjc * self.Vak
         # the pin currents are the unknowns (as a capacitor's current), the capacitive
         # currents follow from them by MSL's equations: i_ccs = Ccs·der(vcs) = −iS, ...
