@@ -56,9 +56,9 @@ import numpy as np
 from ..core import (BooleanInput, BooleanOutput, Component, Parameter, RealInput, RealOutput,
                     Unavailable)
 from ..core.component import who
-from ..errors import ParameterError, StructureError
-from .signals import Extrapolation
-from .signals.interfaces import _MultiInput
+from ..errors import ParameterError
+from .signals.interfaces import _MultiInput, refuse_smooth
+from .signals.sources import Extrapolation
 from .signals.routing import _Replicating
 
 __all__ = [
@@ -74,16 +74,6 @@ __all__ = [
     "SampleTrigger", "ZeroCrossing", "TriggeredTrapezoid", "LogicalDelay", "AssertCondition",
     "BooleanReplicator", "PartialBooleanMISO", "MathBoolean",
 ]
-
-
-def refuse_smooth(block: Component, builder) -> None:
-    """A StructureError when the model is compiled in smooth form (``builder.smooth``) and
-    ``block`` has no smooth form (its output changes at events only)."""
-    if builder.smooth:
-        raise StructureError(
-            f"{who(block)} has no smooth form: its output is a discrete value that changes "
-            f"at events only; compile without smooth=True, or write the switching law as a "
-            f"smooth expression (e.g. a tanh blend) for optimal control")
 
 
 # ---- interfaces (Modelica.Blocks.Interfaces) --------------------------------------------------

@@ -1,5 +1,7 @@
 """The interfaces of the blocks (Modelica.Blocks.Interfaces: SO, SISO, SI2SO) and what the
-blocks of every module share: start values, sized classes, initialization (``Init``)."""
+blocks of every module share: start values, sized classes, initialization (``Init``), the
+refusal of a smooth form by blocks whose output changes at events only (``refuse_smooth``, for
+the logical, discrete and electrical switching blocks too)."""
 from __future__ import annotations
 
 import math
@@ -9,7 +11,8 @@ import casadi as ca
 import numpy as np
 
 from ...core import BooleanInput, Component, Parameter, RealInput, RealOutput, VectorPort
-from ...errors import ParameterError
+from ...core.component import who
+from ...errors import ParameterError, StructureError
 
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
@@ -59,6 +62,16 @@ class SignalSource(SO):
                                                   self.signal(t)))
         for time, period in self.events():
             e.time_event(time, period)
+
+
+def refuse_smooth(block: Component, builder) -> None:
+    """A StructureError when the model is compiled in smooth form (``builder.smooth``) and
+    ``block`` has no smooth form (its output changes at events only)."""
+    if builder.smooth:
+        raise StructureError(
+            f"{who(block)} has no smooth form: its output is a discrete value that changes "
+            f"at events only; compile without smooth=True, or write the switching law as a "
+            f"smooth expression (e.g. a tanh blend) for optimal control")
 
 
 def _start(value, what: str) -> float:

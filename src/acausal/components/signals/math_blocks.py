@@ -11,7 +11,8 @@ import numpy as np
 from ...core import Component, Parameter, RealInput, RealOutput, VectorPort
 from ...core.component import who
 from ...errors import ParameterError
-from .interfaces import _matrix, _MultiInput, SI2SO, SISO, _Sized, SO, _StartValues
+from .interfaces import (_matrix, _MultiInput, refuse_smooth, SI2SO, SISO, _Sized, SO,
+                         _StartValues)
 from .nonlinear import _limit, _limited, _limiter_region
 
 
@@ -468,7 +469,6 @@ class _Sampled(_StartValues, SISO):
     _prefix = ""
 
     def structure(self, s):
-        from ..logical import refuse_smooth         # logical builds on this package
         refuse_smooth(self, s)
         p = self._prefix
         s.sample("sampleTrigger", 1 / self.f, 1 / self.f,
