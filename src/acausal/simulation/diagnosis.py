@@ -6,7 +6,8 @@ Jacobian Φ_q loses rank (links lining up: a dead point, a parallelogram passing
 collinear position), the constraints no longer determine the motion, and the rows that became
 dependent and the coordinates are named. Otherwise the advice follows the code and the
 tolerances: a Newton iteration that cannot converge at very tight tolerances needs looser
-ones, not tighter.
+ones, not tighter. Equations of motion that are not finite at the start are explained too:
+a singular mass matrix by the coordinates it leaves without inertia (``not_finite``).
 """
 from __future__ import annotations
 
@@ -82,3 +83,25 @@ def quiet_stderr():
         os.dup2(saved, 2)
         os.close(saved)
         os.close(null)
+
+
+def not_finite(model, x0, fx0, p, u0, t0) -> str:
+    """Why the state derivatives are not finite at the start: a singular mass matrix (named
+    by its coordinates), or non-finite values."""
+    bad = [f"d({n})/dt = {v}" for n, v in zip(model.x_names, fx0) if not np.isfinite(v)][:4]
+    head = f"the equations of motion of '{model.name}' are not finite at t = {t0:g} s " \
+           f"({', '.join(bad)})"
+    L = model.lagrange
+    if L.q.numel() and not model.z.numel():
+        M = np.array(model.function("M", [L.M])(t0, x0, np.zeros(0), u0, p), dtype=float)
+        if np.all(np.isfinite(M)):
+            w, V = np.linalg.eigh(M)
+            tol = 1e-12 * max(1.0, np.abs(w).max(initial=0.0))
+            null = [L.q_names[k] for k in np.flatnonzero(np.abs(V[:, np.argmin(np.abs(w))])
+                                                         > 0.1)] if w.min() <= tol else []
+            if null:
+                return (f"{head}: the mass matrix is singular there, along the coordinates "
+                        f"{', '.join(null)}: a part without mass or inertia moves them; give it "
+                        f"mass / inertia, or connect it to something that has some")
+    return (f"{head}; check the parameters, inputs and initial values for values that make "
+            f"the equations infinite (a division by zero, a zero length)")
