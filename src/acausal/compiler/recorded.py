@@ -59,6 +59,11 @@ def _split(v: ca.SX, dims: list[int]) -> list[ca.SX]:
     return ca.vertsplit(v, offsets)
 
 
+def _scalars(v: ca.SX) -> list[ca.SX]:
+    """The elements of v (v itself if it is one: indexing an SX costs ~10 µs per call)."""
+    return [v] if v.is_scalar() else ca.vertsplit(ca.vec(v))
+
+
 def recorded_variables(ws, tree):
     """Names, expressions and units of every potential, velocity, state and signal."""
     names, exprs, units = [], [], []
@@ -72,6 +77,7 @@ def recorded_variables(ws, tree):
             units.append(unit)
 
     for n in tree.nodes:
+        pos = vel = None                 # the node's potentials and velocities, as scalars
         for p in n.ports:
             dom = p.domain
             if isinstance(p, InternalNode) and dom.dim == 1:   # else by potential, as ports
@@ -83,11 +89,13 @@ def recorded_variables(ws, tree):
                     rec(f"{base}.{p.acceleration}" if base else p.acceleration, n.acc,
                         dom.velocity_units[0] + "2")
                 continue
+            if pos is None:
+                pos, vel = _scalars(n.pos), _scalars(n.vel)
             for j, pot in enumerate(dom.potentials):
-                rec(f"{p.path}.{pot}", n.pos[j], dom.potential_units[j])
+                rec(f"{p.path}.{pot}", pos[j], dom.potential_units[j])
             for j, name in enumerate(dom.velocity_names):
                 if name:
-                    rec(f"{p.path}.{name}", n.vel[j], dom.velocity_units[j])
+                    rec(f"{p.path}.{name}", vel[j], dom.velocity_units[j])
     for info in ws.states:
         rec(info.sym.name(), info.sym, info.unit)
     for a in ws.algebraics:
