@@ -79,16 +79,19 @@ __all__ = [
 # ---- interfaces (Modelica.Blocks.Interfaces) --------------------------------------------------
 class partialBooleanSO(Component):
     """Single Boolean output ``y`` (MSL partialBooleanSO / partialBooleanSource)."""
+    partial = True
     y = BooleanOutput("connector of Boolean output signal")
 
 
 class partialBooleanSISO(partialBooleanSO):
     """Boolean input ``u``, Boolean output ``y``."""
+    partial = True
     u = BooleanInput("connector of Boolean input signal")
 
 
 class partialBooleanSI2SO(partialBooleanSO):
     """Boolean inputs ``u1``, ``u2``, Boolean output ``y``."""
+    partial = True
     u1 = BooleanInput("connector of first Boolean input signal")
     u2 = BooleanInput("connector of second Boolean input signal")
 
@@ -117,6 +120,7 @@ class _Relation(partialBooleanSO):
 
 class partialBooleanThresholdComparison(_Relation):
     """Real input ``u`` compared with ``threshold``; Boolean output ``y``."""
+    partial = True
     threshold = Parameter(0.0, "", "comparison with respect to threshold")
     u = RealInput("connector of Real input signal")
 
@@ -126,6 +130,7 @@ class partialBooleanThresholdComparison(_Relation):
 
 class partialBooleanComparison(_Relation):
     """Real inputs ``u1``, ``u2`` compared; Boolean output ``y``."""
+    partial = True
     u1 = RealInput("connector of first Real input signal")
     u2 = RealInput("connector of second Real input signal")
 
@@ -754,6 +759,7 @@ class TerminateSimulation(Component):
 class PartialBooleanMISO(_MultiInput, partialBooleanSO):
     """Boolean inputs ``u[1]`` .. ``u[nu]`` (``nu``: constructor argument, ≥ 1; MSL's
     connectorSizing counts them), Boolean output ``y`` (MSL Interfaces.PartialBooleanMISO)."""
+    partial = True
     _classes: dict = {}
     _input = BooleanInput
 

@@ -85,6 +85,7 @@ def _support(option: str = "useSupport", description: str = "support/housing of 
 
 class PartialTwoFlanges(interfaces.PartialTwoFlanges):
     """Component with two rotational 1-D shaft flanges ``flange_a``, ``flange_b``."""
+    partial = True
     axis = ROTATIONAL_AXIS
     flange_a = Flange("flange of left shaft")
     flange_b = Flange("flange of right shaft")
@@ -95,6 +96,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
 
     The reaction of what acts on ``flange`` goes to the support: support.tau = −flange.tau.
     """
+    partial = True
     axis = ROTATIONAL_AXIS
     flange = Flange("flange of shaft")
     support = _support()
@@ -102,6 +104,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
 
 class PartialElementaryTwoFlangesAndSupport2(interfaces.PartialElementaryTwoFlangesAndSupport2):
     """``flange_a``, ``flange_b`` and, with ``useSupport=True``, a ``support`` flange."""
+    partial = True
     axis = ROTATIONAL_AXIS
     flange_a = Flange("flange of left shaft")
     flange_b = Flange("flange of right shaft")
@@ -111,6 +114,7 @@ class PartialElementaryTwoFlangesAndSupport2(interfaces.PartialElementaryTwoFlan
 class PartialElementaryRotationalToTranslational(Component):
     """Rotational ``flangeR`` and translational ``flangeT``; with ``useSupportR`` /
     ``useSupportT`` a rotational ``supportR`` / translational ``supportT`` housing flange."""
+    partial = True
     options = {"useSupportR": False, "useSupportT": False}
     flangeR = Flange("flange of rotational shaft")
     flangeT = TranslationalFlange("flange of translational rod")
@@ -135,6 +139,7 @@ class PartialCompliant(interfaces.PartialCompliant):
     Records phi_rel, w_rel, tau (and lossPower [W] when ``loss_power(phi_rel, w_rel, tau)``
     gives one). Subclasses define ``torque(phi_rel, w_rel)``.
     """
+    partial = True
     axis = ROTATIONAL_AXIS
     flange_a = Flange("left flange of compliant 1-dim. rotational component")
     flange_b = Flange("right flange of compliant 1-dim. rotational component")
@@ -157,6 +162,7 @@ class PartialCompliantWithRelativeStates(PartialCompliant):
     the scale of the error control of the state phi_rel is (e.g. the housing's angle when
     flange_a is fixed; see ``CompiledModel.nominals``).
     """
+    partial = True
     options = {"stateSelect": StateSelect.prefer}
     records_a_rel = True
     phi_nominal = Parameter(1e-4, "rad", "nominal value of phi_rel (used for scaling)",
@@ -172,6 +178,7 @@ class PartialTorque(PartialElementaryOneFlangeAndSupport2):
     Records phi = flange.phi − phi_support [rad], w = der(phi) [rad/s] and the accelerating
     torque tau = −flange.tau [N.m]. Subclasses define ``torque(e, phi, w)``.
     """
+    partial = True
 
     def torque(self, e, phi, w):
         """The accelerating torque [N.m] (acting on flange, positive direction)."""
@@ -191,6 +198,7 @@ class PartialFriction(friction.PartialFriction):
     ``acausal.components.friction``): w_relfric [rad/s], a_relfric [rad/s²], tau0, tau0_max
     [N.m], mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction torque tau
     [N.m] an algebraic variable; in smooth form tau = F(|w_relfric|)·tanh(w_relfric/w_smooth)."""
+    partial = True
     axis = ROTATIONAL_AXIS
     w_small = Parameter(1.0e10, "rad/s", "relative angular velocity near to zero if jumps due "
                                          "to a reinit(..) of the velocity can occur",
@@ -827,11 +835,13 @@ class InitializeFlange(Component):
 # =========================================================================================
 class PartialAbsoluteSensor(Component):
     """Measures an absolute quantity of ``flange`` (no torque: flange.tau = 0)."""
+    partial = True
     flange = Flange("flange to be measured", required=True)
 
 
 class PartialRelativeSensor(Component):
     """Measures between ``flange_a`` and ``flange_b``."""
+    partial = True
     flange_a = Flange("left flange of shaft", required=True)
     flange_b = Flange("right flange of shaft", required=True)
 

@@ -75,6 +75,7 @@ __all__ = [
 # =========================================================================================
 class PartialTwoFlanges(interfaces.PartialTwoFlanges):
     """Component with two translational 1-D flanges ``flange_a``, ``flange_b``."""
+    partial = True
     axis = TRANSLATIONAL_AXIS
     flange_a = Flange("(left) driving flange (flange axis directed into cut plane, e. g. from "
                       "left to right)")
@@ -84,6 +85,7 @@ class PartialTwoFlanges(interfaces.PartialTwoFlanges):
 class PartialRigid(PartialTwoFlanges):
     """Two rigidly connected flanges at distance ``L`` [m]; ``s`` [m] is the centre:
     flange_a.s = s − L/2, flange_b.s = s + L/2 (the forces at the flanges may differ)."""
+    partial = True
     L = Parameter(0.0, "m", "length of component, from left flange to right flange "
                             "(= flange_b.s - flange_a.s)")
 
@@ -104,6 +106,7 @@ class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
     ``loss_power(s_rel, v_rel, f)`` gives one, lossPower [W]. Subclasses define
     ``force(s_rel, v_rel)``.
     """
+    partial = True
 
     def force(self, s_rel, v_rel):
         """The force f [N] on flange_b for relative position s_rel [m] and speed v_rel [m/s]."""
@@ -120,6 +123,7 @@ class PartialCompliantWithRelativeStates(PartialCompliant):
     mass on the other side along). s_rel has MSL's nominal: s_nominal [m] (default
     1e-4), the scale of the error control of the state s_rel is (see
     ``CompiledModel.nominals``)."""
+    partial = True
     options = {"stateSelect": StateSelect.prefer}
     s_nominal = Parameter(1e-4, "m", "nominal value of s_rel (used for scaling)")
 
@@ -133,6 +137,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
     What acts on the flange reacts on the support: support.f = −flange.f; s = flange.s −
     support.s [m] (support.s = 0 without support).
     """
+    partial = True
     axis = TRANSLATIONAL_AXIS
     flange = Flange("flange of component")
     support = ConditionalPort(Flange("support/housing of component", required=True),
@@ -143,6 +148,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
 class PartialElementaryTwoFlangesAndSupport2(PartialTwoFlanges,
                                              interfaces.PartialElementaryTwoFlangesAndSupport2):
     """``flange_a``, ``flange_b`` and, with ``useSupport=True``, a ``support`` flange."""
+    partial = True
     support = ConditionalPort(Flange("support/housing of component", required=True),
                               "useSupport")
 
@@ -152,6 +158,7 @@ class PartialFriction(friction.PartialFriction):
     see ``acausal.components.friction``): v_relfric [m/s], a_relfric [m/s²], f0, f0_max [N],
     mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction force f [N] an
     algebraic variable; in smooth form f = F(|v_relfric|)·tanh(v_relfric/v_smooth)."""
+    partial = True
     axis = TRANSLATIONAL_AXIS
     v_small = Parameter(1e-3, "m/s", "relative velocity near to zero", positive=True)
     v_smooth = Parameter(1e-3, "m/s", "smooth form only: f = f_pos(|v_relfric|)*"
@@ -162,6 +169,7 @@ class PartialForce(PartialElementaryOneFlangeAndSupport2):
     """A force law on ``flange`` (relative to the support). MSL's variable ``f`` = flange.f
     [N] is recorded: a force f_constant > 0 pushing the flange's body forward has
     f = −f_constant. Subclasses define ``flange_force(e)`` (the value of flange.f)."""
+    partial = True
     flange = Flange("flange of component", required=True)
 
     def flange_force(self, e):
@@ -910,11 +918,13 @@ class ConstantSpeed(PartialElementaryOneFlangeAndSupport2, interfaces.ConstantSp
 # =========================================================================================
 class PartialAbsoluteSensor(Component):
     """Measures an absolute quantity of ``flange`` (no force: flange.f = 0)."""
+    partial = True
     flange = Flange("flange to be measured", required=True)
 
 
 class PartialRelativeSensor(Component):
     """Measures between ``flange_a`` and ``flange_b`` (0 = flange_a.f + flange_b.f)."""
+    partial = True
     flange_a = Flange("left flange of sensor", required=True)
     flange_b = Flange("right flange of sensor", required=True)
 

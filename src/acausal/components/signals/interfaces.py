@@ -21,16 +21,19 @@ EPS = 1e-15
 
 class SO(Component):
     """Single output ``y``."""
+    partial = True
     y = RealOutput("connector of Real output signal")
 
 
 class SISO(SO):
     """Single input ``u``, single output ``y``."""
+    partial = True
     u = RealInput("connector of Real input signal")
 
 
 class SI2SO(SO):
     """Two inputs ``u1``, ``u2``, single output ``y``."""
+    partial = True
     u1 = RealInput("connector of Real input signal 1")
     u2 = RealInput("connector of Real input signal 2")
 
@@ -41,6 +44,7 @@ class SignalSource(SO):
     Subclasses implement ``signal(t)``: the value without offset at time t ≥ startTime [s],
     and ``before()`` if it is not 0.
     """
+    partial = True
     offset = Parameter(0.0, "", "offset of output signal y")
     startTime = Parameter(0.0, "s", "output y = offset for time < startTime")
 
@@ -104,7 +108,8 @@ class _Sized:
             base._classes[key] = type(base.__name__, (base,), {
                 "__doc__": base._written, "_written": base._written,
                 "__module__": base.__module__,
-                "__qualname__": base.__qualname__, "_key": key, **base._declare(*key)})
+                "__qualname__": base.__qualname__, "_key": key,
+                "partial": base.__dict__.get("partial", False), **base._declare(*key)})
         return base._classes[key]
 
     def __reduce_ex__(self, protocol):
