@@ -16,6 +16,7 @@ import re
 import sys
 from contextlib import contextmanager
 
+import casadi as ca
 import numpy as np
 
 from ..numerics import independent_rows, short_error
@@ -24,13 +25,18 @@ TIGHT_RTOL, TIGHT_ATOL = 1e-10, 1e-12
 
 
 def failure_message(model, error: Exception, a: float, b: float, rtol: float, atol: float,
-                    state_near=None, p=None, u_at=None) -> str:
+                    state_near=None, p=None, u_at=None, start=None) -> str:
     """The message of a failed integration of ``model`` over [a, b]: what the solver said,
     and why in the model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None)
-    for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs."""
+    for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs;
+    ``start`` the (x, z) the integration started from at a."""
     said = short_error(error).rstrip(". ")
     head = f"simulation of '{model.name}' failed between t = {a:g} and {b:g} s: {said}"
     text = str(error)
+    if start is not None and model.z.numel() and not model.has_loops and p is not None:
+        undetermined = _undetermined(model, a, *start, u_at(a), p)
+        if undetermined:
+            return f"{head}. {undetermined}"
     found = re.search(r"At t = ([-+0-9.eE]+)", text)
     t_fail = float(found.group(1)) if found else None
     if model.has_loops and t_fail is not None and state_near is not None:
@@ -49,6 +55,27 @@ def failure_message(model, error: Exception, a: float, b: float, rtol: float, at
                 f"solve): loosen them, e.g. rtol = {TIGHT_RTOL:g}, atol = {TIGHT_ATOL:g}")
     return (f"{head}. Check the parameters and the initial values (a value that makes the "
             f"equations blow up), or try another solver")
+
+
+def _undetermined(model, t, x, z, u, p) -> str | None:
+    """The description of algebraic variables that the algebraic equations leave free at
+    (t, x, z) (their Jacobian in z singular there), or None. For DAEs of index 1: a closed
+    loop's multipliers enter no equation of their own by design."""
+    J = np.array(model.function("alg_z", [ca.jacobian(model.alg, model.z)])(t, x, z, u, p),
+                 dtype=float)
+    if not np.all(np.isfinite(J)):
+        return None
+    s, V = np.linalg.svd(J)[1:]
+    tol = 1e-10 * max(1.0, s.max(initial=0.0))
+    if s.size == J.shape[1] and s.min() > tol:
+        return None
+    null = V[-1] if s.size == J.shape[1] else V[s.size]
+    free = [model.z_names[k] for k in np.flatnonzero(np.abs(null) > 0.1 * np.abs(null).max())]
+    return (f"The algebraic equations do not determine {', '.join(free)} at t = {t:g} s "
+            f"(their Jacobian is singular there): those are parts without mass or inertia "
+            f"whose common motion nothing holds (say, a spring-damper or a chain of dampers "
+            f"connected to nothing fixed), or a part of a network that floats; connect them "
+            f"to a fixed point (Fixed, Ground) or give them mass or inertia")
 
 
 def _singular_configuration(model, t, x, z, u, p) -> str | None:

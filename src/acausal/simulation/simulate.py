@@ -212,7 +212,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                 return np.array(sol["xf"]).ravel(), np.array(sol["zf"]).ravel()
             raise SimulationError(failure_message(
                 model, e, a, b, rtol, atol, state_near if loops else None, p,
-                lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel())
+                lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel(),
+                start=(np.ravel(x) * scale[:nx], np.ravel(z) * scale[nx:]))
             ) from None
         zf = zf[0] if has_alg else np.zeros((0, len(tout)))
         X.append(xf[:, :len(pts)])
