@@ -62,7 +62,8 @@ from .sources import (Constant, Step, Ramp, Sine, Cosine, ExpSine, Pulse, Trapez
 from .math_blocks import (Gain, Add, Add3, Feedback, Product, Division, Sum, Abs, Sign,
                           Sqrt, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Exp,
                           Power, Exponentiation, Log, Log10, Atan2, Max, Min, MinMax, MultiSum,
-                          MultiProduct, MatrixGain, Mean, RootMeanSquare)
+                          MultiProduct, MatrixGain, Mean, RootMeanSquare,
+                          InverseBlockConstraints)
 from .routing import (RealPassThrough, Replicator, ExtractSignal, Multiplex, DeMultiplex,
                       Multiplex2, Multiplex3, Multiplex4, Multiplex5, Multiplex6, DeMultiplex2,
                       DeMultiplex3, DeMultiplex4, DeMultiplex5, DeMultiplex6)
@@ -86,8 +87,9 @@ __all__ = [
     "VariableLimiter", "DeadZone", "LimiterHomotopy", "VariableLimiterHomotopy", "RealPassThrough",
     "Abs", "Sign", "Sqrt", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Sinh", "Cosh", "Tanh",
     "Exp", "Power", "Exponentiation", "Log", "Log10", "Atan2", "Max", "Min", "MinMax", "MultiSum",
-    "MultiProduct", "MatrixGain", "Mean", "RootMeanSquare", "SlewRateLimiter", "PadeDelay",
-    "pade_polynomials", "balance_abc", "Replicator", "ExtractSignal", "Multiplex", "DeMultiplex",
+    "MultiProduct", "MatrixGain", "Mean", "RootMeanSquare", "InverseBlockConstraints",
+    "SlewRateLimiter", "PadeDelay", "pade_polynomials",
+    "balance_abc", "Replicator", "ExtractSignal", "Multiplex", "DeMultiplex",
     "Multiplex2", "Multiplex3", "Multiplex4", "Multiplex5", "Multiplex6", "DeMultiplex2",
     "DeMultiplex3", "DeMultiplex4", "DeMultiplex5", "DeMultiplex6",
 ]

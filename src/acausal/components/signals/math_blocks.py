@@ -461,6 +461,36 @@ class MatrixGain(_Sized, Component):
             e.output(port, y[i])
 
 
+class InverseBlockConstraints(Component):
+    """Exchanges the inputs and outputs of a block, to build an inverse model (MSL
+    Math.InverseBlockConstraints): u1 = u2 and y1 = y2. Connect the inverted block's output
+    to u2 and the value it shall have to u1, its input from y2 (and y1 wherever the
+    computed input is wanted): y1 = y2 is an unknown of the DAE (an algebraic variable,
+    recorded as ``<block>.y1``), fixed by u1 = u2.
+
+    When the inverted block has states between its input and its output (a FirstOrder:
+    no direct feedthrough, the usual case), u1 = u2 holds no unknown: it constrains states
+    (a higher-index DAE), and the model is compiled with
+    ``acausal.compile(model, index_reduction=True)``: a state of the inverted block then
+    becomes an expression of the others and the unknown follows from the constraint's
+    rate (``acausal.compiler.index``). The signal at u1 must then be differentiable as
+    often as the inverted block's relative degree: filter it (CriticalDamping of that
+    order, MSL's Blocks.Examples.InverseModel) or give it as a smooth function of time."""
+    u1 = RealInput("input signal 1 (u1 = u2)")
+    u2 = RealInput("input signal 2 (u1 = u2)")
+    y1 = RealOutput("output signal 1 (y1 = y2)")
+    y2 = RealOutput("output signal 2 (y1 = y2)")
+
+    def structure(self, s):
+        s.algebraic("y1", description="the outputs y1 = y2, fixed by u1 = u2")
+
+    def physics(self, e):
+        y = e.state("y1")
+        e.output(self.y1, y)
+        e.output(self.y2, y)
+        e.residual(e.input(self.u1) - e.input(self.u2))
+
+
 class _Sampled(_StartValues, SISO):
     """What Mean and RootMeanSquare share: MSL Math.Mean's equations (see Mean) for a
     signal v under the names ``<prefix>integral``, ``<prefix>integral_last``,
