@@ -63,7 +63,7 @@ from .math_blocks import (Gain, Add, Add3, Feedback, Product, Division, Sum, Abs
                           Sqrt, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Exp,
                           Power, Exponentiation, Log, Log10, Atan2, Max, Min, MinMax, MultiSum,
                           MultiProduct, MatrixGain, Mean, RootMeanSquare,
-                          InverseBlockConstraints)
+                          InverseBlockConstraints, Harmonic, TotalHarmonicDistortion)
 from .routing import (RealPassThrough, Replicator, ExtractSignal, Multiplex, DeMultiplex,
                       Multiplex2, Multiplex3, Multiplex4, Multiplex5, Multiplex6, DeMultiplex2,
                       DeMultiplex3, DeMultiplex4, DeMultiplex5, DeMultiplex6)
@@ -88,7 +88,7 @@ __all__ = [
     "Abs", "Sign", "Sqrt", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Sinh", "Cosh", "Tanh",
     "Exp", "Power", "Exponentiation", "Log", "Log10", "Atan2", "Max", "Min", "MinMax", "MultiSum",
     "MultiProduct", "MatrixGain", "Mean", "RootMeanSquare", "InverseBlockConstraints",
-    "SlewRateLimiter", "PadeDelay", "pade_polynomials",
+    "Harmonic", "TotalHarmonicDistortion", "SlewRateLimiter", "PadeDelay", "pade_polynomials",
     "balance_abc", "Replicator", "ExtractSignal", "Multiplex", "DeMultiplex",
     "Multiplex2", "Multiplex3", "Multiplex4", "Multiplex5", "Multiplex6", "DeMultiplex2",
     "DeMultiplex3", "DeMultiplex4", "DeMultiplex5", "DeMultiplex6",
