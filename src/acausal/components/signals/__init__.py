@@ -36,8 +36,10 @@ Math blocks (Modelica.Blocks.Math, MSL 4.1): Abs and Sign (MSL's ``generateEvent
 events where u crosses 0, a smooth form as Limiter's), the functions of one input (Sqrt,
 Sin, ..., Log10, Power, Exponentiation; where MSL requires u in a domain, Sqrt, Asin, Acos,
 Log, Log10, the requirement is an assertion: simulate() stops with a SimulationError
-naming the block), Atan2, Max, Min, MinMax, MultiSum, MultiProduct, MatrixGain, and the
-sampled Mean and RootMeanSquare over periods 1/f. Nonlinear: SlewRateLimiter and
+naming the block), Atan2, Max, Min, MinMax, MultiSum, MultiProduct, MatrixGain, the
+sampled Mean, RootMeanSquare, Harmonic and TotalHarmonicDistortion over periods 1/f, and
+InverseBlockConstraints (inverse models; with ``compile(model, index_reduction=True)``
+where the inverted block has no direct feedthrough). Nonlinear: SlewRateLimiter and
 PadeDelay (a delay approximated by a rational transfer function). FixedDelay and
 VariableDelay (y = u(time − delayTime)) are not available: a true delay makes a delay
 differential equation, which the compiled form (an ODE/DAE in the present states) and
