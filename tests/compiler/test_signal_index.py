@@ -53,6 +53,8 @@ def test_inverse_of_a_first_order_is_its_input_in_closed_form():
     inverse_first_order(m, k, T, m.sine.y)
     compiled = acausal.compile(m, index_reduction=True)
     assert compiled.x_names == [] and compiled.z_names == ["inverse.y1"]
+    names = compiled.recorded_names                  # the demoted state once (an FMU's too)
+    assert names.count("firstOrder.y") == 1 and len(set(names)) == len(names)
     t = np.linspace(0.0, 2.0, 81)
     res = compiled.simulate(2.0, t=t, **TIGHT)
     r, rd = OFFSET + A * np.sin(W * t), A * W * np.cos(W * t)

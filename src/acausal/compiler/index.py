@@ -75,7 +75,8 @@ def reduce_signal_constraints(ws, resolve, network, rows: list, known: ca.SX,
     """Reduce the residuals ``rows`` (indices into ``ws.residuals``: those of components
     without network ports) that constrain states only (module's docstring): each is
     replaced by its rate, the demoted states go into ``network.demoted`` (substituted
-    everywhere by ``network.substitute``) and are recorded in ``network.records``.
+    everywhere by ``network.substitute``) and are recorded in ``network.records`` (unless
+    a signal of that name records them: a FirstOrder's state y is its output y).
     ``known``: the symbols a constraint on states may hold (time, coordinates and their
     rates, states, parameters, inputs, modes); ``unknowns``: the algebraic variables of
     those components. Without ``ws.index_reduction`` a StructureError names the
@@ -112,7 +113,8 @@ def reduce_signal_constraints(ws, resolve, network, rows: list, known: ca.SX,
         ws.residuals[k] = (owner, ca.substitute(rate, d.sym, value))
         if network.alg:
             network.alg = ca.vertsplit(ca.substitute(_vc(*network.alg), d.sym, value))
-        network.records.append((d.sym.name(), d.sym, d.unit))
+        if not any(o.path == d.sym.name() for o in ws.signal_sym):   # a block's output
+            network.records.append((d.sym.name(), d.sym, d.unit))      # state: recorded
         pending.insert(0, k)                    # its rate may constrain states again
 
 
