@@ -44,7 +44,7 @@ stops being one, so its start value is no longer used). A loop or cut set whose 
 are linear in the potentials and flows with numeric coefficients (ideal capacitors,
 inductors, sources, grounds) gives a constraint h(x, t) = 0 on the states: the left null
 vector of its equations' Jacobian combines them into it. The last declared state in h with
-a numeric coefficient becomes an expression of the others (recorded under its name), and
+a constant coefficient becomes an expression of the others (recorded under its name), and
 the equation it was in is replaced by dh/dt = 0 (its state derivative given by the others';
 ``compiler.index``, which also reduces the block equations that constrain states).
 The states kept need not be those a Modelica tool keeps (in MSL's CauerLowPassAnalog C3 and
