@@ -635,13 +635,13 @@ class BooleanExpression(partialBooleanSO):
     from the logical blocks (And, Or, Not; relations such as GreaterThreshold, which locate
     the instants where it changes as state events)."""
 
-    def __init__(self, name: str | None = None, *, y: bool = False):
+    def __init__(self, name: str | None = None, *, y: bool = False, **params):
         if not isinstance(y, (bool, np.bool_)):
             raise ParameterError(
                 f"BooleanExpression: y must be True or False, got {y!r}; build an expression "
                 f"of signals from logical blocks (y = pulse.y and step.y: an And with u1 from "
                 f"pulse.y, u2 from step.y)")
-        super().__init__(name)
+        super().__init__(name, **params)
         self.__dict__["value"] = bool(y)
 
     def physics(self, e):
