@@ -14,13 +14,16 @@ def connect_all(model, pairs) -> None:
         model.connect(a, b)
 
 
-def simulate_like_reference(build, example: str, reference_result, **tol):
+def simulate_like_reference(build, example: str, reference_result, *,
+                            index_reduction: bool = False, **tol):
     """(result, reference) of the MSL example ``example`` (its full Modelica name): the model
-    ``build()`` gives (model, stop time [s], start values) simulated on the reference's
-    time grid with the solver options ``tol``."""
+    ``build()`` gives (model, stop time [s], start values), compiled (with
+    ``index_reduction``), simulated on the reference's time grid with the solver options
+    ``tol``."""
     ref = reference_result("MAP-LIB_ReferenceResults", example)
     model, stop_time, start = build()
-    res = acausal.compile(model).simulate(stop_time, t=ref["time"], x0=start, **tol)
+    res = acausal.compile(model, index_reduction=index_reduction).simulate(
+        stop_time, t=ref["time"], x0=start, **tol)
     assert ref["time"][-1] == pytest.approx(stop_time)
     return res, ref
 

@@ -13,7 +13,8 @@
    potential/flow networks (electrical, thermal: ``networks``) add their node potentials
    and unknown flows as algebraic variables, with Kirchhoff's laws, checked for structure
    and reduced by their trivial equations before the accelerations are solved (a flow on a
-   mechanical flange, an EMF's torque, enters Lagrange's generalized forces);
+   mechanical flange, an EMF's torque, enters Lagrange's generalized forces); block
+   equations that constrain states are reduced (``index``);
 6. the DAE, its start values, nominals and time events, the recorded variables (``recorded``, built on
    first use) are put together into a CompiledModel.
 
@@ -36,6 +37,7 @@ from .builders import StructureBuilder, Workspace
 from .charts import angle_starts, at_origin, check_inertia, quaternion_states
 from .compiled import CompiledModel, Reinit, ScalarVariable, StateEvents, coinciding
 from .flatten import flatten
+from .index import reduce_signal_constraints
 from .kinematics import Node, choose_tree, motion_symbols
 from .lagrange import Lagrange, Residuals, residuals
 from .loops import analyse_loops
@@ -70,7 +72,8 @@ def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -
     """Compile ``model`` into a CompiledModel; ``smooth``: every component with events in its
     smooth form (see ``PhysicsBuilder.smooth``); ``index_reduction``: reduce the loops of
     capacitors / voltage sources and the cut sets of inductors / current sources of
-    networks instead of refusing them (see ``networks``)."""
+    networks, and the block equations that constrain states, instead of refusing them (see
+    ``networks``, ``index``)."""
     gc_was_enabled = gc.isenabled()
     gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
     try:
@@ -220,6 +223,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     phi_eps = ca.jacobian(phi, eps)
     resolve = make_resolver(ws, [eps, epsd, epsdd])
     network = build_network(ws, resolve)
+    _reduce_signal_constraints(ws, tree, resolve, network)
     # (the rigid bodies, for the articulated-body recursion, in the same substitution, so
     # that their kinematics is the residuals' and not a copy of it)
     R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit, nh, flat_bodies, T_other = \
@@ -373,6 +377,16 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         angle_starts=angle_starts(tree.charts, p),
         source=model,
     )
+
+
+def _reduce_signal_constraints(ws: Workspace, tree, resolve, network) -> None:
+    """``index.reduce_signal_constraints`` of the residuals of the components without
+    network ports."""
+    rows = [k for k, (o, _) in enumerate(ws.residuals) if not has_network_ports(o)]
+    known = _vc(ws.t, tree.q, tree.qd, _stack([i.sym for i in ws.states]), ws.p,
+                _stack([s for _, s in ws.inputs]), _stack([m.sym for m in ws.modes]))
+    unknowns = _stack([a.sym for a in ws.algebraics if not has_network_ports(a.owner)])
+    reduce_signal_constraints(ws, resolve, network, rows, known, unknowns)
 
 
 def _on_charts(motion, tree):

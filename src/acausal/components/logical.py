@@ -68,7 +68,7 @@ __all__ = [
     "GreaterThreshold", "GreaterEqualThreshold", "LessThreshold", "LessEqualThreshold",
     "Greater", "GreaterEqual", "Less", "LessEqual", "Hysteresis", "OnOffController",
     "Switch", "LogicalSwitch",
-    "BooleanConstant", "BooleanStep", "BooleanPulse", "BooleanTable",
+    "BooleanConstant", "BooleanExpression", "BooleanStep", "BooleanPulse", "BooleanTable",
     "BooleanToReal", "RealToBoolean", "BooleanPassThrough", "TerminateSimulation",
     "Edge", "FallingEdge", "Change", "RisingEdge", "ChangingEdge", "Timer", "RSFlipFlop",
     "SampleTrigger", "ZeroCrossing", "TriggeredTrapezoid", "LogicalDelay", "AssertCondition",
@@ -628,6 +628,29 @@ class BooleanConstant(partialBooleanSO):
 
     def physics(self, e):
         e.output(self.y, int(self.k))
+
+
+class BooleanExpression(partialBooleanSO):
+    """y = the Boolean value given as ``y`` (constructor argument, False as in MSL
+    Sources.BooleanExpression), e.g. MSL TotalHarmonicDistortion's
+    ``BooleanExpression(y=not useFirstHarmonic)``.
+
+    MSL difference: MSL's y may be any Boolean expression of the model's variables
+    (``y = pulse.y and step.y``); here it is a constant, and such an expression is built
+    from the logical blocks (And, Or, Not; relations such as GreaterThreshold, which locate
+    the instants where it changes as state events)."""
+
+    def __init__(self, name: str | None = None, *, y: bool = False, **params):
+        if not isinstance(y, (bool, np.bool_)):
+            raise ParameterError(
+                f"BooleanExpression: y must be True or False, got {y!r}; build an expression "
+                f"of signals from logical blocks (y = pulse.y and step.y: an And with u1 from "
+                f"pulse.y, u2 from step.y)")
+        super().__init__(name, **params)
+        self.__dict__["value"] = bool(y)
+
+    def physics(self, e):
+        e.output(self.y, int(self.value))
 
 
 class BooleanStep(partialBooleanSO):

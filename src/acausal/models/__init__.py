@@ -47,10 +47,13 @@ no compiler or simulation imports.
     multibody_loops     MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
                         MultiBodyEngine1a (on MultiBodyEngine1Base): MSL MultiBody's Loops
                         examples; EngineJointRRP, ParallelFourbar
+    blocks_examples     InverseModel, ShowLogicalSources, TotalHarmonicDistortion: MSL's
+                        Blocks examples (InverseModel compiled with index_reduction=True)
     robots              dh_chain: a serial arm from its Denavit–Hartenberg table (standard or
                         modified); from_urdf: a fixed-base robot from its URDF file (also
                         ``acausal.multibody``)
 """
+from .blocks_examples import InverseModel, ShowLogicalSources, TotalHarmonicDistortion
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
 from .circuits import CauerLowPassAnalog, ChuaCircuit, HeatingRectifier, ResistorExample
@@ -93,4 +96,5 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
            "MultiBodyDoublePendulum", "chain", "MultiBodyFourbar1", "MultiBodyFourbar2",
            "MultiBodyFourbarAnalytic", "MultiBodyEngine1Base", "MultiBodyEngine1a",
-           "EngineJointRRP", "ParallelFourbar", "dh_chain", "from_urdf"]
+           "EngineJointRRP", "ParallelFourbar", "dh_chain", "from_urdf", "InverseModel",
+           "ShowLogicalSources", "TotalHarmonicDistortion"]
