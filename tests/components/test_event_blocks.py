@@ -305,8 +305,7 @@ def test_zero_order_hold_of_a_ramp_is_an_exact_staircase():
     np.testing.assert_allclose(res["zoh.y"][at], ramp(tk), rtol=0, atol=1e-14)
     np.testing.assert_allclose(res["zoh.y"][at[1:] - 1], ramp(tk[:-1]), rtol=0, atol=1e-14)
     np.testing.assert_allclose(res["zoh.ySample"], res["zoh.y"], rtol=0, atol=0)
-    ts = 0.3 * np.floor(t / 0.3 + 1e-9)
-    ts[-1] = 2.7                                    # an instant at the final time: not taken
+    ts = 0.3 * np.floor(t / 0.3 + 1e-9)            # the instant at the final time included
     np.testing.assert_allclose(res["smp.y"][on_grid], ramp(ts), rtol=0, atol=1e-14)
     assert res["smp.y"][0] == 0.5                      # sampled at the start (initial())
     assert np.all(res["zoh.sampleTrigger"] == 0)

@@ -178,6 +178,7 @@ class Stepper:
             active = model.mobility_at(self.t, self._x, self._z, self.u, self.p)[0]
             self.p[model.loop_switches] = active
         self.events = []
+        self._started = False            # no step yet: the next one starts the simulation
         self._build()
         return self.outputs()
 
@@ -371,7 +372,9 @@ class Stepper:
                               plugin, opts)
         run.checks_per_run = EVENT_CHECKS
         grid = np.array([self.t, self.t + h])
-        T, X, Z, D = run.run(grid, self._x, self._z, model.event_times(self.p, *grid))
+        T, X, Z, D = run.run(grid, self._x, self._z, model.event_times(self.p, *grid),
+                             start=not self._started)
+        self._started = True
         self._x[:], self._z[:] = X[:, -1], Z[:, -1]
         self.p[model.mode_params] = D[:, -1]
         self.events += run.log
