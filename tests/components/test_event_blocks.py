@@ -379,7 +379,8 @@ def test_unit_delay_makes_a_difference_equation():
 
 # ---- smooth form -------------------------------------------------------------------------------
 @pytest.mark.parametrize("make", [lambda: lg.GreaterThreshold(), lambda: dc.Sampler(
-    samplePeriod=0.1), lambda: lg.Hysteresis(uLow=0.0, uHigh=1.0)])
+    samplePeriod=0.1), lambda: lg.Hysteresis(uLow=0.0, uHigh=1.0), sg.Harmonic,
+    sg.TotalHarmonicDistortion])
 def test_blocks_with_discrete_outputs_refuse_the_smooth_form(make):
     m = Model("no_smooth")
     m.src, m.blk = sg.Sine(), make()

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import acausal
-from acausal import Model, ParameterError, StructureError
+from acausal import Model, ParameterError
 from acausal.components import signals as sg
 
 SIM = dict(rtol=1e-10, atol=1e-12)
@@ -124,12 +124,3 @@ def test_harmonic_order_must_be_a_positive_integer(k):
 def test_base_frequency_must_be_positive(make):
     with pytest.raises(ParameterError, match=r"\.f"):
         make()
-
-
-@pytest.mark.parametrize("make", [sg.Harmonic, sg.TotalHarmonicDistortion])
-def test_harmonic_blocks_refuse_smooth_form(make):
-    m = Model("smooth")
-    m.sine, m.block = sg.Sine(), make()
-    m.connect(m.sine.y, m.block.u)
-    with pytest.raises(StructureError, match=f"{make.__name__} 'block' has no smooth form"):
-        acausal.compile(m, smooth=True)
