@@ -116,13 +116,25 @@ class Workspace:
     def signal(self, port: Port) -> ca.SX:
         """The placeholder standing for the value of a signal port."""
         src = self.source.get(port, port) if isinstance(port, RealInput) else port
-        if isinstance(src, RealInput):                       # unconnected, optional input
-            raise StructureError(f"input '{port.path}' is not connected to any output")
         if src not in self.signal_sym:
+            if isinstance(src, RealInput):       # unconnected, optional input (not the model's)
+                raise StructureError(f"input '{port.path}' is not connected to any output")
             s = ca.SX.sym(f"sig:{src.path}")
             self.signal_sym[src] = s
             self.der_table[s.name()] = _lazy_signal_rate(self, s)
         return self.signal_sym[src]
+
+    def model_input(self, record, port: Port | None = None) -> ca.SX:
+        """A new input of the compiled model (``record``: its path, unit, description,
+        start), of unknown rate; ``port``: the model's own input connector it drives."""
+        u = ca.SX.sym(record.path)
+        self.der_table[u.name()] = None
+        self.inputs.append((record, u))
+        if port is not None:
+            s = ca.SX.sym(f"sig:{port.path}")
+            self.signal_sym[port], self.signal_expr[port] = s, u
+            self.der_table[s.name()] = _lazy_signal_rate(self, s)
+        return u
 
 
 #: Modelica's stateSelect values of the variables a reinit keeps, by rank (first kept first)
@@ -719,10 +731,7 @@ class PhysicsBuilder(_Base):
         return found[0]
 
     def model_input(self, comp: Input) -> ca.SX:
-        u = ca.SX.sym(comp.path)
-        self._ws.der_table[u.name()] = None
-        self._ws.inputs.append((comp, u))
-        return u
+        return self._ws.model_input(comp)
 
     def model_output(self, comp: Output, expr) -> None:
         self._ws.outputs.append((comp, sx(expr)))

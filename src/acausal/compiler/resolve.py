@@ -35,6 +35,17 @@ class Resolver:
         for the rates that could not be derived)."""
         return ca.substitute(pieces, self.frm, self.to)
 
+    def unknown_rows(self, column: ca.SX) -> list[int]:
+        """The rows of a resolved ``column`` that need a rate that could not be derived."""
+        if self._failed_syms is None or not ca.depends_on(column, self._failed_syms):
+            return []
+        return [k for k, x in enumerate(ca.vertsplit(column))
+                if ca.depends_on(x, self._failed_syms)]
+
+    def error(self, piece: ca.SX) -> StructureError:
+        """The error of the first rate ``piece`` needs that could not be derived."""
+        return next(err for sym, err in self.failed if ca.depends_on(piece, sym))
+
     def check(self, pieces):
         """Raise the error of a placeholder whose rate could not be derived, if any piece
         still needs it (one test for all of them first)."""
