@@ -76,6 +76,7 @@ class Workspace:
     residuals: list = field(default_factory=list)           # (owner, expr)
     signal_sym: dict = field(default_factory=dict)          # RealOutput -> placeholder SX
     signal_expr: dict = field(default_factory=dict)         # RealOutput -> expression
+    aliases: list = field(default_factory=list)             # (symbol, what it stands for)
     source: dict = field(default_factory=dict)              # RealInput -> RealOutput
     inputs: list = field(default_factory=list)              # (Input, SX)
     outputs: list = field(default_factory=list)             # (Output, expr)
@@ -191,6 +192,24 @@ class _Base:
 
 class StructureBuilder(_Base):
     """Phase 1: kinematic relations, internal nodes, states, algebraic variables."""
+
+    def with_rates(self, name: str, value, *rates) -> ca.SX:
+        """``value`` whose time derivatives are the given ``rates`` (first, second, ...)
+        rather than derived from it: Modelica's function with a derivative annotation, by
+        which MSL's Move and the FMU adaptors prescribe a motion from a position, speed and
+        acceleration given as separate signals (model inputs, whose rates are unknown, or
+        deliberately inconsistent ones). Returns a symbol ``given:<component>.<name>``
+        standing for ``value`` (``value`` itself without rates); the derivative of the last rate is
+        derived from it as usual."""
+        if not rates:
+            return sx(value)
+        chain = [ca.SX.sym(f"given:{self._name(name)}" + (f":der{k}" if k else ""))
+                 for k in range(len(rates))]
+        for k, (sym, stands_for) in enumerate(zip(chain, (value,) + rates)):
+            self._ws.aliases.append((sym, sx(stands_for)))
+            self._ws.der_table[sym.name()] = chain[k + 1] if k + 1 < len(chain) \
+                else sx(rates[-1])
+        return chain[0]
 
     def linear(self, coeffs: dict, rhs=0.0, name: str = "") -> None:
         """Declare Σ coeff·pos(port) = rhs between 1-D ports (or internal nodes).

@@ -2,7 +2,8 @@
 
 Components write their physics with placeholders: a signal input reads as ``sig:<output>``
 (and its rates ``der(sig:...)`` where a prescribed motion differentiates it), a state's
-derivative as ``der(<state>)`` until the component sets it. Once every component has spoken,
+derivative as ``der(<state>)`` until the component sets it, a value with given rates
+(``StructureBuilder.with_rates``) as ``given:<component>.<name>``. Once every component has spoken,
 the placeholders' values are known; a Resolver substitutes them (and the relaxations ε of the
 tree relations by zero) in any expression.
 """
@@ -73,6 +74,9 @@ def make_resolver(ws: Workspace, relaxations: list[ca.SX]) -> Resolver:
         if info.placeholder is not None:
             syms.append(info.placeholder)
             vals.append(info.der)
+    for sym, value in ws.aliases:
+        syms.append(sym)
+        vals.append(value)
     vals = substitute_all(vals, syms, vals) if syms else vals
     # rates of signals (prescribed motion): d/dt of the resolved signal expressions
     failed = []
