@@ -1,5 +1,5 @@
-"""A model's own signal connectors as the inputs and outputs of the compiled model, against
-closed forms."""
+"""A model's own signal connectors as the inputs and outputs of the compiled model, and a
+measured cut force fed back into the forces of a tree, against closed forms."""
 from __future__ import annotations
 
 import numpy as np
@@ -7,7 +7,7 @@ import pytest
 
 import acausal
 from acausal.components import translational as tr
-from acausal.components.signals import Constant
+from acausal.components.signals import Constant, Gain
 from acausal.core import Model, RealInput, RealOutput
 from acausal.errors import StructureError
 
@@ -57,3 +57,27 @@ def test_an_unconnected_root_output_is_named():
     with pytest.raises(StructureError, match="output 's' of model 'PushedMass'"):
         acausal.compile(PushedMass("PushedMass", connect_s=False))
 
+
+def test_measured_force_feeding_a_force_adds_to_the_inertia():
+    """mass1 (m1) pushed by F0 drives mass2 (m2) through a ForceSensor, which measures
+    f = m2·a; k·f pushes mass1 too: (m1 + m2)·a = F0 + k·m2·a, so a = F0/(m1 + m2 − k·m2),
+    and the mass matrix of the compiled equations is m1 + m2 − k·m2 (the measured
+    reaction is an inertia term)."""
+    m1, m2, k, F0 = 1.0, 2.0, 0.5, 3.0
+    m = Model("feedback")
+    m.push, m.force, m.mass1 = Constant(k=F0), tr.Force(), tr.Mass(m=m1)
+    m.sensor, m.mass2 = tr.ForceSensor(), tr.Mass(m=m2)
+    m.gain, m.force2 = Gain(k=k), tr.Force()
+    for a, b in [(m.push.y, m.force.f), (m.force.flange, m.mass1.flange_a),
+                 (m.mass1.flange_b, m.sensor.flange_a), (m.sensor.flange_b, m.mass2.flange_a),
+                 (m.sensor.f, m.gain.u), (m.gain.y, m.force2.f),
+                 (m.force2.flange, m.mass1.flange_a)]:
+        m.connect(a, b)
+    compiled = acausal.compile(m)
+    a = F0 / (m1 + m2 - k * m2)
+    res = compiled.simulate(1.0, t=T, **TOL)
+    assert np.allclose(res["mass1.a"], a, rtol=1e-12)
+    assert np.allclose(res["sensor.f"], m2 * a, rtol=1e-12)
+    assert np.allclose(res["mass2.v"], a * T, rtol=0, atol=1e-10)
+    M = compiled.lagrange.function("M")(0.0, [0.0], [0.0], [], compiled.param_vector())
+    assert float(M) == pytest.approx(m1 + m2 - k * m2, rel=1e-14)

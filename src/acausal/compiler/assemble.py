@@ -250,13 +250,11 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
             _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows]),
             _stack([r for _, _, r, _ in ws.velocity_constraints]),
             _stack(ws.bodies), ca.sum1(_stack(ws.kinetic_other))]))
+    cut = _stack(list(ws.cut_flow_sym.values()))
+    if ca.depends_on(_vc((R_T + R_V + R_Q)[:nq], phi), cut):
+        R_T, R_Q = _measured_into_forces(ws, tree, cut, R_T, R_V, R_Q, explicit, phi, nq)
     R_all = R_T + R_V + R_Q
     R_q, R_eps = R_all[:nq], R_all[nq:]
-    cut = _stack(list(ws.cut_flow_sym.values()))
-    if ca.depends_on(_vc(R_q, phi), cut):
-        raise StructureError("a measured cut force/torque (force or torque sensor) feeds back "
-                             "into the forces of the model; this implicit loop is not supported "
-                             "yet: measure the force elsewhere (e.g. a spring's f)")
 
     # ---- loops, accelerations ------------------------------------------------------------
     keep, row_names = analyse_loops(tree, phi, ws)
@@ -422,6 +420,29 @@ def _reduce_signal_constraints(ws: Workspace, tree, resolve, network) -> None:
                 _stack([s for _, s in ws.inputs]), _stack([m.sym for m in ws.modes]))
     unknowns = _stack([a.sym for a in ws.algebraics if not has_network_ports(a.owner)])
     reduce_signal_constraints(ws, resolve, network, rows, known, unknowns)
+
+
+def _measured_into_forces(ws: Workspace, tree, cut, R_T, R_V, R_Q, explicit, phi, nq: int):
+    """(R_T, R_Q) with the cut flows that sensors measure (``PhysicsBuilder.cut_flow``)
+    replaced where they drive forces: in a tree each is the reaction of relations that
+    fired, −R_ε, linear in the accelerations; its terms in q̈ join the inertia terms (an
+    inverse inertia moved by the acceleration of a direct one, which it drives with the
+    torque it needs: MSL's GenerationOfFMUs), the rest the generalized forces. Refused in
+    loops and with rolling contacts (the reactions there come out of the constrained solve)
+    and where the measured flows measure each other."""
+    if phi.numel() or ws.velocity_constraints:
+        raise StructureError("a measured cut force/torque (force or torque sensor, FMU adaptor) "
+                             "feeds back into the forces of a model with closed kinematic loops "
+                             "or rolling contacts; this implicit loop is not supported there: "
+                             "measure the force elsewhere (e.g. a spring's f)")
+    lam_tree = -(R_T + R_V + R_Q)[nq:]
+    _, flow_of = port_flows(ws, tree, explicit, lam_tree, ca.SX(0, 1))
+    values = _stack([flow_of[p] for p in ws.cut_flow_sym])
+    if ca.depends_on(values, cut):
+        raise StructureError("force sensors measure each other in a loop; not supported")
+    R_T, R_Q = ca.substitute([R_T, R_Q], [cut], [values])
+    forces = ca.substitute(R_Q, tree.qdd, ca.SX.zeros(tree.qdd.numel()))
+    return R_T + (R_Q - forces), forces
 
 
 def _on_charts(motion, tree):
