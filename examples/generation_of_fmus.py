@@ -88,7 +88,8 @@ def main():
                                                                        "spring"))
 
         def tau_needed(tk, x, trial):
-            (phi, w, a), _ = direct(tk, x, {"tauDrive": drive(tk), "tau": trial}, ("phi", "w", "a"))
+            (phi, w, a), _ = direct(tk, x, {"tauDrive": drive(tk), "tau": trial},
+                                    ("phi", "w", "a"))
             return inverse(tk, [], {"phi": phi, "w": w, "a": a}, ("tau",))[0][0]
 
         def upper(tk, x):

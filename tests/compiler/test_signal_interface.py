@@ -7,7 +7,7 @@ import pytest
 
 import acausal
 from acausal.components import translational as tr
-from acausal.components.signals import Constant, Gain
+from acausal.components.signals import Constant, Gain, Sine
 from acausal.core import Model, RealInput, RealOutput
 from acausal.errors import StructureError
 
@@ -51,6 +51,14 @@ def test_root_connectors_are_the_compiled_models_inputs_and_outputs():
     inner = acausal.compile(outer)
     assert inner.input_names == [] and inner.output_names == []
     assert np.allclose(inner.simulate(1.0, t=T, **TOL)["block.s"], 0.75 * T ** 2, atol=1e-10)
+
+
+def test_a_component_compiled_alone_outputs_its_outputs():
+    """A block compiled by itself: its RealOutput is the compiled model's output."""
+    compiled = acausal.compile(Sine(amplitude=2.0, f=1.0))
+    assert compiled.output_names == ["y"]
+    res = compiled.simulate(1.0, t=T, **TOL)
+    assert np.allclose(res["y"], 2.0 * np.sin(2 * np.pi * T), rtol=0, atol=1e-12)
 
 
 def test_an_unconnected_root_output_is_named():

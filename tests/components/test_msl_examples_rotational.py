@@ -122,8 +122,9 @@ def test_generation_of_fmus_matches_the_msl_reference(reference_result):
 
 
 def test_rolling_wheel_and_generation_of_fmus_are_their_closed_forms():
-    """RollingWheel: (J + m·r²)·w' = 10 − 10·(r·w/5)² from 0.1 s on, so w = 5·tanh(t − 0.1),
-    phi = 5·ln cosh(t − 0.1) (the equilibrium 5 m/s), the mass at v = r·w. GenerationOfFMUs:
+    """RollingWheel: (J + m·r²)·w' = 10 − 10·(r·w/5)² from 0.1 s on, so
+    w = 5·tanh(t − 0.1), phi = 5·ln cosh(t − 0.1) (the equilibrium 5 m/s), the mass at
+    v = r·w. GenerationOfFMUs:
     the blocks connected by signals move as the inertias connected by flanges would
     (``generation_of_fmus_motion``)."""
     t = np.linspace(0.0, 5.0, 1001)

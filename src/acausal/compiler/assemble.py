@@ -120,12 +120,11 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
                            lambda: _massive_nodes(flat, ws, len(nodes)))
         ws.one_d = tree.one_d
         run_physics(ws, flat.components)
-    for port in flat.root_outputs:
-        source = flat.signal_source.get(port)
+    for port, source in flat.root_outputs:
         if source is None:
-            raise StructureError(f"output '{port.path}' of model '{model.name or type(model).__name__}' "
-                                 f"is not connected inside it; connect it to the output of "
-                                 f"one of its components")
+            raise StructureError(f"output '{port.path}' of model "
+                                 f"'{model.name or type(model).__name__}' is not connected "
+                                 f"inside it; connect it to the output of one of its components")
         ws.outputs.append((RootSignal(port), ws.signal(source)))
     return _assemble(model, ws, tree, params, fixed)
 

@@ -19,7 +19,7 @@ class Flat:
     groups: list[list[PhysicalPort]]           # physical ports joined by connections
     signal_source: dict[RealInput, RealOutput]  # where each input gets its value
     root_inputs: list[RealInput]
-    root_outputs: list[RealOutput]
+    root_outputs: list[tuple[RealOutput, RealOutput | RealInput | None]]   # and their driver
 
 
 @dataclass(frozen=True)
@@ -133,7 +133,8 @@ def flatten(root: Model) -> Flat:
             source[p] = outs[0]
     own = [p for p in root.ports.values() if not isinstance(p, PhysicalPort)]
     return Flat(root, comps, groups, source, [p for p in own if isinstance(p, RealInput)],
-                [p for p in own if isinstance(p, RealOutput)])
+                [(p, source.get(p, p if _drives(p, root) else None)) for p in own
+                 if isinstance(p, RealOutput)])
 
 
 def _drives(p: Port, root: Model) -> bool:

@@ -10,7 +10,7 @@ gets their angles (``Spring``) or angles and speeds (``SpringDamper``) and retur
 torques on both. Composed, the example must give what the same parts connected by flanges
 give (MSL's check of a tool's FMU export and import):
 
-    sine1 ─ directInertia ═(phi, w, a → ← tau)═ inverseInertia     = inertia 1.1 + 2.2 kg.m²
+    sine1 ─ directInertia ═(phi, w, a → ← tau)═ inverseInertia   (one inertia 1.1 + 2.2)
     sine1 ─ torque2 ─ inertia2a ─ torqueToAngle2a ═ springDamper ═ torqueToAngle2b ─ inertia2b
     sine1 ─ force3 ─ inertia3a ─ torqueToAngle3a ═ spring ═ torqueToAngle3b ─ inertia3b
 

@@ -2,7 +2,7 @@
 translational twin of ``rotational_fmus`` (see there): masses and force laws behind a pure
 signal interface, to be exported as FMUs and connected again, signal to signal.
 
-    sine1 ─ directMass ═(s, v, a → ← f)═ inverseMass                 = mass 1.1 + 2.2 kg
+    sine1 ─ directMass ═(s, v, a → ← f)═ inverseMass                (one mass 1.1 + 2.2)
     sine1 ─ force2 ─ mass2a ─ forceToPosition2a ═ springDamper ═ forceToPosition2b ─ mass2b
     sine1 ─ force3 ─ mass3a ─ forceToPosition3a ═ spring ═ forceToPosition3b ─ mass3b
 
