@@ -65,13 +65,19 @@ def _scalars(v: ca.SX) -> list[ca.SX]:
 
 
 def recorded_variables(ws, tree):
-    """Names, expressions and units of every potential, velocity, state and signal."""
+    """Names, expressions and units of every potential, velocity, state and signal; and
+    the rows that are kept only where they can be computed (the velocities of ports and
+    internal points, the variables components record): a flange moved by a model input
+    with no speed given has none."""
     names, exprs, units = [], [], []
+    optional = set()
     seen = set()
 
-    def rec(name, ex, unit=""):
+    def rec(name, ex, unit="", may_drop=False):
         if name not in seen:
             seen.add(name)
+            if may_drop:
+                optional.add(len(names))
             names.append(name)
             exprs.append(ex)
             units.append(unit)
@@ -84,10 +90,11 @@ def recorded_variables(ws, tree):
                 rec(p.path, n.pos, dom.potential_units[0])
                 base = p.owner.path
                 if p.velocity:
-                    rec(f"{base}.{p.velocity}" if base else p.velocity, n.vel, dom.velocity_units[0])
+                    rec(f"{base}.{p.velocity}" if base else p.velocity, n.vel,
+                        dom.velocity_units[0], True)
                 if p.acceleration:
                     rec(f"{base}.{p.acceleration}" if base else p.acceleration, n.acc,
-                        dom.velocity_units[0] + "2")
+                        dom.velocity_units[0] + "2", True)
                 continue
             if pos is None:
                 pos, vel = _scalars(n.pos), _scalars(n.vel)
@@ -95,13 +102,13 @@ def recorded_variables(ws, tree):
                 rec(f"{p.path}.{pot}", pos[j], dom.potential_units[j])
             for j, name in enumerate(dom.velocity_names):
                 if name:
-                    rec(f"{p.path}.{name}", vel[j], dom.velocity_units[j])
+                    rec(f"{p.path}.{name}", vel[j], dom.velocity_units[j], True)
     for info in ws.states:
         rec(info.sym.name(), info.sym, info.unit)
     for a in ws.algebraics:
         rec(a.sym.name(), a.sym, a.unit)
     for name, ex, unit, _ in ws.variables:
-        rec(name, ex, unit)
+        rec(name, ex, unit, True)
     for c, s in ws.inputs:
         rec(c.path, s, c.unit)
     for c, e in ws.outputs:
@@ -113,4 +120,4 @@ def recorded_variables(ws, tree):
         if o in ws.signal_sym:
             rec(i.path, ws.signal_sym[o], unit_of.get(id(o.owner), ""))
     return names, (_vc(*[e if e.size2() == 1 else ca.vec(e) for e in exprs]) if exprs
-                   else ca.SX(0, 1)), units
+                   else ca.SX(0, 1)), units, optional

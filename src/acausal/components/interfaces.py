@@ -32,7 +32,8 @@ __all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS",
            "PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
            "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law", "inverse_law",
            "Regularization", "regularized_sign", "regularization_region", "speed_band_region",
-           "Position", "Speed", "Accelerate", "Move", "ConstantSpeed", "drive_flanges",
+           "Position", "Speed", "Accelerate", "Move", "ConstantSpeed", "FlowToPotentialAdaptor",
+           "PotentialToFlowAdaptor", "drive_flanges",
            "PartialDrivenJoint", "unit_direction"]
 
 
@@ -483,12 +484,14 @@ class Accelerate(_PrescribedMotion):
 
 
 class Move(PartialElementaryOneFlangeAndSupport2):
-    """flange − support = u[1]; u[2], u[3] (its speed and acceleration) are recorded as
-    ``v_u``/``w_u`` and ``a_u`` next to the actual motion (see the domain's Move)."""
+    """flange − support = u[1], its speed u[2] and its acceleration u[3] as given (MSL's
+    position(u, time) with its derivative functions: ``StructureBuilder.with_rates``);
+    u[2], u[3] are also recorded as ``v_u``/``w_u`` and ``a_u``."""
     partial = True
 
     def structure(self, s):
-        self._prescribe(s, s.input(self.u[1]))
+        self._prescribe(s, s.with_rates(self.axis.s, s.input(self.u[1]), s.input(self.u[2]),
+                                        s.input(self.u[3])))
 
     def physics(self, e):
         x = self.axis
@@ -510,3 +513,50 @@ class ConstantSpeed(_PrescribedMotion):
 
     def physics(self, e):
         self._record_relative(e, v=self._fixed())
+
+
+# =========================================================================================
+# Signal adaptors of a flange (MSL's Blocks.Interfaces.Adaptors, for FMUs)
+# =========================================================================================
+class FlowToPotentialAdaptor(Component):
+    """MSL's FlowToPotentialAdaptor on a 1-D ``flange``: the input flow acts on the flange
+    (flange.f = input, flange.tau for rotation), the outputs are the flange's position and,
+    where the domain's connectors exist, its speed and acceleration (0 without the speed
+    connector, as MSL's der(0)). ``connectors``: the domain's names of (position, speed,
+    acceleration, flow)."""
+    partial = True
+    connectors: tuple[str, str, str, str]
+
+    def physics(self, e):
+        pos, speed, acc, flow = self.connectors
+        ports = self.ports
+        e.flow(self.flange, e.input(ports[flow]))
+        e.output(ports[pos], e.pos(self.flange))
+        if speed in ports:
+            e.output(ports[speed], e.vel(self.flange))
+        if acc in ports:
+            e.output(ports[acc], e.acc(self.flange) if speed in ports else 0.0)
+
+
+class PotentialToFlowAdaptor(Component):
+    """MSL's PotentialToFlowAdaptor on a 1-D ``flange``: the flange is moved by the input
+    position, with the input speed and acceleration (where the domain's connectors exist)
+    as its derivatives, not derived from the position (``StructureBuilder.with_rates``);
+    the output is the flow needed to move it, −flange.f (−flange.tau). Without the speed
+    connector the rates are those of the position signal (derived where a mass needs
+    them; a model input has none: then only force elements without mass may be attached,
+    as in MSL). ``connectors``: the domain's names of (position, speed, acceleration,
+    flow)."""
+    partial = True
+    connectors: tuple[str, str, str, str]
+
+    def structure(self, s):
+        pos, speed, acc, _ = self.connectors
+        ports = self.ports
+        rates = [s.input(ports[k]) for k in (speed, acc) if k in ports]
+        s.linear({self.flange: 1.0}, s.with_rates(pos, s.input(ports[pos]), *rates),
+                 f"{self.path}: motion from the signals")
+
+    def physics(self, e):
+        e.output(self.ports[self.connectors[3]], -e.cut_flow(self.flange))
+

@@ -59,7 +59,7 @@ __all__ = [
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
     "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2", "Gearbox",
-    "InitializeFlange",
+    "InitializeFlange", "TorqueToAngleAdaptor", "AngleToTorqueAdaptor",
     # sources
     "Torque", "Torque2", "ConstantTorque", "SignTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "InverseSpeedDependentTorque", "TorqueStep",
@@ -772,15 +772,11 @@ class Accelerate(PartialElementaryOneFlangeAndSupport2, interfaces.Accelerate):
 class Move(PartialElementaryOneFlangeAndSupport2, interfaces.Move):
     """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
     (angle [rad]), ``u[2]`` (angular velocity [rad/s]), ``u[3]`` (angular acceleration
-    [rad/s²]), numbered from 1 as in MSL: ``connect(src.y, move.u[1])``.
-
-    Difference from MSL (same as translational.Move): the compiler cannot yet be told that
-    u[2], u[3] are the derivatives of u[1]; the motion is phi = u[1], with its velocity and
-    acceleration taken from u[1] by algorithmic differentiation (u[1] must be a function of
-    time, as for Position(exact=True)). For consistent signals (MSL's requirement) this is
-    the same motion; MSL's deliberately inconsistent use (u[2] = u[3] = 0) is not
-    reproduced. u[2], u[3] must be connected; they are recorded as ``w_u``, ``a_u`` next to
-    the actual ``w``, ``a`` so that the two can be compared.
+    [rad/s²]), numbered from 1 as in MSL: ``connect(src.y, move.u[1])``. As in MSL, u[2]
+    and u[3] are taken as the derivatives of u[1], not derived from it: consistent signals
+    are the user's to give (MSL's deliberately inconsistent u[2] = u[3] = 0 moves the flange
+    without the reactions of its speed and acceleration). Records u[2], u[3] as ``w_u``,
+    ``a_u`` (equal to ``w``, ``a``).
     """
     u = VectorPort(RealInput, 3, tuple(f"{what} of flange with respect to support as input "
                                        f"signal" for what in
@@ -828,6 +824,46 @@ class InitializeFlange(Component):
                 e.initial(value - e.input(getattr(self, port)), what)
         e.variable("phi_flange", phi, "rad", "flange angle")
         e.variable("w_flange", w, "rad/s", "= der(phi_flange)")
+
+
+class TorqueToAngleAdaptor(interfaces.FlowToPotentialAdaptor):
+    """Signal adaptor of a flange with the angle, speed and acceleration as outputs and the
+    torque as input (MSL Components.TorqueToAngleAdaptor, for FMUs): flange.tau = tau
+    [N.m]; phi = flange.phi [rad], w = der(phi) [rad/s] (option ``use_w``), a = der(w)
+    [rad/s²] (option ``use_a``; 0 without ``use_w``, as MSL's der(0)). The block with an
+    inertia behind it is what an FMU of a flange "with states" exposes (see
+    models.rotational_fmus.DirectInertia)."""
+    options = {"use_w": True, "use_a": True}
+    connectors = ("phi", "w", "a", "tau")
+    flange = Flange("flange", required=True)
+    phi = RealOutput("flange moves with angle phi due to torque tau [rad]")
+    w = ConditionalPort(RealOutput("flange moves with speed w due to torque tau [rad/s]"),
+                        "use_w")
+    a = ConditionalPort(RealOutput("flange moves with angular acceleration a due to torque "
+                                   "tau [rad/s2]"), "use_a")
+    tau = RealInput("torque to drive the flange [N.m]")
+
+
+class AngleToTorqueAdaptor(interfaces.PotentialToFlowAdaptor):
+    """Signal adaptor of a flange with the torque as output and the angle, speed and
+    acceleration as inputs (MSL Components.AngleToTorqueAdaptor, for FMUs): the flange
+    moves with the angle phi [rad], its speed w [rad/s] (option ``use_w``) and
+    acceleration a [rad/s²] (option ``use_a``) as given (w = der(phi), a = der(w) are the
+    user's to keep, as in MSL); tau = −flange.tau [N.m], the torque needed to move it so.
+    As in MSL the input w exists if use_w or use_a (``use_a`` implies ``use_w``)."""
+    options = {"use_w": True, "use_a": True}
+    connectors = ("phi", "w", "a", "tau")
+    flange = Flange("flange", required=True)
+    phi = RealInput("angle to drive the flange [rad]")
+    w = ConditionalPort(RealInput("speed to drive the flange (w = der(phi) required) "
+                                  "[rad/s]"), "use_w")
+    a = ConditionalPort(RealInput("angular acceleration to drive the flange (a = der(w) "
+                                  "required) [rad/s2]"), "use_a")
+    tau = RealOutput("torque needed to drive the flange according to phi, w, a [N.m]")
+
+    def __init__(self, name: str | None = None, **params):
+        params["use_w"] = params.get("use_w", True) or params.get("use_a", True)
+        super().__init__(name, **params)
 
 
 # =========================================================================================

@@ -58,7 +58,8 @@ __all__ = [
     # components
     "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "SupportFriction", "Brake",
     "MassWithStopAndFriction", "ElastoGap", "HardStop", "contact_force", "RollingResistance",
-    "Regularization", "IdealRollingWheel", "Vehicle",
+    "Regularization", "IdealRollingWheel", "Vehicle", "GeneralForceToPositionAdaptor",
+    "GeneralPositionToForceAdaptor",
     # sources
     "Force", "Force2", "ConstantForce", "ForceStep", "SignForce", "LinearSpeedDependentForce",
     "QuadraticSpeedDependentForce", "InverseSpeedDependentForce", "EddyCurrentForce",
@@ -709,6 +710,52 @@ class Vehicle(Component):
         return filtered
 
 
+class GeneralForceToPositionAdaptor(interfaces.FlowToPotentialAdaptor):
+    """Signal adaptor of a flange with the position, speed and acceleration as outputs and
+    the force as input (MSL Components.GeneralForceToPositionAdaptor, for FMUs): flange.f
+    = f [N]; p = flange.s [m], pder = der(p) [m/s] (option ``use_pder``), pder2 = der(pder)
+    [m/s²] (option ``use_pder2``, only with ``use_pder`` as in MSL). MSL's inputs of the
+    force's derivatives are final off there and not offered. The block with a mass behind
+    it is what an FMU of a flange "with states" exposes (see
+    models.translational_fmus.DirectMass)."""
+    options = {"use_pder": True, "use_pder2": True}
+    connectors = ("p", "pder", "pder2", "f")
+    flange = Flange("flange", required=True)
+    p = RealOutput("output for potential: position s [m]")
+    pder = ConditionalPort(RealOutput("optional output for der(potential): velocity v "
+                                      "[m/s]"), "use_pder")
+    pder2 = ConditionalPort(RealOutput("optional output for der2(potential): acceleration "
+                                       "a [m/s2]"), "use_pder2")
+    f = RealInput("input for flow: force f [N]")
+
+    def __init__(self, name: str | None = None, **params):
+        params["use_pder2"] = params.get("use_pder", True) and params.get("use_pder2", True)
+        super().__init__(name, **params)
+
+
+class GeneralPositionToForceAdaptor(interfaces.PotentialToFlowAdaptor):
+    """Signal adaptor of a flange with the force as output and the position, speed and
+    acceleration as inputs (MSL Components.GeneralPositionToForceAdaptor, for FMUs): the
+    flange moves with the position p [m], its speed pder [m/s] (option ``use_pder``) and
+    acceleration pder2 [m/s²] (option ``use_pder2``, only with ``use_pder`` as in MSL) as
+    given (the user's to keep consistent, as in MSL); f = −flange.f [N], the force needed
+    to move it so. MSL's outputs of the force's derivatives are final off there and not
+    offered."""
+    options = {"use_pder": True, "use_pder2": True}
+    connectors = ("p", "pder", "pder2", "f")
+    flange = Flange("flange", required=True)
+    p = RealInput("input for potential: position s [m]")
+    pder = ConditionalPort(RealInput("optional input for der(potential): velocity v [m/s]"),
+                           "use_pder")
+    pder2 = ConditionalPort(RealInput("optional input for der2(potential): acceleration a "
+                                      "[m/s2]"), "use_pder2")
+    f = RealOutput("output for flow: force f [N] needed to move the flange so")
+
+    def __init__(self, name: str | None = None, **params):
+        params["use_pder2"] = params.get("use_pder", True) and params.get("use_pder2", True)
+        super().__init__(name, **params)
+
+
 # =========================================================================================
 # Sources
 # =========================================================================================
@@ -885,15 +932,10 @@ class Accelerate(PartialElementaryOneFlangeAndSupport2, interfaces.Accelerate):
 class Move(PartialElementaryOneFlangeAndSupport2, interfaces.Move):
     """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
     (position [m]), ``u[2]`` (velocity [m/s]), ``u[3]`` (acceleration [m/s²]), numbered from 1
-    as in MSL: ``connect(src.y, move.u[1])``.
-
-    Difference from MSL: the compiler cannot yet be told that u[2], u[3] are the derivatives
-    of u[1]; the motion is s = u[1] with its velocity and acceleration taken from u[1] by
-    algorithmic differentiation (u[1] must be a function of time, as for
-    Position(exact=True)). For consistent signals (MSL's requirement) this is the same
-    motion; MSL's deliberate inconsistent use (u[2] = u[3] = 0 to get position-dependent
-    forces only) is not reproduced. u[2], u[3] must be connected; they are recorded as
-    ``v_u``, ``a_u`` next to the actual ``v``, ``a`` so the two can be compared.
+    as in MSL: ``connect(src.y, move.u[1])``. As in MSL, u[2] and u[3] are taken as the
+    derivatives of u[1], not derived from it: consistent signals are the user's to give
+    (MSL's deliberately inconsistent u[2] = u[3] = 0 gives position-dependent forces only).
+    Records u[2], u[3] as ``v_u``, ``a_u`` (equal to ``v``, ``a``).
     """
     u = VectorPort(RealInput, 3, tuple(f"{what} of flange as input signal" for what in
                                        ("position", "velocity", "acceleration")))
