@@ -4,6 +4,7 @@ import pytest
 
 import acausal
 from acausal import models
+from acausal.models import rotational_fmus, translational_fmus
 from acausal.errors import ParameterError
 
 CRANE = ["rail.s", "hinge.phi"]
@@ -42,6 +43,23 @@ CASES = {
     "resistor_example": (models.ResistorExample, [], [], []),
     "heating_rectifier": (models.HeatingRectifier, [], ["Capacitor1.v", "HeatCapacitor1.T"],
                           []),
+    "direct_inertia": (rotational_fmus.DirectInertia, ["inertia.phi"], [], ["tauDrive", "tau"]),
+    "inverse_inertia": (rotational_fmus.InverseInertia, [], [], ["phi", "w", "a"]),
+    "rotational_spring_block": (rotational_fmus.Spring, [], [], ["phi1", "phi2"]),
+    "rotational_spring_damper_block": (rotational_fmus.SpringDamper, [], [],
+                                       ["phi1", "w1", "phi2", "w2"]),
+    "direct_mass": (translational_fmus.DirectMass, ["mass.s"], [], ["fDrive", "f"]),
+    "inverse_mass": (translational_fmus.InverseMass, [], [], ["s", "v", "a"]),
+    "translational_spring_block": (translational_fmus.Spring, [], [], ["s1", "s2"]),
+    "translational_spring_damper_block": (translational_fmus.SpringDamper, [], [],
+                                          ["s1", "v1", "s2", "v2"]),
+    "rotational_generation_of_fmus": (
+        models.RotationalGenerationOfFMUs,
+        ["directInertia.inertia.phi", "inertia2a.phi", "inertia2b.phi", "inertia3a.phi",
+         "inertia3b.phi"], [], []),
+    "translational_generation_of_fmus": (
+        models.TranslationalGenerationOfFMUs,
+        ["directMass.mass.s", "mass2a.s", "mass2b.s", "mass3a.s", "mass3b.s"], [], []),
 }
 
 

@@ -70,7 +70,8 @@ def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -
     it again in smooth form when given the exact one (``recompiled``). ``index_reduction``:
     loops of capacitors and voltage sources, cut sets of inductors and current sources
     (higher-index networks, refused by default) are reduced by demoting one state each
-    (``acausal.compiler.networks``)."""
+    (``acausal.compiler.networks``), and so are block equations that constrain states
+    (an inverse model's InverseBlockConstraints; ``acausal.compiler.index``)."""
     return CompiledModel.wrap(compiler.compile(model, smooth, index_reduction))
 
 

@@ -45,10 +45,11 @@ def _right_limits(res, times, tol=1e-9) -> np.ndarray:
 
 
 def _instants(start, period, t_end, t0=0.0) -> np.ndarray:
-    """The sample instants in (t0, t_end)."""
+    """The sample instants in (t0, t_end] (one at t_end is processed there, as a Modelica
+    tool ends a simulation)."""
     k = np.arange(0, int((t_end - start) / period) + 2)
     tk = start + period * k
-    return tk[(tk > t0 + 1e-12) & (tk < t_end - 1e-12)]
+    return tk[(tk > t0 + 1e-12) & (tk < t_end + 1e-12)]
 
 
 def _held(t, tk, values, before):
@@ -242,7 +243,7 @@ def test_state_space_defaults_are_msl_s():
 def _pulse_edges(start, period, t_end):
     k = np.arange(0, int((t_end - start) / period) + 2)
     tk = start + period * k
-    return tk[(tk > 1e-12) & (tk < t_end - 1e-12)]
+    return tk[(tk > 1e-12) & (tk < t_end + 1e-12)]       # (an edge at t_end too)
 
 
 @pytest.mark.parametrize("start", [0.0, 0.1])

@@ -257,6 +257,25 @@ def test_logical_network1_matches_the_msl_reference(reference_result):
         np.testing.assert_array_equal(res[name][at], ref[name], err_msg=name)
 
 
+def test_boolean_expression_is_the_value_given():
+    """MSL's default false; y=True is true: a switch selects u1 (a sine) by it."""
+    m = Model("boolean_expression")
+    m.off, m.on = lg.BooleanExpression(), lg.BooleanExpression(y=True)
+    m.a, m.b = sg.Sine(amplitude=1.5), sg.Constant(k=-2.0)
+    m.switch = lg.Switch()
+    for a, b in ((m.a.y, m.switch.u1), (m.on.y, m.switch.u2), (m.b.y, m.switch.u3)):
+        m.connect(a, b)
+    res = acausal.compile(m).simulate(1.0, **SIM)
+    assert np.all(res["off.y"] == 0) and np.all(res["on.y"] == 1)
+    np.testing.assert_allclose(res["switch.y"], 1.5 * np.sin(2 * np.pi * res.t), atol=1e-12)
+
+
+@pytest.mark.parametrize("y", [1, "pulse.y and step.y", None])
+def test_boolean_expression_takes_true_or_false(y):
+    with pytest.raises(ParameterError, match="BooleanExpression: y must be True or False.*And"):
+        lg.BooleanExpression(y=y)
+
+
 def test_a_boolean_signal_cannot_drive_a_real_input():
     m = Model("mixed")
     m.step, m.gain, m.sine, m.no = lg.BooleanStep(), sg.Gain(), sg.Sine(), lg.Not()
@@ -286,8 +305,7 @@ def test_zero_order_hold_of_a_ramp_is_an_exact_staircase():
     np.testing.assert_allclose(res["zoh.y"][at], ramp(tk), rtol=0, atol=1e-14)
     np.testing.assert_allclose(res["zoh.y"][at[1:] - 1], ramp(tk[:-1]), rtol=0, atol=1e-14)
     np.testing.assert_allclose(res["zoh.ySample"], res["zoh.y"], rtol=0, atol=0)
-    ts = 0.3 * np.floor(t / 0.3 + 1e-9)
-    ts[-1] = 2.7                                    # an instant at the final time: not taken
+    ts = 0.3 * np.floor(t / 0.3 + 1e-9)            # the instant at the final time included
     np.testing.assert_allclose(res["smp.y"][on_grid], ramp(ts), rtol=0, atol=1e-14)
     assert res["smp.y"][0] == 0.5                      # sampled at the start (initial())
     assert np.all(res["zoh.sampleTrigger"] == 0)
@@ -361,7 +379,8 @@ def test_unit_delay_makes_a_difference_equation():
 
 # ---- smooth form -------------------------------------------------------------------------------
 @pytest.mark.parametrize("make", [lambda: lg.GreaterThreshold(), lambda: dc.Sampler(
-    samplePeriod=0.1), lambda: lg.Hysteresis(uLow=0.0, uHigh=1.0)])
+    samplePeriod=0.1), lambda: lg.Hysteresis(uLow=0.0, uHigh=1.0), sg.Harmonic,
+    sg.TotalHarmonicDistortion])
 def test_blocks_with_discrete_outputs_refuse_the_smooth_form(make):
     m = Model("no_smooth")
     m.src, m.blk = sg.Sine(), make()

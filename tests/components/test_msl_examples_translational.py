@@ -1,7 +1,8 @@
 """MSL's Translational.Examples InitialConditions, WhyArrows, Accelerate, Sensors, Oscillator,
-ElastoGap and Vehicle, built component by component with MSL's names, parameters and start
-values, against MSL's published reference results (when the collection is at hand) and, where the
-example has one, a closed form.
+ElastoGap, Vehicle, Damper and GenerationOfFMUs (its blocks connected by signals), built
+component by component with MSL's names, parameters and start values, against MSL's
+published reference results (when the collection is at hand) and, where the example has
+one, a closed form.
 
 Every compared signal is sampled at the reference's times (the value after an event, as the
 reference keeps it) and must lie within ``bound`` times its scale (its range, or its
@@ -9,7 +10,10 @@ magnitude, at least 1, where it is constant) of the reference. The references we
 without a tolerance annotation, i.e. by DASSL at tolerance 1e-6, and carry that solver's
 error; ours run at rtol 1e-10. Largest relative errors found: InitialConditions 1.7e-5 (m1.v),
 WhyArrows 3.2e-6, Accelerate 1.4e-11, Sensors 1.9e-5, Oscillator 4.8e-4 (mass1.v, see
-``oscillator``), ElastoGap 5.8e-6, Vehicle 2.7e-6 (vehicle.v).
+``oscillator``), ElastoGap 5.8e-6, Vehicle 2.7e-6 (vehicle.v), Damper 2.7e-6,
+GenerationOfFMUs 9.3e-4 (mass3a.v: like Oscillator's, the undamped spring's oscillation
+carries the reference's integration error, 4.5e-4 m/s against the exact motion, which ours
+meets to 1e-8: ``test_damper_and_generation_of_fmus_are_their_closed_forms``).
 """
 from __future__ import annotations
 
@@ -20,7 +24,9 @@ import acausal
 from acausal.components import translational as tr
 from acausal.components import rotational as rot
 from acausal.components.signals import CombiTimeTable, Constant, Gain, Sine
-from msl_examples import at_reference_times, connect_all, simulate_like_reference
+from acausal.models.translational_fmus import GenerationOfFMUs
+from msl_examples import (at_reference_times, connect_all, generation_of_fmus_motion,
+                          simulate_like_reference)
 
 EXAMPLES = "Modelica.Mechanics.Translational.Examples"
 TOL = dict(rtol=1e-10, atol=1e-12)
@@ -157,6 +163,32 @@ def elasto_gap():
     return m, 5.0, {"mass1.s": 2.0, "mass1.v": 0.0, "mass2.s": 2.0, "mass2.v": 0.0}
 
 
+def damper():
+    """Three masses (1 kg, L = 1 m) started at s = 3 m, v = 10 m/s towards a fixed flange
+    at 4.5 m: through a damper (25 N.s/m), a damper beside a spring (1 N/m, unstretched
+    1 m), and a spring-damper of the two."""
+    m = acausal.Model("Damper")
+    for k in "123":
+        setattr(m, f"mass{k}", tr.Mass(L=1, m=1))
+        setattr(m, f"fixed{k}", tr.Fixed(s0=4.5))
+    m.damper1, m.damper2 = tr.Damper(d=25), tr.Damper(d=25)
+    m.spring2 = tr.Spring(s_rel0=1, c=1)
+    m.springDamper3 = tr.SpringDamper(s_rel0=1, d=25, c=1)
+    connect_all(m, [(m.mass1.flange_b, m.damper1.flange_a),
+                    (m.mass2.flange_b, m.damper2.flange_a),
+                    (m.damper2.flange_b, m.spring2.flange_b),
+                    (m.damper2.flange_a, m.spring2.flange_a),
+                    (m.mass3.flange_b, m.springDamper3.flange_a),
+                    (m.damper1.flange_b, m.fixed1.flange), (m.damper2.flange_b, m.fixed2.flange),
+                    (m.springDamper3.flange_b, m.fixed3.flange)])
+    return m, 1.0, {f"mass{k}.{v}": x for k in "123" for v, x in (("s", 3.0), ("v", 10.0))}
+
+
+def generation_of_fmus():
+    """MSL's example as acausal.models.translational_fmus builds it (see there)."""
+    return GenerationOfFMUs(), 1.0, GenerationOfFMUs.START
+
+
 #: Vehicle's table: time [s], multiple of the nominal torque, inclination
 VEHICLE_TABLE = [[0, 0, 0], [5, 0, 0], [5, 5.6, 0], [10.8, 5.6, 0], [10.8, 1, 0], [20, 1, 0],
                  [20, 2.8, 0.05], [25, 2.8, 0.05], [25, 1, 0], [50, 1, 0], [50, -5, 0],
@@ -213,6 +245,8 @@ def max_relative_error(ours: np.ndarray, ref: np.ndarray) -> float:
     (oscillator, "Oscillator", 1e-3),
     (elasto_gap, "ElastoGap", 1e-4),
     (vehicle, "Vehicle", 1e-4),
+    (damper, "Damper", 1e-4),
+    (generation_of_fmus, "GenerationOfFMUs", 1e-3),
 ], ids=lambda v: v if isinstance(v, str) else "")
 def test_example_matches_the_msl_reference(build, name, bound, reference_result):
     res, ref = simulate_like_reference(build, f"{EXAMPLES}.{name}", reference_result, **TOL)
@@ -259,3 +293,29 @@ def test_why_arrows_rods_and_hanging_masses():
     for mass in ("mass1", "inertia2"):
         expected = -0.9 + 0.9 * np.cos(np.sqrt(11.0) * t)
         assert np.max(np.abs(res[f"{mass}.s"] - expected)) < 1e-8, mass
+
+
+def test_damper_and_generation_of_fmus_are_their_closed_forms():
+    """Damper: mass1 on the damper alone, v = 10·e^(−25t), s = 3 + 0.4·(1 − e^(−25t));
+    mass2 (damper beside a spring) and mass3 (spring-damper) alike, x = s − 3 with
+    x'' + 25x' + x = 0, x(0) = 0, x'(0) = 10. GenerationOfFMUs: the blocks connected by
+    signals move as the bodies connected by flanges would (``generation_of_fmus_motion``);
+    the reference's mass3a.v is 4.5e-4 m/s off that, ours 1e-8."""
+    t = np.linspace(0.0, 1.0, 1001)
+    model, stop, start = damper()
+    res = acausal.compile(model).simulate(stop, t=t, x0=start, **TOL)
+    decay = np.exp(-25 * t)
+    r1, r2 = (-25 + np.sqrt(621)) / 2, (-25 - np.sqrt(621)) / 2
+    x = 10 / (r1 - r2) * (np.exp(r1 * t) - np.exp(r2 * t))
+    expected = {"mass1.s": 3 + 0.4 * (1 - decay), "mass1.v": 10 * decay,
+                "damper1.s_rel": 1 - 0.4 * (1 - decay), "damper1.v_rel": -10 * decay,
+                "mass2.s": 3 + x, "mass3.s": 3 + x, "damper2.s_rel": 1 - x,
+                "springDamper3.s_rel": 1 - x, "spring2.f": -x}
+    for name, values in expected.items():
+        assert np.max(np.abs(res[name] - values)) < 1e-8, name
+    model, stop, start = generation_of_fmus()
+    res = acausal.compile(model).simulate(stop, t=t, x0=start, **TOL)
+    for part, (s, v) in generation_of_fmus_motion(t).items():
+        name = "directMass.mass" if part == "direct" else f"mass{part}"
+        assert np.max(np.abs(res[f"{name}.s"] - s)) < 1e-9, name
+        assert np.max(np.abs(res[f"{name}.v"] - v)) < 1e-7, name

@@ -561,6 +561,32 @@ def test_move_follows_u1_with_rates_u2_u3():
     close(res["j2.phi"], phi2, what="j2.phi")
 
 
+def test_angle_and_torque_adaptors_follow_msl():
+    """AngleToTorqueAdaptor(use_w=False) keeps its input w (MSL: w exists if use_w or
+    use_a) and moves an inertia by model inputs: tau = J·a, the input acceleration (here
+    inconsistent with phi on purpose: it is taken as given). TorqueToAngleAdaptor on an
+    inertia: flange.tau = tau loads it (J·der(w) = −tau), outputs phi, w and, without
+    use_w, a = 0 (MSL's der(0))."""
+    J = 0.7
+    m = acausal.Model("adaptors")
+    m.phi, m.w, m.a, m.load = acausal.Input(), acausal.Input(), acausal.Input(), acausal.Input()
+    m.moved, m.j1 = rot.AngleToTorqueAdaptor(use_w=False), rot.Inertia(J=J)
+    m.driven, m.j2 = rot.TorqueToAngleAdaptor(use_w=False), rot.Inertia(J=J)
+    connect_all(m, (m.phi.y, m.moved.phi), (m.w.y, m.moved.w), (m.a.y, m.moved.a),
+                (m.moved.flange, m.j1.flange_a), (m.load.y, m.driven.tau),
+                (m.driven.flange, m.j2.flange_b))
+    assert sorted(m.moved.ports) == ["a", "flange", "phi", "tau", "w"]
+    assert sorted(m.driven.ports) == ["a", "flange", "phi", "tau"]
+    t = np.linspace(0.0, 1.0, 101)
+    res = acausal.compile(m).simulate(1.0, t=t, inputs={
+        "phi": np.sin, "w": np.cos, "a": lambda x: 0 * x + 2.0, "load": lambda x: 0 * x + 1.4})
+    close(res["moved.tau"], J * 2.0, what="tau = J·a as given")
+    close(res["j1.phi"], np.sin(t), what="angle as given")
+    close(res["j1.w"], np.cos(t), what="speed as given")
+    close(res["driven.phi"], -t ** 2, what="J·der(w) = −tau: phi = −(1.4/0.7)·t²/2")
+    close(res["driven.a"], 0.0, what="a without use_w")
+
+
 # =========================================================================================
 # Torque sources: closed forms on a single inertia
 # =========================================================================================

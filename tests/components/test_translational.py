@@ -494,6 +494,71 @@ def test_move_with_consistent_signals():
     close(res["move.flange.f"], f_spring - m_ * ap, 1e-5)
 
 
+def test_move_takes_u2_u3_as_given_not_derived():
+    """MSL's Move takes u[2], u[3] as the speed and acceleration of u[1], not derived from
+    it: with u[2] = u[3] = 0 (MSL's use for position-dependent forces only) the mass follows
+    u[1] = A sin(wt), its speed and acceleration read 0, and the source's force is the
+    spring's alone (no m·a), while the free mass behind the spring feels the position."""
+    A, w, m_, m2, c = 0.3, 2.0, 1.5, 0.5, 12.0
+    m = acausal.Model("move0")
+    m.p = TimeSignal(fn=lambda t: A * ca.sin(w * t))
+    m.zero = TimeSignal(fn=lambda t: 0 * t)
+    m.move, m.mass, m.spring, m.mass2 = tr.Move(), tr.Mass(m=m_), tr.Spring(c=c, s_rel0=0.5), \
+        tr.Mass(m=m2)
+    for a, b in [(m.p.y, m.move.u[1]), (m.zero.y, m.move.u[2]), (m.zero.y, m.move.u[3]),
+                 (m.move.flange, m.mass.flange_a), (m.mass.flange_b, m.spring.flange_a),
+                 (m.spring.flange_b, m.mass2.flange_a)]:
+        m.connect(a, b)
+    res = acausal.compile(m).simulate(T_END, t=GRID, x0={"mass2.s": 0.5}, rtol=1e-10,
+                                      atol=1e-12)
+    ref = solve_ivp(lambda t, y: [y[1], -c * (y[0] - A * np.sin(w * t) - 0.5) / m2],
+                    (0, T_END), [0.5, 0.0], t_eval=GRID, rtol=1e-11, atol=1e-12)
+    close(res["mass2.s"], ref.y[0])
+    close(res["mass.s"], A * np.sin(w * GRID))
+    close(res["mass.v"], 0.0)
+    close(res["mass.a"], 0.0)
+    close(res["move.flange.f"], c * (ref.y[0] - A * np.sin(w * GRID) - 0.5))
+
+
+@pytest.mark.parametrize("use_pder, use_pder2", [(True, True), (True, False), (False, False)])
+def test_position_to_force_adaptor_moved_by_model_inputs(use_pder, use_pder2):
+    """GeneralPositionToForceAdaptor driven by model inputs (no rates derivable): with
+    the speed and acceleration given, a mass behind it needs f = m·pder2 + the spring's
+    pull; with the position only, a spring alone to a wall (no mass: no rate needed) needs
+    f = c·(p − wall − s_rel0) pulling back. GeneralForceToPositionAdaptor on a mass: the
+    input force is its flange's cut force (flange.f = f: it loads the mass, which is
+    accelerated by −f), the outputs are the mass's position, speed and acceleration."""
+    m_, c, wall, s_rel0 = 1.5, 12.0, 2.0, 0.5
+    m = acausal.Model("adaptors")
+    m.p, m.v, m.a = acausal.Input(), acausal.Input(), acausal.Input()
+    m.moved = tr.GeneralPositionToForceAdaptor(use_pder=use_pder, use_pder2=use_pder2)
+    m.spring, m.wall = tr.Spring(c=c, s_rel0=s_rel0), tr.Fixed(s0=wall)
+    pairs = [(m.p.y, m.moved.p), (m.spring.flange_b, m.wall.flange)]
+    if use_pder2:
+        m.mass = tr.Mass(m=m_)
+        pairs += [(m.moved.flange, m.mass.flange_a), (m.mass.flange_b, m.spring.flange_a)]
+    else:
+        pairs += [(m.moved.flange, m.spring.flange_a)]
+    if use_pder:
+        pairs += [(m.v.y, m.moved.pder)]
+    if use_pder2:
+        pairs += [(m.a.y, m.moved.pder2)]
+    m.drive = acausal.Input()
+    m.driven, m.mass3 = tr.GeneralForceToPositionAdaptor(), tr.Mass(m=m_)
+    pairs += [(m.drive.y, m.driven.f), (m.driven.flange, m.mass3.flange_b)]
+    for a, b in pairs:
+        m.connect(a, b)
+    signals = {"p": np.sin, "v": np.cos, "a": lambda t: -np.sin(t), "drive": lambda t: 0 * t + 3.0}
+    res = acausal.compile(m).simulate(T_END, t=GRID, inputs=signals, rtol=1e-10, atol=1e-12)
+    p, a = np.sin(GRID), -np.sin(GRID)
+    stretch = wall - p - s_rel0
+    close(res["moved.f"], (m_ * a if use_pder2 else 0.0) - c * stretch)
+    close(res["driven.p"], res["mass3.s"])
+    close(res["mass3.s"], -3.0 * GRID ** 2 / (2 * m_))
+    close(res["driven.pder"], -3.0 * GRID / m_)
+    close(res["driven.pder2"], -3.0 / m_)
+
+
 # =========================================================================================
 # Sensors
 # =========================================================================================

@@ -64,3 +64,59 @@ def test_vector_parameter_element_nan_is_refused():
 def test_finite_values_still_pass():
     assert tr.Spring(c=1e300).c == 1e300
     assert P.Fixed(r=(1, -2)).r == (1.0, -2.0)
+
+
+def _library_classes():
+    """Every public component class of acausal.components that builds with its defaults."""
+    import importlib
+    import inspect
+    import pkgutil
+    import warnings
+
+    import acausal.components as library
+    from acausal.core import Component
+    from acausal.errors import AcausalError
+    found = {}
+    for info in pkgutil.walk_packages(library.__path__, library.__name__ + "."):
+        module = importlib.import_module(info.name)
+        for name, obj in vars(module).items():
+            if inspect.isclass(obj) and issubclass(obj, Component) and not name.startswith("_") \
+                    and obj.__module__ == module.__name__:
+                try:
+                    with warnings.catch_warnings():
+                        warnings.simplefilter("ignore")
+                        obj()
+                except AcausalError:            # needs arguments (a table, a required value)
+                    continue
+                found[f"{module.__name__.removeprefix('acausal.components.')}.{name}"] = obj
+    return found
+
+
+LIBRARY = _library_classes()
+
+
+def test_the_sweep_below_covers_the_library():
+    assert len(LIBRARY) > 300
+
+
+@pytest.mark.parametrize("name", sorted(LIBRARY))
+def test_every_component_refuses_bad_values_and_unknown_names_clearly(name):
+    """A NaN or a string for any scalar parameter, at construction: a ParameterError naming
+    the class and the parameter, never a TypeError from arithmetic on it or a silent NaN;
+    an unknown keyword: the package's error (a Model's own signature: Python's TypeError,
+    which names it)."""
+    import warnings
+    from acausal.core import Model
+    from acausal.errors import AcausalError
+    cls = LIBRARY[name]
+    for pname, par in cls.parameters().items():
+        if par.size is not None:
+            continue
+        for value in (math.nan, "abc"):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                with pytest.raises(ParameterError, match=rf"{cls.__name__}\.{pname}'"):
+                    cls(**{pname: value})
+    refused = (AcausalError, TypeError) if issubclass(cls, Model) else AcausalError
+    with pytest.raises(refused, match="no_such_parameter"):
+        cls(no_such_parameter=1.0)

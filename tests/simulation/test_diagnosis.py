@@ -45,3 +45,22 @@ def test_singular_loop_configuration_is_named(parallelogram):
     assert "Near t = 0.7 s the closed loop reaches a singular configuration" in text
     assert "rev4" in text and "rev1.phi = 0" in text
     assert "loosen" not in text
+
+
+def test_massless_parts_that_nothing_holds_are_named():
+    """A spring-damper connected to nothing: both flanges massless, the damper fixes only
+    their relative speed, so their common motion is free (the algebraic equations' Jacobian
+    d·[[1, −1], [−1, 1]] is singular). The failure names both flanges' unknowns and says to
+    fix or give mass; a grounded one runs: s_rel decays as e^(−c·t/d) from 0.1 m."""
+    from acausal.components import translational as tr
+    m = ac.Model("floating")
+    m.part = tr.SpringDamper(c=2.0, d=1.0)
+    with pytest.raises(ac.SimulationError, match=r"do not determine der\(part\.flange_a\.s\), "
+                                                 r"der\(part\.flange_b\.s\) .*connect them to "
+                                                 r"a fixed point"):
+        ac.compile(m).simulate(0.1)
+    m.fixed = tr.Fixed()
+    m.connect(m.fixed.flange, m.part.flange_a)
+    t = np.linspace(0.0, 1.0, 11)
+    res = ac.compile(m).simulate(1.0, t=t, x0={"part.flange_b.s": 0.1})
+    assert np.allclose(res["part.s_rel"], 0.1 * np.exp(-2.0 * t), atol=1e-7)

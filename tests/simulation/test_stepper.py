@@ -140,3 +140,22 @@ def test_reset_starts_the_modes_again():
     first = [st.step()["ball.s"] for _ in range(8)]
     st.reset()
     assert [st.step()["ball.s"] for _ in range(8)] == first and len(st.events) == 1
+
+
+@pytest.mark.parametrize("dt", [0.1, 0.05, 0.025])
+def test_a_sampled_block_samples_at_its_own_instants_whatever_the_step(dt):
+    """A Sampler (period 0.1 s) of the ramp u = t: at the end of every step y = u at the
+    last sample instant k·0.1 s up to and including that time (an instant at the step's end
+    is processed in that step, as at a simulation's stop time), never at the steps'
+    starts in between."""
+    from acausal.components import discrete, signals
+    m = acausal.Model("sampled_ramp")
+    m.ramp = signals.Ramp(height=1.0, duration=1.0)
+    m.sampler = discrete.Sampler(samplePeriod=0.1)
+    m.y = acausal.Output()
+    m.connect(m.ramp.y, m.sampler.u)
+    m.connect(m.sampler.y, m.y.u)
+    stepper = acausal.compile(m).stepper(dt)
+    for _ in range(int(round(0.5 / dt))):
+        y = stepper.step()["y"]
+        assert y == pytest.approx(0.1 * np.floor(stepper.t / 0.1 + 1e-9), abs=1e-12)

@@ -13,7 +13,8 @@
    potential/flow networks (electrical, thermal: ``networks``) add their node potentials
    and unknown flows as algebraic variables, with Kirchhoff's laws, checked for structure
    and reduced by their trivial equations before the accelerations are solved (a flow on a
-   mechanical flange, an EMF's torque, enters Lagrange's generalized forces);
+   mechanical flange, an EMF's torque, enters Lagrange's generalized forces); block
+   equations that constrain states are reduced (``index``);
 6. the DAE, its start values, nominals and time events, the recorded variables (``recorded``, built on
    first use) are put together into a CompiledModel.
 
@@ -35,7 +36,8 @@ from .batch import run_physics
 from .builders import StructureBuilder, Workspace
 from .charts import angle_starts, at_origin, check_inertia, quaternion_states
 from .compiled import CompiledModel, Reinit, ScalarVariable, StateEvents, coinciding
-from .flatten import flatten
+from .flatten import RootSignal, flatten
+from .index import reduce_signal_constraints
 from .kinematics import Node, choose_tree, motion_symbols
 from .lagrange import Lagrange, Residuals, residuals
 from .loops import analyse_loops
@@ -70,7 +72,8 @@ def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -
     """Compile ``model`` into a CompiledModel; ``smooth``: every component with events in its
     smooth form (see ``PhysicsBuilder.smooth``); ``index_reduction``: reduce the loops of
     capacitors / voltage sources and the cut sets of inductors / current sources of
-    networks instead of refusing them (see ``networks``)."""
+    networks, and the block equations that constrain states, instead of refusing them (see
+    ``networks``, ``index``)."""
     gc_was_enabled = gc.isenabled()
     gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
     try:
@@ -96,6 +99,7 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
     ws.der_table["t"] = 1
     ws.source = flat.signal_source
     ws.components = flat.components
+    _declare_root_inputs(ws, flat)
     params, fixed = _declare_parameters(ws, flat.components)
     ws.p = _stack([s for s, _ in params])
     ws.p_default = [v.start for _, v in params]
@@ -116,7 +120,20 @@ def _compile(model: Model, smooth: bool, index_reduction: bool) -> CompiledModel
                            lambda: _massive_nodes(flat, ws, len(nodes)))
         ws.one_d = tree.one_d
         run_physics(ws, flat.components)
+    for port, source in flat.root_outputs:
+        if source is None:
+            raise StructureError(f"output '{port.path}' of model "
+                                 f"'{model.name or type(model).__name__}' is not connected "
+                                 f"inside it; connect it to the output of one of its components")
+        ws.outputs.append((RootSignal(port), ws.signal(source)))
     return _assemble(model, ws, tree, params, fixed)
+
+
+def _declare_root_inputs(ws: Workspace, flat) -> None:
+    """The model's own input connectors (Modelica's top-level inputs) as inputs of the
+    compiled model, by their names."""
+    for port in flat.root_inputs:
+        ws.model_input(RootSignal(port), port)
 
 
 def _split_groups(groups):
@@ -136,6 +153,7 @@ def _massive_nodes(flat, ws: Workspace, n_nodes: int) -> set[int]:
     probe = Workspace(t=ws.t, smooth=ws.smooth)
     probe.der_table["t"] = 1
     probe.source, probe.components = ws.source, ws.components
+    _declare_root_inputs(probe, flat)
     probe.param_symbols = dict(ws.param_symbols)
     for c in flat.components:
         c.structure(StructureBuilder(probe, c))
@@ -220,6 +238,7 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
     phi_eps = ca.jacobian(phi, eps)
     resolve = make_resolver(ws, [eps, epsd, epsdd])
     network = build_network(ws, resolve)
+    _reduce_signal_constraints(ws, tree, resolve, network)
     # (the rigid bodies, for the articulated-body recursion, in the same substitution, so
     # that their kinematics is the residuals' and not a copy of it)
     R_T, R_V, R_Q, phi, phi_eps, zdot, g_alg, y_out, explicit, nh, flat_bodies, T_other = \
@@ -230,13 +249,11 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
             _stack([e for _, e in ws.outputs]), _stack([fl for _, fl in ws.flows]),
             _stack([r for _, _, r, _ in ws.velocity_constraints]),
             _stack(ws.bodies), ca.sum1(_stack(ws.kinetic_other))]))
+    cut = _stack(list(ws.cut_flow_sym.values()))
+    if ca.depends_on(_vc((R_T + R_V + R_Q)[:nq], phi), cut):
+        R_T, R_Q = _measured_into_forces(ws, tree, cut, R_T, R_V, R_Q, explicit, phi, nq)
     R_all = R_T + R_V + R_Q
     R_q, R_eps = R_all[:nq], R_all[nq:]
-    cut = _stack(list(ws.cut_flow_sym.values()))
-    if ca.depends_on(_vc(R_q, phi), cut):
-        raise StructureError("a measured cut force/torque (force or torque sensor) feeds back "
-                             "into the forces of the model; this implicit loop is not supported "
-                             "yet: measure the force elsewhere (e.g. a spring's f)")
 
     # ---- loops, accelerations ------------------------------------------------------------
     keep, row_names = analyse_loops(tree, phi, ws)
@@ -273,21 +290,40 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
                                                     [cut_values])
     zdot, g_alg, y_out, net_alg = ca.substitute([zdot, g_alg, y_out, net_alg], sub_from, sub_to)
 
+    def resolved(exprs: ca.SX) -> ca.SX:
+        return network.substitute(resolve([exprs]))[0]
+
+    def finish(exprs: ca.SX) -> ca.SX:
+        """Resolved expressions of the motion in (t, x, z, u, p)."""
+        return ca.substitute([ca.substitute(exprs, cut, cut_values)], sub_from, sub_to)[0]
+
     def final(exprs: ca.SX) -> ca.SX:
         """Expressions of the motion as recorded: in (t, x, z, u, p)."""
-        exprs = network.substitute(resolve([exprs]))[0]
+        exprs = resolved(exprs)
         resolve.check([exprs])
-        return ca.substitute([ca.substitute(exprs, cut, cut_values)], sub_from, sub_to)[0]
+        return finish(exprs)
 
     def recorder():
         """Every potential, velocity, flow, state, variable and signal, by name (built on
-        first use: large models need not pay for it to be simulated or exported)."""
-        names, exprs, units = recorded_variables(ws, tree)
+        first use: large models need not pay for it to be simulated or exported); the
+        velocities and component variables that need a rate nobody knows (the speed of a
+        flange that a model input moves with no speed given: an FMU's force law) kept
+        apart with the error that reading them raises, an error for any other such row
+        (a Der block's output)."""
+        names, exprs, units, optional = recorded_variables(ws, tree)
         fl, _ = flows()
         fl = fl + network.records
         names += [n for n, _, _ in fl]
         units += [u for _, _, u in fl]
-        return names, final(_vc(exprs, *[e for _, e, _ in fl])), units
+        exprs = resolved(_vc(exprs, *[e for _, e, _ in fl]))
+        unknown = set(resolve.unknown_rows(exprs))
+        resolve.check([exprs[sorted(unknown - optional)]] if unknown - optional else [])
+        unavailable = {names[k]: resolve.error(exprs[k]) for k in sorted(unknown)}
+        if unknown:
+            kept = [k for k in range(len(names)) if k not in unknown]
+            names, units = [names[k] for k in kept], [units[k] for k in kept]
+            exprs = exprs[kept] if kept else ca.SX(0, 1)
+        return names, finish(exprs), units, unavailable
 
     # ---- the DAE -------------------------------------------------------------------------
     n_model_params = len(params)
@@ -373,6 +409,39 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         angle_starts=angle_starts(tree.charts, p),
         source=model,
     )
+
+
+def _reduce_signal_constraints(ws: Workspace, tree, resolve, network) -> None:
+    """``index.reduce_signal_constraints`` of the residuals of the components without
+    network ports."""
+    rows = [k for k, (o, _) in enumerate(ws.residuals) if not has_network_ports(o)]
+    known = _vc(ws.t, tree.q, tree.qd, _stack([i.sym for i in ws.states]), ws.p,
+                _stack([s for _, s in ws.inputs]), _stack([m.sym for m in ws.modes]))
+    unknowns = _stack([a.sym for a in ws.algebraics if not has_network_ports(a.owner)])
+    reduce_signal_constraints(ws, resolve, network, rows, known, unknowns)
+
+
+def _measured_into_forces(ws: Workspace, tree, cut, R_T, R_V, R_Q, explicit, phi, nq: int):
+    """(R_T, R_Q) with the cut flows that sensors measure (``PhysicsBuilder.cut_flow``)
+    replaced where they drive forces: in a tree each is the reaction of relations that
+    fired, −R_ε, linear in the accelerations; its terms in q̈ join the inertia terms (an
+    inverse inertia moved by the acceleration of a direct one, which it drives with the
+    torque it needs: MSL's GenerationOfFMUs), the rest the generalized forces. Refused in
+    loops and with rolling contacts (the reactions there come out of the constrained solve)
+    and where the measured flows measure each other."""
+    if phi.numel() or ws.velocity_constraints:
+        raise StructureError("a measured cut force/torque (force or torque sensor, FMU adaptor) "
+                             "feeds back into the forces of a model with closed kinematic loops "
+                             "or rolling contacts; this implicit loop is not supported there: "
+                             "measure the force elsewhere (e.g. a spring's f)")
+    lam_tree = -(R_T + R_V + R_Q)[nq:]
+    _, flow_of = port_flows(ws, tree, explicit, lam_tree, ca.SX(0, 1))
+    values = _stack([flow_of[p] for p in ws.cut_flow_sym])
+    if ca.depends_on(values, cut):
+        raise StructureError("force sensors measure each other in a loop; not supported")
+    R_T, R_Q = ca.substitute([R_T, R_Q], [cut], [values])
+    forces = ca.substitute(R_Q, tree.qdd, ca.SX.zeros(tree.qdd.numel()))
+    return R_T + (R_Q - forces), forces
 
 
 def _on_charts(motion, tree):
@@ -555,7 +624,7 @@ def _nominals(model, ws: Workspace, tree, final, w: ca.SX, free: ca.SX) -> list:
             declared[f"{c.path}.{name}" if c.path else name] = value
     if not declared:
         return [1.0] * w.numel()
-    names, exprs, _ = recorded_variables(ws, tree)
+    names, exprs, *_ = recorded_variables(ws, tree)
     where = {n: i for i, n in enumerate(names)}
     unknown = [n for n in declared if n not in where]
     if unknown:

@@ -76,6 +76,7 @@ class Workspace:
     residuals: list = field(default_factory=list)           # (owner, expr)
     signal_sym: dict = field(default_factory=dict)          # RealOutput -> placeholder SX
     signal_expr: dict = field(default_factory=dict)         # RealOutput -> expression
+    aliases: list = field(default_factory=list)             # (symbol, what it stands for)
     source: dict = field(default_factory=dict)              # RealInput -> RealOutput
     inputs: list = field(default_factory=list)              # (Input, SX)
     outputs: list = field(default_factory=list)             # (Output, expr)
@@ -116,13 +117,25 @@ class Workspace:
     def signal(self, port: Port) -> ca.SX:
         """The placeholder standing for the value of a signal port."""
         src = self.source.get(port, port) if isinstance(port, RealInput) else port
-        if isinstance(src, RealInput):                       # unconnected, optional input
-            raise StructureError(f"input '{port.path}' is not connected to any output")
         if src not in self.signal_sym:
+            if isinstance(src, RealInput):       # unconnected, optional input (not the model's)
+                raise StructureError(f"input '{port.path}' is not connected to any output")
             s = ca.SX.sym(f"sig:{src.path}")
             self.signal_sym[src] = s
             self.der_table[s.name()] = _lazy_signal_rate(self, s)
         return self.signal_sym[src]
+
+    def model_input(self, record, port: Port | None = None) -> ca.SX:
+        """A new input of the compiled model (``record``: its path, unit, description,
+        start), of unknown rate; ``port``: the model's own input connector it drives."""
+        u = ca.SX.sym(record.path)
+        self.der_table[u.name()] = None
+        self.inputs.append((record, u))
+        if port is not None:
+            s = ca.SX.sym(f"sig:{port.path}")
+            self.signal_sym[port], self.signal_expr[port] = s, u
+            self.der_table[s.name()] = _lazy_signal_rate(self, s)
+        return u
 
 
 #: Modelica's stateSelect values of the variables a reinit keeps, by rank (first kept first)
@@ -179,6 +192,24 @@ class _Base:
 
 class StructureBuilder(_Base):
     """Phase 1: kinematic relations, internal nodes, states, algebraic variables."""
+
+    def with_rates(self, name: str, value, *rates) -> ca.SX:
+        """``value`` whose time derivatives are the given ``rates`` (first, second, ...)
+        rather than derived from it: Modelica's function with a derivative annotation, by
+        which MSL's Move and the FMU adaptors prescribe a motion from a position, speed and
+        acceleration given as separate signals (model inputs, whose rates are unknown, or
+        deliberately inconsistent ones). Returns a symbol ``given:<component>.<name>``
+        standing for ``value`` (``value`` itself without rates); the derivative of the last rate is
+        derived from it as usual."""
+        if not rates:
+            return sx(value)
+        chain = [ca.SX.sym(f"given:{self._name(name)}" + (f":der{k}" if k else ""))
+                 for k in range(len(rates))]
+        for k, (sym, stands_for) in enumerate(zip(chain, (value,) + rates)):
+            self._ws.aliases.append((sym, sx(stands_for)))
+            self._ws.der_table[sym.name()] = chain[k + 1] if k + 1 < len(chain) \
+                else sx(rates[-1])
+        return chain[0]
 
     def linear(self, coeffs: dict, rhs=0.0, name: str = "") -> None:
         """Declare Σ coeff·pos(port) = rhs between 1-D ports (or internal nodes).
@@ -719,10 +750,7 @@ class PhysicsBuilder(_Base):
         return found[0]
 
     def model_input(self, comp: Input) -> ca.SX:
-        u = ca.SX.sym(comp.path)
-        self._ws.der_table[u.name()] = None
-        self._ws.inputs.append((comp, u))
-        return u
+        return self._ws.model_input(comp)
 
     def model_output(self, comp: Output, expr) -> None:
         self._ws.outputs.append((comp, sx(expr)))

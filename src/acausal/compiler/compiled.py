@@ -161,7 +161,8 @@ class CompiledModel:
     start: ca.Function      # p -> start values of [x; z]
     nominal: ca.Function    # p -> nominals of [x; z] (see ``nominals``)
     events: ca.Function     # p -> (times, periods) of time events
-    recorder: object        # () -> (names, expressions, units) of every recorded variable
+    recorder: object        # () -> (names, expressions, units) of every recorded variable,
+    #                         and {name: error} of those that cannot be computed
     lagrange: Lagrange
     coordinates: list[str]
     method: str = ""        # how accelerations are solved: diagonal / recursion / dense / KKT
@@ -355,6 +356,9 @@ class CompiledModel:
             if i is not None:
                 return kind, i
         i = self._recorded_index().get(name)
+        if i is None and name in self._recorded()[3]:
+            error = self._recorded()[3][name]          # a rate nobody knows: why it is missing
+            raise type(error)(f"'{name}': {error}")
         if i is None:
             raise VariableNameError(
                 f"no variable '{name}' in model '{self.name}'"

@@ -1,6 +1,7 @@
 """Flatten a model: every component and port by dotted name, connection groups, signal wiring."""
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from ..core.component import Component, Model
@@ -10,11 +11,38 @@ from ..core.ports import PhysicalPort, Port, RealInput, RealOutput
 
 @dataclass
 class Flat:
-    """The flattened model: components in declaration order, connection groups of ports."""
+    """The flattened model: components in declaration order, connection groups of ports;
+    the root's own signal connectors (Modelica's top-level inputs and outputs), which
+    become inputs and outputs of the compiled model."""
     root: Model
     components: list[Component]
     groups: list[list[PhysicalPort]]           # physical ports joined by connections
     signal_source: dict[RealInput, RealOutput]  # where each input gets its value
+    root_inputs: list[RealInput]
+    root_outputs: list[tuple[RealOutput, RealOutput | RealInput | None]]   # and their driver
+
+
+@dataclass(frozen=True)
+class RootSignal:
+    """A signal connector of the compiled model itself as an input or output of the
+    compiled model (and of its FMU): named by the connector, with its description; its
+    unit is the bracketed one that ends the description ("torque to drive the flange
+    [N.m]"), if any; an input starts at 0."""
+    port: Port
+    start: float = 0.0
+
+    @property
+    def path(self) -> str:
+        return self.port.path
+
+    @property
+    def description(self) -> str:
+        return self.port.description
+
+    @property
+    def unit(self) -> str:
+        found = re.search(r"\[([^\[\]]+)\]\s*$", self.port.description)
+        return found.group(1) if found else ""
 
 
 class _UnionFind:
@@ -88,7 +116,7 @@ def flatten(root: Model) -> Flat:
         sig_groups.setdefault(id(uf.find(p)), []).append(p)
     source: dict[RealInput, RealOutput] = {}
     for members in sig_groups.values():
-        outs = [p for p in members if _drives(p)]
+        outs = [p for p in members if _drives(p, root)]
         ins = [p for p in members if p not in outs]
         if len(outs) > 1:
             raise PortConnectionError(
@@ -103,12 +131,15 @@ def flatten(root: Model) -> Flat:
                         f"Input of the model")
                 continue
             source[p] = outs[0]
-    return Flat(root, comps, groups, source)
+    own = [p for p in root.ports.values() if not isinstance(p, PhysicalPort)]
+    return Flat(root, comps, groups, source, [p for p in own if isinstance(p, RealInput)],
+                [(p, source.get(p, p if _drives(p, root) else None)) for p in own
+                 if isinstance(p, RealOutput)])
 
 
-def _drives(p: Port) -> bool:
-    """Whether a signal port is the driver of its group: a component's RealOutput, or a
-    RealInput of a sub-model as seen from inside (it is driven from outside)."""
+def _drives(p: Port, root: Model) -> bool:
+    """Whether a signal port is the driver of its group: a component's RealOutput, or an
+    input of the compiled model itself (given from outside)."""
     if isinstance(p, RealOutput):
         return not (isinstance(p.owner, Model) and p.owner.children)
-    return False
+    return p.owner is root

@@ -44,8 +44,9 @@ stops being one, so its start value is no longer used). A loop or cut set whose 
 are linear in the potentials and flows with numeric coefficients (ideal capacitors,
 inductors, sources, grounds) gives a constraint h(x, t) = 0 on the states: the left null
 vector of its equations' Jacobian combines them into it. The last declared state in h with
-a numeric coefficient becomes an expression of the others (recorded under its name), and
-the equation it was in is replaced by dh/dt = 0 (its state derivative given by the others').
+a constant coefficient becomes an expression of the others (recorded under its name), and
+the equation it was in is replaced by dh/dt = 0 (its state derivative given by the others';
+``compiler.index``, which also reduces the block equations that constrain states).
 The states kept need not be those a Modelica tool keeps (in MSL's CauerLowPassAnalog C3 and
 C5 become expressions where the MSL fixes their start values; all start at 0 there, so the
 solution is the same). Loops through other elements, and constraints through model inputs
@@ -70,7 +71,7 @@ from scipy.sparse.csgraph import maximum_bipartite_matching
 
 from ..core.component import Model
 from ..errors import StructureError
-from .symbolic import UnknownDerivative, der_with
+from .index import demote_state
 
 _vc = ca.vertcat
 
@@ -235,25 +236,12 @@ def _reduce_index(ws, resolve, eqs: list, unknowns: list, rows: list, demoted: l
     c = np.round(N[:, 0] / N[np.argmax(np.abs(N[:, 0])), 0], 12)   # ±1 for ideal loops
     h = ca.substitute(ca.dot(ca.DM(c), sub), _vc(*[unknowns[k] for k in cols]),
                       ca.SX.zeros(len(cols)))
-    candidates = [i for i in ws.states if ca.depends_on(h, i.sym)
-                  and ca.jacobian(h, i.sym).is_constant()]
-    if not candidates:
-        raise StructureError(message + " (its constraint involves no state to demote)")
-    d = candidates[-1]
-    value = -ca.substitute(h, d.sym, 0) / float(ca.jacobian(h, d.sym))
-    try:
-        rate = resolve([der_with(value, ws.der_table) - d.der])[0]
-    except UnknownDerivative as e:
-        raise StructureError(f"{message}; index reduction: {e}") from None
-    r0 = next(r for r, ck in zip(rows, c) if ck != 0 and ca.depends_on(eqs[r], d.sym))
+    rate = demote_state(ws, resolve, h, demoted, message)
+    d, value = demoted[-1]
+    r0 = next(r for r, ck in zip(rows, c) if ck != 0 and ca.depends_on(eqs[r], d))
     eqs[r0] = rate
     for k, e in enumerate(eqs):
-        eqs[k] = ca.substitute(e, d.sym, value)
-    for k, (sym, v) in enumerate(demoted):
-        demoted[k] = (sym, ca.substitute(v, d.sym, value))
-    demoted.append((d.sym, value))
-    ws.states[:] = [i for i in ws.states if i is not d]
-    ws.demoted_states.append(d)
+        eqs[k] = ca.substitute(e, d, value)
 
 
 def _eliminate(eqs: list, unknowns: list):

@@ -59,41 +59,56 @@ def _split(v: ca.SX, dims: list[int]) -> list[ca.SX]:
     return ca.vertsplit(v, offsets)
 
 
+def _scalars(v: ca.SX) -> list[ca.SX]:
+    """The elements of v (v itself if it is one: indexing an SX costs ~10 µs per call)."""
+    return [v] if v.is_scalar() else ca.vertsplit(ca.vec(v))
+
+
 def recorded_variables(ws, tree):
-    """Names, expressions and units of every potential, velocity, state and signal."""
+    """Names, expressions and units of every potential, velocity, state and signal; and
+    the rows that are kept only where they can be computed (the velocities of ports and
+    internal points, the variables components record): a flange moved by a model input
+    with no speed given has none."""
     names, exprs, units = [], [], []
+    optional = set()
     seen = set()
 
-    def rec(name, ex, unit=""):
+    def rec(name, ex, unit="", may_drop=False):
         if name not in seen:
             seen.add(name)
+            if may_drop:
+                optional.add(len(names))
             names.append(name)
             exprs.append(ex)
             units.append(unit)
 
     for n in tree.nodes:
+        pos = vel = None                 # the node's potentials and velocities, as scalars
         for p in n.ports:
             dom = p.domain
             if isinstance(p, InternalNode) and dom.dim == 1:   # else by potential, as ports
                 rec(p.path, n.pos, dom.potential_units[0])
                 base = p.owner.path
                 if p.velocity:
-                    rec(f"{base}.{p.velocity}" if base else p.velocity, n.vel, dom.velocity_units[0])
+                    rec(f"{base}.{p.velocity}" if base else p.velocity, n.vel,
+                        dom.velocity_units[0], True)
                 if p.acceleration:
                     rec(f"{base}.{p.acceleration}" if base else p.acceleration, n.acc,
-                        dom.velocity_units[0] + "2")
+                        dom.velocity_units[0] + "2", True)
                 continue
+            if pos is None:
+                pos, vel = _scalars(n.pos), _scalars(n.vel)
             for j, pot in enumerate(dom.potentials):
-                rec(f"{p.path}.{pot}", n.pos[j], dom.potential_units[j])
+                rec(f"{p.path}.{pot}", pos[j], dom.potential_units[j])
             for j, name in enumerate(dom.velocity_names):
                 if name:
-                    rec(f"{p.path}.{name}", n.vel[j], dom.velocity_units[j])
+                    rec(f"{p.path}.{name}", vel[j], dom.velocity_units[j], True)
     for info in ws.states:
         rec(info.sym.name(), info.sym, info.unit)
     for a in ws.algebraics:
         rec(a.sym.name(), a.sym, a.unit)
     for name, ex, unit, _ in ws.variables:
-        rec(name, ex, unit)
+        rec(name, ex, unit, True)
     for c, s in ws.inputs:
         rec(c.path, s, c.unit)
     for c, e in ws.outputs:
@@ -105,4 +120,4 @@ def recorded_variables(ws, tree):
         if o in ws.signal_sym:
             rec(i.path, ws.signal_sym[o], unit_of.get(id(o.owner), ""))
     return names, (_vc(*[e if e.size2() == 1 else ca.vec(e) for e in exprs]) if exprs
-                   else ca.SX(0, 1)), units
+                   else ca.SX(0, 1)), units, optional

@@ -2,7 +2,8 @@
 
 Components write their physics with placeholders: a signal input reads as ``sig:<output>``
 (and its rates ``der(sig:...)`` where a prescribed motion differentiates it), a state's
-derivative as ``der(<state>)`` until the component sets it. Once every component has spoken,
+derivative as ``der(<state>)`` until the component sets it, a value with given rates
+(``StructureBuilder.with_rates``) as ``given:<component>.<name>``. Once every component has spoken,
 the placeholders' values are known; a Resolver substitutes them (and the relaxations ε of the
 tree relations by zero) in any expression.
 """
@@ -35,6 +36,17 @@ class Resolver:
         for the rates that could not be derived)."""
         return ca.substitute(pieces, self.frm, self.to)
 
+    def unknown_rows(self, column: ca.SX) -> list[int]:
+        """The rows of a resolved ``column`` that need a rate that could not be derived."""
+        if self._failed_syms is None or not ca.depends_on(column, self._failed_syms):
+            return []
+        return [k for k, x in enumerate(ca.vertsplit(column))
+                if ca.depends_on(x, self._failed_syms)]
+
+    def error(self, piece: ca.SX) -> StructureError:
+        """The error of the first rate ``piece`` needs that could not be derived."""
+        return next(err for sym, err in self.failed if ca.depends_on(piece, sym))
+
     def check(self, pieces):
         """Raise the error of a placeholder whose rate could not be derived, if any piece
         still needs it (one test for all of them first)."""
@@ -62,6 +74,9 @@ def make_resolver(ws: Workspace, relaxations: list[ca.SX]) -> Resolver:
         if info.placeholder is not None:
             syms.append(info.placeholder)
             vals.append(info.der)
+    for sym, value in ws.aliases:
+        syms.append(sym)
+        vals.append(value)
     vals = substitute_all(vals, syms, vals) if syms else vals
     # rates of signals (prescribed motion): d/dt of the resolved signal expressions
     failed = []

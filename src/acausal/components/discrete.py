@@ -30,9 +30,8 @@ from __future__ import annotations
 import casadi as ca
 
 from ..core import BooleanInput, Component, Parameter, RealInput, RealOutput
-from .logical import refuse_smooth
 from .signals.continuous import _Coefficients, _Matrices
-from .signals.interfaces import _start, _StartValues
+from .signals.interfaces import _start, _StartValues, refuse_smooth
 
 __all__ = ["DiscreteBlock", "DiscreteSISO", "DiscreteMIMO", "Sampler", "ZeroOrderHold",
            "FirstOrderHold", "UnitDelay", "TransferFunction", "StateSpace", "TriggeredSampler",

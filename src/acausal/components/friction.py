@@ -140,6 +140,7 @@ class PartialFriction(PartialElementaryConditionalHeatPortWithoutT):
     of the smooth form's regularization (see the module); a subclass that gives only these
     hooks has the smooth form too.
     """
+    partial = True
     axis: Axis
     table_name = ""
     table_default = ((0.0, 1.0),)
@@ -298,6 +299,7 @@ class SupportedFriction(PartialFriction):
     """Friction of the rigidly joined flanges (flange_b = flange_a) against the support
     (MSL's BearingFriction, SupportFriction, Brake): w_relfric = der(flange_a − support);
     flange_a.tau + flange_b.tau = tau, support.tau = −tau. Records phi, w, a (s, v, a)."""
+    partial = True
 
     def structure(self, s):
         s.linear({self.flange_b: 1.0, self.flange_a: -1.0}, 0.0,
@@ -329,6 +331,7 @@ class SupportedFriction(PartialFriction):
 class TableFriction(PartialFriction):
     """The sliding friction is the table itself (tau_pos, f_pos): MSL's BearingFriction and
     SupportFriction."""
+    partial = True
 
     def _sliding(self, e, w):
         return table_value(self.table, w)
@@ -339,6 +342,7 @@ class NormalForceFriction(PartialFriction):
     coefficient mu_pos(w) [1] and the geometry constant cgeo: sliding friction
     mu·cgeo·fn; free (inactive, mode 2) when fn ≤ 0. MSL's Brake and Clutch. Records fn and
     mu (signed as the friction), indicator ``fn``."""
+    partial = True
     table_name = "mu_pos"
     table_default = ((0.0, 0.5),)
     cgeo = Parameter(1.0, "1", "geometry constant containing friction distribution "

@@ -32,7 +32,8 @@ __all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS",
            "PartialTwoFlanges", "PartialCompliant", "PartialElementaryOneFlangeAndSupport2",
            "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law", "inverse_law",
            "Regularization", "regularized_sign", "regularization_region", "speed_band_region",
-           "Position", "Speed", "Accelerate", "Move", "ConstantSpeed", "drive_flanges",
+           "Position", "Speed", "Accelerate", "Move", "ConstantSpeed", "FlowToPotentialAdaptor",
+           "PotentialToFlowAdaptor", "drive_flanges",
            "PartialDrivenJoint", "unit_direction"]
 
 
@@ -68,6 +69,7 @@ class PartialElementaryConditionalHeatPortWithoutT(Component):
     it: heatPort.Q_flow = −lossPower (the heat leaves the component into the thermal
     network). With False (MSL's default) the heat goes nowhere. The element's law does not
     depend on the port's temperature."""
+    partial = True
     options = {"useHeatPort": False}
     heatPort = ConditionalPort(
         HeatPort_a("optional port to which dissipated losses are transported in form of heat",
@@ -86,6 +88,7 @@ class PartialElementaryConditionalHeatPort(PartialElementaryConditionalHeatPortW
     PartialElementaryConditionalHeatPortWithoutT, and the element's law may depend on its
     temperature TheatPort [K] = heatPort.T with the port, the parameter T (293.15 K) without
     it (recorded)."""
+    partial = True
     T = Parameter(293.15, "K", "fixed device temperature if useHeatPort = false",
                   positive=True)
 
@@ -111,6 +114,7 @@ class PartialEddyCurrent(PartialElementaryConditionalHeatPort):
     TRef, alpha20, TheatPort)): the speed of maximum braking moves with the disc's
     temperature. lossPower = flow·speed [W]. The excitation is ``constantExcitation`` or, with
     ``useExcitationInput``, the input ``excitation``."""
+    partial = True
     options = {"useExcitationInput": False}
     constantExcitation = Parameter(1.0, "1", "excitation=1 to reach maximum force or torque")
     TRef = Parameter(293.15, "K", "reference temperature", positive=True)
@@ -133,6 +137,7 @@ class PartialEddyCurrent(PartialElementaryConditionalHeatPort):
 # =========================================================================================
 class PartialTwoFlanges(Component):
     """``flange_a`` and ``flange_b`` (declared by the domain)."""
+    partial = True
     axis: Axis
 
     def _apply_opposite_flows(self, e, flow_into_flange_b) -> None:
@@ -153,6 +158,7 @@ class PartialCompliant(PartialTwoFlanges):
     ``rel_nominal`` gives the relative position's nominal (MSL's
     PartialCompliantWithRelativeStates: ``s_nominal``, ``phi_nominal``).
     """
+    partial = True
     records_a_rel = False
 
     def rel_nominal(self):
@@ -234,6 +240,7 @@ class _Support(Component):
 class PartialElementaryOneFlangeAndSupport2(_Support):
     """One ``flange`` and the optional ``support``; what acts on the flange reacts on the
     support: support.f = −flange.f (support.tau = −flange.tau)."""
+    partial = True
 
     def _apply_flange_flow(self, e, flow_into_flange) -> None:
         """flange.f = flow_into_flange (or flange.tau) and support.f = −flow_into_flange."""
@@ -266,6 +273,7 @@ class PartialElementaryOneFlangeAndSupport2(_Support):
 
 class PartialElementaryTwoFlangesAndSupport2(_Support):
     """``flange_a``, ``flange_b`` and the optional ``support``."""
+    partial = True
 
 
 # =========================================================================================
@@ -301,6 +309,7 @@ class PartialDrivenJoint(Component):
     the support is *not* fixed in the joint). Unconnected, the flanges are free (no drive
     force); connected to the 1-D libraries they drive or load the joint. Subclasses declare
     the two flanges with ``drive_flanges`` under the option named ``drive_option``."""
+    partial = True
     drive_option = "useFlange"
 
     def _driven(self) -> bool:
@@ -407,6 +416,7 @@ class Position(_PrescribedMotion):
     """flange − support follows the reference input ``s_ref``/``phi_ref`` [m, rad]: exactly
     (``exact=True``; a function of time, differentiated twice) or through MSL's 2nd-order
     Bessel filter with cut-off f_crit [Hz] (states s/phi and v/w, from 0)."""
+    partial = True
     options = {"exact": False}
     f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
                                    "input signal", positive=True)
@@ -439,6 +449,7 @@ class Speed(_PrescribedMotion):
     exactly (``exact=True``; a function of time, differentiated once) or through a
     first-order filter with cut-off f_crit [Hz] (state v/w, from 0). The position s/phi is a
     state from 0."""
+    partial = True
     options = {"exact": False}
     f_crit = Parameter(50.0, "Hz", "if exact=False, critical frequency of filter to filter "
                                    "input signal", positive=True)
@@ -463,6 +474,7 @@ class Speed(_PrescribedMotion):
 class Accelerate(_PrescribedMotion):
     """flange − support accelerates with the input ``a_ref`` [m/s², rad/s²]; position and
     speed are states integrated from 0."""
+    partial = True
 
     def structure(self, s):
         self._position_state(s, self._speed_state(s, der=s.input(self.a_ref)))
@@ -472,11 +484,14 @@ class Accelerate(_PrescribedMotion):
 
 
 class Move(PartialElementaryOneFlangeAndSupport2):
-    """flange − support = u[1]; u[2], u[3] (its speed and acceleration) are recorded as
-    ``v_u``/``w_u`` and ``a_u`` next to the actual motion (see the domain's Move)."""
+    """flange − support = u[1], its speed u[2] and its acceleration u[3] as given (MSL's
+    position(u, time) with its derivative functions: ``StructureBuilder.with_rates``);
+    u[2], u[3] are also recorded as ``v_u``/``w_u`` and ``a_u``."""
+    partial = True
 
     def structure(self, s):
-        self._prescribe(s, s.input(self.u[1]))
+        self._prescribe(s, s.with_rates(self.axis.s, s.input(self.u[1]), s.input(self.u[2]),
+                                        s.input(self.u[3])))
 
     def physics(self, e):
         x = self.axis
@@ -488,6 +503,7 @@ class Move(PartialElementaryOneFlangeAndSupport2):
 class ConstantSpeed(_PrescribedMotion):
     """flange − support moves with the constant speed ``v_fixed``/``w_fixed`` [m/s, rad/s],
     whatever the flow; the position is a state from 0. Records the speed."""
+    partial = True
 
     def _fixed(self):
         return getattr(self, f"{self.axis.v}_fixed")
@@ -497,3 +513,50 @@ class ConstantSpeed(_PrescribedMotion):
 
     def physics(self, e):
         self._record_relative(e, v=self._fixed())
+
+
+# =========================================================================================
+# Signal adaptors of a flange (MSL's Blocks.Interfaces.Adaptors, for FMUs)
+# =========================================================================================
+class FlowToPotentialAdaptor(Component):
+    """MSL's FlowToPotentialAdaptor on a 1-D ``flange``: the input flow acts on the flange
+    (flange.f = input, flange.tau for rotation), the outputs are the flange's position and,
+    where the domain's connectors exist, its speed and acceleration (0 without the speed
+    connector, as MSL's der(0)). ``connectors``: the domain's names of (position, speed,
+    acceleration, flow)."""
+    partial = True
+    connectors: tuple[str, str, str, str]
+
+    def physics(self, e):
+        pos, speed, acc, flow = self.connectors
+        ports = self.ports
+        e.flow(self.flange, e.input(ports[flow]))
+        e.output(ports[pos], e.pos(self.flange))
+        if speed in ports:
+            e.output(ports[speed], e.vel(self.flange))
+        if acc in ports:
+            e.output(ports[acc], e.acc(self.flange) if speed in ports else 0.0)
+
+
+class PotentialToFlowAdaptor(Component):
+    """MSL's PotentialToFlowAdaptor on a 1-D ``flange``: the flange is moved by the input
+    position, with the input speed and acceleration (where the domain's connectors exist)
+    as its derivatives, not derived from the position (``StructureBuilder.with_rates``);
+    the output is the flow needed to move it, −flange.f (−flange.tau). Without the speed
+    connector the rates are those of the position signal (derived where a mass needs
+    them; a model input has none: then only force elements without mass may be attached,
+    as in MSL). ``connectors``: the domain's names of (position, speed, acceleration,
+    flow)."""
+    partial = True
+    connectors: tuple[str, str, str, str]
+
+    def structure(self, s):
+        pos, speed, acc, _ = self.connectors
+        ports = self.ports
+        rates = [s.input(ports[k]) for k in (speed, acc) if k in ports]
+        s.linear({self.flange: 1.0}, s.with_rates(pos, s.input(ports[pos]), *rates),
+                 f"{self.path}: motion from the signals")
+
+    def physics(self, e):
+        e.output(self.ports[self.connectors[3]], -e.cut_flow(self.flange))
+

@@ -56,9 +56,9 @@ import numpy as np
 from ..core import (BooleanInput, BooleanOutput, Component, Parameter, RealInput, RealOutput,
                     Unavailable)
 from ..core.component import who
-from ..errors import ParameterError, StructureError
-from .signals import Extrapolation
-from .signals.interfaces import _MultiInput
+from ..errors import ParameterError
+from .signals.interfaces import _MultiInput, refuse_smooth
+from .signals.sources import Extrapolation
 from .signals.routing import _Replicating
 
 __all__ = [
@@ -68,7 +68,7 @@ __all__ = [
     "GreaterThreshold", "GreaterEqualThreshold", "LessThreshold", "LessEqualThreshold",
     "Greater", "GreaterEqual", "Less", "LessEqual", "Hysteresis", "OnOffController",
     "Switch", "LogicalSwitch",
-    "BooleanConstant", "BooleanStep", "BooleanPulse", "BooleanTable",
+    "BooleanConstant", "BooleanExpression", "BooleanStep", "BooleanPulse", "BooleanTable",
     "BooleanToReal", "RealToBoolean", "BooleanPassThrough", "TerminateSimulation",
     "Edge", "FallingEdge", "Change", "RisingEdge", "ChangingEdge", "Timer", "RSFlipFlop",
     "SampleTrigger", "ZeroCrossing", "TriggeredTrapezoid", "LogicalDelay", "AssertCondition",
@@ -76,29 +76,22 @@ __all__ = [
 ]
 
 
-def refuse_smooth(block: Component, builder) -> None:
-    """A StructureError when the model is compiled in smooth form (``builder.smooth``) and
-    ``block`` has no smooth form (its output changes at events only)."""
-    if builder.smooth:
-        raise StructureError(
-            f"{who(block)} has no smooth form: its output is a discrete value that changes "
-            f"at events only; compile without smooth=True, or write the switching law as a "
-            f"smooth expression (e.g. a tanh blend) for optimal control")
-
-
 # ---- interfaces (Modelica.Blocks.Interfaces) --------------------------------------------------
 class partialBooleanSO(Component):
     """Single Boolean output ``y`` (MSL partialBooleanSO / partialBooleanSource)."""
+    partial = True
     y = BooleanOutput("connector of Boolean output signal")
 
 
 class partialBooleanSISO(partialBooleanSO):
     """Boolean input ``u``, Boolean output ``y``."""
+    partial = True
     u = BooleanInput("connector of Boolean input signal")
 
 
 class partialBooleanSI2SO(partialBooleanSO):
     """Boolean inputs ``u1``, ``u2``, Boolean output ``y``."""
+    partial = True
     u1 = BooleanInput("connector of first Boolean input signal")
     u2 = BooleanInput("connector of second Boolean input signal")
 
@@ -127,6 +120,7 @@ class _Relation(partialBooleanSO):
 
 class partialBooleanThresholdComparison(_Relation):
     """Real input ``u`` compared with ``threshold``; Boolean output ``y``."""
+    partial = True
     threshold = Parameter(0.0, "", "comparison with respect to threshold")
     u = RealInput("connector of Real input signal")
 
@@ -136,6 +130,7 @@ class partialBooleanThresholdComparison(_Relation):
 
 class partialBooleanComparison(_Relation):
     """Real inputs ``u1``, ``u2`` compared; Boolean output ``y``."""
+    partial = True
     u1 = RealInput("connector of first Real input signal")
     u2 = RealInput("connector of second Real input signal")
 
@@ -635,6 +630,29 @@ class BooleanConstant(partialBooleanSO):
         e.output(self.y, int(self.k))
 
 
+class BooleanExpression(partialBooleanSO):
+    """y = the Boolean value given as ``y`` (constructor argument, False as in MSL
+    Sources.BooleanExpression), e.g. MSL TotalHarmonicDistortion's
+    ``BooleanExpression(y=not useFirstHarmonic)``.
+
+    MSL difference: MSL's y may be any Boolean expression of the model's variables
+    (``y = pulse.y and step.y``); here it is a constant, and such an expression is built
+    from the logical blocks (And, Or, Not; relations such as GreaterThreshold, which locate
+    the instants where it changes as state events)."""
+
+    def __init__(self, name: str | None = None, *, y: bool = False, **params):
+        if not isinstance(y, (bool, np.bool_)):
+            raise ParameterError(
+                f"BooleanExpression: y must be True or False, got {y!r}; build an expression "
+                f"of signals from logical blocks (y = pulse.y and step.y: an And with u1 from "
+                f"pulse.y, u2 from step.y)")
+        super().__init__(name, **params)
+        self.__dict__["value"] = bool(y)
+
+    def physics(self, e):
+        e.output(self.y, int(self.value))
+
+
 class BooleanStep(partialBooleanSO):
     """y = if time >= startTime then not startValue else startValue (option ``startValue``,
     False); a time event at startTime [s]."""
@@ -764,6 +782,7 @@ class TerminateSimulation(Component):
 class PartialBooleanMISO(_MultiInput, partialBooleanSO):
     """Boolean inputs ``u[1]`` .. ``u[nu]`` (``nu``: constructor argument, ≥ 1; MSL's
     connectorSizing counts them), Boolean output ``y`` (MSL Interfaces.PartialBooleanMISO)."""
+    partial = True
     _classes: dict = {}
     _input = BooleanInput
 

@@ -230,6 +230,7 @@ class PartialXYCompliant(Component):
     frame_b.phi − frame_a.phi [rad] and their rates: frame_b gets (f_x, f_y, tau), frame_a
     the opposite. As in PlanarMechanics, the couple of the two forces (when they are not
     along the line between the origins) is not balanced by a torque."""
+    partial = True
     frame_a = Frame("left frame")
     frame_b = Frame("right frame")
 
@@ -323,6 +324,7 @@ class PartialLineForce(Component):
     ``tension(length, v)`` [N] (> 0 pulls the frames together): frame_b gets tension·e_rel,
     frame_a −tension·e_rel. The direction is regularized below ``s_small`` [m] (the element
     is singular at zero length, as in PlanarMechanics)."""
+    partial = True
     s_small = Parameter(1e-10, "m", "prevent zero-division if distance between frame_a and "
                                     "frame_b is zero", positive=True)
     frame_a = Frame("left frame")

@@ -59,7 +59,7 @@ __all__ = [
     "Fixed", "Inertia", "Disc", "Spring", "Damper", "SpringDamper", "IdealGear",
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
     "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2", "Gearbox",
-    "InitializeFlange",
+    "InitializeFlange", "TorqueToAngleAdaptor", "AngleToTorqueAdaptor",
     # sources
     "Torque", "Torque2", "ConstantTorque", "SignTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "InverseSpeedDependentTorque", "TorqueStep",
@@ -85,6 +85,7 @@ def _support(option: str = "useSupport", description: str = "support/housing of 
 
 class PartialTwoFlanges(interfaces.PartialTwoFlanges):
     """Component with two rotational 1-D shaft flanges ``flange_a``, ``flange_b``."""
+    partial = True
     axis = ROTATIONAL_AXIS
     flange_a = Flange("flange of left shaft")
     flange_b = Flange("flange of right shaft")
@@ -95,6 +96,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
 
     The reaction of what acts on ``flange`` goes to the support: support.tau = −flange.tau.
     """
+    partial = True
     axis = ROTATIONAL_AXIS
     flange = Flange("flange of shaft")
     support = _support()
@@ -102,6 +104,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
 
 class PartialElementaryTwoFlangesAndSupport2(interfaces.PartialElementaryTwoFlangesAndSupport2):
     """``flange_a``, ``flange_b`` and, with ``useSupport=True``, a ``support`` flange."""
+    partial = True
     axis = ROTATIONAL_AXIS
     flange_a = Flange("flange of left shaft")
     flange_b = Flange("flange of right shaft")
@@ -111,6 +114,7 @@ class PartialElementaryTwoFlangesAndSupport2(interfaces.PartialElementaryTwoFlan
 class PartialElementaryRotationalToTranslational(Component):
     """Rotational ``flangeR`` and translational ``flangeT``; with ``useSupportR`` /
     ``useSupportT`` a rotational ``supportR`` / translational ``supportT`` housing flange."""
+    partial = True
     options = {"useSupportR": False, "useSupportT": False}
     flangeR = Flange("flange of rotational shaft")
     flangeT = TranslationalFlange("flange of translational rod")
@@ -135,6 +139,7 @@ class PartialCompliant(interfaces.PartialCompliant):
     Records phi_rel, w_rel, tau (and lossPower [W] when ``loss_power(phi_rel, w_rel, tau)``
     gives one). Subclasses define ``torque(phi_rel, w_rel)``.
     """
+    partial = True
     axis = ROTATIONAL_AXIS
     flange_a = Flange("left flange of compliant 1-dim. rotational component")
     flange_b = Flange("right flange of compliant 1-dim. rotational component")
@@ -157,6 +162,7 @@ class PartialCompliantWithRelativeStates(PartialCompliant):
     the scale of the error control of the state phi_rel is (e.g. the housing's angle when
     flange_a is fixed; see ``CompiledModel.nominals``).
     """
+    partial = True
     options = {"stateSelect": StateSelect.prefer}
     records_a_rel = True
     phi_nominal = Parameter(1e-4, "rad", "nominal value of phi_rel (used for scaling)",
@@ -172,6 +178,7 @@ class PartialTorque(PartialElementaryOneFlangeAndSupport2):
     Records phi = flange.phi − phi_support [rad], w = der(phi) [rad/s] and the accelerating
     torque tau = −flange.tau [N.m]. Subclasses define ``torque(e, phi, w)``.
     """
+    partial = True
 
     def torque(self, e, phi, w):
         """The accelerating torque [N.m] (acting on flange, positive direction)."""
@@ -191,6 +198,7 @@ class PartialFriction(friction.PartialFriction):
     ``acausal.components.friction``): w_relfric [rad/s], a_relfric [rad/s²], tau0, tau0_max
     [N.m], mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction torque tau
     [N.m] an algebraic variable; in smooth form tau = F(|w_relfric|)·tanh(w_relfric/w_smooth)."""
+    partial = True
     axis = ROTATIONAL_AXIS
     w_small = Parameter(1.0e10, "rad/s", "relative angular velocity near to zero if jumps due "
                                          "to a reinit(..) of the velocity can occur",
@@ -764,15 +772,11 @@ class Accelerate(PartialElementaryOneFlangeAndSupport2, interfaces.Accelerate):
 class Move(PartialElementaryOneFlangeAndSupport2, interfaces.Move):
     """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
     (angle [rad]), ``u[2]`` (angular velocity [rad/s]), ``u[3]`` (angular acceleration
-    [rad/s²]), numbered from 1 as in MSL: ``connect(src.y, move.u[1])``.
-
-    Difference from MSL (same as translational.Move): the compiler cannot yet be told that
-    u[2], u[3] are the derivatives of u[1]; the motion is phi = u[1], with its velocity and
-    acceleration taken from u[1] by algorithmic differentiation (u[1] must be a function of
-    time, as for Position(exact=True)). For consistent signals (MSL's requirement) this is
-    the same motion; MSL's deliberately inconsistent use (u[2] = u[3] = 0) is not
-    reproduced. u[2], u[3] must be connected; they are recorded as ``w_u``, ``a_u`` next to
-    the actual ``w``, ``a`` so that the two can be compared.
+    [rad/s²]), numbered from 1 as in MSL: ``connect(src.y, move.u[1])``. As in MSL, u[2]
+    and u[3] are taken as the derivatives of u[1], not derived from it: consistent signals
+    are the user's to give (MSL's deliberately inconsistent u[2] = u[3] = 0 moves the flange
+    without the reactions of its speed and acceleration). Records u[2], u[3] as ``w_u``,
+    ``a_u`` (equal to ``w``, ``a``).
     """
     u = VectorPort(RealInput, 3, tuple(f"{what} of flange with respect to support as input "
                                        f"signal" for what in
@@ -822,16 +826,58 @@ class InitializeFlange(Component):
         e.variable("w_flange", w, "rad/s", "= der(phi_flange)")
 
 
+class TorqueToAngleAdaptor(interfaces.FlowToPotentialAdaptor):
+    """Signal adaptor of a flange with the angle, speed and acceleration as outputs and the
+    torque as input (MSL Components.TorqueToAngleAdaptor, for FMUs): flange.tau = tau
+    [N.m]; phi = flange.phi [rad], w = der(phi) [rad/s] (option ``use_w``), a = der(w)
+    [rad/s²] (option ``use_a``; 0 without ``use_w``, as MSL's der(0)). The block with an
+    inertia behind it is what an FMU of a flange "with states" exposes (see
+    models.rotational_fmus.DirectInertia)."""
+    options = {"use_w": True, "use_a": True}
+    connectors = ("phi", "w", "a", "tau")
+    flange = Flange("flange", required=True)
+    phi = RealOutput("flange moves with angle phi due to torque tau [rad]")
+    w = ConditionalPort(RealOutput("flange moves with speed w due to torque tau [rad/s]"),
+                        "use_w")
+    a = ConditionalPort(RealOutput("flange moves with angular acceleration a due to torque "
+                                   "tau [rad/s2]"), "use_a")
+    tau = RealInput("torque to drive the flange [N.m]")
+
+
+class AngleToTorqueAdaptor(interfaces.PotentialToFlowAdaptor):
+    """Signal adaptor of a flange with the torque as output and the angle, speed and
+    acceleration as inputs (MSL Components.AngleToTorqueAdaptor, for FMUs): the flange
+    moves with the angle phi [rad], its speed w [rad/s] (option ``use_w``) and
+    acceleration a [rad/s²] (option ``use_a``) as given (w = der(phi), a = der(w) are the
+    user's to keep, as in MSL); tau = −flange.tau [N.m], the torque needed to move it so.
+    As in MSL the input w exists if use_w or use_a (``use_a`` implies ``use_w``)."""
+    options = {"use_w": True, "use_a": True}
+    connectors = ("phi", "w", "a", "tau")
+    flange = Flange("flange", required=True)
+    phi = RealInput("angle to drive the flange [rad]")
+    w = ConditionalPort(RealInput("speed to drive the flange (w = der(phi) required) "
+                                  "[rad/s]"), "use_w")
+    a = ConditionalPort(RealInput("angular acceleration to drive the flange (a = der(w) "
+                                  "required) [rad/s2]"), "use_a")
+    tau = RealOutput("torque needed to drive the flange according to phi, w, a [N.m]")
+
+    def __init__(self, name: str | None = None, **params):
+        params["use_w"] = params.get("use_w", True) or params.get("use_a", True)
+        super().__init__(name, **params)
+
+
 # =========================================================================================
 # Sensors
 # =========================================================================================
 class PartialAbsoluteSensor(Component):
     """Measures an absolute quantity of ``flange`` (no torque: flange.tau = 0)."""
+    partial = True
     flange = Flange("flange to be measured", required=True)
 
 
 class PartialRelativeSensor(Component):
     """Measures between ``flange_a`` and ``flange_b``."""
+    partial = True
     flange_a = Flange("left flange of shaft", required=True)
     flange_b = Flange("right flange of shaft", required=True)
 

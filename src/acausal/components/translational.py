@@ -58,7 +58,8 @@ __all__ = [
     # components
     "Fixed", "Mass", "Rod", "Spring", "Damper", "SpringDamper", "SupportFriction", "Brake",
     "MassWithStopAndFriction", "ElastoGap", "HardStop", "contact_force", "RollingResistance",
-    "Regularization", "IdealRollingWheel", "Vehicle",
+    "Regularization", "IdealRollingWheel", "Vehicle", "GeneralForceToPositionAdaptor",
+    "GeneralPositionToForceAdaptor",
     # sources
     "Force", "Force2", "ConstantForce", "ForceStep", "SignForce", "LinearSpeedDependentForce",
     "QuadraticSpeedDependentForce", "InverseSpeedDependentForce", "EddyCurrentForce",
@@ -75,6 +76,7 @@ __all__ = [
 # =========================================================================================
 class PartialTwoFlanges(interfaces.PartialTwoFlanges):
     """Component with two translational 1-D flanges ``flange_a``, ``flange_b``."""
+    partial = True
     axis = TRANSLATIONAL_AXIS
     flange_a = Flange("(left) driving flange (flange axis directed into cut plane, e. g. from "
                       "left to right)")
@@ -84,6 +86,7 @@ class PartialTwoFlanges(interfaces.PartialTwoFlanges):
 class PartialRigid(PartialTwoFlanges):
     """Two rigidly connected flanges at distance ``L`` [m]; ``s`` [m] is the centre:
     flange_a.s = s − L/2, flange_b.s = s + L/2 (the forces at the flanges may differ)."""
+    partial = True
     L = Parameter(0.0, "m", "length of component, from left flange to right flange "
                             "(= flange_b.s - flange_a.s)")
 
@@ -104,6 +107,7 @@ class PartialCompliant(PartialTwoFlanges, interfaces.PartialCompliant):
     ``loss_power(s_rel, v_rel, f)`` gives one, lossPower [W]. Subclasses define
     ``force(s_rel, v_rel)``.
     """
+    partial = True
 
     def force(self, s_rel, v_rel):
         """The force f [N] on flange_b for relative position s_rel [m] and speed v_rel [m/s]."""
@@ -120,6 +124,7 @@ class PartialCompliantWithRelativeStates(PartialCompliant):
     mass on the other side along). s_rel has MSL's nominal: s_nominal [m] (default
     1e-4), the scale of the error control of the state s_rel is (see
     ``CompiledModel.nominals``)."""
+    partial = True
     options = {"stateSelect": StateSelect.prefer}
     s_nominal = Parameter(1e-4, "m", "nominal value of s_rel (used for scaling)")
 
@@ -133,6 +138,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
     What acts on the flange reacts on the support: support.f = −flange.f; s = flange.s −
     support.s [m] (support.s = 0 without support).
     """
+    partial = True
     axis = TRANSLATIONAL_AXIS
     flange = Flange("flange of component")
     support = ConditionalPort(Flange("support/housing of component", required=True),
@@ -143,6 +149,7 @@ class PartialElementaryOneFlangeAndSupport2(interfaces.PartialElementaryOneFlang
 class PartialElementaryTwoFlangesAndSupport2(PartialTwoFlanges,
                                              interfaces.PartialElementaryTwoFlangesAndSupport2):
     """``flange_a``, ``flange_b`` and, with ``useSupport=True``, a ``support`` flange."""
+    partial = True
     support = ConditionalPort(Flange("support/housing of component", required=True),
                               "useSupport")
 
@@ -152,6 +159,7 @@ class PartialFriction(friction.PartialFriction):
     see ``acausal.components.friction``): v_relfric [m/s], a_relfric [m/s²], f0, f0_max [N],
     mode (3 unknown, 2 free, 1 forward, 0 stuck, −1 backward), the friction force f [N] an
     algebraic variable; in smooth form f = F(|v_relfric|)·tanh(v_relfric/v_smooth)."""
+    partial = True
     axis = TRANSLATIONAL_AXIS
     v_small = Parameter(1e-3, "m/s", "relative velocity near to zero", positive=True)
     v_smooth = Parameter(1e-3, "m/s", "smooth form only: f = f_pos(|v_relfric|)*"
@@ -162,6 +170,7 @@ class PartialForce(PartialElementaryOneFlangeAndSupport2):
     """A force law on ``flange`` (relative to the support). MSL's variable ``f`` = flange.f
     [N] is recorded: a force f_constant > 0 pushing the flange's body forward has
     f = −f_constant. Subclasses define ``flange_force(e)`` (the value of flange.f)."""
+    partial = True
     flange = Flange("flange of component", required=True)
 
     def flange_force(self, e):
@@ -701,6 +710,52 @@ class Vehicle(Component):
         return filtered
 
 
+class GeneralForceToPositionAdaptor(interfaces.FlowToPotentialAdaptor):
+    """Signal adaptor of a flange with the position, speed and acceleration as outputs and
+    the force as input (MSL Components.GeneralForceToPositionAdaptor, for FMUs): flange.f
+    = f [N]; p = flange.s [m], pder = der(p) [m/s] (option ``use_pder``), pder2 = der(pder)
+    [m/s²] (option ``use_pder2``, only with ``use_pder`` as in MSL). MSL's inputs of the
+    force's derivatives are final off there and not offered. The block with a mass behind
+    it is what an FMU of a flange "with states" exposes (see
+    models.translational_fmus.DirectMass)."""
+    options = {"use_pder": True, "use_pder2": True}
+    connectors = ("p", "pder", "pder2", "f")
+    flange = Flange("flange", required=True)
+    p = RealOutput("output for potential: position s [m]")
+    pder = ConditionalPort(RealOutput("optional output for der(potential): velocity v "
+                                      "[m/s]"), "use_pder")
+    pder2 = ConditionalPort(RealOutput("optional output for der2(potential): acceleration "
+                                       "a [m/s2]"), "use_pder2")
+    f = RealInput("input for flow: force f [N]")
+
+    def __init__(self, name: str | None = None, **params):
+        params["use_pder2"] = params.get("use_pder", True) and params.get("use_pder2", True)
+        super().__init__(name, **params)
+
+
+class GeneralPositionToForceAdaptor(interfaces.PotentialToFlowAdaptor):
+    """Signal adaptor of a flange with the force as output and the position, speed and
+    acceleration as inputs (MSL Components.GeneralPositionToForceAdaptor, for FMUs): the
+    flange moves with the position p [m], its speed pder [m/s] (option ``use_pder``) and
+    acceleration pder2 [m/s²] (option ``use_pder2``, only with ``use_pder`` as in MSL) as
+    given (the user's to keep consistent, as in MSL); f = −flange.f [N], the force needed
+    to move it so. MSL's outputs of the force's derivatives are final off there and not
+    offered."""
+    options = {"use_pder": True, "use_pder2": True}
+    connectors = ("p", "pder", "pder2", "f")
+    flange = Flange("flange", required=True)
+    p = RealInput("input for potential: position s [m]")
+    pder = ConditionalPort(RealInput("optional input for der(potential): velocity v [m/s]"),
+                           "use_pder")
+    pder2 = ConditionalPort(RealInput("optional input for der2(potential): acceleration a "
+                                      "[m/s2]"), "use_pder2")
+    f = RealOutput("output for flow: force f [N] needed to move the flange so")
+
+    def __init__(self, name: str | None = None, **params):
+        params["use_pder2"] = params.get("use_pder", True) and params.get("use_pder2", True)
+        super().__init__(name, **params)
+
+
 # =========================================================================================
 # Sources
 # =========================================================================================
@@ -877,15 +932,10 @@ class Accelerate(PartialElementaryOneFlangeAndSupport2, interfaces.Accelerate):
 class Move(PartialElementaryOneFlangeAndSupport2, interfaces.Move):
     """Forced movement of ``flange`` (relative to the support) by the signals ``u[1]``
     (position [m]), ``u[2]`` (velocity [m/s]), ``u[3]`` (acceleration [m/s²]), numbered from 1
-    as in MSL: ``connect(src.y, move.u[1])``.
-
-    Difference from MSL: the compiler cannot yet be told that u[2], u[3] are the derivatives
-    of u[1]; the motion is s = u[1] with its velocity and acceleration taken from u[1] by
-    algorithmic differentiation (u[1] must be a function of time, as for
-    Position(exact=True)). For consistent signals (MSL's requirement) this is the same
-    motion; MSL's deliberate inconsistent use (u[2] = u[3] = 0 to get position-dependent
-    forces only) is not reproduced. u[2], u[3] must be connected; they are recorded as
-    ``v_u``, ``a_u`` next to the actual ``v``, ``a`` so the two can be compared.
+    as in MSL: ``connect(src.y, move.u[1])``. As in MSL, u[2] and u[3] are taken as the
+    derivatives of u[1], not derived from it: consistent signals are the user's to give
+    (MSL's deliberately inconsistent u[2] = u[3] = 0 gives position-dependent forces only).
+    Records u[2], u[3] as ``v_u``, ``a_u`` (equal to ``v``, ``a``).
     """
     u = VectorPort(RealInput, 3, tuple(f"{what} of flange as input signal" for what in
                                        ("position", "velocity", "acceleration")))
@@ -910,11 +960,13 @@ class ConstantSpeed(PartialElementaryOneFlangeAndSupport2, interfaces.ConstantSp
 # =========================================================================================
 class PartialAbsoluteSensor(Component):
     """Measures an absolute quantity of ``flange`` (no force: flange.f = 0)."""
+    partial = True
     flange = Flange("flange to be measured", required=True)
 
 
 class PartialRelativeSensor(Component):
     """Measures between ``flange_a`` and ``flange_b`` (0 = flange_a.f + flange_b.f)."""
+    partial = True
     flange_a = Flange("left flange of sensor", required=True)
     flange_b = Flange("right flange of sensor", required=True)
 

@@ -24,7 +24,7 @@ from __future__ import annotations
 import functools
 from enum import Enum
 
-from ..errors import DisabledPortError, ParameterError, PortConnectionError
+from ..errors import DisabledPortError, ParameterError, PortConnectionError, StructureError
 from . import documentation
 from .parameter import Parameter
 from .ports import PhysicalPort, Port, PortVector, RealOutput, VectorPort
@@ -137,6 +137,22 @@ class ConditionalPort:
             f"with {kind}({self.option}={_shown(self.value)}) to have it")
 
 
+def _refuse_partial(cls: type) -> None:
+    """The StructureError for building the partial class ``cls``, naming its subclasses."""
+    concrete, todo = [], list(cls.__subclasses__())
+    while todo:
+        sub = todo.pop(0)
+        if sub.__dict__.get("partial"):
+            todo += sub.__subclasses__()
+        elif not sub.__name__.startswith("_") and sub.__name__ not in concrete:
+            concrete.append(sub.__name__)
+    use = f"use one of its subclasses ({', '.join(concrete[:8])}" \
+        f"{', ...' if len(concrete) > 8 else ''}), or " if concrete else ""
+    raise StructureError(f"{cls.__name__} is a partial class (MSL's 'partial'): it declares what "
+                         f"its subclasses share and is not a component by itself; {use}extend "
+                         f"it with the equations it leaves open")
+
+
 class Component:
     """Base of every component.
 
@@ -147,6 +163,10 @@ class Component:
     ``self.<name>``, are fixed once the component is built, and decide which
     ``ConditionalPort`` exist. ``required`` names parameters that have no default (MSL
     declares them without a value): they must be given.
+
+    A class that declares ``partial = True`` in its own body is MSL's ``partial`` class:
+    what its subclasses share (interfaces, PartialCompliant, PartialFriction); building it
+    raises a StructureError naming the subclasses to use instead.
 
     ``nominal={"w_rel": 1e-4}`` sets the nominal magnitude (the scale of the integrator's
     absolute error control, Modelica's ``w_rel(nominal=1e-4)``) of variables of this
@@ -170,6 +190,8 @@ class Component:
     def __init__(self, name: str | None = None, **params):
         d = self.__dict__
         cls = type(self)
+        if cls.__dict__.get("partial"):
+            _refuse_partial(cls)
         d["_owner"] = None
         d["_name"] = name or ""
         d["_children"] = {}

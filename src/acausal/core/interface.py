@@ -1,7 +1,10 @@
 """Input and Output: the top-level signal interface of a model.
 
 An ``Input`` becomes an input of the compiled model (a value given at simulation time, an FMU
-input, an OCP control), named by its instance path; an ``Output`` becomes an output.
+input, an OCP control), named by its instance path; an ``Output`` becomes an output. The
+model's own RealInput / RealOutput connectors (class attributes of a Model subclass, what
+makes it a block to connect in a bigger model) are inputs and outputs too, by their names,
+when that model is the one compiled: Modelica's top-level connectors.
 """
 from __future__ import annotations
 

@@ -64,7 +64,7 @@ import casadi as ca
 from ..errors import AcausalError, FmuExportError, SimulationError
 from .. import numerics
 from ..simulation.initialization import model_equations
-from ..simulation.simulate import integrator_settings
+from ..simulation.problem import integrator_settings
 from .destination import fmu_path, identifier
 from .model_description import base_unit_attributes, naming_convention
 from .variables import fmu_variables

@@ -38,6 +38,10 @@ no compiler or simulation imports.
                         EddyCurrentBrake examples (a brake heating a heat capacitor)
     heat_losses         TranslationalHeatLosses, RotationalHeatLosses: MSL's HeatLosses
                         examples (every dissipating element's heatPort to one convection)
+    rotational_fmus,    MSL's GenerationOfFMUs examples (RotationalGenerationOfFMUs,
+    translational_fmus  TranslationalGenerationOfFMUs) and the blocks of their Utilities
+                        to export as FMUs: DirectInertia, InverseInertia, Spring,
+                        SpringDamper; DirectMass, InverseMass, Spring, SpringDamper
     custom_components   CubicSpring, Flywheel, SimpleDCMotor; duffing_model, motor_model
     robot_axis          OneAxis: MSL's RobotR3.OneAxis (path planning, P-PI controller,
                         op-amp current-controlled Motor, GearType1 with bearing friction),
@@ -47,10 +51,13 @@ no compiler or simulation imports.
     multibody_loops     MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
                         MultiBodyEngine1a (on MultiBodyEngine1Base): MSL MultiBody's Loops
                         examples; EngineJointRRP, ParallelFourbar
+    blocks_examples     InverseModel, ShowLogicalSources, TotalHarmonicDistortion: MSL's
+                        Blocks examples (InverseModel compiled with index_reduction=True)
     robots              dh_chain: a serial arm from its Denavit–Hartenberg table (standard or
                         modified); from_urdf: a fixed-base robot from its URDF file (also
                         ``acausal.multibody``)
 """
+from .blocks_examples import InverseModel, ShowLogicalSources, TotalHarmonicDistortion
 from .bouncing_ball import BouncingBall, Floor
 from .cartpole import CartPole, FrictionCartPole
 from .circuits import CauerLowPassAnalog, ChuaCircuit, HeatingRectifier, ResistorExample
@@ -73,6 +80,8 @@ from .multibody_loops import (EngineJointRRP, MultiBodyEngine1a, MultiBodyEngine
                               MultiBodyFourbar1, MultiBodyFourbar2, MultiBodyFourbarAnalytic,
                               ParallelFourbar)
 from .robots import dh_chain, from_urdf
+from .rotational_fmus import GenerationOfFMUs as RotationalGenerationOfFMUs
+from .translational_fmus import GenerationOfFMUs as TranslationalGenerationOfFMUs
 from .oscillators import Oscillator
 from .pendulum_on_cart import PendulumOnCart
 from .pendulums import PendulumChain
@@ -93,4 +102,6 @@ __all__ = ["BouncingBall", "Floor", "CartPole", "FrictionCartPole", "GantryCrane
            "HeatingRectifier", "DCMotorCircuit", "OneAxis", "MultiBodyPendulum",
            "MultiBodyDoublePendulum", "chain", "MultiBodyFourbar1", "MultiBodyFourbar2",
            "MultiBodyFourbarAnalytic", "MultiBodyEngine1Base", "MultiBodyEngine1a",
-           "EngineJointRRP", "ParallelFourbar", "dh_chain", "from_urdf"]
+           "EngineJointRRP", "ParallelFourbar", "dh_chain", "from_urdf", "InverseModel",
+           "ShowLogicalSources", "TotalHarmonicDistortion", "RotationalGenerationOfFMUs",
+           "TranslationalGenerationOfFMUs"]

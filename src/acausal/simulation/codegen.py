@@ -127,7 +127,7 @@ def _library(functions: list[ca.Function], name: str) -> Path:
 
 def dae_problem(model, solver: str, u_expr: ca.SX, p, scale) -> dict:
     """The integrator's DAE dict on the generated code: states [x; z] divided by ``scale``
-    (as ``simulate.scaled``), inputs the functions of time ``u_expr``, the parameter values
+    (as ``problem.scaled``), inputs the functions of time ``u_expr``, the parameter values
     ``p`` constants of the call (the integrator has no parameters)."""
     nx = model.x.numel()
     f = equations(model, derivatives=solver not in WITHOUT_DERIVATIVES)

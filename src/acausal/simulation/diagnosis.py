@@ -6,7 +6,8 @@ Jacobian Φ_q loses rank (links lining up: a dead point, a parallelogram passing
 collinear position), the constraints no longer determine the motion, and the rows that became
 dependent and the coordinates are named. Otherwise the advice follows the code and the
 tolerances: a Newton iteration that cannot converge at very tight tolerances needs looser
-ones, not tighter.
+ones, not tighter. Equations of motion that are not finite at the start are explained too:
+a singular mass matrix by the coordinates it leaves without inertia (``not_finite``).
 """
 from __future__ import annotations
 
@@ -15,6 +16,7 @@ import re
 import sys
 from contextlib import contextmanager
 
+import casadi as ca
 import numpy as np
 
 from ..numerics import independent_rows, short_error
@@ -23,13 +25,18 @@ TIGHT_RTOL, TIGHT_ATOL = 1e-10, 1e-12
 
 
 def failure_message(model, error: Exception, a: float, b: float, rtol: float, atol: float,
-                    state_near=None, p=None, u_at=None) -> str:
+                    state_near=None, p=None, u_at=None, start=None) -> str:
     """The message of a failed integration of ``model`` over [a, b]: what the solver said,
     and why in the model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None)
-    for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs."""
+    for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs;
+    ``start`` the (x, z) the integration started from at a."""
     said = short_error(error).rstrip(". ")
     head = f"simulation of '{model.name}' failed between t = {a:g} and {b:g} s: {said}"
     text = str(error)
+    if start is not None and model.z.numel() and not model.has_loops and p is not None:
+        undetermined = _undetermined(model, a, *start, u_at(a), p)
+        if undetermined:
+            return f"{head}. {undetermined}"
     found = re.search(r"At t = ([-+0-9.eE]+)", text)
     t_fail = float(found.group(1)) if found else None
     if model.has_loops and t_fail is not None and state_near is not None:
@@ -48,6 +55,27 @@ def failure_message(model, error: Exception, a: float, b: float, rtol: float, at
                 f"solve): loosen them, e.g. rtol = {TIGHT_RTOL:g}, atol = {TIGHT_ATOL:g}")
     return (f"{head}. Check the parameters and the initial values (a value that makes the "
             f"equations blow up), or try another solver")
+
+
+def _undetermined(model, t, x, z, u, p) -> str | None:
+    """The description of algebraic variables that the algebraic equations leave free at
+    (t, x, z) (their Jacobian in z singular there), or None. For DAEs of index 1: a closed
+    loop's multipliers enter no equation of their own by design."""
+    J = np.array(model.function("alg_z", [ca.jacobian(model.alg, model.z)])(t, x, z, u, p),
+                 dtype=float)
+    if not np.all(np.isfinite(J)):
+        return None
+    s, V = np.linalg.svd(J)[1:]
+    tol = 1e-10 * max(1.0, s.max(initial=0.0))
+    if s.size == J.shape[1] and s.min() > tol:
+        return None
+    null = V[-1] if s.size == J.shape[1] else V[s.size]
+    free = [model.z_names[k] for k in np.flatnonzero(np.abs(null) > 0.1 * np.abs(null).max())]
+    return (f"The algebraic equations do not determine {', '.join(free)} at t = {t:g} s "
+            f"(their Jacobian is singular there): those are parts without mass or inertia "
+            f"whose common motion nothing holds (say, a spring-damper or a chain of dampers "
+            f"connected to nothing fixed), or a part of a network that floats; connect them "
+            f"to a fixed point (Fixed, Ground) or give them mass or inertia")
 
 
 def _singular_configuration(model, t, x, z, u, p) -> str | None:
@@ -82,3 +110,25 @@ def quiet_stderr():
         os.dup2(saved, 2)
         os.close(saved)
         os.close(null)
+
+
+def not_finite(model, x0, fx0, p, u0, t0) -> str:
+    """Why the state derivatives are not finite at the start: a singular mass matrix (named
+    by its coordinates), or non-finite values."""
+    bad = [f"d({n})/dt = {v}" for n, v in zip(model.x_names, fx0) if not np.isfinite(v)][:4]
+    head = f"the equations of motion of '{model.name}' are not finite at t = {t0:g} s " \
+           f"({', '.join(bad)})"
+    L = model.lagrange
+    if L.q.numel() and not model.z.numel():
+        M = np.array(model.function("M", [L.M])(t0, x0, np.zeros(0), u0, p), dtype=float)
+        if np.all(np.isfinite(M)):
+            w, V = np.linalg.eigh(M)
+            tol = 1e-12 * max(1.0, np.abs(w).max(initial=0.0))
+            null = [L.q_names[k] for k in np.flatnonzero(np.abs(V[:, np.argmin(np.abs(w))])
+                                                         > 0.1)] if w.min() <= tol else []
+            if null:
+                return (f"{head}: the mass matrix is singular there, along the coordinates "
+                        f"{', '.join(null)}: a part without mass or inertia moves them; give it "
+                        f"mass / inertia, or connect it to something that has some")
+    return (f"{head}; check the parameters, inputs and initial values for values that make "
+            f"the equations infinite (a division by zero, a zero length)")

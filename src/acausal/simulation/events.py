@@ -543,22 +543,28 @@ class EventSimulation(ModeIteration):
         return (f"; the equations leave {', '.join(names)} undetermined there and are not "
                 f"consistent (check the equations the components give for these modes)")
 
-    def run(self, grid, x, z, time_events):
+    def run(self, grid, x, z, time_events, start: bool = True):
         """Integrate over ``grid`` from (x, z) at grid[0]: (T, X, Z, D) with the left and right
-        limits at events (T repeats their time), D the modes per column."""
-        t = float(grid[0])
+        limits at events (T repeats their time), D the modes per column. A time event or
+        sample instant at the last time is processed there (its right limit the last
+        column, as a Modelica tool ends). ``start``: grid[0] is the simulation's start,
+        where a sample trigger true initially ticks (a run that continues one, a stepper's
+        next step, has processed the events at its start already)."""
+        t, t1 = float(grid[0]), float(grid[-1])
         d = self.p[self.model.mode_params]
-        self.ticks = self._clock_instants(t, float(grid[-1]))
+        self.ticks = self._clock_instants(t, t1, start)
         x, z, d = self.event(t, x, z, d, {})
         self.cols = cols = [(t, x, z, d)]
         sides = side(self.indicators(t, x, z, d), np.ones(len(self.names)))
         recent = deque(maxlen=CHATTER_EVENTS)
         span = CHATTER_SPAN * (grid[-1] - grid[0])
-        stops = [s for s in instants(time_events) if grid[-1] - s > instant(grid[-1])]
-        stops.append(float(grid[-1]))
+        stops = [s for s in instants(time_events) if t1 - s > instant(t1)]
+        stops.append(t1)
+        at_end = bool(self.model.event_times(self.p, t1 - instant(t1), t1 + instant(t1))) \
+            or any(np.any(np.abs(ticks - t1) <= instant(t1)) for ticks in self.ticks)
         window = FIRST_WINDOW
         for stop in stops:
-            end = stop if stop == grid[-1] else just_before(stop)
+            end = stop if stop == t1 else just_before(stop)
             while t < end:
                 times, output = _checks(grid, t, end, window, self.checks_per_run)
                 X, Z = self.integrate(t, times, x, z, d)
@@ -587,20 +593,22 @@ class EventSimulation(ModeIteration):
                 sides = side(self.indicators(t, x, z, d), new)
                 recent.extend((te, k) for k in crossed)
                 self._chattering(recent, span)
-            if stop != grid[-1]:               # a time event: restart at it
+            if stop != t1 or at_end:           # a time event: restart at it
                 t = stop
                 g = self.indicators(t, x, z, d)
                 new = side(g, sides)
                 crossed = {k: int(new[k]) for k in np.flatnonzero(new != sides)}
                 n_log = len(self.log)
                 x1, z1, d1 = self.event(t, x, z, d, crossed)
-                if len(self.log) > n_log:
+                if len(self.log) > n_log and stop != t1:   # (at t1: the column integrated to)
                     cols.append((t, x, z, d))
                 x, z, d = x1, z1, d1
                 ends = self._ends(t, x, z, d)
                 # an output time at the event, or just before it (to rounding, where the
                 # integration towards the event stops short of it): the right limit there
-                on_grid = np.any((grid > t - instant(t)) & (grid <= t))
+                # (at t1, only if the event changed something: else the column integrated to
+                # is the right limit already)
+                on_grid = np.any((grid > t - instant(t)) & (grid <= t)) and stop != t1
                 if on_grid or len(self.log) > n_log or ends:
                     cols.append((t, x, z, d))
                 if ends:
@@ -627,11 +635,12 @@ class EventSimulation(ModeIteration):
             self.terminated = Termination(float(t), component, text)
         return bool(hit.size)
 
-    def _clock_instants(self, t0: float, t1: float) -> list[np.ndarray]:
-        """The instants of each sample trigger: its time events in (t0, t1) (the same
-        numbers as ``CompiledModel.event_times``), and t0 if the trigger is true at the
-        start (``initial``; otherwise the start is initialization, where Modelica's
-        when-clauses are inactive, even at a sample instant)."""
+    def _clock_instants(self, t0: float, t1: float, start: bool) -> list[np.ndarray]:
+        """The instants of each sample trigger: its time events in (t0, t1] (the same
+        numbers as ``CompiledModel.event_times``), and t0 if ``start`` is the simulation's
+        start and the trigger is true there (``initial``; otherwise the start is
+        initialization, where Modelica's when-clauses are inactive, even at a sample
+        instant)."""
         ev = self.model.state_events
         if not self.clocks:
             return []
@@ -641,8 +650,8 @@ class EventSimulation(ModeIteration):
             if not period > 0:
                 raise SimulationError(f"the sample period of '{self.mode_owner[c]}' must be "
                                       f"> 0 s, got {period:g}")
-            ticks = event_times([first], [period], t0, t1)
-            out.append(np.array(ticks + [t0] if initial else ticks))
+            ticks = event_times([first], [period], t0, t1 + instant(t1))
+            out.append(np.array(ticks + [t0] if initial and start else ticks))
         return out
 
     def _chattering(self, recent: deque, span: float):

@@ -6,6 +6,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import SimulationError, VariableNameError
+from .buffers import Buffered
 
 
 @dataclass(frozen=True)
@@ -86,13 +87,20 @@ class Result:
         return self._units
 
     def _recorded(self) -> np.ndarray:
-        """The recorded expressions that are not states, on the grid (evaluated once)."""
+        """The recorded expressions that are not states, on the grid (evaluated once, time
+        by time into one array: a mapped call's result converted from a DM costs more than
+        the evaluation for a large model, 90 000 values on 101 times: 2.8 s against 0.7)."""
         if self._values is None:
-            n = self.t.size
-            V = self._model.recorded_function.map(n)(self.t.reshape(1, -1), self._states,
-                                                     self._algebraics, self._inputs,
-                                                     self._param_columns())
-            self._values = np.asarray(V.full(), dtype=float)
+            f = self._model.recorded_function
+            columns = (self.t.reshape(1, -1), self._states, self._algebraics, self._inputs,
+                       self._param_columns())
+            buffered = Buffered(f, [np.zeros(f.nnz_in(i)) for i in range(f.n_in())])
+            self._values = np.empty((f.nnz_out(0), self.t.size))
+            for k in range(self.t.size):
+                for arg, values in zip(buffered.args, columns):
+                    arg[:] = values[:, k]
+                buffered.call()
+                self._values[:, k] = buffered.res[0]
         return self._values
 
     def _param_columns(self) -> np.ndarray:

@@ -36,7 +36,7 @@ from . import assertions
 from .buffers import Buffered
 from .events import EventSimulation
 from .initialization import initial_state
-from .simulate import folded, integrator_settings, scaled
+from .problem import folded, integrator_settings, scaled
 
 SOLVERS = ("dopri", "collocation", "cvodes", "idas")
 MAX_SUBSTEPS = 2 ** 16      # a sample period split further than this: the model is stiff
@@ -55,7 +55,7 @@ _B4 = (5179 / 57600, 0.0, 7571 / 16695, 393 / 640, -92097 / 339200, 187 / 2100, 
 
 def dopri_step(model, p: np.ndarray) -> ca.Function:
     """One Dormand–Prince 5(4) step of the ODE of ``model`` with the parameter values ``p``
-    folded in (``simulate.folded``), as a CasADi Function (x, u, t, h, tol_abs, rtol) ->
+    folded in (``problem.folded``), as a CasADi Function (x, u, t, h, tol_abs, rtol) ->
     (x after the step h [s] from t with inputs u held, the estimated error over its
     tolerance atol_i + rtol·|x_i|, max over the states: ≤ 1 to accept)."""
     x, u, t = model.x, model.u, model.t
@@ -178,6 +178,7 @@ class Stepper:
             active = model.mobility_at(self.t, self._x, self._z, self.u, self.p)[0]
             self.p[model.loop_switches] = active
         self.events = []
+        self._started = False            # no step yet: the next one starts the simulation
         self._build()
         return self.outputs()
 
@@ -371,7 +372,9 @@ class Stepper:
                               plugin, opts)
         run.checks_per_run = EVENT_CHECKS
         grid = np.array([self.t, self.t + h])
-        T, X, Z, D = run.run(grid, self._x, self._z, model.event_times(self.p, *grid))
+        T, X, Z, D = run.run(grid, self._x, self._z, model.event_times(self.p, *grid),
+                             start=not self._started)
+        self._started = True
         self._x[:], self._z[:] = X[:, -1], Z[:, -1]
         self.p[model.mode_params] = D[:, -1]
         self.events += run.log

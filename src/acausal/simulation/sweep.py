@@ -26,11 +26,12 @@ import numpy as np
 from ..errors import AcausalError, SimulationError
 from ..numerics import event_times, first_failed_assertion
 from . import assertions
-from .diagnosis import failure_message, quiet_stderr
+from .diagnosis import failure_message, not_finite, quiet_stderr
 from .initialization import initial_state
 from .inputs import Samples, input_signal
-from .simulate import (_check_finite, _check_settings, _grid, _not_finite, check_inputs,
-                       integrator_problem, integrator_settings, scaled, simulate)
+from .problem import (check_finite, check_inputs, check_settings, integrator_problem,
+                      integrator_settings, output_grid, scaled)
+from .simulate import simulate
 from .stiffness import adams_step_budget, is_stiff, spectral_radius
 
 KINDS = ("params", "x0", "inputs")
@@ -115,9 +116,9 @@ def sweep(model, t_final: float, *, runs=None, params: dict | None = None,
     A run that cannot start (a parameter out of its range, inconsistent start values) or
     whose integration fails is reported in ``failed`` (index → message) with NaN values.
     """
-    grid = _grid(t_final, t)
-    _check_settings(rtol=rtol, atol=atol, max_step=max_step)
-    _check_finite("guess", guess)
+    grid = output_grid(t_final, t)
+    check_settings(rtol=rtol, atol=atol, max_step=max_step)
+    check_finite("guess", guess)
     table = variations(model, runs, params, x0, inputs)
     variables = list(variables) if variables is not None else \
         model.x_names + model.output_names
@@ -340,7 +341,7 @@ class _Engine:
                                                            & (self.N[:, k] < np.inf)):
                     self.N[:, k] = model.nominals(self.P[:, k], s["nominal"])   # or its error
                 if run["x0"] or not mapped:
-                    _check_finite("x0", run["x0"])
+                    check_finite("x0", run["x0"])
                     x, z = initial_state(model, dict(run["x0"]), self.P[:, k], U0[:, k], t0,
                                          s["guess"], initial_equations=True)
                     self.W0[:, k] = np.concatenate([np.ravel(x), np.ravel(z)])
@@ -364,7 +365,7 @@ class _Engine:
         good = np.all(np.isfinite(fx0), axis=0)
         for j in np.flatnonzero(~good):
             k = ok[j]
-            self.failed[k] = _not_finite(model, self.W0[:nx, k], fx0[:, j] * self.N[:nx, k],
+            self.failed[k] = not_finite(model, self.W0[:nx, k], fx0[:, j] * self.N[:nx, k],
                                          self.P[:, k], self.U[:, k], grid[0])
         ok, X0, Q, fx0 = ok[good], X0[:, good], Q[:, good], fx0[:, good]
         if given:

@@ -36,6 +36,7 @@ class Animated(Component):
 
 class PartialTwoFrames(Animated):
     """MSL's Interfaces.PartialTwoFrames: a joint's frame_a and frame_b."""
+    partial = True
     frame_a = Frame_a("coordinate system fixed to the joint with one cut-force and "
                       "cut-torque")
     frame_b = Frame_b("coordinate system fixed to the joint with one cut-force and "

@@ -73,12 +73,12 @@ class FixedFrame(_Visualizer):
                                               "completely absorbed)", nonnegative=True)
 
     def __init__(self, name: str | None = None, **params):
+        super().__init__(name, **params)           # (checks the values given first)
         if "length" in params and "diameter" not in params:
-            params["diameter"] = params["length"] / 40
+            self.diameter = self.length / 40
         for c in ("color_y", "color_z"):
             if "color_x" in params and c not in params:
-                params[c] = params["color_x"]
-        super().__init__(name, **params)
+                setattr(self, c, self.color_x)
 
     def shape(self) -> dict:
         return {**super().shape(), "showLabels": self.showLabels}

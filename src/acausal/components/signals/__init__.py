@@ -36,8 +36,10 @@ Math blocks (Modelica.Blocks.Math, MSL 4.1): Abs and Sign (MSL's ``generateEvent
 events where u crosses 0, a smooth form as Limiter's), the functions of one input (Sqrt,
 Sin, ..., Log10, Power, Exponentiation; where MSL requires u in a domain, Sqrt, Asin, Acos,
 Log, Log10, the requirement is an assertion: simulate() stops with a SimulationError
-naming the block), Atan2, Max, Min, MinMax, MultiSum, MultiProduct, MatrixGain, and the
-sampled Mean and RootMeanSquare over periods 1/f. Nonlinear: SlewRateLimiter and
+naming the block), Atan2, Max, Min, MinMax, MultiSum, MultiProduct, MatrixGain, the
+sampled Mean, RootMeanSquare, Harmonic and TotalHarmonicDistortion over periods 1/f, and
+InverseBlockConstraints (inverse models; with ``compile(model, index_reduction=True)``
+where the inverted block has no direct feedthrough). Nonlinear: SlewRateLimiter and
 PadeDelay (a delay approximated by a rational transfer function). FixedDelay and
 VariableDelay (y = u(time − delayTime)) are not available: a true delay makes a delay
 differential equation, which the compiled form (an ODE/DAE in the present states) and
@@ -62,7 +64,8 @@ from .sources import (Constant, Step, Ramp, Sine, Cosine, ExpSine, Pulse, Trapez
 from .math_blocks import (Gain, Add, Add3, Feedback, Product, Division, Sum, Abs, Sign,
                           Sqrt, Sin, Cos, Tan, Asin, Acos, Atan, Sinh, Cosh, Tanh, Exp,
                           Power, Exponentiation, Log, Log10, Atan2, Max, Min, MinMax, MultiSum,
-                          MultiProduct, MatrixGain, Mean, RootMeanSquare)
+                          MultiProduct, MatrixGain, Mean, RootMeanSquare,
+                          InverseBlockConstraints, Harmonic, TotalHarmonicDistortion)
 from .routing import (RealPassThrough, Replicator, ExtractSignal, Multiplex, DeMultiplex,
                       Multiplex2, Multiplex3, Multiplex4, Multiplex5, Multiplex6, DeMultiplex2,
                       DeMultiplex3, DeMultiplex4, DeMultiplex5, DeMultiplex6)
@@ -86,8 +89,9 @@ __all__ = [
     "VariableLimiter", "DeadZone", "LimiterHomotopy", "VariableLimiterHomotopy", "RealPassThrough",
     "Abs", "Sign", "Sqrt", "Sin", "Cos", "Tan", "Asin", "Acos", "Atan", "Sinh", "Cosh", "Tanh",
     "Exp", "Power", "Exponentiation", "Log", "Log10", "Atan2", "Max", "Min", "MinMax", "MultiSum",
-    "MultiProduct", "MatrixGain", "Mean", "RootMeanSquare", "SlewRateLimiter", "PadeDelay",
-    "pade_polynomials", "balance_abc", "Replicator", "ExtractSignal", "Multiplex", "DeMultiplex",
+    "MultiProduct", "MatrixGain", "Mean", "RootMeanSquare", "InverseBlockConstraints",
+    "Harmonic", "TotalHarmonicDistortion", "SlewRateLimiter", "PadeDelay", "pade_polynomials",
+    "balance_abc", "Replicator", "ExtractSignal", "Multiplex", "DeMultiplex",
     "Multiplex2", "Multiplex3", "Multiplex4", "Multiplex5", "Multiplex6", "DeMultiplex2",
     "DeMultiplex3", "DeMultiplex4", "DeMultiplex5", "DeMultiplex6",
 ]

@@ -1,5 +1,7 @@
 """The interfaces of the blocks (Modelica.Blocks.Interfaces: SO, SISO, SI2SO) and what the
-blocks of every module share: start values, sized classes, initialization (``Init``)."""
+blocks of every module share: start values, sized classes, initialization (``Init``), the
+refusal of a smooth form by blocks whose output changes at events only (``refuse_smooth``, for
+the logical, discrete and electrical switching blocks too)."""
 from __future__ import annotations
 
 import math
@@ -9,7 +11,8 @@ import casadi as ca
 import numpy as np
 
 from ...core import BooleanInput, Component, Parameter, RealInput, RealOutput, VectorPort
-from ...errors import ParameterError
+from ...core.component import who
+from ...errors import ParameterError, StructureError
 
 
 #: Modelica.Constants.eps: the smallest relative difference the MSL blocks distinguish.
@@ -18,16 +21,19 @@ EPS = 1e-15
 
 class SO(Component):
     """Single output ``y``."""
+    partial = True
     y = RealOutput("connector of Real output signal")
 
 
 class SISO(SO):
     """Single input ``u``, single output ``y``."""
+    partial = True
     u = RealInput("connector of Real input signal")
 
 
 class SI2SO(SO):
     """Two inputs ``u1``, ``u2``, single output ``y``."""
+    partial = True
     u1 = RealInput("connector of Real input signal 1")
     u2 = RealInput("connector of Real input signal 2")
 
@@ -38,6 +44,7 @@ class SignalSource(SO):
     Subclasses implement ``signal(t)``: the value without offset at time t ≥ startTime [s],
     and ``before()`` if it is not 0.
     """
+    partial = True
     offset = Parameter(0.0, "", "offset of output signal y")
     startTime = Parameter(0.0, "s", "output y = offset for time < startTime")
 
@@ -59,6 +66,16 @@ class SignalSource(SO):
                                                   self.signal(t)))
         for time, period in self.events():
             e.time_event(time, period)
+
+
+def refuse_smooth(block: Component, builder) -> None:
+    """A StructureError when the model is compiled in smooth form (``builder.smooth``) and
+    ``block`` has no smooth form (its output changes at events only)."""
+    if builder.smooth:
+        raise StructureError(
+            f"{who(block)} has no smooth form: its output is a discrete value that changes "
+            f"at events only; compile without smooth=True, or write the switching law as a "
+            f"smooth expression (e.g. a tanh blend) for optimal control")
 
 
 def _start(value, what: str) -> float:
@@ -91,7 +108,8 @@ class _Sized:
             base._classes[key] = type(base.__name__, (base,), {
                 "__doc__": base._written, "_written": base._written,
                 "__module__": base.__module__,
-                "__qualname__": base.__qualname__, "_key": key, **base._declare(*key)})
+                "__qualname__": base.__qualname__, "_key": key,
+                "partial": base.__dict__.get("partial", False), **base._declare(*key)})
         return base._classes[key]
 
     def __reduce_ex__(self, protocol):

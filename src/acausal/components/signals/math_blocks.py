@@ -8,10 +8,11 @@ from functools import reduce
 import casadi as ca
 import numpy as np
 
-from ...core import Component, Parameter, RealInput, RealOutput, VectorPort
+from ...core import BooleanOutput, Component, Parameter, RealInput, RealOutput, VectorPort
 from ...core.component import who
 from ...errors import ParameterError
-from .interfaces import _matrix, _MultiInput, SI2SO, SISO, _Sized, SO, _StartValues
+from .interfaces import (EPS, _matrix, _MultiInput, refuse_smooth, SI2SO, SISO, _Sized, SO,
+                         _StartValues)
 from .nonlinear import _limit, _limited, _limiter_region
 
 
@@ -460,35 +461,72 @@ class MatrixGain(_Sized, Component):
             e.output(port, y[i])
 
 
-class _Sampled(_StartValues, SISO):
-    """What Mean and RootMeanSquare share: MSL Math.Mean's equations (see Mean) for a
-    signal v under the names ``<prefix>integral``, ``<prefix>integral_last``,
-    ``<prefix>x``, ``<prefix>y_last``."""
-    f = Parameter(50.0, "Hz", "base frequency", positive=True)
-    _prefix = ""
+class InverseBlockConstraints(Component):
+    """Exchanges the inputs and outputs of a block, to build an inverse model (MSL
+    Math.InverseBlockConstraints): u1 = u2 and y1 = y2. Connect the inverted block's output
+    to u2 and the value it shall have to u1, its input from y2 (and y1 wherever the
+    computed input is wanted): y1 = y2 is an unknown of the DAE (an algebraic variable,
+    recorded as ``<block>.y1``), fixed by u1 = u2.
+
+    When the inverted block has states between its input and its output (a FirstOrder:
+    no direct feedthrough, the usual case), u1 = u2 holds no unknown: it constrains states
+    (a higher-index DAE), and the model is compiled with
+    ``acausal.compile(model, index_reduction=True)``: a state of the inverted block then
+    becomes an expression of the others and the unknown follows from the constraint's
+    rate (``acausal.compiler.index``). The signal at u1 must then be differentiable as
+    often as the inverted block's relative degree: filter it (CriticalDamping of that
+    order, MSL's Blocks.Examples.InverseModel) or give it as a smooth function of time."""
+    u1 = RealInput("input signal 1 (u1 = u2)")
+    u2 = RealInput("input signal 2 (u1 = u2)")
+    y1 = RealOutput("output signal 1 (y1 = y2)")
+    y2 = RealOutput("output signal 2 (y1 = y2)")
 
     def structure(self, s):
-        from ..logical import refuse_smooth         # logical builds on this package
+        s.algebraic("y1", description="the outputs y1 = y2, fixed by u1 = u2")
+
+    def physics(self, e):
+        y = e.state("y1")
+        e.output(self.y1, y)
+        e.output(self.y2, y)
+        e.residual(e.input(self.u1) - e.input(self.u2))
+
+
+class _Sampled(_StartValues):
+    """What the blocks built on MSL Math.Mean share (Mean, RootMeanSquare, Harmonic,
+    TotalHarmonicDistortion): Mean's equations (see Mean) for one or more signals, each
+    under the names ``<prefix>integral``, ``<prefix>integral_last``, ``<prefix>x``,
+    ``<prefix>y_last`` (``_means``: prefix, x0, y0 of each), all sampled at the instants
+    k/f of one trigger."""
+    f = Parameter(50.0, "Hz", "base frequency", positive=True)
+
+    def _means(self) -> list[tuple[str, float, float]]:
+        """(prefix, start of the integral, start of the mean) of each mean."""
+        return [("", self.x0, self.y0)]
+
+    def structure(self, s):
         refuse_smooth(self, s)
-        p = self._prefix
         s.sample("sampleTrigger", 1 / self.f, 1 / self.f,
                  description="true at the sample instants k/f")
         s.mode("sampled", 0, values=(0, 1),
                description="true, once the integral is read at the present sample instant")
-        s.state(f"{p}integral", self.x0, description="integral of the averaged signal from the "
-                                                     "start (with x0)")
-        s.discrete(f"{p}integral_last", 0.0, description="integral at the last sample instant")
-        s.discrete(f"{p}y_last", self._y_start(), description="last sampled mean value")
+        for p, x0, y0 in self._means():
+            s.state(f"{p}integral", x0, description="integral of the averaged signal from "
+                                                    "the start (with x0)")
+            s.discrete(f"{p}integral_last", 0.0,
+                       description="integral at the last sample instant")
+            s.discrete(f"{p}y_last", y0, description="last sampled mean value")
 
-    def _y_start(self) -> float:
-        return self.y0
-
-    def mean(self, e, v, nonnegative: bool):
-        """The sampled mean of v over the last period (y_last), its equations written."""
-        p = self._prefix
+    def first_round(self, e) -> ca.SX:
+        """True in the event iteration's first round at a sample instant (where the integrals
+        are read); call once in physics."""
         trigger, sampled = e.mode("sampleTrigger"), e.mode("sampled")
         e.mode_update(sampled, trigger)
-        first = ca.logic_and(trigger, ca.logic_not(sampled))
+        return ca.logic_and(trigger, ca.logic_not(sampled))
+
+    def mean(self, e, v, nonnegative: bool, first: ca.SX, prefix: str = "") -> ca.SX:
+        """The sampled mean of v over the last period (y_last) of the mean ``prefix``, its
+        equations written; ``first`` from ``first_round``."""
+        p = prefix
         integral, last, y_last = (e.state(f"{p}integral"), e.mode(f"{p}integral_last"),
                                   e.mode(f"{p}y_last"))
         e.derivative(integral, v)
@@ -500,8 +538,24 @@ class _Sampled(_StartValues, SISO):
                                                          "sample instants)")
         return y_last
 
+    def root_mean_square(self, e, u, first: ca.SX, prefix: str = "") -> ca.SX:
+        """MSL Math.RootMeanSquare's output sqrt(mean.y) for the input u, its inner Mean
+        (of u·u, yGreaterOrEqualZero) under ``<prefix>mean.``."""
+        mean = self.mean(e, u * u, True, first, f"{prefix}mean.")
+        e.variable(f"{prefix}mean.y", mean, description="mean of u*u over the last period")
+        return ca.sqrt(mean)
 
-class Mean(_Sampled):
+    def harmonic(self, e, u, k, first: ca.SX, prefix: str = "") -> tuple[ca.SX, ca.SX]:
+        """MSL Math.Harmonic's (y_rms, y_arg before its gain) of harmonic k of u: the means
+        ``<prefix>mean1`` of u·√2·cos(2π·k·f·t) and ``<prefix>mean2`` of u·√2·sin(2π·k·f·t)
+        (its sources sin1, sin2), in polar form."""
+        wt = 2 * math.pi * k * self.f * e.time
+        re = self.mean(e, u * math.sqrt(2) * ca.cos(wt), False, first, f"{prefix}mean1.")
+        im = self.mean(e, u * math.sqrt(2) * ca.sin(wt), False, first, f"{prefix}mean2.")
+        return ca.sqrt(re * re + im * im), ca.atan2(im, re)
+
+
+class Mean(_Sampled, SISO):
     """The mean of u over each period 1/f [Hz] (MSL Math.Mean): y = f·∫u dt over the last
     full period, updated at the instants k/f (time events), held in between; y = y0 before
     the first. Option ``yGreaterOrEqualZero`` (y = max(0, ...), for a mean ≥ 0 in exact
@@ -533,10 +587,11 @@ class Mean(_Sampled):
     options = {"yGreaterOrEqualZero": False}
 
     def physics(self, e):
-        e.output(self.y, self.mean(e, e.input(self.u), self.yGreaterOrEqualZero))
+        e.output(self.y, self.mean(e, e.input(self.u), self.yGreaterOrEqualZero,
+                                   self.first_round(e)))
 
 
-class RootMeanSquare(_Sampled):
+class RootMeanSquare(_Sampled, SISO):
     """The root mean square of u over each period 1/f [Hz] (MSL Math.RootMeanSquare):
     y = sqrt(mean.y), mean.y the Mean (with yGreaterOrEqualZero) of u·u, updated at the
     instants k/f, held in between; y = y0 (≥ 0) before the first. Start values
@@ -545,7 +600,6 @@ class RootMeanSquare(_Sampled):
     names of the inner Mean: ``mean.x``, ``mean.y_last``, ``mean.y`` (and
     ``mean.integral``, ``mean.integral_last``)."""
     _starts = ("x0", "y0")
-    _prefix = "mean."
 
     def __init__(self, name: str | None = None, **kwargs):
         super().__init__(name, **kwargs)
@@ -553,11 +607,81 @@ class RootMeanSquare(_Sampled):
             raise ParameterError(f"{who(self)}: y0 (start value of the output, a root mean "
                                  f"square) must be >= 0, got {self.y0}")
 
-    def _y_start(self) -> float:
-        return self.y0 ** 2
+    def _means(self) -> list[tuple[str, float, float]]:
+        return [("mean.", self.x0, self.y0 ** 2)]
 
     def physics(self, e):
-        u = e.input(self.u)
-        mean = self.mean(e, u * u, True)
-        e.variable("mean.y", mean, description="mean of u*u over the last period")
-        e.output(self.y, ca.sqrt(mean))
+        e.output(self.y, self.root_mean_square(e, e.input(self.u), self.first_round(e)))
+
+
+class Harmonic(_Sampled, Component):
+    """Root mean square and phase of harmonic ``k`` of u over each period 1/f [Hz] (MSL
+    Math.Harmonic): the Means (see Mean) of u·√2·cos(2π·k·f·t) (``mean1``) and of
+    u·√2·sin(2π·k·f·t) (``mean2``), in polar form: y_rms = sqrt(mean1² + mean2²),
+    y_arg = atan2(mean2, mean1) [rad] (−atan2 with option ``useConjugateComplex``), so that
+    u = √2·y_rms·cos(2π·k·f·t − y_arg) (+ y_arg with useConjugateComplex) when u is that
+    harmonic. Updated at the instants k'/f (k' = 1, 2, ...), held in between. ``k``
+    (constructor argument, an integer ≥ 1, default 1) is the order of the harmonic; start
+    values (constructor arguments, default 0): x0Cos, x0Sin (the Means' integrator
+    states), y0Cos, y0Sin (their outputs before the first instant). Recorded under MSL's
+    names of the inner Means: ``mean1.x``, ``mean1.y_last``, ``mean2.x``, ... Refused in
+    smooth form, as Mean."""
+    _starts = ("x0Cos", "x0Sin", "y0Cos", "y0Sin")
+    options = {"useConjugateComplex": False}
+    u = RealInput("connector of Real input signal")
+    y_rms = RealOutput("root mean square of polar representation")
+    y_arg = RealOutput("angle of polar representation [rad]")
+
+    def __init__(self, name: str | None = None, *, k: int = 1, **kwargs):
+        if isinstance(k, bool) or not isinstance(k, (int, np.integer)) or k < 1:
+            raise ParameterError(f"Harmonic: k (order of the harmonic) must be an integer "
+                                 f">= 1, got {k!r}")
+        super().__init__(name, **kwargs)
+        self.__dict__["k"] = int(k)
+
+    def _means(self) -> list[tuple[str, float, float]]:
+        return [("mean1.", self.x0Cos, self.y0Cos), ("mean2.", self.x0Sin, self.y0Sin)]
+
+    def physics(self, e):
+        y_rms, y_arg = self.harmonic(e, e.input(self.u), self.k, self.first_round(e))
+        e.output(self.y_rms, y_rms)
+        e.output(self.y_arg, -y_arg if self.useConjugateComplex else y_arg)
+
+
+class TotalHarmonicDistortion(_Sampled, SISO):
+    """Total harmonic distortion of u over each period 1/f [Hz] (MSL
+    Math.TotalHarmonicDistortion), from the root mean square U of u (MSL's inner
+    RootMeanSquare) and that of its first harmonic U1 (MSL's inner Harmonic, k = 1)::
+
+        y = sqrt(U² − U1²)/U1   (option useFirstHarmonic, default: IEC 60050-551-20-13)
+        y = sqrt(U² − U1²)/U    (useFirstHarmonic=False: with respect to the total RMS)
+
+    (sqrt of 0 where U² < U1², denominators at least Modelica.Constants.eps), updated at
+    the instants k/f, held in between. The BooleanOutput ``valid`` is true where
+    U² ≥ U1² and U1 > 0: false before the first instant and for a zero input. All start
+    values are 0 (MSL's finals). Recorded under MSL's names of the inner blocks:
+    ``harmonic.mean1.x``, ``harmonic.mean2.x``, ``harmonic.y_rms``, ``harmonic.y_arg``,
+    ``rootMeanSquare.mean.x``, ``rootMeanSquare.y``, ... Refused in smooth form, as Mean.
+
+    MSL difference: MSL composes it of blocks (a Limiter, a GreaterThreshold, ...) whose
+    relations may add events; here their equations are expressions of the sampled values,
+    which change at the sample instants only, so the result is the same without them."""
+    f = Parameter(1.0, "Hz", "base frequency", positive=True)
+    options = {"useFirstHarmonic": True}
+    valid = BooleanOutput("true, if output y is valid")
+
+    def _means(self) -> list[tuple[str, float, float]]:
+        return [("harmonic.mean1.", 0.0, 0.0), ("harmonic.mean2.", 0.0, 0.0),
+                ("rootMeanSquare.mean.", 0.0, 0.0)]
+
+    def physics(self, e):
+        u, first = e.input(self.u), self.first_round(e)
+        u1, arg = self.harmonic(e, u, 1, first, "harmonic.")
+        rms = self.root_mean_square(e, u, first, "rootMeanSquare.")
+        e.variable("harmonic.y_rms", u1, description="root mean square of the first harmonic")
+        e.variable("harmonic.y_arg", arg, "rad", "angle of the first harmonic")
+        e.variable("rootMeanSquare.y", rms, description="root mean square of u")
+        y2 = rms * rms - u1 * u1
+        reference = u1 if self.useFirstHarmonic else rms
+        e.output(self.y, ca.sqrt(ca.fmax(y2, 0)) / ca.fmax(EPS, reference))
+        e.output(self.valid, ca.logic_and(y2 >= 0, u1 > 0))
