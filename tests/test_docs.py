@@ -92,7 +92,11 @@ def test_docs_build_without_warnings(tmp_path):
                     "electrical-idealtwowayswitch", "electrical-controlledidealintermediateswitch",
                     "electrical-saturatinginductor", "electrical-zdiode",
                     "electrical-sawtoothvoltage", "electrical-exponentialscurrent",
-                    "electrical-tablevoltage", "electrical-m-transformer"):
+                    "electrical-tablevoltage", "electrical-m-transformer",
+                    "electrical-opamplimited", "electrical-supplyvoltage",
+                    "electrical-thyristor", "electrical-idealtriac", "electrical-npn",
+                    "electrical-nmos", "electrical-diode2",
+                    "electrical-sinevoltagevariablefrequencyandamplitude"):
         assert f'id="{section}"' in page, f"the electrical page lacks {section}"
     page = html.unescape((out / "components" / "rotational.html").read_text())
     gearbox = page[page.index('id="rotational-gearbox"'):]

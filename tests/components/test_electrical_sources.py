@@ -7,6 +7,7 @@ import pytest
 
 import acausal
 from acausal.components import electrical as el
+from acausal.components.electrical.sources import _VoltageSource
 from acausal.errors import ParameterError
 from wiring import model
 
@@ -125,7 +126,7 @@ def test_source_waveform_matches_its_closed_form(cls, params, closed_form):
     res = acausal.compile(on_resistor(cls(**params))).simulate(
         T_SAMPLE[-1], t=T_SAMPLE, **TIGHT)
     expected = closed_form(T_SAMPLE)
-    if issubclass(cls, el._VoltageSource):
+    if issubclass(cls, _VoltageSource):
         np.testing.assert_allclose(res["src.v"], expected, atol=1e-12)
         np.testing.assert_allclose(res["r.i"], expected / R_LOAD, atol=1e-12)
     else:

@@ -138,7 +138,12 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         integrator_settings(model, solver, rtol, atol, max_step)
     if auto and solver == "adams" and rho is not None:   # too much work: BDF takes over
         opts["max_num_steps"] = adams_step_budget(rho, float(np.max(np.diff(grid))))
-    if loops:
+    # IDAS's own initial-value computation starts from the rates given (0 by default):
+    # the states' rates at the start of each segment, which a fast state (a pF junction
+    # capacitance charged through kΩ: 1e10 V/s) needs for its Newton iteration to converge
+    # (with events, EventSimulation gives them)
+    rates = loops or (plugin == "idas" and ode is not None and not model.has_events)
+    if rates:
         xdot = ca.Function("xdot", [model.x, model.z, model.t], [ode])
     opts.update(options or {})
 
@@ -196,6 +201,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         tout = tout + ([] if pts and pts[-1] == b else [end])
         if loops:
             opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
+        if rates:
             opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
         try:
             F = ca.integrator("sim", plugin, dae, float(a), tout, opts)

@@ -733,55 +733,64 @@ class Sinc(SignalSource):
         return self.amplitude if self.continuous else 0
 
 
-class _VariableFrequencyAndAmplitude(SO):
+class _VariableFrequencyWave(Component):
+    """The logic of MSL's ...VariableFrequencyAndAmplitude sources (Blocks.Sources and
+    Electrical.Analog.Sources): offset + amplitude·wave(phi) with der(phi) = 2π·f, the
+    phase phi [rad] a state (start ``phi_start``); the amplitude the input named
+    ``_amplitude`` or constantAmplitude (``useConstantAmplitude``), f [Hz] the input ``f``
+    or constantFrequency (``useConstantFrequency``). ``wave`` is sin or cos; each source
+    declares the parameters and inputs in its units."""
+    options = {"useConstantAmplitude": False, "useConstantFrequency": False}
+    _amplitude: str
+    wave: staticmethod
+
+    def __init__(self, name: str | None = None, phi_start: float = 0.0, **params):
+        super().__init__(name, **params)
+        self.__dict__["phi_start"] = _start(phi_start, f"{type(self).__name__}: phi_start")
+
+    def structure(self, s):
+        s.state("phi", self.phi_start, "rad", "phase of the sine wave")
+
+    def _wave_value(self, e):
+        """offset + amplitude·wave(phi), with der(phi) = 2π·f."""
+        phi = e.state("phi")
+        f = self.constantFrequency if self.useConstantFrequency else e.input(self.f)
+        amplitude = (self.constantAmplitude if self.useConstantAmplitude
+                     else e.input(getattr(self, self._amplitude)))
+        e.derivative(phi, 2 * ca.pi * f)
+        return self.offset + amplitude * self.wave(phi)
+
+
+class _VariableFrequencyAndAmplitude(_VariableFrequencyWave, SO):
     """y = offset + amplitude·wave(phi), der(phi) = 2π·f: the phase phi [rad] (a state,
     start value ``phi_start``, MSL's phi(start = 0)) integrates the frequency, so a
     changing f changes the wave's rate without a jump. amplitude and f [Hz] are the inputs
     of those names, or with ``useConstantAmplitude`` / ``useConstantFrequency`` the
     parameters constantAmplitude / constantFrequency (the input is then absent). No
     startTime (MSL): an amplitude of 0 keeps y at offset."""
-    options = {"useConstantAmplitude": False, "useConstantFrequency": False}
     constantAmplitude = Parameter(1.0, "", "constant amplitude")
     constantFrequency = Parameter(1.0, "Hz", "constant frequency")
     offset = Parameter(0.0, "", "offset of the sine wave")
     amplitude = ConditionalPort(RealInput("amplitude"), "useConstantAmplitude", False)
     f = ConditionalPort(RealInput("frequency [Hz]"), "useConstantFrequency", False)
-
-    def __init__(self, name: str | None = None, phi_start: float = 0.0, **params):
-        super().__init__(name, **params)
-        self.__dict__["phi_start"] = _start(phi_start, f"{type(self).__name__}: phi_start")
-
-    def wave(self, phi):
-        raise NotImplementedError
-
-    def structure(self, s):
-        s.state("phi", self.phi_start, "rad", "phase of the sine wave")
+    _amplitude = "amplitude"
 
     def physics(self, e):
-        phi = e.state("phi")
-        f = self.constantFrequency if self.useConstantFrequency else e.input(self.f)
-        amplitude = (self.constantAmplitude if self.useConstantAmplitude
-                     else e.input(self.amplitude))
-        e.derivative(phi, 2 * ca.pi * f)
-        e.output(self.y, self.offset + amplitude * self.wave(phi))
+        e.output(self.y, self._wave_value(e))
 
 
 class SineVariableFrequencyAndAmplitude(_VariableFrequencyAndAmplitude):
     __doc__ = ("Sine with variable frequency and amplitude (MSL "
                "Sources.SineVariableFrequencyAndAmplitude): "
                + _VariableFrequencyAndAmplitude.__doc__.replace("wave(phi)", "sin(phi)", 1))
-
-    def wave(self, phi):
-        return ca.sin(phi)
+    wave = staticmethod(ca.sin)
 
 
 class CosineVariableFrequencyAndAmplitude(_VariableFrequencyAndAmplitude):
     __doc__ = ("Cosine with variable frequency and amplitude (MSL "
                "Sources.CosineVariableFrequencyAndAmplitude): "
                + _VariableFrequencyAndAmplitude.__doc__.replace("wave(phi)", "cos(phi)", 1))
-
-    def wave(self, phi):
-        return ca.cos(phi)
+    wave = staticmethod(ca.cos)
 
 
 class LogFrequencySweep(SO):
