@@ -11,9 +11,8 @@ from ...core import (BooleanInput, Component, ConditionalPort, Model, NegativePi
                      Pin, PositivePin)
 from ...core.component import who
 from ...errors import ParameterError
-from ..logical import refuse_smooth
+from ..signals.interfaces import _start, refuse_smooth
 from ..signals.nonlinear import LimiterHomotopy, _limited, _limiter_region
-from ..signals.interfaces import _start
 from .basic import Capacitor, Resistor
 from .interfaces import (OnePort, TwoPort, _ConditionalHeatPort, _LimitedOpAmp, _nullator,
                          _ThreePinOpAmp)

@@ -10,7 +10,7 @@ from ...core import (ConditionalPort, HeatPort_a, Model, NegativePin, Parameter,
                      PositivePin)
 from ...core.component import BoundParameters, bound_twin, who
 from ...errors import ParameterError
-from ..logical import refuse_smooth
+from ..signals.interfaces import refuse_smooth
 from .ideal import IdealDiode
 from .interfaces import OnePort, _ConditionalHeatPort
 
