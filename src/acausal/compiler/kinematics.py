@@ -97,16 +97,22 @@ def side_by_side(nodes: list, one_d: tuple, kind: str) -> ca.SX:
 
 
 class StackedRows:
-    """Stacked (pos, vel, acc) vectors whose rows are read one by one: each vector is split
-    into its rows at the first read of one (indexing a long SX costs per read about as much
-    as splitting all of it once: 15 µs a row at 20 000 rows)."""
-    __slots__ = ("vectors", "_rows")
+    """Stacked (pos, vel, acc) vectors whose rows are read one by one: a few rows are
+    indexed (what compiling reads), and a vector read more often is split into all its
+    rows once (indexing a long SX costs ~11 µs a read, splitting it ~2 µs a row: what
+    recording every variable reads)."""
+    __slots__ = ("vectors", "_rows", "_reads")
+    SPLIT_AFTER = 64                # reads of one vector
 
     def __init__(self, vectors: tuple):
         self.vectors, self._rows = vectors, [None] * len(vectors)
+        self._reads = [0] * len(vectors)
 
     def row(self, k: int, i: int) -> ca.SX:
         if self._rows[k] is None:
+            self._reads[k] += 1
+            if self._reads[k] <= self.SPLIT_AFTER:
+                return self.vectors[k][i]
             self._rows[k] = ca.vertsplit(self.vectors[k])
         return self._rows[k][i]
 
