@@ -540,3 +540,47 @@ def test_grounded_emitter_closes_a_capacitor_loop_reduced_on_request():
 def test_bad_semiconductor_parameters_are_refused_naming_the_component(make, match):
     with pytest.raises(ParameterError, match=match):
         make()
+
+
+def test_push_pull_follower_reduces_interlocking_capacitor_loops():
+    """An NPN/PNP push-pull emitter follower (collectors on ±10 V, bases together through
+    Rb = 1 kΩ from a 2 V, 50 Hz sine, emitters together into RL = 100 Ω): the junction
+    capacitances close several loops that share states; with index_reduction each demoted
+    state's rate holds the ones demoted before it (this compile ended in unresolved
+    symbols). At the input's peaks (quasi-static: ns time constants at 50 Hz) the load
+    voltage solves the static MSL equations of both transistors (scipy), the conducting
+    one ~0.7 V below the input."""
+    from scipy.optimize import brentq
+    p, RL, RB_ = BJT, 100.0, 1e3
+    m = model("push_pull", lambda m: [
+        (m.vcc.n, m.ground.p), (m.vcc.p, m.npn.C), (m.vee.p, m.ground.p), (m.vee.n, m.pnp.C),
+        (m.vin.n, m.ground.p), (m.vin.p, m.rb.p), (m.rb.n, m.npn.B), (m.rb.n, m.pnp.B),
+        (m.npn.E, m.pnp.E), (m.npn.E, m.rl.p), (m.rl.n, m.ground.p)],
+        vcc=el.ConstantVoltage(V=VCC), vee=el.ConstantVoltage(V=VCC), ground=el.Ground(),
+        vin=el.SineVoltage(V=2.0, f=50.0), npn=el.NPN(), pnp=el.PNP(),
+        rb=el.Resistor(R=RB_), rl=el.Resistor(R=RL))
+    t = np.array([0.0, 0.005, 0.01, 0.015, 0.02])
+    res = acausal.compile(m, index_reduction=True).simulate(0.02, t=t, **TIGHT)
+
+    def junction(v, n):
+        return p["Is"] * (exlin2(v / (n * p["Vt"])) - 1) + v * p["Gbe"]
+
+    def pins(vB, vE):
+        """(B.i, E.i) of both transistors together, static (MSL's equations)."""
+        vbe, vbc = vB - vE, vB - VCC                 # NPN
+        ie, ic = junction(vbe, p["NF"]), junction(vbc, p["NR"])
+        nB = ie / p["Bf"] + ic / p["Br"]
+        nC = (ie - ic) * (1 - vbc * p["Vak"]) - ic / p["Br"]
+        veb, vcb = vE - vB, -VCC - vB                # PNP
+        je, jc = junction(veb, p["NF"]), junction(vcb, p["NR"])
+        pB = -je / p["Bf"] - jc / p["Br"]
+        pC = jc / p["Br"] + (jc - je) * (1 - vcb * p["Vak"])
+        return nB + pB, -(nB + nC) - (pB + pC)
+
+    def base(vE, u):                                 # KCL at the bases: vB for a given vE
+        return brentq(lambda vB: (u - vB) / RB_ - pins(vB, vE)[0], -5.0, 5.0, xtol=1e-15)
+
+    for k, u in ((1, 2.0), (3, -2.0)):               # KCL at the emitters
+        vE = brentq(lambda vE: pins(base(vE, u), vE)[1] + vE / RL, -3.0, 3.0, xtol=1e-15)
+        assert res["rl.v"][k] == pytest.approx(vE, abs=1e-6)
+        assert 0.5 < abs(u - vE) < 1.2

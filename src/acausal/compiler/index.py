@@ -53,6 +53,9 @@ def demote_state(ws, resolve, h: ca.SX, demoted: list, message: str, prefer=()) 
         rate = resolve([der_with(value, ws.der_table) - d.der])[0]
     except UnknownDerivative as e:
         raise StructureError(f"{message}; index reduction: {e}") from None
+    if demoted:           # the rates of the states may hold states demoted before this one
+        rate = ca.substitute(rate, _vc(*[sym for sym, _ in demoted]),
+                             _vc(*[v for _, v in demoted]))
     for k, (sym, v) in enumerate(demoted):
         demoted[k] = (sym, ca.substitute(v, d.sym, value))
     demoted.append((d.sym, value))
