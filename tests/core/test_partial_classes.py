@@ -2,41 +2,21 @@
 their subclasses share, not components by themselves. Building one is refused with a
 StructureError that names the subclasses to use; a subclass, the library's or a user's,
 builds and works."""
-import importlib
-import inspect
-import pkgutil
-
 import pytest
 
 import acausal
-import acausal.components as library
 from acausal.components import translational as tr
-from acausal.core import Component
 from acausal.errors import StructureError
+from library_classes import library_classes
 
 
-def _partial_classes():
-    found = {}
-    for info in pkgutil.walk_packages(library.__path__, library.__name__ + "."):
-        module = importlib.import_module(info.name)
-        for name, obj in vars(module).items():
-            if inspect.isclass(obj) and issubclass(obj, Component) \
-                    and obj.__module__ == module.__name__ and obj.__dict__.get("partial"):
-                found[f"{module.__name__.removeprefix('acausal.components.')}.{name}"] = obj
-    return found
-
-
-PARTIAL = _partial_classes()
+CLASSES = library_classes()
+PARTIAL = {name: cls for name, cls in CLASSES.items() if cls.__dict__.get("partial")}
 
 
 def test_every_class_named_partial_is_declared_partial():
-    named = {f"{m}.{n}" for m, n in (k.rsplit(".", 1) for k in PARTIAL)}
-    for info in pkgutil.walk_packages(library.__path__, library.__name__ + "."):
-        module = importlib.import_module(info.name)
-        for name, obj in vars(module).items():
-            if inspect.isclass(obj) and issubclass(obj, Component) \
-                    and obj.__module__ == module.__name__ and name.lower().startswith("partial"):
-                assert f"{module.__name__.removeprefix('acausal.components.')}.{name}" in named
+    named = {name for name, cls in CLASSES.items() if cls.__name__.lower().startswith("partial")}
+    assert named and named <= set(PARTIAL)
 
 
 @pytest.mark.parametrize("name", sorted(PARTIAL))
