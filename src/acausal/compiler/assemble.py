@@ -415,6 +415,8 @@ def _reduce_signal_constraints(ws: Workspace, tree, resolve, network) -> None:
     """``index.reduce_signal_constraints`` of the residuals of the components without
     network ports."""
     rows = [k for k, (o, _) in enumerate(ws.residuals) if not has_network_ports(o)]
+    if not rows:                    # (most models: no block equation to look at)
+        return
     known = _vc(ws.t, tree.q, tree.qd, _stack([i.sym for i in ws.states]), ws.p,
                 _stack([s for _, s in ws.inputs]), _stack([m.sym for m in ws.modes]))
     unknowns = _stack([a.sym for a in ws.algebraics if not has_network_ports(a.owner)])

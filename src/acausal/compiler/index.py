@@ -84,8 +84,6 @@ def reduce_signal_constraints(ws, resolve, network, rows: list, known: ca.SX,
     rates, states, parameters, inputs, modes); ``unknowns``: the algebraic variables of
     those components. Without ``ws.index_reduction`` a StructureError names the
     component."""
-    if not rows:
-        return
     names = {s.name() for s in ca.vertsplit(known)}
 
     def constrains_states(row) -> bool:
