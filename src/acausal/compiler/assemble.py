@@ -23,7 +23,6 @@ twice, and keeps no trace of it.
 """
 from __future__ import annotations
 
-import gc
 from dataclasses import replace
 
 import casadi as ca
@@ -46,6 +45,7 @@ from .nonholonomic import solve_velocity_constrained
 from .networks import build_network, declare_nodes, has_network_ports
 from .recorded import port_flows, recorded_variables
 from .resolve import make_resolver
+from .symbolic import gc_paused
 
 _vc = ca.vertcat
 _ACTIVE = Parameter(1.0, "1", "1: this loop constraint row is enforced; simulate() sets 0 for "
@@ -74,13 +74,8 @@ def compile(model: Model, smooth: bool = False, index_reduction: bool = False) -
     capacitors / voltage sources and the cut sets of inductors / current sources of
     networks, and the block equations that constrain states, instead of refusing them (see
     ``networks``, ``index``)."""
-    gc_was_enabled = gc.isenabled()
-    gc.disable()          # many small objects, no cycles worth collecting: 20 % of the time
-    try:
+    with gc_paused():
         return _compile(model, smooth, index_reduction)
-    finally:
-        if gc_was_enabled:
-            gc.enable()
 
 
 def recompile(compiled: CompiledModel, smooth: bool) -> CompiledModel:
