@@ -191,6 +191,8 @@ def test_a_sampled_callable_is_announced(compiled):
     ({"t_final": 1.0, "x0": {"mass.s": float("nan")}}, r"x0\['mass.s'\] must be a finite"),
     ({"t_final": 1.0, "inputs": {"F": float("nan")}}, "input 'F': values must be finite"),
     ({"t_final": 1.0, "inputs": {"F": ([0.0, 2.0, 1.0], [0, 1, 2])}}, "must not decrease"),
+    ({"t_final": 1.0, "inputs": {"F": "abc"}}, "input 'F': give a number, an array"),
+    ({"t_final": 1.0, "options": {"max_num_step": 10}}, "no option 'max_num_step'"),
 ])
 def test_non_finite_or_bad_settings_are_refused(compiled, kwargs, message):
     """Every time, grid, tolerance and value is checked before integrating (a NaN t_final

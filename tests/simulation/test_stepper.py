@@ -111,6 +111,10 @@ def test_wrong_inputs_are_refused(compiled):
         st.step({"G": 1.0})
     with pytest.raises(SimulationError, match="1 inputs"):
         st.step([1.0, 2.0])
+    with pytest.raises(SimulationError, match="1 inputs"):
+        st.step("x")
+    with pytest.raises(SimulationError, match=r"u\['F'\] must be a finite number"):
+        st.step({"F": "x"})
     with pytest.raises(SimulationError, match="dt must be"):
         compiled.stepper(-1.0)
 

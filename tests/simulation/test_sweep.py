@@ -201,6 +201,9 @@ def test_bad_arguments_are_named(quarter_car):
         quarter_car.sweep(T_END, params={"body.mass": [1.0, 2.0]})
     with pytest.raises(acausal.SimulationError, match="road"):
         quarter_car.sweep(T_END, t=GRID, inputs={"road": [np.zeros(7), np.ones(7)]})
+    with pytest.raises(acausal.SimulationError, match="no option 'max_num_step'"):
+        quarter_car.sweep(T_END, params={"body.m": [1.0, 2.0]}, solver="cvodes",
+                          options={"max_num_step": 10})
 
 
 def test_local_cluster_equals_local_bit_for_bit(quarter_car, dask_scratch):

@@ -30,9 +30,14 @@ def failure_message(model, error: Exception, a: float, b: float, rtol: float, at
     and why in the model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None)
     for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs;
     ``start`` the (x, z) the integration started from at a."""
+    text = str(error)
+    unknown = re.search(r"Unknown option: (\S+)", text)
+    if unknown:
+        return (f"simulation of '{model.name}': the integrator has no option "
+                f"'{unknown.group(1)}'; options= takes the options of CasADi's integrator "
+                f"plugin (e.g. 'max_num_steps', 'max_order', 'step0'), see casadi.integrator")
     said = short_error(error).rstrip(". ")
     head = f"simulation of '{model.name}' failed between t = {a:g} and {b:g} s: {said}"
-    text = str(error)
     if start is not None and model.z.numel() and not model.has_loops and p is not None:
         undetermined = _undetermined(model, a, *start, u_at(a), p)
         if undetermined:

@@ -53,7 +53,12 @@ def input_signal(name: str, value, t: ca.SX, grid: np.ndarray) -> InputSignal:
         return _samples(name, Samples(*value), t)
     if callable(value):
         return _callable(name, value, t, grid)
-    arr = np.asarray(value, dtype=float)
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise SimulationError(f"input '{name}': give a number, an array of values on the output "
+                              f"grid, Samples(times, values) or a function of time; got "
+                              f"{value!r}") from None
     if not np.all(np.isfinite(arr)):
         raise SimulationError(f"input '{name}': values must be finite numbers, got {value!r}")
     if arr.ndim == 0:

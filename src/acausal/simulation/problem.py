@@ -5,6 +5,8 @@ and the checks of the arguments every run takes (the output grid, tolerances, fi
 input names)."""
 from __future__ import annotations
 
+import math
+
 import casadi as ca
 import numpy as np
 
@@ -151,9 +153,11 @@ def check_settings(**values) -> None:
 
 
 def check_finite(what: str, values: dict | None) -> None:
+    """A SimulationError naming the first of ``values`` (name -> value) that is no finite
+    number (``what``: the argument that gave them, e.g. x0)."""
     for name, v in (values or {}).items():
         try:
-            ok = np.isfinite(float(v))
+            ok = math.isfinite(float(v))
         except (TypeError, ValueError):
             ok = False
         if not ok:

@@ -25,7 +25,6 @@ through a CasADi buffer (no conversion of arguments: a few microseconds per call
 """
 from __future__ import annotations
 
-import math
 from typing import Mapping, Sequence
 
 import casadi as ca
@@ -36,7 +35,7 @@ from . import assertions
 from .buffers import Buffered
 from .events import EventSimulation
 from .initialization import initial_state
-from .problem import folded, integrator_settings, scaled
+from .problem import check_finite, folded, integrator_settings, scaled
 
 SOLVERS = ("dopri", "collocation", "cvodes", "idas")
 MAX_SUBSTEPS = 2 ** 16      # a sample period split further than this: the model is stiff
@@ -250,16 +249,18 @@ class Stepper:
     def hold(self, u: Mapping[str, float] | Sequence[float]) -> None:
         """Hold the inputs ``u`` from now on (as ``step`` takes them)."""
         if type(u) is dict or isinstance(u, Mapping):
+            check_finite("u", u)
             for n, v in u.items():
                 i = self._input_index.get(n)
                 if i is None:
                     raise SimulationError(f"'{self.model.name}' has no input '{n}'; its "
                                           f"inputs: {self.input_names or 'none'}")
-                if not math.isfinite(v):
-                    raise SimulationError(f"input '{n}' must be a finite number, got {v!r}")
                 self.u[i] = v
             return
-        values = np.asarray(u, dtype=float).ravel()
+        try:
+            values = np.asarray(u, dtype=float).ravel()
+        except (TypeError, ValueError):
+            values = np.full(self.u.size + 1, np.nan)        # refused below, with the names
         if values.size != self.u.size or not np.all(np.isfinite(values)):
             raise SimulationError(f"'{self.model.name}' has {self.u.size} inputs "
                                   f"{self.input_names}: give as many finite numbers, got {u!r}")

@@ -382,8 +382,12 @@ class _Engine:
         opts.update(extra or {})
         opts.update(s["options"] or {})
         dae = integrator_problem(self.model, solver, self.ode, self.alg, self.q)
-        return ca.integrator("sweep", plugin, dae, float(self.grid[0]),
-                             [float(tt) for tt in self.grid[1:]], opts)
+        try:
+            return ca.integrator("sweep", plugin, dae, float(self.grid[0]),
+                                 [float(tt) for tt in self.grid[1:]], opts)
+        except RuntimeError as e:                    # an option the plugin does not know
+            raise SimulationError(failure_message(self.model, e, self.grid[0], self.grid[-1],
+                                                  s["rtol"], s["atol"])) from None
 
     def run(self, variables):
         model, grid = self.model, self.grid
