@@ -133,6 +133,14 @@ def test_no_equilibrium_names_the_residual():
         equilibrium(ac.compile(md))
 
 
+def test_solver_settings_are_checked():
+    c = spring_pendulum(with_spring=True)
+    with pytest.raises(AnalysisError, match="tol must be a finite number > 0"):
+        equilibrium(c, tol=-1.0)
+    with pytest.raises(AnalysisError, match="max_iter must be a whole number >= 1"):
+        equilibrium(c, max_iter=0)
+
+
 def test_stiff_chain_equilibrium_is_found():
     """wall | c1 = 1e9 N/m | m1 = 1 mg | c2 = 1 N/m | m2 = 1 kg | constant force F = 1 N:
     s1 = F/c1, s2 = s1 + F/c2. The accelerations' residual scales with c/m = 1e12, so an

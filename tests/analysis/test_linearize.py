@@ -242,3 +242,16 @@ def test_linearize_names_unknown_input_and_output():
     with pytest.raises(AnalysisError, match="m2.ss"):
         linearize(c, outputs=["m2.ss"])
     assert isinstance(linearize(c, inputs=[]), LinearModel)
+
+
+def test_linearize_refuses_values_that_are_no_finite_numbers():
+    c = chain([M1, M2], [K1, K2], force_input=True)
+    u = c.input_names[0]
+    with pytest.raises(AnalysisError, match=r"x\['m1.s'\] must be a finite number"):
+        linearize(c, {"m1.s": "a"})
+    with pytest.raises(AnalysisError, match="x must be values by variable name"):
+        linearize(c, [0.0, 0.0])
+    with pytest.raises(AnalysisError, match=rf"u\['{u}'\] must be a finite number"):
+        linearize(c, u={u: math.nan})
+    with pytest.raises(AnalysisError, match="t must be a finite time"):
+        linearize(c, t=math.nan)

@@ -61,8 +61,20 @@ def test_vector_parameter_element_nan_is_refused():
         compiled.simulate(0.1, params={"fixed.r[2]": math.nan})
 
 
+@pytest.mark.parametrize("value", [True, np.bool_(False), "2.0", b"2"],
+                         ids=["True", "np.False_", "text", "bytes"])
+def test_text_and_booleans_are_no_numbers(value):
+    """float() would take them (True as 1, "2.0" as 2): a Real parameter does not."""
+    with pytest.raises(ParameterError, match=r"'Mass\.m' must be a number"):
+        tr.Mass(m=value)
+    compiled = acausal.compile(oscillator())
+    with pytest.raises(ParameterError, match=r"'spring\.c' must be a number"):
+        compiled.simulate(0.1, params={"spring.c": value})
+
+
 def test_finite_values_still_pass():
     assert tr.Spring(c=1e300).c == 1e300
+    assert tr.Mass(m=np.float32(2.0)).m == 2.0 and tr.Mass(m=np.int64(3)).m == 3.0
     assert P.Fixed(r=(1, -2)).r == (1.0, -2.0)
 
 

@@ -191,3 +191,5 @@ def test_input_units_follow_the_signal_and_unknown_names_are_named():
     np.testing.assert_allclose(res["push.f"], 2.0)
     with pytest.raises(KeyError, match="mass.s"):
         res["mass.ss"]
+    with pytest.raises(acausal.VariableNameError, match="named by text.*got 3"):
+        res[3]

@@ -13,6 +13,7 @@ reactions are the recorded port flows, e.g. ``eq["rev4.frame_a.fx"]``.
 """
 from __future__ import annotations
 
+import math
 import warnings
 from dataclasses import dataclass, field
 
@@ -49,6 +50,10 @@ def equilibrium(model, *, u: dict | None = None, params: dict | None = None, t: 
     equilibrium found until they agree (a block on friction at rest under a load below
     breakaway: stuck, anywhere; a stuck friction element holds a whole range of positions,
     and the one nearest the guess is returned). ``Equilibrium.mode`` says which."""
+    if not (isinstance(tol, (int, float)) and math.isfinite(tol) and tol > 0):
+        raise AnalysisError(f"tol must be a finite number > 0, got {tol!r}")
+    if not (isinstance(max_iter, int) and max_iter >= 1):
+        raise AnalysisError(f"max_iter must be a whole number >= 1, got {max_iter!r}")
     with warnings.catch_warnings():          # the guess is moved onto the loops: expected
         warnings.filterwarnings("ignore", message="initial values changed")
         start = operating_point(model, {}, u=u, params=params, t=t, guess=guess, mode=mode)

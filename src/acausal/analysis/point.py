@@ -13,13 +13,16 @@ load below breakaway: stuck). The algebraic variables are solved in those modes.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
+from typing import Mapping
 
 import numpy as np
 
 from ..errors import AnalysisError, SimulationError, did_you_mean
 from ..simulation.events import ModeIteration
 from ..simulation.initialization import initial_state
+from ..simulation.problem import check_finite
 
 
 @dataclass
@@ -59,6 +62,7 @@ def index_of(names: list[str], wanted, what: str, model_name: str) -> list[int]:
 
 def input_vector(model, values: dict | None) -> np.ndarray:
     """Input values [start values, with ``values`` by name]."""
+    check_finite("u", values, AnalysisError)
     u = model.input_start
     for k, v in zip(index_of(model.input_names, list(values or {}), "input", model.name),
                     (values or {}).values()):
@@ -89,6 +93,12 @@ def operating_point(model, x=None, *, u: dict | None = None, params: dict | None
             raise AnalysisError("give either an OperatingPoint or u/params/guess/mode, not "
                                 "both")
         return x
+    if x is not None and not isinstance(x, Mapping):
+        raise AnalysisError(f"x must be values by variable name (a dict) or an "
+                            f"OperatingPoint, got {x!r}")
+    check_finite("x", x, AnalysisError)
+    if not isinstance(t, (int, float, np.floating)) or not math.isfinite(t):
+        raise AnalysisError(f"t must be a finite time [s], got {t!r}")
     p = model.param_vector(params)
     uv = input_vector(model, u)
     xs, zs = initial_state(model, dict(x or {}), p, uv, float(t), guess)

@@ -349,6 +349,10 @@ class CompiledModel:
     def locate(self, name: str) -> tuple[str, int | None]:
         """(kind, index) of ``name`` — see ``variable`` — without building its expression:
         states, algebraics, inputs and parameters cost a dictionary look-up."""
+        if not isinstance(name, str):
+            raise VariableNameError(f"variables of model '{self.name}' are named by text "
+                                    f"(e.g. '{self.x_names[0] if self.x_names else 'time'}'), "
+                                    f"got {name!r}")
         if name in ("time", "t"):
             return "time", None
         for kind, attr, _ in self._KINDS:

@@ -5,6 +5,8 @@ import copy
 from contextlib import contextmanager
 from contextvars import ContextVar
 
+import numpy as np
+
 from ..errors import ParameterError
 from ..numerics import parameter_problem
 
@@ -133,8 +135,11 @@ class Parameter:
 
 def checked_value(name: str, value, rule: dict, description: str = "", unit: str = "") -> float:
     """``value`` as float if it is a number that keeps ``rule`` (``Parameter.rule``), else a
-    ParameterError naming the parameter ``name``."""
+    ParameterError naming the parameter ``name`` (text and booleans are no numbers, even
+    where Python would convert them)."""
     try:
+        if isinstance(value, (str, bytes, bool, np.bool_)):
+            raise TypeError
         v = float(value)
     except (TypeError, ValueError):
         raise ParameterError(f"parameter '{name}' must be a number, got {value!r}") from None

@@ -152,13 +152,13 @@ def check_settings(**values) -> None:
             raise SimulationError(f"{name} must be a finite number > 0, got {v!r}")
 
 
-def check_finite(what: str, values: dict | None) -> None:
-    """A SimulationError naming the first of ``values`` (name -> value) that is no finite
-    number (``what``: the argument that gave them, e.g. x0)."""
+def check_finite(what: str, values: dict | None, error=SimulationError) -> None:
+    """An ``error`` naming the first of ``values`` (name -> value) that is no finite number
+    (``what``: the argument that gave them, e.g. x0)."""
     for name, v in (values or {}).items():
         try:
             ok = math.isfinite(float(v))
         except (TypeError, ValueError):
             ok = False
         if not ok:
-            raise SimulationError(f"{what}['{name}'] must be a finite number, got {v!r}")
+            raise error(f"{what}['{name}'] must be a finite number, got {v!r}")
