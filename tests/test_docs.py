@@ -85,7 +85,7 @@ def test_docs_build_without_warnings(tmp_path):
     page = html.unescape((out / "components" / "thermal.html").read_text())
     for section in ("thermal-thermalcollector", "thermal-convectiveresistor",
                     "thermal-conditionalfixedheatflowsensor", "celsius-fixedtemperature",
-                    "celsius-tokelvin"):
+                    "celsius-tokelvin", "fahrenheit-fixedtemperature", "rankine-tokelvin"):
         assert f'id="{section}"' in page, f"the thermal page lacks {section}"
     page = html.unescape((out / "components" / "electrical.html").read_text())
     for section in ("electrical-idealthyristor", "electrical-idealgtothyristor",
@@ -101,6 +101,7 @@ def test_docs_build_without_warnings(tmp_path):
     page = html.unescape((out / "components" / "rotational.html").read_text())
     gearbox = page[page.index('id="rotational-gearbox"'):]
     assert "<p>useHeatPort = True</p>" in gearbox and 'id="rotational-signtorque"' in page
+    assert 'id="rotational-generalangletotorqueadaptor"' in page
     page = html.unescape((out / "components" / "multibody.html").read_text())
     revolute = page[page.index('id="joints-revolute"'):]
     assert "<p>useAxisFlange = True</p>" in revolute          # axis exists only with the option

@@ -12,6 +12,7 @@ from scipy.integrate import simpson, solve_ivp
 
 import acausal
 from acausal.components import rotational as rot
+from acausal.components import signals as sig
 from acausal.components import translational as tr
 from time_signals import TimeSignal
 
@@ -585,6 +586,102 @@ def test_angle_and_torque_adaptors_follow_msl():
     close(res["j1.w"], np.cos(t), what="speed as given")
     close(res["driven.phi"], -t ** 2, what="J·der(w) = −tau: phi = −(1.4/0.7)·t²/2")
     close(res["driven.a"], 0.0, what="a without use_w")
+
+
+@pytest.mark.parametrize("use_pder, use_pder2", [(True, True), (True, False), (False, True)])
+def test_general_angle_to_torque_adaptor_moves_an_inertia_against_a_spring(use_pder, use_pder2):
+    """GeneralAngleToTorqueAdaptor moves an inertia J, tied to the ground by a spring c, by
+    the angle p = A·sin(ωt) from model inputs (with its rates pder, pder2 where they exist):
+    f = −flange.tau = J·phi'' + c·phi, the torque needed to move it so. A model input has
+    no rates to derive: without pder2 only the spring is attached, f = c·phi. The option
+    pder2 exists only with pder (use_pder=False, use_pder2=True: no pder2), as in MSL."""
+    J, c, A, om = 0.7, 5.0, 0.3, 2.0
+    m = acausal.Model("general_angle")
+    m.p, m.w, m.a = acausal.Input(), acausal.Input(), acausal.Input()
+    m.moved = rot.GeneralAngleToTorqueAdaptor(use_pder=use_pder, use_pder2=use_pder2)
+    m.spring, m.fixed = rot.Spring(c=c), rot.Fixed()
+    pairs = [(m.p.y, m.moved.p), (m.spring.flange_b, m.fixed.flange)]
+    has_pder2 = use_pder and use_pder2
+    if has_pder2:
+        m.j = rot.Inertia(J=J)
+        pairs += [(m.moved.flange, m.j.flange_b), (m.j.flange_a, m.spring.flange_a),
+                  (m.w.y, m.moved.pder), (m.a.y, m.moved.pder2)]
+    else:
+        pairs += [(m.moved.flange, m.spring.flange_a)]
+        if use_pder:
+            pairs += [(m.w.y, m.moved.pder)]
+    connect_all(m, *pairs)
+    expected_ports = {"flange", "p", "f"} | ({"pder"} if use_pder else set()) \
+        | ({"pder2"} if has_pder2 else set())
+    assert set(m.moved.ports) == expected_ports
+    t = np.linspace(0.0, 3.0, 61)
+    res = acausal.compile(m).simulate(3.0, t=t, rtol=1e-10, atol=1e-12, inputs={
+        "p": lambda x: A * np.sin(om * x), "w": lambda x: A * om * np.cos(om * x),
+        "a": lambda x: -A * om ** 2 * np.sin(om * x)})
+    phi = A * np.sin(om * t)
+    close(res["spring.phi_rel"], -phi, what="the spring turned by phi (flange_b fixed)")
+    close(res["moved.f"], (-J * A * om ** 2 * np.sin(om * t) if has_pder2 else 0.0) + c * phi,
+          what="f = J·phi'' + c·phi")
+
+
+def test_general_angle_to_torque_adaptor_derives_the_rates_of_a_signal_source():
+    """Without pder the flange's rates are those of the angle signal: a Sine p = A·sin(ωt)
+    moving an inertia J needs f = J·phi'' = −J·A·ω²·sin(ωt)."""
+    J, A, f = 0.7, 0.3, 0.5
+    om = 2 * np.pi * f
+    m = acausal.Model("general_angle_source")
+    m.sine = sig.Sine(amplitude=A, f=f)
+    m.moved, m.j = rot.GeneralAngleToTorqueAdaptor(use_pder=False), rot.Inertia(J=J)
+    connect_all(m, (m.sine.y, m.moved.p), (m.moved.flange, m.j.flange_a))
+    t = np.linspace(0.0, 2.0, 41)
+    res = acausal.compile(m).simulate(2.0, t=t, rtol=1e-10, atol=1e-12)
+    close(res["j.phi"], A * np.sin(om * t), what="angle as given")
+    close(res["moved.f"], -J * A * om ** 2 * np.sin(om * t), what="f = J·phi''")
+
+
+@pytest.mark.parametrize("use_pder, use_pder2", [(True, True), (False, True)])
+def test_general_torque_to_angle_adaptor_on_an_inertia(use_pder, use_pder2):
+    """GeneralTorqueToAngleAdaptor on an inertia J at rest: flange.tau = f loads it, J·phi''
+    = −f (MSL's u = flange.tau); outputs p = phi = −f·t²/(2J), pder = −f·t/J, pder2 = −f/J.
+    Without use_pder there is no pder2 either (MSL's pder2 if use_pder and use_pder2)."""
+    J, load = 0.7, 1.4
+    m = acausal.Model("general_torque")
+    m.load = acausal.Input()
+    m.driven = rot.GeneralTorqueToAngleAdaptor(use_pder=use_pder, use_pder2=use_pder2)
+    m.j = rot.Inertia(J=J)
+    connect_all(m, (m.load.y, m.driven.f), (m.driven.flange, m.j.flange_b))
+    assert set(m.driven.ports) == {"flange", "p", "f"} | (
+        {"pder", "pder2"} if use_pder else set())
+    t = np.linspace(0.0, 1.0, 101)
+    res = acausal.compile(m).simulate(1.0, t=t, inputs={"load": lambda x: 0 * x + load})
+    close(res["driven.p"], -load * t ** 2 / (2 * J), what="p = phi")
+    close(res["j.phi"], res["driven.p"], what="p = flange.phi")
+    if use_pder:
+        close(res["driven.pder"], -load * t / J, what="pder = w")
+        close(res["driven.pder2"], -load / J, what="pder2 = a")
+
+
+def test_general_adaptors_back_to_back_are_one_inertia():
+    """MSL's use of the pair (GenerationOfFMUs): an inertia J1 driven by tau(t) = sin(t)
+    through a GeneralTorqueToAngleAdaptor whose p, pder, pder2 move a second inertia J2
+    through a GeneralAngleToTorqueAdaptor, whose torque f is fed back: as one inertia
+    J1 + J2, phi = (t − sin t)/(J1 + J2), and f = J2·phi''."""
+    J1, J2 = 1.1, 2.2
+    m = acausal.Model("back_to_back")
+    m.tau, m.torque = acausal.Input(), rot.Torque()
+    m.j1, m.j2 = rot.Inertia(J=J1), rot.Inertia(J=J2)
+    m.toAngle, m.toTorque = rot.GeneralTorqueToAngleAdaptor(), rot.GeneralAngleToTorqueAdaptor()
+    connect_all(m, (m.tau.y, m.torque.tau), (m.torque.flange, m.j1.flange_a),
+                (m.j1.flange_b, m.toAngle.flange), (m.toAngle.p, m.toTorque.p),
+                (m.toAngle.pder, m.toTorque.pder), (m.toAngle.pder2, m.toTorque.pder2),
+                (m.toTorque.flange, m.j2.flange_a), (m.toTorque.f, m.toAngle.f))
+    t = np.linspace(0.0, 2.0, 41)
+    res = acausal.compile(m).simulate(2.0, t=t, rtol=1e-10, atol=1e-12,
+                                      inputs={"tau": np.sin})
+    Jt = J1 + J2
+    close(res["j1.phi"], (t - np.sin(t)) / Jt, what="phi of J1")
+    close(res["j2.phi"], (t - np.sin(t)) / Jt, what="phi of J2")
+    close(res["toTorque.f"], J2 * np.sin(t) / Jt, what="f = J2·phi''")
 
 
 # =========================================================================================

@@ -33,7 +33,8 @@ __all__ = ["Axis", "TRANSLATIONAL_AXIS", "ROTATIONAL_AXIS",
            "PartialElementaryTwoFlangesAndSupport2", "linear_law", "quadratic_law", "inverse_law",
            "Regularization", "regularized_sign", "regularization_region", "speed_band_region",
            "Position", "Speed", "Accelerate", "Move", "ConstantSpeed", "FlowToPotentialAdaptor",
-           "PotentialToFlowAdaptor", "drive_flanges",
+           "PotentialToFlowAdaptor", "GeneralFlowToPotentialAdaptor",
+           "GeneralPotentialToFlowAdaptor", "drive_flanges",
            "PartialDrivenJoint", "unit_direction"]
 
 
@@ -559,4 +560,32 @@ class PotentialToFlowAdaptor(Component):
 
     def physics(self, e):
         e.output(self.ports[self.connectors[3]], -e.cut_flow(self.flange))
+
+
+class _GeneralAdaptorConnectors(Component):
+    """The connectors of MSL's Blocks.Interfaces.Adaptors as they are, which the domains'
+    General adaptors keep: p, pder, pder2, f; ``use_pder`` and ``use_pder2`` (pder2 only with
+    use_pder, as in MSL). MSL's fder, fder2 are final off in those adaptors and not
+    offered."""
+    partial = True
+    options = {"use_pder": True, "use_pder2": True}
+    connectors = ("p", "pder", "pder2", "f")
+
+    def __init__(self, name: str | None = None, **params):
+        params["use_pder2"] = params.get("use_pder", True) and params.get("use_pder2", True)
+        super().__init__(name, **params)
+
+
+class GeneralFlowToPotentialAdaptor(_GeneralAdaptorConnectors, FlowToPotentialAdaptor):
+    """FlowToPotentialAdaptor with MSL's generic connectors (input f; outputs p, pder,
+    pder2): the base of Translational's GeneralForceToPositionAdaptor and Rotational's
+    GeneralTorqueToAngleAdaptor, which declare the connectors with their units."""
+    partial = True
+
+
+class GeneralPotentialToFlowAdaptor(_GeneralAdaptorConnectors, PotentialToFlowAdaptor):
+    """PotentialToFlowAdaptor with MSL's generic connectors (inputs p, pder, pder2; output
+    f): the base of Translational's GeneralPositionToForceAdaptor and Rotational's
+    GeneralAngleToTorqueAdaptor, which declare the connectors with their units."""
+    partial = True
 

@@ -60,6 +60,7 @@ __all__ = [
     "IdealPlanetary", "IdealRollingWheel", "IdealGearR2T", "BearingFriction", "Brake", "Clutch",
     "OneWayClutch", "Freewheel", "LossyGear", "ElastoBacklash", "ElastoBacklash2", "Gearbox",
     "InitializeFlange", "TorqueToAngleAdaptor", "AngleToTorqueAdaptor",
+    "GeneralTorqueToAngleAdaptor", "GeneralAngleToTorqueAdaptor",
     # sources
     "Torque", "Torque2", "ConstantTorque", "SignTorque", "QuadraticSpeedDependentTorque",
     "LinearSpeedDependentTorque", "InverseSpeedDependentTorque", "TorqueStep",
@@ -864,6 +865,39 @@ class AngleToTorqueAdaptor(interfaces.PotentialToFlowAdaptor):
     def __init__(self, name: str | None = None, **params):
         params["use_w"] = params.get("use_w", True) or params.get("use_a", True)
         super().__init__(name, **params)
+
+
+class GeneralTorqueToAngleAdaptor(interfaces.GeneralFlowToPotentialAdaptor):
+    """Signal adaptor of a flange with the angle, speed and acceleration as outputs and the
+    torque as input, with MSL's generic connector names (MSL
+    Components.GeneralTorqueToAngleAdaptor, for FMUs): flange.tau = f [N.m]; p = flange.phi
+    [rad], pder = der(p) [rad/s] (option ``use_pder``), pder2 = der(pder) [rad/s²] (option
+    ``use_pder2``, only with ``use_pder`` as in MSL). MSL's inputs of the torque's
+    derivatives are final off there and not offered."""
+    flange = Flange("flange", required=True)
+    p = RealOutput("output for potential: angle phi [rad]")
+    pder = ConditionalPort(RealOutput("optional output for der(potential): angular velocity "
+                                      "w [rad/s]"), "use_pder")
+    pder2 = ConditionalPort(RealOutput("optional output for der2(potential): angular "
+                                       "acceleration a [rad/s2]"), "use_pder2")
+    f = RealInput("input for flow: torque tau [N.m]")
+
+
+class GeneralAngleToTorqueAdaptor(interfaces.GeneralPotentialToFlowAdaptor):
+    """Signal adaptor of a flange with the torque as output and the angle, speed and
+    acceleration as inputs, with MSL's generic connector names (MSL
+    Components.GeneralAngleToTorqueAdaptor, for FMUs): the flange moves with the angle p
+    [rad], its speed pder [rad/s] (option ``use_pder``) and acceleration pder2 [rad/s²]
+    (option ``use_pder2``, only with ``use_pder`` as in MSL) as given (the user's to keep
+    consistent, as in MSL); f = −flange.tau [N.m], the torque needed to move it so. MSL's
+    outputs of the torque's derivatives are final off there and not offered."""
+    flange = Flange("flange", required=True)
+    p = RealInput("input for potential: angle phi [rad]")
+    pder = ConditionalPort(RealInput("optional input for der(potential): angular velocity w "
+                                     "[rad/s]"), "use_pder")
+    pder2 = ConditionalPort(RealInput("optional input for der2(potential): angular "
+                                      "acceleration a [rad/s2]"), "use_pder2")
+    f = RealOutput("output for flow: torque tau [N.m] needed to move the flange so")
 
 
 # =========================================================================================

@@ -9,9 +9,9 @@ port_a to port_b. Start values of the states are constructor keywords
 (``HeatCapacitor(C=10, T_start=350)``, MSL's ``T(start=350)``).
 
 ThermalCollector's m ports are the vector port ``port_a[1]`` .. ``port_a[m]`` (``m`` a
-constructor argument, as Blocks' vector inputs). The degC classes of MSL's Celsius package
-are in ``acausal.components.celsius`` (their MSL names would shadow the Kelvin classes
-here); Fahrenheit and Rankine are not in acausal.
+constructor argument, as Blocks' vector inputs). The classes of MSL's Celsius, Fahrenheit and
+Rankine packages are in ``acausal.components.celsius``, ``.fahrenheit`` and ``.rankine``
+(their MSL names would shadow the Kelvin classes here).
 
 Two HeatCapacitors joined directly (or to a FixedTemperature) fix one temperature twice: a
 higher-index network, refused when compiled; join them through a ThermalConductor.

@@ -710,7 +710,7 @@ class Vehicle(Component):
         return filtered
 
 
-class GeneralForceToPositionAdaptor(interfaces.FlowToPotentialAdaptor):
+class GeneralForceToPositionAdaptor(interfaces.GeneralFlowToPotentialAdaptor):
     """Signal adaptor of a flange with the position, speed and acceleration as outputs and
     the force as input (MSL Components.GeneralForceToPositionAdaptor, for FMUs): flange.f
     = f [N]; p = flange.s [m], pder = der(p) [m/s] (option ``use_pder``), pder2 = der(pder)
@@ -718,8 +718,6 @@ class GeneralForceToPositionAdaptor(interfaces.FlowToPotentialAdaptor):
     force's derivatives are final off there and not offered. The block with a mass behind
     it is what an FMU of a flange "with states" exposes (see
     models.translational_fmus.DirectMass)."""
-    options = {"use_pder": True, "use_pder2": True}
-    connectors = ("p", "pder", "pder2", "f")
     flange = Flange("flange", required=True)
     p = RealOutput("output for potential: position s [m]")
     pder = ConditionalPort(RealOutput("optional output for der(potential): velocity v "
@@ -728,12 +726,8 @@ class GeneralForceToPositionAdaptor(interfaces.FlowToPotentialAdaptor):
                                        "a [m/s2]"), "use_pder2")
     f = RealInput("input for flow: force f [N]")
 
-    def __init__(self, name: str | None = None, **params):
-        params["use_pder2"] = params.get("use_pder", True) and params.get("use_pder2", True)
-        super().__init__(name, **params)
 
-
-class GeneralPositionToForceAdaptor(interfaces.PotentialToFlowAdaptor):
+class GeneralPositionToForceAdaptor(interfaces.GeneralPotentialToFlowAdaptor):
     """Signal adaptor of a flange with the force as output and the position, speed and
     acceleration as inputs (MSL Components.GeneralPositionToForceAdaptor, for FMUs): the
     flange moves with the position p [m], its speed pder [m/s] (option ``use_pder``) and
@@ -741,8 +735,6 @@ class GeneralPositionToForceAdaptor(interfaces.PotentialToFlowAdaptor):
     given (the user's to keep consistent, as in MSL); f = −flange.f [N], the force needed
     to move it so. MSL's outputs of the force's derivatives are final off there and not
     offered."""
-    options = {"use_pder": True, "use_pder2": True}
-    connectors = ("p", "pder", "pder2", "f")
     flange = Flange("flange", required=True)
     p = RealInput("input for potential: position s [m]")
     pder = ConditionalPort(RealInput("optional input for der(potential): velocity v [m/s]"),
@@ -750,10 +742,6 @@ class GeneralPositionToForceAdaptor(interfaces.PotentialToFlowAdaptor):
     pder2 = ConditionalPort(RealInput("optional input for der2(potential): acceleration a "
                                       "[m/s2]"), "use_pder2")
     f = RealOutput("output for flow: force f [N] needed to move the flange so")
-
-    def __init__(self, name: str | None = None, **params):
-        params["use_pder2"] = params.get("use_pder", True) and params.get("use_pder2", True)
-        super().__init__(name, **params)
 
 
 # =========================================================================================
