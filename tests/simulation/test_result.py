@@ -193,3 +193,10 @@ def test_input_units_follow_the_signal_and_unknown_names_are_named():
         res["mass.ss"]
     with pytest.raises(acausal.VariableNameError, match="named by text.*got 3"):
         res[3]
+
+
+def test_a_model_without_parameters_or_states():
+    """A conversion block alone: no parameter, no state; its output is the closed form."""
+    from acausal.components import fahrenheit
+    res = acausal.compile(fahrenheit.ToKelvin()).simulate(1.0, inputs={"Fahrenheit": 212.0})
+    np.testing.assert_allclose(res["Kelvin"], 373.15, rtol=1e-15)

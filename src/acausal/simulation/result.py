@@ -66,7 +66,8 @@ class Result:
         n = self.t.size
         self._states, self._algebraics, self._inputs = (np.asarray(a, dtype=float).reshape(-1, n)
                                      for a in (X, Z, U))
-        self._params = np.asarray(P, dtype=float).reshape(len(model.params), -1)
+        P = np.asarray(P, dtype=float)
+        self._params = P.reshape(len(model.params), -1) if P.size else np.zeros((0, 1))
         self._values = None
         self._units = None
         self.events: list[Event] = []
