@@ -191,8 +191,9 @@ def _conflict(J, h, labels, targets, given) -> str:
             f"no start value enters {', '.join(fixed)}"
         return (f"cannot find initial values satisfying {', '.join(bad)}: {which} (it holds "
                 f"or fails with the time, inputs and parameters at the start alone, e.g. a "
-                f"steady start under an input that keeps the state moving); change those, or "
-                f"the component's initialization (initType)")
+                f"steady start under an input that keeps the state moving, or a loop of blocks "
+                f"whose gain is exactly 1); change those, the component's initialization "
+                f"(initType), or the loop's gains")
     return (f"cannot find initial values satisfying {', '.join(bad)}; check {given} values "
             f"against the model's constraints")
 

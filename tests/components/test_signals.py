@@ -371,18 +371,6 @@ def test_pid_positions_a_mass(params):
 
 
 # ---- errors -----------------------------------------------------------------------------------
-def test_algebraic_loop_of_blocks_is_an_error():
-    m = Model("loop")
-    m.c, m.fb, m.g = sg.Constant(), sg.Feedback(), sg.Gain(k=2.0)
-    m.i = sg.Integrator()
-    m.connect(m.c.y, m.fb.u1)
-    m.connect(m.fb.y, m.g.u)
-    m.connect(m.g.y, m.fb.u2)
-    m.connect(m.g.y, m.i.u)
-    with pytest.raises(StructureError, match="algebraic loop"):
-        acausal.compile(m)
-
-
 def test_unconnected_input_is_an_error():
     m = Model("open")
     m.i = sg.Integrator()

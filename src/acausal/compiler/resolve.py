@@ -6,13 +6,19 @@ derivative as ``der(<state>)`` until the component sets it, a value with given r
 (``StructureBuilder.with_rates``) as ``given:<component>.<name>``. Once every component has spoken,
 the placeholders' values are known; a Resolver substitutes them (and the relaxations ε of the
 tree relations by zero) in any expression.
+
+Signals that depend on each other without a state in between (an algebraic loop of blocks,
+y = k·(u + g·y)) are torn first, as a Modelica tool does: a few of the loop's signals, chosen
+so that the rest follow from them in order, become algebraic variables of the model (named as
+their output, e.g. ``add.y``), each with the equation "its value = its block's expression",
+solved with the other algebraic equations (IDAS, the FMU's Newton iteration).
 """
 from __future__ import annotations
 
 import casadi as ca
 
 from ..errors import StructureError
-from .builders import Workspace
+from .builders import StateInfo, Workspace
 from .symbolic import UnknownDerivative, der_with, substitute_all
 
 _vc = ca.vertcat
@@ -77,6 +83,7 @@ def make_resolver(ws: Workspace, relaxations: list[ca.SX]) -> Resolver:
     for sym, value in ws.aliases:
         syms.append(sym)
         vals.append(value)
+    _tear_loops(ws, syms, vals)
     vals = substitute_all(vals, syms, vals) if syms else vals
     # rates of signals (prescribed motion): d/dt of the resolved signal expressions
     failed = []
@@ -103,3 +110,77 @@ def make_resolver(ws: Workspace, relaxations: list[ca.SX]) -> Resolver:
 
 def _resolve_once(ex, syms, vals):
     return ca.substitute([ex], [_vc(*syms)], [_vc(*vals)])[0] if syms else ex
+
+
+def _tear_loops(ws: Workspace, syms: list, vals: list) -> None:
+    """Tear the algebraic loops among the placeholders ``syms`` (values ``vals``, changed in
+    place): while the graph "value i uses placeholder j" has a cycle, the signal of the
+    cycle's component used most (in and out) becomes an algebraic variable z named as its
+    output, its placeholder's value z, its block's expression an equation of ws (z − value
+    = 0). Only block outputs are torn; a loop without one is left to substitute_all's error."""
+    index = {s.name(): i for i, s in enumerate(syms)}
+    uses = [sorted({index[n] for n in (v.name() for v in ca.symvar(ca.SX(x))) if n in index})
+            for x in vals]
+    outputs = {s.name(): o for o, s in ws.signal_sym.items()}
+    torn = set()
+    while True:
+        loops = [c for c in _strong_components(uses, torn)
+                 if len(c) > 1 or c[0] in uses[c[0]]]
+        if not loops:
+            break
+        for cycle in loops:
+            members = set(cycle)
+            tearable = [i for i in cycle if syms[i].name() in outputs]
+            if not tearable:
+                return
+            degree = {i: sum(j in members for j in uses[i]) +
+                      sum(i in uses[j] for j in members) for i in tearable}
+            torn.add(max(tearable, key=lambda i: (degree[i], -i)))
+    for i in sorted(torn):
+        port = outputs[syms[i].name()]
+        z = ca.SX.sym(port.path)
+        ws.der_table[z.name()] = None
+        ws.algebraics.append(StateInfo(z, 0.0, "", f"{port.path} (torn algebraic loop)",
+                                       port.owner))
+        ws.residuals.append((port.owner, z - vals[i]))
+        vals[i] = z
+
+
+def _strong_components(uses: list[list[int]], removed: set) -> list[list[int]]:
+    """The strongly connected components of the graph i → uses[i] without the vertices
+    ``removed`` (Tarjan's algorithm, iterative)."""
+    order, low, on_stack, stack, out, counter = {}, {}, set(), [], [], [0]
+    for root in range(len(uses)):
+        if root in removed or root in order:
+            continue
+        work = [(root, 0)]
+        while work:
+            v, k = work.pop()
+            if k == 0:
+                order[v] = low[v] = counter[0]
+                counter[0] += 1
+                stack.append(v)
+                on_stack.add(v)
+            edges = [w for w in uses[v] if w not in removed]
+            for j in range(k, len(edges)):
+                w = edges[j]
+                if w not in order:
+                    work.append((v, j + 1))
+                    work.append((w, 0))
+                    break
+                if w in on_stack:
+                    low[v] = min(low[v], order[w])
+            else:
+                if low[v] == order[v]:
+                    component = []
+                    while True:
+                        w = stack.pop()
+                        on_stack.discard(w)
+                        component.append(w)
+                        if w == v:
+                            break
+                    out.append(component)
+                if work:
+                    parent = work[-1][0]
+                    low[parent] = min(low[parent], low[v])
+    return out
