@@ -38,9 +38,8 @@ def test_a_loop_of_gains_is_solved():
     np.testing.assert_allclose(res["i.y"], 2 / 3 * T, rtol=0, atol=1e-8)
 
 
-def test_a_nonlinear_loop_follows_the_real_root():
-    """fb.y = sin(2π·0.5·t)·3 − a·fb.y³: the one real root of a·y³ + y − u(t) = 0."""
-    a = 0.7
+def cubic_loop(a=0.7):
+    """fb.y = 3·sin(2π·0.5·t) − a·fb.y³, driving a mass."""
     m = acausal.Model("cubic")
     m.u, m.fb = sg.Sine(amplitude=3.0, f=0.5), sg.Feedback()
     m.sq, m.cube, m.g = sg.Product(), sg.Product(), sg.Gain(k=a)
@@ -54,11 +53,19 @@ def test_a_nonlinear_loop_follows_the_real_root():
     m.mass, m.force = Mass(m=1.0), Force()           # something that moves with it
     m.connect(m.fb.y, m.force.f)
     m.connect(m.force.flange, m.mass.flange_a)
-    res = acausal.compile(m).simulate(2.0, t=T)
-    u = 3.0 * np.sin(np.pi * T)
-    ref = np.array([next(r.real for r in np.roots([a, 0.0, 1.0, -uk]) if abs(r.imag) < 1e-9)
-                    for uk in u])
-    np.testing.assert_allclose(res["fb.y"], ref, rtol=0, atol=1e-7)
+    return m
+
+
+def cubic_root(a, u):
+    """The one real root of a·y³ + y − u = 0 for each u (numpy)."""
+    return np.array([next(r.real for r in np.roots([a, 0.0, 1.0, -uk]) if abs(r.imag) < 1e-9)
+                     for uk in u])
+
+
+def test_a_nonlinear_loop_follows_the_real_root():
+    res = acausal.compile(cubic_loop(0.7)).simulate(2.0, t=T)
+    np.testing.assert_allclose(res["fb.y"], cubic_root(0.7, 3.0 * np.sin(np.pi * T)), rtol=0,
+                               atol=1e-7)
 
 
 def test_a_loop_around_a_state_against_the_closed_form_and_scipy():
@@ -93,3 +100,13 @@ def test_a_loop_of_gain_one_is_named():
     with pytest.raises(acausal.InitializationError, match="loop of blocks whose gain is "
                                                           "exactly 1"):
         acausal.compile(m).simulate(1.0)
+
+
+def test_a_sweep_of_the_cubic_loop_equals_simulate():
+    """The runs of a sweep solve their algebraic variables again at the output times as
+    simulate() does: each equals the real root of its cubic."""
+    c = acausal.compile(cubic_loop())
+    res = c.sweep(2.0, t=T, params={"g.k": [0.7, 2.0]}, variables=["fb.y"])
+    u = 3.0 * np.sin(np.pi * T)
+    for k, a in enumerate([0.7, 2.0]):
+        np.testing.assert_allclose(res.dataset["fb.y"][k], cubic_root(a, u), rtol=0, atol=1e-7)

@@ -12,8 +12,8 @@ from . import assertions, buffers, codegen as generated, explicit
 from .diagnosis import failure_message, not_finite, quiet_stderr
 from .events import EventSimulation
 from .initialization import initial_state
-from .problem import (check_finite, check_inputs, check_settings, folded, integrator_problem,
-                      integrator_settings, output_grid, scaled)
+from .problem import (algebraics_at, check_finite, check_inputs, check_settings, folded,
+                      integrator_problem, integrator_settings, output_grid, scaled)
 from .inputs import input_signal
 from .result import Result
 from .progress import progress_bar, time_reporter, warn_interrupted
@@ -251,8 +251,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             raise
         X, Z = integrate(plugin, opts)
     if opts.get("suppress_algebraic") and alg is not None and not loops and X.size:
-        Z = _algebraics_at(model, alg, grid[:X.shape[1]], X / scale[:nx, None],
-                           Z / scale[nx:, None]) * scale[nx:, None]
+        T = grid[:X.shape[1]].reshape(1, -1)
+        Z = algebraics_at(model.z, alg, ca.vertcat(model.t, model.x),
+                          np.vstack([T, X / scale[:nx, None]]),
+                          Z / scale[nx:, None]) * scale[nx:, None]
     if interrupted:
         grid = grid[:X.shape[1]]
         warn_interrupted(model.name, grid[-1])
@@ -295,23 +297,6 @@ def _with_events(model, ode, alg, grid, xs, zs, p, u_expr, scale, plugin, opts,
     res.mobility = mobility
     res.solver = solver
     return res
-
-
-def _algebraics_at(model, alg, T, X, Z) -> np.ndarray:
-    """The algebraic variables (scaled, a column per output time T) solved again from
-    0 = alg(t, x, z) at the states X (scaled) there, from Z: out of IDAS's error test
-    (``suppress_algebraic``) they are only as accurate as its interpolation between steps,
-    while z of an index-1 DAE follows the states exactly. A column where Newton's method
-    does not get closer keeps IDAS's value."""
-    g = ca.Function("g", [model.z, ca.vertcat(model.t, model.x)], [alg])
-    solve = ca.rootfinder("z", "newton", g, {"abstol": 1e-14, "max_iter": 20,
-                                             "error_on_fail": False})
-    at = np.vstack([np.reshape(T, (1, -1)), X])
-    polished = np.array(solve.map(T.size)(Z, at), dtype=float)
-    residual = [np.max(np.abs(np.array(g.map(T.size)(w, at))), axis=0, initial=0.0)
-                for w in (polished, Z)]
-    better = np.isfinite(residual[0]) & (residual[0] <= residual[1])
-    return np.where(better, polished, Z)
 
 
 def _algebraic_only(model, alg, grid, z0) -> np.ndarray:

@@ -29,7 +29,7 @@ from . import assertions
 from .diagnosis import failure_message, not_finite, quiet_stderr
 from .initialization import initial_state
 from .inputs import Samples, input_signal
-from .problem import (check_finite, check_inputs, check_settings, integrator_problem,
+from .problem import (algebraics_at, check_finite, check_inputs, check_settings, integrator_problem,
                       integrator_settings, output_grid, scaled)
 from .simulate import simulate
 from .stiffness import adams_step_budget, is_stiff, spectral_radius
@@ -397,7 +397,7 @@ class _Engine:
         ok = np.array([k for k in range(n) if k not in self.failed], dtype=int)
         groups, rho = self._solvers(ok) if ok.size else ({}, None)
         auto = self.settings["solver"] is None
-        errors = {}
+        errors, suppressed = {}, []      # runs whose algebraic variables IDAS did not test
         for solver, runs in groups.items():
             if not runs:
                 continue
@@ -407,11 +407,18 @@ class _Engine:
                                              for r in rho[runs])
             failed = self._integrate(self.integrator(solver, extra), runs, W)
             self.solvers[runs] = solver
+            if solver == "idas" and "suppress_algebraic" in (self.settings["options"] or {}):
+                suppressed += [k for k in runs if k not in failed]
             retry = self._retry(solver, auto)
             if failed and retry:
                 self.solvers[sorted(failed)] = retry[0]
-                failed = self._integrate(self.integrator(*retry), sorted(failed), W)
+                again = self._integrate(self.integrator(*retry), sorted(failed), W)
+                if "suppress_algebraic" in retry[1]:
+                    suppressed += [k for k in failed if k not in again]
+                failed = again
             errors.update(failed)
+        if suppressed and nw > nx and not model.has_loops:
+            self._algebraics_again(W, np.array(sorted(suppressed)))
         s = self.settings
         for k, text in errors.items():
             self.failed[k] = failure_message(model, RuntimeError(text), grid[0], grid[-1],
@@ -434,6 +441,18 @@ class _Engine:
             v[failed] = np.nan
         self.solvers[failed] = ""
         return values, {k: self.failed[k] for k in failed}, list(self.solvers)
+
+    def _algebraics_again(self, W: np.ndarray, runs: np.ndarray) -> None:
+        """The algebraic variables of ``runs`` in W solved again from their states at every
+        output time (``algebraics_at``), as simulate() does."""
+        nx, nt, m = self.model.x.numel(), self.grid.size, runs.size
+        N = self.N[:, runs][:, :, None]
+        X = (W[:nx, runs, :] / N[:nx]).reshape(nx, m * nt)
+        Z = (W[nx:, runs, :] / N[nx:]).reshape(-1, m * nt)
+        at = np.vstack([np.tile(self.grid, m), X, np.repeat(self.Q[:, runs], nt, axis=1)])
+        Z = algebraics_at(self.model.z, self.alg, ca.vertcat(self.model.t, self.model.x,
+                                                             self.q), at, Z)
+        W[nx:, runs, :] = Z.reshape(-1, m, nt) * N[nx:]
 
     def _retry(self, solver: str, auto: bool):
         """(solver, options) for the runs that failed, as simulate() retries them: Adams
