@@ -118,12 +118,14 @@ def side(g: np.ndarray, before: np.ndarray) -> np.ndarray:
 
 class ModeIteration:
     """The event iteration of ``model`` at a point, with parameters p (modes last, as
-    ``mode_params`` places them) and inputs ``u`` (a callable of time): what simulate runs
-    at the start and at every event, and what the analyses run to find the modes at an
-    operating point."""
+    ``mode_params`` places them) and inputs ``u`` (a callable of time; a CasADi Function of
+    time where values along many times are needed, ``consistent_along``): what simulate runs
+    at the start and at every event, what the analyses run to find the modes at an operating
+    point, and how simulate and sweep solve the algebraic variables at the output times."""
 
     def __init__(self, model, p, u):
         self.model, self.p, self.u = model, np.asarray(p, dtype=float), u
+        self._maps = {}       # Functions mapped over n points, by (kind, n)
         self.nx, self.has_alg = model.x.numel(), model.z.numel() > 0
         self.loops = model.has_loops
         if self.loops:
@@ -136,9 +138,12 @@ class ModeIteration:
         real = set(model.state_events.real_modes)
         self.integer = np.array([n not in real for n in self.mode_names], dtype=bool)
         if self.has_alg:
-            z, alg_full = model.z, model.alg
-            self.newton = model.function("newton", [alg_full, ca.jacobian(alg_full, z)])
-            self.alg_function = model.function("residual", [alg_full], ["r"])
+            if "newton" not in model._cache:         # once per model (a sweep makes many)
+                z, alg_full = model.z, model.alg
+                model._cache["newton"] = (
+                    model.function("newton", [alg_full, ca.jacobian(alg_full, z)]),
+                    model.function("residual", [alg_full], ["r"]))
+            self.newton, self.alg_function = model._cache["newton"]
             self.residual = buffers.Caller(self.alg_function, ARGS, ["r"])
             # the rows some algebraic variable may enter (a superset of those it enters)
             self.z_rows = np.diff(self.newton.sparsity_out(1).T.colind()) > 0
@@ -190,6 +195,51 @@ class ModeIteration:
                               f"solution at t = {t:g} s with the modes "
                               f"{self._modes(d)}: check the equations the "
                               f"components give for these modes")
+
+    def consistent_along(self, times, X, Z, d) -> np.ndarray:
+        """``consistent_z`` at each of ``times`` (columns of X, Z), all at once (one mapped
+        Newton step per round; a row no algebraic variable enters left out, a singular
+        system by least squares). Each round first checks the residuals alone (cheaper than
+        with the Jacobian): small on every row an algebraic variable may enter, converged."""
+        n, nz = len(times), Z.shape[0]
+        if ("newton", n) not in self._maps:
+            F = self.newton.map(n)
+            i, j = F.sparsity_out(1).get_triplet()                   # J: nz x (n·nz)
+            self._maps["newton", n] = F, (np.array(j) // nz, np.array(i), np.array(j) % nz)
+            self._maps["residual", n] = buffers.Caller(self.alg_function.map(n), ARGS, ["r"])
+        F, at = self._maps["newton", n]
+        T = np.asarray(times, dtype=float).reshape(1, -1)
+        U, P = self.inputs_along(T), self.params(d)
+        Ps = np.tile(P[:, None], (1, n))
+        Z = np.array(Z, dtype=float)
+        for _ in range(50):
+            if solved(self._maps["residual", n](T, X, Z, U, Ps)[0], self.z_rows, Z):
+                return Z
+            r, Jv = F(T, X, Z, U, P)
+            r = r.full()
+            J = np.zeros((n, nz, nz))                                 # one per column
+            J[at] = np.array(Jv.nonzeros())
+            rows = np.any(J != 0, axis=2).T                           # (nz, n)
+            if solved(r, rows, Z):
+                return Z
+            R = np.where(rows, r, 0.0).T[..., None]                   # (n, nz, 1)
+            try:
+                step = np.linalg.solve(J + ~rows.T[..., None] * np.eye(nz), R)
+            except np.linalg.LinAlgError:                             # indeterminate
+                step = np.linalg.pinv(J) @ R
+            Z = Z - step[..., 0].T
+        for k in range(n):          # one by one: what converges slowly, or the error
+            Z[:, k] = self.consistent_z(times[k], X[:, k], Z[:, k], d)
+        return Z
+
+    def inputs_along(self, T: np.ndarray) -> np.ndarray:
+        """The inputs at each of the times T (a row), one column each."""
+        n = T.shape[1]
+        if not self.model.u.numel():
+            return np.zeros((0, n))
+        if ("u", n) not in self._maps:
+            self._maps["u", n] = self.u.map(n)
+        return np.array(self._maps["u", n](T), dtype=float)
 
     def iterate(self, t, x, z, d, held: dict, keep=()):
         """The event iteration at (t, x): every mode updated from the present ones, the
@@ -252,7 +302,6 @@ class EventSimulation(ModeIteration):
                                              ca.jacobian(ode, model.z)])
         self.regular = self._integrators(alg)
         self.dae, self.step = self.regular
-        self._maps = {}       # Functions mapped over n points, by (kind, n)
         self.g = model.indicator_function
         self.g_call = buffers.Caller(self.g, ARGS, ["g"])
         self.reinits = model.state_events.reinits
@@ -335,15 +384,6 @@ class EventSimulation(ModeIteration):
         U = self.inputs_along(T)
         return self._maps["g", n](T, X, Z, U, np.tile(self.params(d)[:, None], (1, n)))[0]
 
-    def inputs_along(self, T: np.ndarray) -> np.ndarray:
-        """The inputs at each of the times T (a row), one column each."""
-        n = T.shape[1]
-        if not self.model.u.numel():
-            return np.zeros((0, n))
-        if ("u", n) not in self._maps:
-            self._maps["u", n] = self.u.map(n)
-        return np.array(self._maps["u", n](T), dtype=float)
-
     # ---- integration ---------------------------------------------------------------------
     def integrate(self, t0, times, x, z, d):
         """(x, z) at each of ``times`` (> t0) from (t0, x, z) with modes d, unscaled."""
@@ -370,42 +410,6 @@ class EventSimulation(ModeIteration):
         # the states stand still (a stuck friction element: long steps); solved at x instead
         Z = zf * self.Nz[:, None]
         return X, self.consistent_along(times, X, Z, d)
-
-    def consistent_along(self, times, X, Z, d) -> np.ndarray:
-        """``consistent_z`` at each of ``times`` (columns of X, Z), all at once (one mapped
-        Newton step per round; a row no algebraic variable enters left out, a singular
-        system by least squares). Each round first checks the residuals alone (cheaper than
-        with the Jacobian): small on every row an algebraic variable may enter, converged."""
-        n, nz = len(times), Z.shape[0]
-        if ("newton", n) not in self._maps:
-            F = self.newton.map(n)
-            i, j = F.sparsity_out(1).get_triplet()                   # J: nz x (n·nz)
-            self._maps["newton", n] = F, (np.array(j) // nz, np.array(i), np.array(j) % nz)
-            self._maps["residual", n] = buffers.Caller(self.alg_function.map(n), ARGS, ["r"])
-        F, at = self._maps["newton", n]
-        T = np.asarray(times, dtype=float).reshape(1, -1)
-        U, P = self.inputs_along(T), self.params(d)
-        Ps = np.tile(P[:, None], (1, n))
-        Z = np.array(Z, dtype=float)
-        for _ in range(50):
-            if solved(self._maps["residual", n](T, X, Z, U, Ps)[0], self.z_rows, Z):
-                return Z
-            r, Jv = F(T, X, Z, U, P)
-            r = r.full()
-            J = np.zeros((n, nz, nz))                                 # one per column
-            J[at] = np.array(Jv.nonzeros())
-            rows = np.any(J != 0, axis=2).T                           # (nz, n)
-            if solved(r, rows, Z):
-                return Z
-            R = np.where(rows, r, 0.0).T[..., None]                   # (n, nz, 1)
-            try:
-                step = np.linalg.solve(J + ~rows.T[..., None] * np.eye(nz), R)
-            except np.linalg.LinAlgError:                             # indeterminate
-                step = np.linalg.pinv(J) @ R
-            Z = Z - step[..., 0].T
-        for k in range(n):          # one by one: what converges slowly, or the error
-            Z[:, k] = self.consistent_z(times[k], X[:, k], Z[:, k], d)
-        return Z
 
     def _start_options(self, t0, x, z, d, t1) -> dict:
         """The integrator's options; DAEs: with the derivatives at the start and a first

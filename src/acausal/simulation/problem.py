@@ -163,20 +163,3 @@ def check_finite(what: str, values: dict | None, error=SimulationError) -> None:
         if not ok:
             raise error(f"{what}['{name}'] must be a finite number, got {v!r}")
 
-
-def algebraics_at(z: ca.SX, alg: ca.SX, given: ca.SX, values: np.ndarray,
-                  Z: np.ndarray) -> np.ndarray:
-    """The algebraic variables ``z`` (a column per point) solved again from 0 = ``alg`` at the
-    columns ``values`` of ``given`` (time, the states and whatever else alg takes there), by
-    Newton's method from ``Z``: out of IDAS's error test (``suppress_algebraic``) they are
-    only as accurate as its interpolation between steps, while z of an index-1 DAE follows
-    the states exactly. A column where Newton's method does not get closer keeps Z."""
-    g = ca.Function("g", [z, given], [alg])
-    solve = ca.rootfinder("z", "newton", g, {"abstol": 1e-14, "max_iter": 20,
-                                             "error_on_fail": False})
-    n = Z.shape[1]
-    polished = np.array(solve.map(n)(Z, values), dtype=float)
-    residual = [np.max(np.abs(np.array(g.map(n)(w, values))), axis=0, initial=0.0)
-                for w in (polished, Z)]
-    better = np.isfinite(residual[0]) & (residual[0] <= residual[1])
-    return np.where(better, polished, Z)

@@ -27,9 +27,10 @@ from ..errors import AcausalError, SimulationError
 from ..numerics import event_times, first_failed_assertion
 from . import assertions
 from .diagnosis import failure_message, not_finite, quiet_stderr
+from .events import ModeIteration
 from .initialization import initial_state
 from .inputs import Samples, input_signal
-from .problem import (algebraics_at, check_finite, check_inputs, check_settings, integrator_problem,
+from .problem import (check_finite, check_inputs, check_settings, integrator_problem,
                       integrator_settings, output_grid, scaled)
 from .simulate import simulate
 from .stiffness import adams_step_budget, is_stiff, spectral_radius
@@ -444,15 +445,12 @@ class _Engine:
 
     def _algebraics_again(self, W: np.ndarray, runs: np.ndarray) -> None:
         """The algebraic variables of ``runs`` in W solved again from their states at every
-        output time (``algebraics_at``), as simulate() does."""
-        nx, nt, m = self.model.x.numel(), self.grid.size, runs.size
-        N = self.N[:, runs][:, :, None]
-        X = (W[:nx, runs, :] / N[:nx]).reshape(nx, m * nt)
-        Z = (W[nx:, runs, :] / N[nx:]).reshape(-1, m * nt)
-        at = np.vstack([np.tile(self.grid, m), X, np.repeat(self.Q[:, runs], nt, axis=1)])
-        Z = algebraics_at(self.model.z, self.alg, ca.vertcat(self.model.t, self.model.x,
-                                                             self.q), at, Z)
-        W[nx:, runs, :] = Z.reshape(-1, m, nt) * N[nx:]
+        output time, as simulate() does (``ModeIteration.consistent_along``)."""
+        model, nx = self.model, self.model.x.numel()
+        for k in runs:
+            u = ca.Function("u", [model.t], [self.u_of(model.t, self.U[:, k])])
+            W[nx:, k, :] = ModeIteration(model, self.P[:, k], u).consistent_along(
+                self.grid, W[:nx, k, :], W[nx:, k, :], np.zeros(0))
 
     def _retry(self, solver: str, auto: bool):
         """(solver, options) for the runs that failed, as simulate() retries them: Adams
