@@ -11,9 +11,11 @@ a singular mass matrix by the coordinates it leaves without inertia (``not_finit
 """
 from __future__ import annotations
 
+import io
 import os
 import re
 import sys
+import tempfile
 from contextlib import contextmanager
 
 import casadi as ca
@@ -26,8 +28,8 @@ TIGHT_RTOL, TIGHT_ATOL = 1e-10, 1e-12
 
 def failure_message(model, error: Exception, a: float, b: float, rtol: float, atol: float,
                     state_near=None, p=None, u_at=None, start=None) -> str:
-    """The message of a failed integration of ``model`` over [a, b]: what the solver said,
-    and why in the model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None)
+    """The message of a failed integration of ``model`` over [a, b]: what the solver said
+    (``error``, with what it wrote on standard error appended), and why in the model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None)
     for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs;
     ``start`` the (x, z) the integration started from at a."""
     text = str(error)
@@ -42,7 +44,7 @@ def failure_message(model, error: Exception, a: float, b: float, rtol: float, at
         undetermined = _undetermined(model, a, *start, u_at(a), p)
         if undetermined:
             return f"{head}. {undetermined}"
-    found = re.search(r"At t = ([-+0-9.eE]+)", text)
+    found = re.search(r"(?:At|Internal) t = ([-+0-9.eE]+)", text)
     t_fail = float(found.group(1)) if found else None
     if model.has_loops and t_fail is not None and state_near is not None:
         near = state_near(t_fail)
@@ -50,6 +52,8 @@ def failure_message(model, error: Exception, a: float, b: float, rtol: float, at
             singular = _singular_configuration(model, t_fail, *near, u_at(t_fail), p)
             if singular:
                 return f"{head}. {singular}"
+    if blow_up(text):
+        return f"{head}. {blow_up(text)}"
     if "TOO_MUCH_WORK" in text:
         return (f"{head}. The solver took too many steps: the model may be stiff (give "
                 f"solver='cvodes' for BDF) or the tolerances tighter than needed; "
@@ -60,6 +64,18 @@ def failure_message(model, error: Exception, a: float, b: float, rtol: float, at
                 f"solve): loosen them, e.g. rtol = {TIGHT_RTOL:g}, atol = {TIGHT_ATOL:g}")
     return (f"{head}. Check the parameters and the initial values (a value that makes the "
             f"equations blow up), or try another solver")
+
+
+def blow_up(text: str) -> str:
+    """What a failed integration's ``text`` (its error and what the solver wrote) says when
+    the equations became infinite or NaN: where, and the likely causes; else ""."""
+    if not re.search(r"(?:Inf|NaN) detected", text):
+        return ""
+    found = re.search(r"(?:At|Internal) t = ([-+0-9.eE]+)", text)
+    near = f" near t = {float(found.group(1)):g} s" if found else ""
+    return (f"The equations became infinite or NaN{near}: the states grow without bound "
+            f"there (a finite-time blow-up), or an expression divides by zero; check the "
+            f"parameters, the initial values and the inputs")
 
 
 def _undetermined(model, t, x, z, u, p) -> str | None:
@@ -103,18 +119,55 @@ def _singular_configuration(model, t, x, z, u, p) -> str | None:
 
 
 @contextmanager
-def quiet_stderr():
-    """The process's standard error (file descriptor 2, where SUNDIALS writes) discarded:
-    around a solve whose failure is handled (a retry, a fallback), not reported."""
+def _stderr_to(fd: int, stream):
+    """Standard error sent to ``fd`` for the block: the process's file descriptor 2, where
+    SUNDIALS writes, and Python's sys.stderr (``stream``), where CasADi's warnings go."""
     sys.stderr.flush()
-    saved, null = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    saved, saved_stream = os.dup(2), sys.stderr
     try:
-        os.dup2(null, 2)
+        os.dup2(fd, 2)
+        sys.stderr = stream
         yield
     finally:
+        sys.stderr = saved_stream
         os.dup2(saved, 2)
         os.close(saved)
+
+
+@contextmanager
+def quiet_stderr():
+    """Standard error discarded: around a solve whose failure is handled (a retry, a
+    fallback), not reported."""
+    null = os.open(os.devnull, os.O_WRONLY)
+    try:
+        with _stderr_to(null, io.StringIO()):
+            yield
+    finally:
         os.close(null)
+
+
+@contextmanager
+def captured_stderr(into: list):
+    """Standard error kept: its text appended to ``into`` when the block ends (a failed
+    integration's own account of where it stopped, for its error message)."""
+    stream = io.StringIO()
+    with tempfile.TemporaryFile() as f:
+        try:
+            with _stderr_to(f.fileno(), stream):
+                yield
+        finally:
+            f.seek(0)
+            into.append(f.read().decode(errors="replace") + stream.getvalue())
+
+
+def passed_on(text: str, lines: int = 8) -> None:
+    """What a successful integration wrote (SUNDIALS's warnings), written to standard error
+    as it came, its first ``lines`` lines and a count of the rest."""
+    if not text:
+        return
+    rows = text.splitlines()
+    more = f"\n... ({len(rows) - lines} more lines)" if len(rows) > lines else ""
+    sys.stderr.write("\n".join(rows[:lines]) + more + "\n")
 
 
 def not_finite(model, x0, fx0, p, u0, t0) -> str:

@@ -9,7 +9,8 @@ import numpy as np
 from ..errors import SimulationError
 from ..numerics import just_before
 from . import assertions, buffers, codegen as generated, explicit
-from .diagnosis import failure_message, not_finite, quiet_stderr
+from .diagnosis import (captured_stderr, failure_message, not_finite, passed_on,
+                        quiet_stderr)
 from .events import EventSimulation, ModeIteration
 from .initialization import initial_state
 from .problem import (check_finite, check_inputs, check_settings, folded,
@@ -203,9 +204,11 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
         if rates:
             opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
+        said = []                            # what SUNDIALS and CasADi write on stderr
         try:
-            F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
-            xf, *zf = buffers.call(F, {"x0": x, "z0": z}, ["xf", "zf"][:1 + has_alg])
+            with captured_stderr(said):
+                F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
+                xf, *zf = buffers.call(F, {"x0": x, "z0": z}, ["xf", "zf"][:1 + has_alg])
         except RuntimeError as e:
             def state_near(t_fail, a=a, x=x, z=z):
                 """(x, z) shortly before the failure, by a second run; None if it fails."""
@@ -217,10 +220,12 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                     return None
                 return np.array(sol["xf"]).ravel(), np.array(sol["zf"]).ravel()
             raise SimulationError(failure_message(
-                model, e, a, b, rtol, atol, state_near if loops else None, p,
+                model, RuntimeError(f"{e}\n{said[0]}"), a, b, rtol, atol,
+                state_near if loops else None, p,
                 lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel(),
                 start=(np.ravel(x) * scale[:nx], np.ravel(z) * scale[nx:]))
             ) from None
+        passed_on(said[0])
         zf = zf[0] if has_alg else np.zeros((0, len(tout)))
         X.append(xf[:, :len(pts)])
         Z.append(zf[:, :len(pts)])
