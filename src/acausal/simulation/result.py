@@ -95,7 +95,8 @@ class Result:
             columns = (self.t.reshape(1, -1), self._states, self._algebraics, self._inputs,
                        self._param_columns())
             buffered = Buffered(f, [np.zeros(f.nnz_in(i)) for i in range(f.n_in())])
-            self._values = np.empty((f.nnz_out(0), self.t.size))
+            # column by column (Fortran order: a time's values contiguous, written at once)
+            self._values = np.empty((f.nnz_out(0), self.t.size), order="F")
             for k in range(self.t.size):
                 for arg, values in zip(buffered.args, columns):
                     arg[:] = values[:, k]
