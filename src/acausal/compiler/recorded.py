@@ -19,7 +19,7 @@ class _Column:
     def __init__(self):
         self.vectors, self.rows, self._start, self._size = [], [], {}, 0
 
-    def add(self, v: ca.SX, row: int = 0) -> None:
+    def add(self, v: ca.SX, row: int) -> None:
         """Row ``row`` of the column ``v`` (held here: its id stays its own)."""
         start = self._start.get(id(v))
         if start is None:
@@ -27,6 +27,12 @@ class _Column:
             self.vectors.append(v)
             self._size += v.numel()
         self.rows.append(start + row)
+
+    def scalar(self, v: ca.SX) -> None:
+        """The scalar ``v``."""
+        self.vectors.append(v)
+        self.rows.append(self._size)
+        self._size += 1
 
     def stacked(self) -> ca.SX:
         return _vc(*self.vectors)[self.rows] if self.rows else ca.SX(0, 1)
@@ -70,12 +76,14 @@ def port_flows(ws, tree, explicit, lam_tree, lam_loop):
         if internal:
             continue
         dom = p.domain
-        if dom.dof > 1 and v.size2() > 1:
-            v = ca.vec(v)
         path = p.path
-        for j, fname in enumerate(dom.flows):
-            names.append(f"{path}.{fname}")
-            units.append(dom.flow_units[j])
+        names += [f"{path}.{fname}" for fname in dom.flows]
+        units += dom.flow_units
+        if dom.dof == 1:
+            column.scalar(v)
+            continue
+        v = ca.vec(v)
+        for j in range(dom.dof):
             column.add(v, j)
     flow_of = {p: total.get(p, ca.SX.zeros(p.domain.dof)) for p in measured}
     return (names, column.stacked(), units), flow_of
@@ -110,13 +118,17 @@ def recorded_variables(ws, tree):
     seen = set()
 
     def rec(name, v, row, unit, may_drop=False):
+        """Record ``name``: row ``row`` of the column ``v``, or the scalar ``v`` (row None)."""
         if name not in seen:
             seen.add(name)
             if may_drop:
                 optional.add(len(names))
             names.append(name)
             units.append(unit)
-            column.add(v, row)
+            if row is None:
+                column.scalar(v)
+            else:
+                column.add(v, row)
 
     for n in tree.nodes:
         motion = None                     # the node's (pos, vel, acc), as (column, row)
@@ -142,19 +154,19 @@ def recorded_variables(ws, tree):
                 if name:
                     rec(f"{path}.{name}", vel, k + j, dom.velocity_units[j], True)
     for info in ws.states:
-        rec(info.sym.name(), info.sym, 0, info.unit)
+        rec(info.sym.name(), info.sym, None, info.unit)
     for a in ws.algebraics:
-        rec(a.sym.name(), a.sym, 0, a.unit)
+        rec(a.sym.name(), a.sym, None, a.unit)
     for name, ex, unit, _ in ws.variables:
-        rec(name, ex, 0, unit, True)
+        rec(name, ex, None, unit, True)
     for c, s in ws.inputs:
-        rec(c.path, s, 0, c.unit)
+        rec(c.path, s, None, c.unit)
     for c, e in ws.outputs:
-        rec(c.path, e, 0, c.unit)
+        rec(c.path, e, None, c.unit)
     unit_of = {id(c): c.unit for c, _ in ws.inputs}      # a model Input's signal: its unit
     for o, s in ws.signal_sym.items():
-        rec(o.path, s, 0, unit_of.get(id(o.owner), ""))
+        rec(o.path, s, None, unit_of.get(id(o.owner), ""))
     for i, o in ws.source.items():
         if o in ws.signal_sym:
-            rec(i.path, ws.signal_sym[o], 0, unit_of.get(id(o.owner), ""))
+            rec(i.path, ws.signal_sym[o], None, unit_of.get(id(o.owner), ""))
     return names, column.stacked(), units, optional
