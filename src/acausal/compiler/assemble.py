@@ -627,7 +627,7 @@ def _nominals(model, ws: Workspace, tree, final, w: ca.SX, free: ca.SX) -> list:
         raise StructureError(f"nominal given for '{unknown[0]}', which is no variable of "
                              f"'{model.name or type(model).__name__}'"
                              f"{did_you_mean(unknown[0], names)}")
-    rows = final(exprs[[where[n] for n in declared]])
+    rows = final(exprs[[where[n] for n in declared], 0])
     out = [None] * w.numel()
     for v, n in zip(ca.vertsplit(rows), declared.values()):
         hit = coinciding(v, w, free)

@@ -474,7 +474,7 @@ class CompiledModel:
                 j = seen[key] = len(first)
                 first.append(k)
             layout.append(("r", j))
-        return self.recorded[first] if first else ca.SX(0, 1), layout
+        return self.recorded[first, 0] if first else ca.SX(0, 1), layout
 
     @property
     def recorded_function(self) -> ca.Function:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import casadi as ca
 
 from .kinematics import InternalNode
+from .relations import linear_flows
 
 _vc = ca.vertcat
 
@@ -35,58 +36,91 @@ class _Column:
         self._size += 1
 
     def stacked(self) -> ca.SX:
-        return _vc(*self.vectors)[self.rows] if self.rows else ca.SX(0, 1)
+        return _vc(*self.vectors)[self.rows, 0] if self.rows else ca.SX(0, 1)
 
 
 def port_flows(ws, tree, explicit, lam_tree, lam_loop):
     """Flow of every port of every component, explicit ones plus relation reactions:
     ((dotted names, expressions stacked, units) of the ports' flows, {port: flow} of the
     ports force sensors measure)."""
-    terms: dict = {}              # port -> the terms of its flow, in order
+    terms: dict = {}     # port -> the terms of its flow, in order: (vector, first row), or
+    #                      (expression, None) (taken out of the vector only if summed)
 
-    def add(p, v):
+    def add(p, v, row=None):
         if p in terms:
-            terms[p].append(v)
+            terms[p].append((v, row))
         else:
-            terms[p] = [v]
+            terms[p] = [(v, row)]
 
-    ports = [p for block, _ in ws.flows for p in block]
-    for p, v in zip(ports, _split(explicit, [p.domain.dof for p in ports])):
-        add(p, v)
-    extra = {}
-    for block, lam in zip(tree.loops, _split(lam_loop, [b.rows for b in tree.loops])):
+    def reactions(relations: list, lam: ca.SX, dims: list[int], nonlinear) -> None:
+        """Add the flows of ``relations`` for their reactions ``lam`` (``dims`` rows each):
+        the linear ones' at once (``linear_flows``), the others' by nonlinear(k, λ_k)."""
+        first = [0]
+        for d in dims:
+            first.append(first[-1] + d)
+        linear = [k for k, r in enumerate(relations) if r.linear]
+        at, row = linear_flows([relations[k] for k in linear], lam,
+                               [first[k] for k in linear]), 0
+        for k, piece in enumerate(_split(lam, dims)):
+            if not relations[k].linear:
+                nonlinear(k, piece)
+                continue
+            for p in relations[k].ports:
+                add(p, at, row)
+                row += 1
+
+    def loop(k: int, lam: ca.SX) -> None:
+        block = tree.loops[k]
         if block.flows is None:
             extra[id(block.relation)] = lam    # extra rows of a relation that also fired
-            continue
+            return
         for p, v in block.flows(lam):
             add(p, v)
-    for f, lam in zip(tree.fired, _split(lam_tree, [f.dim for f in tree.fired])):
-        r = f.relation
-        for p, v in (r.flows(lam) if r.linear else r.flows_fired(lam, extra.get(id(r)))):
+
+    def fired(k: int, lam: ca.SX) -> None:
+        r = tree.fired[k].relation
+        for p, v in r.flows_fired(lam, extra.get(id(r))):
             add(p, v)
+
+    row = 0
+    for block, _ in ws.flows:
+        for p in block:
+            add(p, explicit, row)
+            row += p.domain.dof
+    extra = {}
+    reactions([b.relation for b in tree.loops], lam_loop, [b.rows for b in tree.loops], loop)
+    reactions([f.relation for f in tree.fired], lam_tree, [f.dim for f in tree.fired], fired)
     names, units, column, total = [], [], _Column(), {}
     measured = ws.cut_flow_sym
-    for p, (v, *more) in terms.items():
+    for p, ((v, row), *more) in terms.items():
         internal = isinstance(p, InternalNode)
         if internal and p not in measured:        # an internal node's flow: never read
             continue
-        for w in more:
-            v = v + w
-        total[p] = v
+        dom = p.domain
+        if more or p in measured:
+            v = _term(v, row, dom.dof)
+            for w, i in more:
+                v = v + _term(w, i, dom.dof)
+            total[p], row = v, None
         if internal:
             continue
-        dom = p.domain
         path = p.path
         names += [f"{path}.{fname}" for fname in dom.flows]
         units += dom.flow_units
-        if dom.dof == 1:
+        if row is None and dom.dof == 1:
             column.scalar(v)
             continue
-        v = ca.vec(v)
+        if row is None:
+            v, row = ca.vec(v), 0
         for j in range(dom.dof):
-            column.add(v, j)
+            column.add(v, row + j)
     flow_of = {p: total.get(p, ca.SX.zeros(p.domain.dof)) for p in measured}
     return (names, column.stacked(), units), flow_of
+
+
+def _term(v: ca.SX, row: int | None, dof: int) -> ca.SX:
+    """A term of a port's flow as an expression: rows row.. of v, or v itself (row None)."""
+    return v if row is None else v[row:row + dof]
 
 
 def _split(v: ca.SX, dims: list[int]) -> list[ca.SX]:
