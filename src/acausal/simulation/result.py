@@ -99,7 +99,7 @@ class Result:
             self._values = np.empty((f.nnz_out(0), self.t.size), order="F")
             for k in range(self.t.size):
                 for arg, values in zip(buffered.args, columns):
-                    arg[:] = values[:, k if values.shape[1] > 1 else 0]
+                    arg[:] = values[:, k if values.shape[1] == self.t.size else 0]
                 buffered.call()
                 self._values[:, k] = buffered.res[0]
         return self._values
