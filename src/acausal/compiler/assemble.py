@@ -306,11 +306,10 @@ def _assemble(model, ws: Workspace, tree, params, fixed: list[str]) -> CompiledM
         apart with the error that reading them raises, an error for any other such row
         (a Der block's output)."""
         names, exprs, units, optional = recorded_variables(ws, tree)
-        fl, _ = flows()
-        fl = fl + network.records
-        names += [n for n, _, _ in fl]
-        units += [u for _, _, u in fl]
-        exprs = resolved(_vc(exprs, *[e for _, e, _ in fl]))
+        (flow_names, flow_exprs, flow_units), _ = flows()
+        names += flow_names + [n for n, _, _ in network.records]
+        units += flow_units + [u for _, _, u in network.records]
+        exprs = resolved(_vc(exprs, flow_exprs, *[e for _, e, _ in network.records]))
         unknown = set(resolve.unknown_rows(exprs))
         resolve.check([exprs[sorted(unknown - optional)]] if unknown - optional else [])
         unavailable = {names[k]: resolve.error(exprs[k]) for k in sorted(unknown)}
@@ -628,7 +627,7 @@ def _nominals(model, ws: Workspace, tree, final, w: ca.SX, free: ca.SX) -> list:
         raise StructureError(f"nominal given for '{unknown[0]}', which is no variable of "
                              f"'{model.name or type(model).__name__}'"
                              f"{did_you_mean(unknown[0], names)}")
-    rows = final(_vc(*[exprs[where[n]] for n in declared]))
+    rows = final(exprs[[where[n] for n in declared], 0])
     out = [None] * w.numel()
     for v, n in zip(ca.vertsplit(rows), declared.values()):
         hit = coinciding(v, w, free)

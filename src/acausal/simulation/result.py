@@ -94,12 +94,13 @@ class Result:
         if self._values is None:
             f = self._model.recorded_function
             columns = (self.t.reshape(1, -1), self._states, self._algebraics, self._inputs,
-                       self._param_columns())
+                       self._params)                # (parameters: one column, or one per time)
             buffered = Buffered(f, [np.zeros(f.nnz_in(i)) for i in range(f.n_in())])
-            self._values = np.empty((f.nnz_out(0), self.t.size))
+            # column by column (Fortran order: a time's values contiguous, written at once)
+            self._values = np.empty((f.nnz_out(0), self.t.size), order="F")
             for k in range(self.t.size):
                 for arg, values in zip(buffered.args, columns):
-                    arg[:] = values[:, k]
+                    arg[:] = values[:, k if values.shape[1] == self.t.size else 0]
                 buffered.call()
                 self._values[:, k] = buffered.res[0]
         return self._values
