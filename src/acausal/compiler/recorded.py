@@ -3,6 +3,8 @@ and torques, recovered from the relations' reactions), internal nodes' motion, s
 algebraic variables, components' variables and signals, by dotted name."""
 from __future__ import annotations
 
+import itertools
+
 import casadi as ca
 
 from .kinematics import InternalNode
@@ -47,17 +49,12 @@ def port_flows(ws, tree, explicit, lam_tree, lam_loop):
     #                      (expression, None) (taken out of the vector only if summed)
 
     def add(p, v, row=None):
-        if p in terms:
-            terms[p].append((v, row))
-        else:
-            terms[p] = [(v, row)]
+        terms.setdefault(p, []).append((v, row))
 
     def reactions(relations: list, lam: ca.SX, dims: list[int], nonlinear) -> None:
         """Add the flows of ``relations`` for their reactions ``lam`` (``dims`` rows each):
         the linear ones' at once (``linear_flows``), the others' by nonlinear(k, λ_k)."""
-        first = [0]
-        for d in dims:
-            first.append(first[-1] + d)
+        first = [0, *itertools.accumulate(dims)]
         linear = [k for k, r in enumerate(relations) if r.linear]
         at, row = linear_flows([relations[k] for k in linear], lam,
                                [first[k] for k in linear]), 0

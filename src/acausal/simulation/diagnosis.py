@@ -29,9 +29,10 @@ TIGHT_RTOL, TIGHT_ATOL = 1e-10, 1e-12
 def failure_message(model, error: Exception, a: float, b: float, rtol: float, atol: float,
                     state_near=None, p=None, u_at=None, start=None) -> str:
     """The message of a failed integration of ``model`` over [a, b]: what the solver said
-    (``error``, with what it wrote on standard error appended), and why in the model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None)
-    for a closed loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs;
-    ``start`` the (x, z) the integration started from at a."""
+    (``error``, with what it wrote on standard error: ``solver_account``), and why in the
+    model's terms. ``state_near(t)`` gives (x, z) shortly before t (or None) for a closed
+    loop's configuration; ``p``, ``u_at(t)`` the parameters and inputs; ``start`` the
+    (x, z) the integration started from at a."""
     text = str(error)
     unknown = re.search(r"Unknown option: (\S+)", text)
     if unknown:
@@ -44,16 +45,16 @@ def failure_message(model, error: Exception, a: float, b: float, rtol: float, at
         undetermined = _undetermined(model, a, *start, u_at(a), p)
         if undetermined:
             return f"{head}. {undetermined}"
-    found = re.search(r"(?:At|Internal) t = ([-+0-9.eE]+)", text)
-    t_fail = float(found.group(1)) if found else None
+    t_fail = _failure_time(text)
     if model.has_loops and t_fail is not None and state_near is not None:
         near = state_near(t_fail)
         if near is not None:
             singular = _singular_configuration(model, t_fail, *near, u_at(t_fail), p)
             if singular:
                 return f"{head}. {singular}"
-    if blow_up(text):
-        return f"{head}. {blow_up(text)}"
+    why = blow_up(text)
+    if why:
+        return f"{head}. {why}"
     if "TOO_MUCH_WORK" in text:
         return (f"{head}. The solver took too many steps: the model may be stiff (give "
                 f"solver='cvodes' for BDF) or the tolerances tighter than needed; "
@@ -71,11 +72,17 @@ def blow_up(text: str) -> str:
     the equations became infinite or NaN: where, and the likely causes; else ""."""
     if not re.search(r"(?:Inf|NaN) detected", text):
         return ""
-    found = re.search(r"(?:At|Internal) t = ([-+0-9.eE]+)", text)
-    near = f" near t = {float(found.group(1)):g} s" if found else ""
+    t_fail = _failure_time(text)
+    near = f" near t = {t_fail:g} s" if t_fail is not None else ""
     return (f"The equations became infinite or NaN{near}: the states grow without bound "
             f"there (a finite-time blow-up), or an expression divides by zero; check the "
             f"parameters, the initial values and the inputs")
+
+
+def _failure_time(text: str) -> float | None:
+    """The time where the solver says it stopped ("At t = …", "Internal t = …"), or None."""
+    found = re.search(r"(?:At|Internal) t = ([-+0-9.eE]+)", text)
+    return float(found.group(1)) if found else None
 
 
 def _undetermined(model, t, x, z, u, p) -> str | None:
@@ -147,27 +154,25 @@ def quiet_stderr():
 
 
 @contextmanager
-def captured_stderr(into: list):
-    """Standard error kept: its text appended to ``into`` when the block ends (a failed
-    integration's own account of where it stopped, for its error message)."""
+def solver_account(lines: int = 8):
+    """What an integration in the block writes on standard error (SUNDIALS, CasADi's
+    warnings) kept from the terminal: a RuntimeError raised in the block carries it after
+    its own message (where the solver stopped and why, for ``failure_message``); after a
+    block that succeeds, its first ``lines`` lines and a count of the rest are passed on."""
     stream = io.StringIO()
     with tempfile.TemporaryFile() as f:
         try:
             with _stderr_to(f.fileno(), stream):
                 yield
-        finally:
+        except RuntimeError as e:
             f.seek(0)
-            into.append(f.read().decode(errors="replace") + stream.getvalue())
-
-
-def passed_on(text: str, lines: int = 8) -> None:
-    """What a successful integration wrote (SUNDIALS's warnings), written to standard error
-    as it came, its first ``lines`` lines and a count of the rest."""
-    if not text:
-        return
-    rows = text.splitlines()
-    more = f"\n... ({len(rows) - lines} more lines)" if len(rows) > lines else ""
-    sys.stderr.write("\n".join(rows[:lines]) + more + "\n")
+            said = f.read().decode(errors="replace") + stream.getvalue()
+            raise RuntimeError(f"{e}\n{said}") from None
+        f.seek(0)
+        rows = (f.read().decode(errors="replace") + stream.getvalue()).splitlines()
+    if rows:
+        more = f"\n... ({len(rows) - lines} more lines)" if len(rows) > lines else ""
+        sys.stderr.write("\n".join(rows[:lines]) + more + "\n")
 
 
 def not_finite(model, x0, fx0, p, u0, t0) -> str:

@@ -61,7 +61,7 @@ from ..compiler.compiled import ARGS
 from ..errors import SimulationError
 from ..numerics import event_times, just_before, short_error
 from . import buffers
-from .diagnosis import blow_up, captured_stderr, passed_on, quiet_stderr
+from .diagnosis import blow_up, quiet_stderr, solver_account
 from .initialization import model_equations
 from .result import Event, Termination
 
@@ -393,21 +393,19 @@ class EventSimulation(ModeIteration):
                 return X, np.zeros((0, len(times)))
             return X, self.consistent_along(times, X, np.tile(np.reshape(z, (-1, 1)),
                                                               (1, len(times))), d)
-        said = []                            # what SUNDIALS and CasADi write on stderr
         try:
-            with captured_stderr(said):
+            with solver_account():
                 F = ca.integrator("segment", self.plugin, self.dae, float(t0), list(times),
                                   self._start_options(t0, x, z, d, times[-1]))
                 xf, zf = buffers.call(F, {"x0": x / self.Nx, "z0": z / self.Nz, "p": d},
                                       ["xf", "zf"])
         except RuntimeError as e:
-            why = blow_up(f"{e}\n{said[0]}")
+            why = blow_up(str(e))
             raise SimulationError(f"integration of '{self.model.name}' failed after "
                                   f"t = {t0:g} s with the modes "
                                   f"{self._modes(d)}: {short_error(e)}"
                                   f"{'. ' + why if why else ''}"
                                   f"{self._undetermined(t0, x, z, d)}") from None
-        passed_on(said[0])
         X = xf * self.Nx[:, None]
         if not self.has_alg:
             return X, np.zeros((0, len(times)))

@@ -162,4 +162,3 @@ def check_finite(what: str, values: dict | None, error=SimulationError) -> None:
             ok = False
         if not ok:
             raise error(f"{what}['{name}'] must be a finite number, got {v!r}")
-

@@ -9,8 +9,7 @@ import numpy as np
 from ..errors import SimulationError
 from ..numerics import just_before
 from . import assertions, buffers, codegen as generated, explicit
-from .diagnosis import (captured_stderr, failure_message, not_finite, passed_on,
-                        quiet_stderr)
+from .diagnosis import failure_message, not_finite, quiet_stderr, solver_account
 from .events import EventSimulation, ModeIteration
 from .initialization import initial_state
 from .problem import (check_finite, check_inputs, check_settings, folded,
@@ -204,9 +203,8 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
             opts["step0"] = (options or {}).get("step0", 1e-6 * (b - a))
         if rates:
             opts["init_xdot"] = list(np.array(xdot(x, z, a), dtype=float).ravel())
-        said = []                            # what SUNDIALS and CasADi write on stderr
         try:
-            with captured_stderr(said):
+            with solver_account():
                 F = ca.integrator("sim", plugin, dae, float(a), tout, opts)
                 xf, *zf = buffers.call(F, {"x0": x, "z0": z}, ["xf", "zf"][:1 + has_alg])
         except RuntimeError as e:
@@ -220,12 +218,10 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
                     return None
                 return np.array(sol["xf"]).ravel(), np.array(sol["zf"]).ravel()
             raise SimulationError(failure_message(
-                model, RuntimeError(f"{e}\n{said[0]}"), a, b, rtol, atol,
-                state_near if loops else None, p,
+                model, e, a, b, rtol, atol, state_near if loops else None, p,
                 lambda tt: np.array(ca.evalf(ca.substitute(u_expr, model.t, tt))).ravel(),
                 start=(np.ravel(x) * scale[:nx], np.ravel(z) * scale[nx:]))
             ) from None
-        passed_on(said[0])
         zf = zf[0] if has_alg else np.zeros((0, len(tout)))
         X.append(xf[:, :len(pts)])
         Z.append(zf[:, :len(pts)])
@@ -255,7 +251,7 @@ def simulate(model, t_final: float, *, t=None, params: dict | None = None,
         else:
             raise
         X, Z = integrate(plugin, opts)
-    if opts.get("suppress_algebraic") and alg is not None and not loops and X.size:
+    if opts.get("suppress_algebraic") and has_alg and not loops and X.size:
         # out of IDAS's error test, z at an output time is its interpolant between steps;
         # z of an index-1 DAE follows the states: solved at them instead
         Z = ModeIteration(model, p, ca.Function("u", [model.t], [u_expr])).consistent_along(

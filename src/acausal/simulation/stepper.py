@@ -259,9 +259,9 @@ class Stepper:
             return
         try:
             values = np.asarray(u, dtype=float).ravel()
-        except (TypeError, ValueError):
-            values = np.full(self.u.size + 1, np.nan)        # refused below, with the names
-        if values.size != self.u.size or not np.all(np.isfinite(values)):
+        except (TypeError, ValueError):                   # text: no numbers at all
+            values = None
+        if values is None or values.size != self.u.size or not np.all(np.isfinite(values)):
             raise SimulationError(f"'{self.model.name}' has {self.u.size} inputs "
                                   f"{self.input_names}: give as many finite numbers, got {u!r}")
         self.u[:] = values

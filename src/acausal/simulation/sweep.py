@@ -408,13 +408,13 @@ class _Engine:
                                              for r in rho[runs])
             failed = self._integrate(self.integrator(solver, extra), runs, W)
             self.solvers[runs] = solver
-            if solver == "idas" and "suppress_algebraic" in (self.settings["options"] or {}):
+            if solver == "idas" and (self.settings["options"] or {}).get("suppress_algebraic"):
                 suppressed += [k for k in runs if k not in failed]
             retry = self._retry(solver, auto)
             if failed and retry:
                 self.solvers[sorted(failed)] = retry[0]
                 again = self._integrate(self.integrator(*retry), sorted(failed), W)
-                if "suppress_algebraic" in retry[1]:
+                if retry[1].get("suppress_algebraic"):
                     suppressed += [k for k in failed if k not in again]
                 failed = again
             errors.update(failed)
